@@ -1,0 +1,55 @@
+"""Run our LAMMPS build (tools/lmp) on an input script, serially or under mpirun."""
+import os
+import subprocess
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+LMP = ROOT / "tools" / "lmp"
+
+MPIRUN = ["mpirun", "--allow-run-as-root", "--oversubscribe", "--bind-to", "none"]
+
+
+class LammpsError(RuntimeError):
+    """LAMMPS stopped with an ERROR line; .message holds it."""
+
+    def __init__(self, message, output):
+        super().__init__(message)
+        self.message = message
+        self.output = output
+
+
+def error_line(output):
+    """The first 'ERROR' line LAMMPS printed, or None."""
+    for line in output.splitlines():
+        if line.startswith("ERROR") or "ERROR on proc" in line:
+            return line.strip()
+    return None
+
+
+def run_lammps(script, workdir, nprocs=1, version=None, check=True, vars=None, timeout=1800,
+               log="log.lammps"):
+    """Write `script` to workdir/in.lammps and run it; raise LammpsError on an ERROR if check."""
+    workdir = Path(workdir)
+    workdir.mkdir(parents=True, exist_ok=True)
+    infile = workdir / "in.lammps"
+    if "\n" in script or not Path(script).is_file():
+        infile.write_text(script)
+    else:
+        infile = Path(script).resolve()
+    cmd = [str(LMP), "-in", str(infile), "-log", log]
+    for k, v in (vars or {}).items():
+        cmd += ["-var", str(k), str(v)]
+    if nprocs > 1:
+        cmd = MPIRUN + ["-np", str(nprocs)] + cmd
+    env = dict(os.environ)
+    if version:
+        env["BBPD_LAMMPS_VERSION"] = str(version)
+    proc = subprocess.run(cmd, cwd=workdir, env=env, capture_output=True, text=True,
+                          timeout=timeout)
+    out = proc.stdout + proc.stderr
+    err = error_line(out)
+    if check and (err or proc.returncode != 0):
+        raise LammpsError(err or f"LAMMPS exited with {proc.returncode}", out)
+    proc.output = out
+    proc.error = err
+    return proc

@@ -1,0 +1,98 @@
+/* ----------------------------------------------------------------------
+   BBPD plugin: registers every style of bbpdplugin.so with LAMMPS.
+------------------------------------------------------------------------- */
+
+#include "lammpsplugin.h"
+
+#include "comm.h"
+#include "compute_bbpd_damage_atom.h"
+#include "error.h"
+#include "fix_bbpd_bonds.h"
+#include "fix_bbpd_notch.h"
+#include "info.h"
+#include "lammps.h"
+#include "pair_bbpd.h"
+#include "utils.h"
+#include "version.h"
+
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+#ifndef BBPD_VERSION
+#define BBPD_VERSION "unknown"
+#endif
+
+namespace {
+const char *AUTHOR = "BBPD developers";
+
+template <class K> Pair *pair_creator(LAMMPS *lmp)
+{
+  return new PairBBPD(lmp, BBPD::kernel_info<K>());
+}
+Fix *bonds_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixBBPDBonds(lmp, narg, arg);
+}
+Fix *notch_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixBBPDNotch(lmp, narg, arg);
+}
+Compute *damage_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new ComputeBBPDDamageAtom(lmp, narg, arg);
+}
+}    // namespace
+
+extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
+{
+  auto *lmp = (LAMMPS *) ptr;
+  auto register_plugin = (lammpsplugin_regfunc) regfunc;
+
+  // our styles derive from atom_style peri: without PERI they cannot work
+  if (!Info::has_package("PERI")) {
+    if (lmp->comm->me == 0)
+      utils::logmesg(lmp, "ERROR: bbpdplugin.so (BBPD " BBPD_VERSION ") needs a LAMMPS built with "
+                          "the PERI package (cmake -D PKG_PERI=on); no styles registered\n");
+    return;
+  }
+  if (strcmp(LAMMPS_VERSION, lmp->version) != 0 && lmp->comm->me == 0)
+    utils::logmesg(lmp, "WARNING: bbpdplugin.so was compiled for LAMMPS {} but runs in LAMMPS {}; "
+                        "rebuild it against this LAMMPS if anything misbehaves\n",
+                   LAMMPS_VERSION, lmp->version);
+
+  lammpsplugin_t plugin;
+  plugin.version = LAMMPS_VERSION;
+  plugin.author = AUTHOR;
+  plugin.handle = handle;
+
+  plugin.style = "pair";
+  plugin.name = "bbpd/constant";
+  plugin.info = "BBPD pair style, constant kernel, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_creator<BBPD::ConstantKernel>;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/triangular";
+  plugin.info = "BBPD pair style, triangular kernel, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_creator<BBPD::TriangularKernel>;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/gaussian";
+  plugin.info = "BBPD pair style, Gaussian kernel, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_creator<BBPD::GaussianKernel>;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "fix";
+  plugin.name = "bbpd/bonds";
+  plugin.info = "BBPD bond families (internal, created by the pair style) v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &bonds_creator;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/notch";
+  plugin.info = "BBPD pre-cracks by broken bonds v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &notch_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "compute";
+  plugin.name = "bbpd/damage/atom";
+  plugin.info = "BBPD local damage (eq. 17) v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &damage_creator;
+  (*register_plugin)(&plugin, lmp);
+}

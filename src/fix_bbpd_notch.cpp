@@ -1,0 +1,137 @@
+/* ----------------------------------------------------------------------
+   BBPD plugin: fix bbpd/notch (see fix_bbpd_notch.h)
+------------------------------------------------------------------------- */
+
+#include "fix_bbpd_notch.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_bbpd_bonds.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+FixBBPDNotch::FixBBPDNotch(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), ncut(0)
+{
+  const int dim = domain->dimension;
+  const char *usage = dim == 2 ? "segment x1 y1 x2 y2" : "rectangle cx cy cz ax ay az bx by bz";
+  if (narg < 4) error->all(FLERR, "Illegal fix bbpd/notch command: expected one or more '{}'", usage);
+  int iarg = 3;
+  while (iarg < narg) {
+    Cut c = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    if (strcmp(arg[iarg], "segment") == 0) {
+      if (dim != 2)
+        error->all(FLERR, "Fix bbpd/notch: 'segment' is for dimension 2; in 3D use 'rectangle "
+                   "cx cy cz ax ay az bx by bz'");
+      if (iarg + 5 > narg) error->all(FLERR, "Fix bbpd/notch: segment needs 4 numbers: x1 y1 x2 y2");
+      double v[4];
+      for (int m = 0; m < 4; m++) v[m] = utils::numeric(FLERR, arg[iarg + 1 + m], false, lmp);
+      c.p[0] = v[0];
+      c.p[1] = v[1];
+      c.a[0] = v[2] - v[0];
+      c.a[1] = v[3] - v[1];
+      if (c.a[0] == 0.0 && c.a[1] == 0.0)
+        error->all(FLERR, "Fix bbpd/notch: segment {} {} {} {} has zero length", v[0], v[1], v[2], v[3]);
+      iarg += 5;
+    } else if (strcmp(arg[iarg], "rectangle") == 0) {
+      if (dim != 3)
+        error->all(FLERR, "Fix bbpd/notch: 'rectangle' is for dimension 3; in 2D use 'segment x1 y1 x2 y2'");
+      if (iarg + 10 > narg)
+        error->all(FLERR, "Fix bbpd/notch: rectangle needs 9 numbers: corner cx cy cz, edge ax ay az, edge bx by bz");
+      double v[9];
+      for (int m = 0; m < 9; m++) v[m] = utils::numeric(FLERR, arg[iarg + 1 + m], false, lmp);
+      for (int m = 0; m < 3; m++) {
+        c.p[m] = v[m];
+        c.a[m] = v[3 + m];
+        c.b[m] = v[6 + m];
+      }
+      const double n[3] = {c.a[1] * c.b[2] - c.a[2] * c.b[1], c.a[2] * c.b[0] - c.a[0] * c.b[2],
+                           c.a[0] * c.b[1] - c.a[1] * c.b[0]};
+      if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)
+        error->all(FLERR, "Fix bbpd/notch: rectangle edges are parallel or zero: it has no area");
+      iarg += 10;
+    } else {
+      error->all(FLERR, "Fix bbpd/notch: unknown keyword '{}' (expected {})", arg[iarg],
+                 dim == 2 ? "segment" : "rectangle");
+    }
+    cuts.push_back(c);
+  }
+}
+
+void FixBBPDNotch::init()
+{
+  if (!atom->peri_flag) error->all(FLERR, "Fix bbpd/notch requires atom_style peri");
+}
+
+/* does the bond xa-xb cross the notch? points on the notch plane count as its positive side */
+bool FixBBPDNotch::crosses(const Cut &c, const double *xa, const double *xb, int dim)
+{
+  double n[3];
+  if (dim == 2) {
+    n[0] = -c.a[1];
+    n[1] = c.a[0];
+    n[2] = 0.0;
+  } else {
+    n[0] = c.a[1] * c.b[2] - c.a[2] * c.b[1];
+    n[1] = c.a[2] * c.b[0] - c.a[0] * c.b[2];
+    n[2] = c.a[0] * c.b[1] - c.a[1] * c.b[0];
+  }
+  double sa = 0.0, sb = 0.0;
+  for (int m = 0; m < dim; m++) {
+    sa += n[m] * (xa[m] - c.p[m]);
+    sb += n[m] * (xb[m] - c.p[m]);
+  }
+  if ((sa >= 0.0) == (sb >= 0.0)) return false;
+  const double u = sa / (sa - sb);
+  double d[3] = {0.0, 0.0, 0.0};
+  for (int m = 0; m < dim; m++) d[m] = xa[m] + u * (xb[m] - xa[m]) - c.p[m];
+  // coordinates of the crossing point in the notch's own frame
+  double aa = 0.0, ab = 0.0, bb = 0.0, ad = 0.0, bd = 0.0;
+  for (int m = 0; m < dim; m++) {
+    aa += c.a[m] * c.a[m];
+    ab += c.a[m] * c.b[m];
+    bb += c.b[m] * c.b[m];
+    ad += c.a[m] * d[m];
+    bd += c.b[m] * d[m];
+  }
+  if (dim == 2) {
+    const double t = ad / aa;
+    return t >= 0.0 && t <= 1.0;
+  }
+  const double det = aa * bb - ab * ab;
+  const double t = (ad * bb - bd * ab) / det;
+  const double w = (bd * aa - ad * ab) / det;
+  return t >= 0.0 && t <= 1.0 && w >= 0.0 && w <= 1.0;
+}
+
+/* break every intact bond crossing a notch; idempotent, so it is safe on every run setup */
+void FixBBPDNotch::cut_bonds(FixBBPDBonds *bonds)
+{
+  double **x0 = atom->x0;
+  int *mask = atom->mask;
+  const int dim = domain->dimension;
+  bigint n = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    for (int k = 0; k < bonds->npartner[i]; k++) {
+      const int j = bonds->jlocal[i][k];
+      if (j < 0) continue;
+      if (!(mask[i] & groupbit) && !(mask[j] & groupbit)) continue;
+      for (const auto &c : cuts) {
+        if (crosses(c, x0[i], x0[j], dim)) {
+          bonds->break_bond(i, k);
+          n++;
+          break;
+        }
+      }
+    }
+  }
+  bigint all = 0;
+  MPI_Allreduce(&n, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (comm->me == 0 && all > 0)
+    utils::logmesg(lmp, "  fix {} bbpd/notch: {} bonds cut by {} notch{}\n", id, all / 2,
+                   cuts.size(), cuts.size() > 1 ? "es" : "");
+}

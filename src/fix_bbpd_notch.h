@@ -1,0 +1,46 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   BBPD plugin: fix bbpd/notch -- pre-cracks made of broken bonds.
+
+   fix ID group bbpd/notch segment x1 y1 x2 y2 [segment ...]          (2D)
+   fix ID group bbpd/notch rectangle cx cy cz ax ay az bx by bz [...]  (3D)
+
+   Every bond of an atom in the group whose reference segment crosses a notch
+   starts broken (paper sec. 4.2.3). An endpoint lying exactly on the notch
+   counts as being on its positive side, so a notch through a row of atoms
+   cuts that row from the negative side instead of leaking.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+#else
+
+#ifndef LMP_FIX_BBPD_NOTCH_H
+#define LMP_FIX_BBPD_NOTCH_H
+
+#include "fix.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixBBPDNotch : public Fix {
+ public:
+  FixBBPDNotch(class LAMMPS *, int, char **);
+  int setmask() override { return 0; }
+  void init() override;
+  void cut_bonds(class FixBBPDBonds *);
+
+  // pure geometry, public for unit tests
+  struct Cut {
+    double p[3], a[3], b[3];    // origin and edge vectors (b = 0 for a 2D segment)
+  };
+  static bool crosses(const Cut &, const double *xa, const double *xb, int dim);
+
+ private:
+  std::vector<Cut> cuts;
+  bigint ncut;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

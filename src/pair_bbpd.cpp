@@ -1,0 +1,512 @@
+/* ----------------------------------------------------------------------
+   BBPD plugin: kernel-weighted bond-based peridynamics pair styles.
+
+   Force density on atom i from partner j (eqs. 19, 21, 22):
+     f_ij = c0 W(xi/delta) s C_v V_j (y_j - y_i)/|y_j - y_i|,   s = (|y| - xi)/xi
+   Every bond is evaluated from both ends (full bond lists, no Newton's third
+   law across ranks): each atom sums its own partners in tag order, so the
+   result does not depend on the domain decomposition.
+------------------------------------------------------------------------- */
+
+#include "pair_bbpd.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_bbpd_bonds.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "potential_file_reader.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+using namespace LAMMPS_NS;
+
+static constexpr double DT_SAFETY_DEFAULT = 0.8;    // fraction of the stable bound before a warning
+static constexpr const char *BONDS_FIX_ID = "BBPD_BONDS";
+
+/* ---------------------------------------------------------------------- */
+
+PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k) :
+    Pair(lmp), kernel(k), model(BBPD::Model::Solid3D), geom(1.0), spacing(0.0),
+    dt_safety(DT_SAFETY_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
+    fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
+    s0_user(nullptr), bonds(nullptr), dt_bound_paper(0.0), dt_bound(0.0)
+{
+  single_enable = 0;
+  restartinfo = 1;
+  one_coeff = 0;
+  no_virial_fdotr_compute = 1;    // ghost forces are never set: tally the virial per bond
+  manybody_flag = 1;              // bonds outlive the cutoff: no tail or shift logic applies
+}
+
+PairBBPD::~PairBBPD()
+{
+  if (copymode) return;
+  if (bonds && modify->get_fix_by_id(BONDS_FIX_ID)) modify->delete_fix(BONDS_FIX_ID);
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    memory->destroy(youngs);
+    memory->destroy(fracture_energy);
+    memory->destroy(horizon);
+    memory->destroy(micromodulus);
+    memory->destroy(critical_stretch);
+    memory->destroy(s0_user);
+  }
+}
+
+void PairBBPD::allocate()
+{
+  allocated = 1;
+  const int n = atom->ntypes + 1;
+  memory->create(setflag, n, n, "pair:setflag");
+  memory->create(cutsq, n, n, "pair:cutsq");
+  memory->create(youngs, n, n, "pair:youngs");
+  memory->create(fracture_energy, n, n, "pair:fracture_energy");
+  memory->create(horizon, n, n, "pair:horizon");
+  memory->create(micromodulus, n, n, "pair:micromodulus");
+  memory->create(critical_stretch, n, n, "pair:critical_stretch");
+  memory->create(s0_user, n, n, "pair:s0_user");
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < n; j++) {
+      setflag[i][j] = 0;
+      s0_user[i][j] = 0;
+    }
+}
+
+/* ----------------------------------------------------------------------
+   pair_style bbpd/KERNEL [model] MODEL [thickness h] [area A] [spacing dx] [dt/safety f]
+------------------------------------------------------------------------- */
+
+void PairBBPD::settings(int narg, char **arg)
+{
+  const std::string style = std::string("bbpd/") + kernel.name;
+  int iarg = 0;
+  if (iarg < narg && strcmp(arg[iarg], "model") == 0) iarg++;
+  if (iarg >= narg)
+    error->all(FLERR, "Pair style {} needs a model: 1d, plane/stress, plane/strain or 3d", style);
+  const std::string m = arg[iarg++];
+  if (m == "1d") model = BBPD::Model::Bar1D;
+  else if (m == "plane/stress") model = BBPD::Model::PlaneStress;
+  else if (m == "plane/strain") model = BBPD::Model::PlaneStrain;
+  else if (m == "3d") model = BBPD::Model::Solid3D;
+  else
+    error->all(FLERR, "Pair style {}: unknown model '{}' (use 1d, plane/stress, plane/strain or 3d)",
+               style, m);
+
+  geom = 0.0;
+  spacing_user = 0;
+  dt_safety = DT_SAFETY_DEFAULT;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (iarg + 1 >= narg) error->all(FLERR, "Pair style {}: keyword {} needs a value", style, key);
+    const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    if (key == "thickness" || key == "area") {
+      if ((key == "thickness") != (BBPD::family_dimension(model) == 2))
+        error->all(FLERR, "Pair style {}: keyword {} does not apply to model {} (thickness for "
+                   "plane models, area for 1d)", style, key, m);
+      if (value <= 0.0) error->all(FLERR, "Pair style {}: {} must be > 0", style, key);
+      geom = value;
+    } else if (key == "spacing") {
+      if (value <= 0.0) error->all(FLERR, "Pair style {}: spacing must be > 0", style);
+      spacing = value;
+      spacing_user = 1;
+    } else if (key == "dt/safety") {
+      if (value <= 0.0 || value > 1.0)
+        error->all(FLERR, "Pair style {}: dt/safety must be in (0,1]", style);
+      dt_safety = value;
+    } else {
+      error->all(FLERR, "Pair style {}: unknown keyword '{}'", style, key);
+    }
+    iarg += 2;
+  }
+  if (model == BBPD::Model::Solid3D) geom = 1.0;
+  else if (geom == 0.0)
+    error->all(FLERR, "Pair style {} model {} needs {} (e.g. '{} 1.0')", style, m,
+               model == BBPD::Model::Bar1D ? "the cross-section: area A" : "the thickness: thickness h",
+               model == BBPD::Model::Bar1D ? "area" : "thickness");
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I J E Gc delta [critical_stretch s0]
+   pair_coeff I J FILE MATERIAL delta [critical_stretch s0]
+   Gc = none: elastic (bonds never break) unless critical_stretch is given
+------------------------------------------------------------------------- */
+
+void PairBBPD::coeff(int narg, char **arg)
+{
+  const std::string style = std::string("bbpd/") + kernel.name;
+  if (narg != 5 && narg != 7)
+    error->all(FLERR, "Pair coeff for {}: expected 'I J E Gc delta [critical_stretch s0]' or "
+               "'I J file material delta [critical_stretch s0]', got {} arguments", style, narg);
+  if (!allocated) allocate();
+
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+
+  double E = 0.0, Gc = 0.0;
+  if (utils::is_double(arg[2]) || utils::is_integer(arg[2])) {
+    E = utils::numeric(FLERR, arg[2], false, lmp);
+    if (strcmp(arg[3], "none") == 0) Gc = std::numeric_limits<double>::infinity();
+    else Gc = utils::numeric(FLERR, arg[3], false, lmp);
+  } else {
+    coeff_from_file(arg[2], arg[3], E, Gc);
+  }
+  const double delta = utils::numeric(FLERR, arg[4], false, lmp);
+  double s0 = -1.0;
+  if (narg == 7) {
+    if (strcmp(arg[5], "critical_stretch") != 0)
+      error->all(FLERR, "Pair coeff for {}: unknown keyword '{}' (expected critical_stretch)", style,
+                 arg[5]);
+    s0 = utils::numeric(FLERR, arg[6], false, lmp);
+    if (s0 <= 0.0) error->all(FLERR, "Pair coeff for {}: critical_stretch must be > 0", style);
+  }
+  if (E <= 0.0) error->all(FLERR, "Pair coeff for {}: Young's modulus E must be > 0", style);
+  if (Gc <= 0.0)
+    error->all(FLERR, "Pair coeff for {}: fracture energy Gc must be > 0 (or 'none' for an "
+               "elastic body)", style);
+  if (delta <= 0.0) error->all(FLERR, "Pair coeff for {}: horizon delta must be > 0", style);
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++) {
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      youngs[i][j] = E;
+      fracture_energy[i][j] = Gc;
+      horizon[i][j] = delta;
+      micromodulus[i][j] = BBPD::micromodulus(kernel, model, E, delta, geom);
+      s0_user[i][j] = s0 > 0.0;
+      critical_stretch[i][j] = s0 > 0.0 ? s0
+          : std::isinf(Gc) ? std::numeric_limits<double>::infinity()
+                           : BBPD::critical_stretch(kernel, model, micromodulus[i][j], Gc, delta, geom);
+      setflag[i][j] = 1;
+      count++;
+    }
+  }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
+/* read E and Gc of one material from a potential file with a UNITS: header */
+void PairBBPD::coeff_from_file(const char *file, const char *material, double &E, double &Gc)
+{
+  if (comm->me == 0) {
+    PotentialFileReader reader(lmp, file, "bbpd");
+    char *line;
+    bool found = false;
+    while ((line = reader.next_line(3))) {
+      ValueTokenizer values(line);
+      if (values.next_string() != material) continue;
+      E = values.next_double();
+      const std::string g = values.next_string();
+      Gc = (g == "none") ? std::numeric_limits<double>::infinity() : utils::numeric(FLERR, g, false, lmp);
+      found = true;
+      break;
+    }
+    if (!found) error->one(FLERR, "Material {} not found in potential file {}", material, file);
+  }
+  MPI_Bcast(&E, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&Gc, 1, MPI_DOUBLE, 0, world);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairBBPD::grid_spacing_of(double vfrac) const
+{
+  switch (BBPD::family_dimension(model)) {
+    case 1: return vfrac / geom;
+    case 2: return std::sqrt(vfrac / geom);
+    default: return std::cbrt(vfrac);
+  }
+}
+
+void PairBBPD::init_style()
+{
+  const std::string style = std::string("bbpd/") + kernel.name;
+  if (!atom->peri_flag)
+    error->all(FLERR, "Pair style {} requires atom_style peri (per-atom volume and density)", style);
+  if (atom->map_style == Atom::MAP_NONE)
+    error->all(FLERR, "Pair style {} requires an atom map, see atom_modify", style);
+  if (BBPD::family_dimension(model) == 2 && domain->dimension != 2)
+    error->all(FLERR, "Pair style {} model {} requires 'dimension 2' (use model 3d for a 3D body)",
+               style, BBPD::model_name(model));
+  if (model == BBPD::Model::Solid3D && domain->dimension != 3)
+    error->all(FLERR, "Pair style {} model 3d requires 'dimension 3' (use plane/stress or "
+               "plane/strain in 2D)", style);
+
+  // grid spacing for eq. 19: the largest spacing implied by any atom's volume
+  if (!spacing_user) {
+    double local = 0.0;
+    for (int i = 0; i < atom->nlocal; i++) local = MAX(local, grid_spacing_of(atom->vfrac[i]));
+    MPI_Allreduce(&local, &spacing, 1, MPI_DOUBLE, MPI_MAX, world);
+    if (spacing <= 0.0)
+      error->all(FLERR, "Pair style {}: atoms have no volume; set it with 'set ... volume'", style);
+  }
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j] && horizon[i][j] < spacing)
+        error->all(FLERR, "Pair style {}: horizon {} for types {} {} is smaller than the grid "
+                   "spacing {}: use delta = m * spacing with m >= 1 (the paper uses m = 5)",
+                   style, horizon[i][j], i, j, spacing);
+
+  fracture_any = 0;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j] && std::isfinite(critical_stretch[i][j])) fracture_any = 1;
+
+  bonds = dynamic_cast<FixBBPDBonds *>(modify->get_fix_by_id(BONDS_FIX_ID));
+  if (!bonds)
+    bonds = dynamic_cast<FixBBPDBonds *>(
+        modify->add_fix(std::string(BONDS_FIX_ID) + " all bbpd/bonds"));
+  if (!bonds) error->all(FLERR, "Pair style {} could not create its bond-family fix", style);
+}
+
+double PairBBPD::init_one(int i, int j)
+{
+  if (setflag[i][j] == 0)
+    error->all(FLERR, "Pair style bbpd/{}: pair_coeff for types {} {} is missing (bbpd styles "
+               "do not mix coefficients)", kernel.name, i, j);
+  youngs[j][i] = youngs[i][j];
+  fracture_energy[j][i] = fracture_energy[i][j];
+  horizon[j][i] = horizon[i][j];
+  micromodulus[j][i] = micromodulus[i][j];
+  critical_stretch[j][i] = critical_stretch[i][j];
+  s0_user[j][i] = s0_user[i][j];
+  return family_cutoff(i, j);
+}
+
+/* coefficients of one bond, from its reference length and the partner's volume */
+void PairBBPD::bond_params(int itype, int jtype, double xi, double vj, double &coef, double &rbreak2,
+                           double &cvv) const
+{
+  const double delta = horizon[itype][jtype];
+  cvv = BBPD::partial_volume(xi, delta, spacing) * vj;
+  const double c = micromodulus[itype][jtype] * kernel.shape(xi / delta);
+  coef = c * cvv / xi;
+  const double s0 = critical_stretch[itype][jtype];
+  rbreak2 = std::isfinite(s0) ? (1.0 + s0) * (1.0 + s0) * xi * xi
+                              : std::numeric_limits<double>::infinity();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairBBPD::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  if (!bonds || !bonds->families_built()) return;
+  if (evflag) {
+    if (fracture_any) eval<1, 1>();
+    else eval<1, 0>();
+  } else {
+    if (fracture_any) eval<0, 1>();
+    else eval<0, 0>();
+  }
+}
+
+template <int EVFLAG, int FRACTURE> void PairBBPD::eval()
+{
+  double **x = atom->x;
+  double **f = atom->f;
+  const int nlocal = atom->nlocal;
+  const int *npartner = bonds->npartner;
+  int **jlocal = bonds->jlocal;
+  double **xi0 = bonds->xi0;
+  double **coef = bonds->coef;
+  double **rbreak2 = bonds->rbreak2;
+
+  for (int i = 0; i < nlocal; i++) {
+    const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
+    double fx = 0.0, fy = 0.0, fz = 0.0;
+    const int n = npartner[i];
+    const int *jl = jlocal[i];
+    for (int k = 0; k < n; k++) {
+      const int j = jl[k];
+      if (j < 0) continue;
+      const double dx = x[j][0] - xi, dy = x[j][1] - yi, dz = x[j][2] - zi;
+      const double rsq = dx * dx + dy * dy + dz * dz;
+      if (FRACTURE && rsq > rbreak2[i][k]) {
+        bonds->break_bond(i, k);
+        continue;
+      }
+      const double r = std::sqrt(rsq);
+      const double elong = r - xi0[i][k];
+      const double fbond = coef[i][k] * elong / r;
+      fx += fbond * dx;
+      fy += fbond * dy;
+      fz += fbond * dz;
+      if (EVFLAG) {
+        // half of the bond's micropotential (eq. 6) and virial: the other end tallies the rest
+        const double ebond = 0.25 * coef[i][k] * elong * elong;
+        if (eflag_global) eng_vdwl += ebond;
+        if (eflag_atom) eatom[i] += ebond;
+        if (vflag_either) {
+          const double v[6] = {0.5 * fbond * dx * dx, 0.5 * fbond * dy * dy, 0.5 * fbond * dz * dz,
+                               0.5 * fbond * dx * dy, 0.5 * fbond * dx * dz, 0.5 * fbond * dy * dz};
+          for (int m = 0; m < 6; m++) {
+            if (vflag_global) virial[m] += v[m];
+            if (vflag_atom) vatom[i][m] += v[m];
+          }
+        }
+      }
+    }
+    f[i][0] += fx;
+    f[i][1] += fy;
+    f[i][2] += fz;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   setup report, printed once bond families exist: per type pair and global
+------------------------------------------------------------------------- */
+
+void PairBBPD::report(FixBBPDBonds *fb)
+{
+  // stable time step from the actual bonds: sum_j C_v V_j c/xi = sum of coef (eq. 26)
+  double dtmin = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < atom->nlocal; i++) {
+    double sum = 0.0;
+    for (int k = 0; k < fb->npartner[i]; k++)
+      if (fb->jlocal[i][k] >= 0) sum += fb->coef[i][k];
+    if (sum > 0.0) dtmin = MIN(dtmin, BBPD::stable_timestep_paper(atom->rmass[i], sum));
+  }
+  MPI_Allreduce(&dtmin, &dt_bound_paper, 1, MPI_DOUBLE, MPI_MIN, world);
+  dt_bound = dt_bound_paper * std::sqrt(2.0);
+
+  int nmin = INT_MAX, nmax = 0;
+  bigint nsum = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    nmin = MIN(nmin, fb->npartner[i]);
+    nmax = MAX(nmax, fb->npartner[i]);
+    nsum += fb->npartner[i];
+  }
+  int gmin, gmax;
+  bigint gsum;
+  MPI_Allreduce(&nmin, &gmin, 1, MPI_INT, MPI_MIN, world);
+  MPI_Allreduce(&nmax, &gmax, 1, MPI_INT, MPI_MAX, world);
+  MPI_Allreduce(&nsum, &gsum, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  const bigint nbroken = fb->count_broken();
+
+  if (comm->me == 0) {
+    std::string mesg = fmt::format("BBPD pair style bbpd/{} model {}{}:\n", kernel.name,
+                                   BBPD::model_name(model),
+                                   model == BBPD::Model::Solid3D ? ""
+                                       : fmt::format(" ({} {})", model == BBPD::Model::Bar1D ? "area" : "thickness", geom));
+    for (int i = 1; i <= atom->ntypes; i++)
+      for (int j = i; j <= atom->ntypes; j++)
+        mesg += fmt::format("  types {} {}: E = {:.6g}  Gc = {:.6g}  horizon = {:.6g}  "
+                            "micromodulus c0 = {:.8g}  critical_stretch s0 = {:.8g}{}\n",
+                            i, j, youngs[i][j], fracture_energy[i][j], horizon[i][j],
+                            micromodulus[i][j], critical_stretch[i][j],
+                            s0_user[i][j] ? " (given)" : "");
+    mesg += fmt::format("  grid spacing for the volume correction = {:.6g}{}\n", spacing,
+                        spacing_user ? " (given)" : " (from atom volumes)");
+    mesg += fmt::format("  bonds per atom: min {} mean {:.6g} max {}; total bonds {} ({} broken)\n",
+                        gmin, atom->natoms ? (double) gsum / atom->natoms : 0.0, gmax, gsum / 2,
+                        nbroken / 2);
+    mesg += fmt::format("  fracture: {}\n", fracture_any ? "on" : "off (elastic, no bond-failure checks)");
+    mesg += fmt::format("  stable timestep: eq. 25 {:.6g}, velocity-Verlet limit {:.6g}; "
+                        "timestep = {:.6g} ({:.3g} of the limit)\n",
+                        dt_bound_paper, dt_bound, update->dt, update->dt / dt_bound);
+    utils::logmesg(lmp, mesg);
+  }
+  if (update->dt > dt_safety * dt_bound && comm->me == 0)
+    error->warning(FLERR, "Pair bbpd/{}: timestep {:.6g} exceeds {} x the stable bound {:.6g}; "
+                   "the run may blow up: reduce the timestep", kernel.name, update->dt, dt_safety,
+                   dt_bound);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairBBPD::write_restart_settings(FILE *fp)
+{
+  int m = static_cast<int>(model);
+  fwrite(&m, sizeof(int), 1, fp);
+  fwrite(&geom, sizeof(double), 1, fp);
+  fwrite(&spacing, sizeof(double), 1, fp);
+  fwrite(&spacing_user, sizeof(int), 1, fp);
+  fwrite(&dt_safety, sizeof(double), 1, fp);
+}
+
+void PairBBPD::read_restart_settings(FILE *fp)
+{
+  int m = 0;
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &m, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &geom, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &spacing, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &spacing_user, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &dt_safety, sizeof(double), 1, fp, nullptr, error);
+  }
+  MPI_Bcast(&m, 1, MPI_INT, 0, world);
+  MPI_Bcast(&geom, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&spacing, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&spacing_user, 1, MPI_INT, 0, world);
+  MPI_Bcast(&dt_safety, 1, MPI_DOUBLE, 0, world);
+  model = static_cast<BBPD::Model>(m);
+}
+
+void PairBBPD::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (setflag[i][j]) {
+        fwrite(&youngs[i][j], sizeof(double), 1, fp);
+        fwrite(&fracture_energy[i][j], sizeof(double), 1, fp);
+        fwrite(&horizon[i][j], sizeof(double), 1, fp);
+        fwrite(&micromodulus[i][j], sizeof(double), 1, fp);
+        fwrite(&critical_stretch[i][j], sizeof(double), 1, fp);
+        fwrite(&s0_user[i][j], sizeof(int), 1, fp);
+      }
+    }
+}
+
+void PairBBPD::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  const int me = comm->me;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (!setflag[i][j]) continue;
+      double v[5];
+      if (me == 0) {
+        utils::sfread(FLERR, v, sizeof(double), 5, fp, nullptr, error);
+        utils::sfread(FLERR, &s0_user[i][j], sizeof(int), 1, fp, nullptr, error);
+      }
+      MPI_Bcast(v, 5, MPI_DOUBLE, 0, world);
+      MPI_Bcast(&s0_user[i][j], 1, MPI_INT, 0, world);
+      youngs[i][j] = v[0];
+      fracture_energy[i][j] = v[1];
+      horizon[i][j] = v[2];
+      micromodulus[i][j] = v[3];
+      critical_stretch[i][j] = v[4];
+    }
+}
+
+double PairBBPD::memory_usage()
+{
+  const int n = atom->ntypes + 1;
+  return Pair::memory_usage() + 6.0 * n * n * sizeof(double);
+}
+
+/* extract: "dt_bound" (velocity-Verlet stable step), "dt_bound_paper" (eq. 25) */
+void *PairBBPD::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (strcmp(name, "dt_bound") == 0) return (void *) &dt_bound;
+  if (strcmp(name, "dt_bound_paper") == 0) return (void *) &dt_bound_paper;
+  dim = 2;
+  if (strcmp(name, "micromodulus") == 0) return (void *) micromodulus;
+  if (strcmp(name, "critical_stretch") == 0) return (void *) critical_stretch;
+  if (strcmp(name, "horizon") == 0) return (void *) horizon;
+  return nullptr;
+}

@@ -1,0 +1,61 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   BBPD plugin: kernel-weighted bond-based peridynamics pair styles
+   bbpd/constant, bbpd/triangular, bbpd/gaussian (one class, the kernel is a
+   constructor parameter). Bouaraquia & Mabssout (2026), eqs. 6-9, 19, 21-22.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_PAIR_BBPD_H
+#define LMP_PAIR_BBPD_H
+
+#include "bbpd_kernel.h"
+#include "pair.h"
+
+namespace LAMMPS_NS {
+
+class PairBBPD : public Pair {
+ public:
+  PairBBPD(class LAMMPS *, BBPD::KernelInfo);
+  ~PairBBPD() override;
+
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  double memory_usage() override;
+  void *extract(const char *, int &) override;
+
+  // bond parameters for the bond-family fix
+  double family_cutoff(int itype, int jtype) const { return horizon[itype][jtype] + 0.5 * spacing; }
+  void bond_params(int itype, int jtype, double xi0, double vj, double &coef, double &rbreak2,
+                   double &cvv) const;
+  double grid_spacing_of(double vfrac) const;
+  bool fracture() const { return fracture_any; }
+  void report(class FixBBPDBonds *);
+
+  const BBPD::KernelInfo kernel;
+  BBPD::Model model;
+  double geom;       // thickness h (2D) or cross-section area A (1D); 1 in 3D
+  double spacing;    // grid spacing used in the partial-volume correction (eq. 19)
+  double dt_safety;  // warn when timestep > dt_safety * stable bound
+
+ protected:
+  int spacing_user;    // 1 if the spacing keyword was given
+  int fracture_any;    // any type pair with finite critical stretch
+  double **youngs, **fracture_energy, **horizon, **micromodulus, **critical_stretch;
+  int **s0_user;       // 1 if critical_stretch was given directly
+  class FixBBPDBonds *bonds;
+  double dt_bound_paper, dt_bound;    // eq. 25 and with the factor 2 (velocity Verlet limit)
+
+  void allocate();
+  template <int EVFLAG, int FRACTURE> void eval();
+  void coeff_from_file(const char *file, const char *material, double &E, double &Gc);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

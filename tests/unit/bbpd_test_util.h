@@ -1,0 +1,46 @@
+/* Shared helpers for the BBPD unit tests. */
+
+#ifndef BBPD_TEST_UTIL_H
+#define BBPD_TEST_UTIL_H
+
+#include "bbpd_kernel.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace BBPD::test {
+
+// relative agreement |a - b| <= tol |b|
+inline ::testing::AssertionResult rel_near(double a, double b, double tol)
+{
+  const double err = std::fabs(a - b) / std::fabs(b);
+  if (err <= tol) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << a << " vs " << b << ": relative error " << err
+                                       << " > " << tol;
+}
+
+inline std::vector<std::string> kernel_names()
+{
+  return {ConstantKernel::name, TriangularKernel::name, GaussianKernel::name};
+}
+
+inline std::vector<Model> all_models()
+{
+  return {Model::Bar1D, Model::PlaneStress, Model::PlaneStrain, Model::Solid3D};
+}
+
+// gtest-safe suffix: "plane/stress" -> "plane_stress"
+inline std::string test_label(const std::string &s)
+{
+  std::string out = s;
+  for (char &c : out)
+    if (c == '/') c = '_';
+  return out;
+}
+
+}    // namespace BBPD::test
+
+#endif
