@@ -7,14 +7,16 @@
 #include "atom.h"
 #include "error.h"
 #include "fix_bbpd_bonds.h"
+#include "force.h"
 #include "memory.h"
 #include "modify.h"
+#include "pair_bbpd.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
 
 ComputeBBPDDamageAtom::ComputeBBPDDamageAtom(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), nmax(0), damage(nullptr), bonds(nullptr)
+    Compute(lmp, narg, arg), nmax(0), damage(nullptr), bonds(nullptr), pair(nullptr)
 {
   if (narg != 3) error->all(FLERR, "Illegal compute bbpd/damage/atom command: it takes no arguments");
   peratom_flag = 1;
@@ -29,7 +31,8 @@ ComputeBBPDDamageAtom::~ComputeBBPDDamageAtom()
 void ComputeBBPDDamageAtom::init()
 {
   bonds = dynamic_cast<FixBBPDBonds *>(modify->get_fix_by_id("BBPD_BONDS"));
-  if (!bonds) error->all(FLERR, "Compute bbpd/damage/atom requires a bbpd/* pair style");
+  pair = dynamic_cast<PairBBPD *>(force->pair_match("^bbpd/", 0));
+  if (!bonds || !pair) error->all(FLERR, "Compute bbpd/damage/atom requires a bbpd/* pair style");
 }
 
 void ComputeBBPDDamageAtom::compute_peratom()
@@ -42,12 +45,16 @@ void ComputeBBPDDamageAtom::compute_peratom()
     vector_atom = damage;
   }
   const int *mask = atom->mask;
+  const int *type = atom->type;
+  const double *vfrac = atom->vfrac;
   for (int i = 0; i < atom->nlocal; i++) {
     damage[i] = 0.0;
     if (!(mask[i] & groupbit) || !bonds->families_built() || bonds->vinit[i] <= 0.0) continue;
     double intact = 0.0;
-    for (int k = 0; k < bonds->npartner[i]; k++)
-      if (bonds->jlocal[i][k] >= 0) intact += bonds->cvv[i][k];
+    for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + bonds->nbond[i]; k++) {
+      const int j = bonds->bj[k];
+      intact += pair->bond_volume(type[i], type[j], bonds->bxi0[k], vfrac[j]);
+    }
     damage[i] = 1.0 - intact / bonds->vinit[i];
   }
 }

@@ -22,6 +22,7 @@ class ComputeBBPDDamageAtom : public Compute {
   int nmax;
   double *damage;
   class FixBBPDBonds *bonds;
+  class PairBBPD *pair;
 };
 
 }    // namespace LAMMPS_NS

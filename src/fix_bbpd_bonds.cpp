@@ -25,8 +25,8 @@ using namespace FixConst;
 
 FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxpartner(1), npartner(nullptr), partner(nullptr), vinit(nullptr),
-    jlocal(nullptr), xi0(nullptr), coef(nullptr), rbreak2(nullptr), cvv(nullptr), first(1),
-    nmax_cache(0), list(nullptr), pair(nullptr)
+    bond_start(nullptr), nbond(nullptr), bj(nullptr), bxi0(nullptr), bcoef(nullptr), first(1),
+    nlocal_cache(0), nbond_cache(0), list(nullptr), pair(nullptr)
 {
   if (narg != 3) error->all(FLERR, "Fix bbpd/bonds takes no arguments (it is created by the pair style)");
   restart_global = 1;
@@ -49,11 +49,11 @@ FixBBPDBonds::~FixBBPDBonds()
   memory->destroy(npartner);
   memory->destroy(partner);
   memory->destroy(vinit);
-  memory->destroy(jlocal);
-  memory->destroy(xi0);
-  memory->destroy(coef);
-  memory->destroy(rbreak2);
-  memory->destroy(cvv);
+  memory->destroy(bond_start);
+  memory->destroy(nbond);
+  memory->destroy(bj);
+  memory->destroy(bxi0);
+  memory->destroy(bcoef);
 }
 
 int FixBBPDBonds::setmask()
@@ -118,7 +118,6 @@ void FixBBPDBonds::build_families()
   memory->destroy(partner);
   partner = nullptr;
   grow_arrays(atom->nmax);
-  nmax_cache = 0;    // the cache's row length changed
 
   for (int i = 0; i < nlocal; i++) npartner[i] = 0;
   for (int ii = 0; ii < list->inum; ii++) {
@@ -137,30 +136,39 @@ void FixBBPDBonds::build_families()
   refresh_cache();
   for (int i = 0; i < nlocal; i++) {
     vinit[i] = 0.0;
-    for (int k = 0; k < npartner[i]; k++) vinit[i] += cvv[i][k];
+    for (int k = bond_start[i]; k < bond_start[i] + nbond[i]; k++)
+      vinit[i] += pair->bond_volume(type[i], type[bj[k]], bxi0[k], atom->vfrac[bj[k]]);
   }
-}
-
-void FixBBPDBonds::grow_cache()
-{
-  nmax_cache = atom->nmax;
-  memory->destroy(jlocal);
-  memory->destroy(xi0);
-  memory->destroy(coef);
-  memory->destroy(rbreak2);
-  memory->destroy(cvv);
-  memory->create(jlocal, nmax_cache, maxpartner, "bbpd/bonds:jlocal");
-  memory->create(xi0, nmax_cache, maxpartner, "bbpd/bonds:xi0");
-  memory->create(coef, nmax_cache, maxpartner, "bbpd/bonds:coef");
-  memory->create(rbreak2, nmax_cache, maxpartner, "bbpd/bonds:rbreak2");
-  memory->create(cvv, nmax_cache, maxpartner, "bbpd/bonds:cvv");
 }
 
 /* local indices and bond coefficients after every reneighboring */
 void FixBBPDBonds::refresh_cache()
 {
   if (first) return;
-  if (nmax_cache < atom->nmax) grow_cache();
+  const int nlocal = atom->nlocal;
+  if (nlocal_cache < nlocal + 1) {
+    nlocal_cache = atom->nmax + 1;
+    memory->destroy(bond_start);
+    memory->destroy(nbond);
+    memory->create(bond_start, nlocal_cache, "bbpd/bonds:bond_start");
+    memory->create(nbond, nlocal_cache, "bbpd/bonds:nbond");
+  }
+  int n = 0;
+  for (int i = 0; i < nlocal; i++) {
+    bond_start[i] = n;
+    for (int k = 0; k < npartner[i]; k++) n += partner[i][k] > 0;
+  }
+  bond_start[nlocal] = n;
+  if (nbond_cache < n) {
+    nbond_cache = n + n / 8;    // headroom: migration changes the count a little
+    memory->destroy(bj);
+    memory->destroy(bxi0);
+    memory->destroy(bcoef);
+    memory->create(bj, nbond_cache, "bbpd/bonds:bj");
+    memory->create(bxi0, nbond_cache, "bbpd/bonds:bxi0");
+    memory->create(bcoef, nbond_cache, "bbpd/bonds:bcoef");
+  }
+
   double **x0 = atom->x0;
   double **x = atom->x;
   double *vfrac = atom->vfrac;
@@ -168,15 +176,11 @@ void FixBBPDBonds::refresh_cache()
   tagint *tag = atom->tag;
   const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
 
-  for (int i = 0; i < atom->nlocal; i++) {
+  for (int i = 0; i < nlocal; i++) {
+    int m = bond_start[i];
     for (int k = 0; k < npartner[i]; k++) {
       const tagint t = partner[i][k];
-      if (t <= 0) {
-        jlocal[i][k] = -1;
-        xi0[i][k] = coef[i][k] = cvv[i][k] = 0.0;
-        rbreak2[i][k] = 0.0;
-        continue;
-      }
+      if (t <= 0) continue;
       int j = atom->map(t);
       if (j < 0)
         error->one(FLERR, "Bond partner {} of atom {} is neither a local nor a ghost atom: "
@@ -189,11 +193,45 @@ void FixBBPDBonds::refresh_cache()
       if (xi <= 0.0)
         error->one(FLERR, "Atoms {} and {} share a reference position: bonds need distinct atoms",
                    tag[i], t);
-      jlocal[i][k] = j;
-      xi0[i][k] = xi;
-      pair->bond_params(type[i], type[j], xi, vfrac[j], coef[i][k], rbreak2[i][k], cvv[i][k]);
+      bj[m] = j;
+      bxi0[m] = xi;
+      bcoef[m] = pair->bond_coef(type[i], type[j], xi, vfrac[j]);
+      m++;
     }
+    nbond[i] = m - bond_start[i];
   }
+}
+
+/* break bond k of local atom i: flag its partner tag, then close the gap in the row */
+void FixBBPDBonds::remove_bond(int i, int k)
+{
+  const tagint t = atom->tag[bj[k]];
+  tagint *p = partner[i];
+  // partners are sorted by tag and a broken one keeps its tag's magnitude
+  int lo = 0, hi = npartner[i] - 1;
+  while (lo <= hi) {
+    const int mid = (lo + hi) / 2;
+    const tagint v = p[mid] < 0 ? -p[mid] : p[mid];
+    if (v == t) {
+      p[mid] = -t;
+      break;
+    }
+    if (v < t) lo = mid + 1;
+    else hi = mid - 1;
+  }
+  const int last = bond_start[i] + nbond[i] - 1;
+  for (int m = k; m < last; m++) {
+    bj[m] = bj[m + 1];
+    bxi0[m] = bxi0[m + 1];
+    bcoef[m] = bcoef[m + 1];
+  }
+  nbond[i]--;
+}
+
+double FixBBPDBonds::bytes_per_bond() const
+{
+  // per bond end: partner tag (persistent) + bj + bxi0 + bcoef (cache); two ends per bond
+  return 2.0 * (sizeof(tagint) + sizeof(int) + 2.0 * sizeof(double));
 }
 
 void FixBBPDBonds::apply_notches()
@@ -219,7 +257,8 @@ double FixBBPDBonds::memory_usage()
   const double nmax = atom->nmax;
   double bytes = nmax * (sizeof(int) + sizeof(double));
   bytes += nmax * maxpartner * sizeof(tagint);
-  bytes += (double) nmax_cache * maxpartner * (sizeof(int) + 4.0 * sizeof(double));
+  bytes += 2.0 * nlocal_cache * sizeof(int);
+  bytes += (double) nbond_cache * (sizeof(int) + 2.0 * sizeof(double));
   return bytes;
 }
 
@@ -270,7 +309,6 @@ void FixBBPDBonds::restart(char *buf)
   auto *list = (double *) buf;
   first = static_cast<int>(list[0]);
   maxpartner = static_cast<int>(list[1]);
-  nmax_cache = 0;
   memory->destroy(partner);
   partner = nullptr;
   grow_arrays(atom->nmax);

@@ -6,12 +6,14 @@
      npartner[i]       number of bonds the atom started with
      partner[i][k]     tag of partner k, sorted ascending; negative = broken
      vinit[i]          sum of C_v V_j over the initial family (damage, eq. 17)
-   Cached per bond, rebuilt only when LAMMPS reneighbors (post_neighbor):
-     jlocal[i][k]      local/ghost index of the partner (-1 if broken)
-     xi0[i][k]         reference bond length |x0_j - x0_i|
-     coef[i][k]        c(xi0) C_v V_j / xi0: force density per unit elongation
-     rbreak2[i][k]     ((1 + s0) xi0)^2: squared length at which the bond breaks
-     cvv[i][k]         C_v V_j: partner volume inside the horizon
+   Cached per intact bond, rebuilt only when LAMMPS reneighbors (post_neighbor),
+   one flat structure-of-arrays row per local atom, partners in tag order:
+     bond_start[i], nbond[i]  first entry and number of intact bonds of atom i
+     bj[k]                   local/ghost index of the partner
+     bxi0[k]                 reference bond length |x0_j - x0_i|
+     bcoef[k]                c(xi0) C_v V_j / xi0: force density per unit elongation
+   A bond that breaks is removed from its row at once (the row shifts), so the
+   force loop has no per-bond branch.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_BBPD_BONDS_H
@@ -32,7 +34,7 @@ class FixBBPDBonds : public Fix {
   void init_list(int, class NeighList *) override;
   void setup_post_neighbor() override;
   void post_neighbor() override;
-  void min_setup_post_neighbor() { setup_post_neighbor(); }
+  void min_post_neighbor() override { post_neighbor(); }
 
   double memory_usage() override;
   void grow_arrays(int) override;
@@ -52,19 +54,16 @@ class FixBBPDBonds : public Fix {
   int *npartner;
   tagint **partner;
   double *vinit;
-  int **jlocal;
-  double **xi0, **coef, **rbreak2, **cvv;
+  int *bond_start, *nbond, *bj;
+  double *bxi0, *bcoef;
 
-  void break_bond(int i, int k)
-  {
-    if (partner[i][k] > 0) partner[i][k] = -partner[i][k];
-    jlocal[i][k] = -1;
-  }
+  void remove_bond(int i, int k);
   bigint count_broken() const;
+  double bytes_per_bond() const;
 
  protected:
   int first;    // 1 until bond families exist
-  int nmax_cache;
+  int nlocal_cache, nbond_cache;    // allocated sizes of the per-atom and per-bond cache
   class NeighList *list;
   PairBBPD *pair;
 
@@ -72,7 +71,6 @@ class FixBBPDBonds : public Fix {
   void refresh_cache();
   void apply_notches();
   void report_setup();
-  void grow_cache();
 };
 
 }    // namespace LAMMPS_NS

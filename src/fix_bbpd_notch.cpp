@@ -116,16 +116,18 @@ void FixBBPDNotch::cut_bonds(FixBBPDBonds *bonds)
   const int dim = domain->dimension;
   bigint n = 0;
   for (int i = 0; i < atom->nlocal; i++) {
-    for (int k = 0; k < bonds->npartner[i]; k++) {
-      const int j = bonds->jlocal[i][k];
-      if (j < 0) continue;
-      if (!(mask[i] & groupbit) && !(mask[j] & groupbit)) continue;
-      for (const auto &c : cuts) {
-        if (crosses(c, x0[i], x0[j], dim)) {
-          bonds->break_bond(i, k);
-          n++;
-          break;
-        }
+    int k = bonds->bond_start[i];
+    while (k < bonds->bond_start[i] + bonds->nbond[i]) {
+      const int j = bonds->bj[k];
+      bool cut = false;
+      if ((mask[i] & groupbit) || (mask[j] & groupbit))
+        for (const auto &c : cuts)
+          if ((cut = crosses(c, x0[i], x0[j], dim))) break;
+      if (cut) {
+        bonds->remove_bond(i, k);
+        n++;
+      } else {
+        k++;
       }
     }
   }

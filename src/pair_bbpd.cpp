@@ -36,7 +36,8 @@ PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k) :
     Pair(lmp), kernel(k), model(BBPD::Model::Solid3D), geom(1.0), spacing(0.0),
     dt_safety(DT_SAFETY_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
     fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
-    s0_user(nullptr), bonds(nullptr), dt_bound_paper(0.0), dt_bound(0.0)
+    s0_user(nullptr), bonds(nullptr), dt_bound_paper(0.0), dt_bound(0.0), multi_s0(0),
+    s0_single(0.0)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -255,9 +256,13 @@ void PairBBPD::init_style()
                    style, horizon[i][j], i, j, spacing);
 
   fracture_any = 0;
+  multi_s0 = 0;
+  s0_single = critical_stretch[1][1];
   for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++)
+    for (int j = i; j <= atom->ntypes; j++) {
       if (setflag[i][j] && std::isfinite(critical_stretch[i][j])) fracture_any = 1;
+      if (setflag[i][j] && critical_stretch[i][j] != s0_single) multi_s0 = 1;
+    }
 
   bonds = dynamic_cast<FixBBPDBonds *>(modify->get_fix_by_id(BONDS_FIX_ID));
   if (!bonds)
@@ -280,17 +285,17 @@ double PairBBPD::init_one(int i, int j)
   return family_cutoff(i, j);
 }
 
-/* coefficients of one bond, from its reference length and the partner's volume */
-void PairBBPD::bond_params(int itype, int jtype, double xi, double vj, double &coef, double &rbreak2,
-                           double &cvv) const
+/* force density per unit elongation of one bond: c(xi0) C_v V_j / xi0 (eqs. 9, 19, 21) */
+double PairBBPD::bond_coef(int itype, int jtype, double xi, double vj) const
 {
   const double delta = horizon[itype][jtype];
-  cvv = BBPD::partial_volume(xi, delta, spacing) * vj;
-  const double c = micromodulus[itype][jtype] * kernel.shape(xi / delta);
-  coef = c * cvv / xi;
-  const double s0 = critical_stretch[itype][jtype];
-  rbreak2 = std::isfinite(s0) ? (1.0 + s0) * (1.0 + s0) * xi * xi
-                              : std::numeric_limits<double>::infinity();
+  return micromodulus[itype][jtype] * kernel.shape(xi / delta) * bond_volume(itype, jtype, xi, vj) / xi;
+}
+
+/* partner volume inside the horizon, C_v V_j (eq. 19) */
+double PairBBPD::bond_volume(int itype, int jtype, double xi, double vj) const
+{
+  return BBPD::partial_volume(xi, horizon[itype][jtype], spacing) * vj;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -299,65 +304,113 @@ void PairBBPD::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (!bonds || !bonds->families_built()) return;
-  if (evflag) {
-    if (fracture_any) eval<1, 1>();
-    else eval<1, 0>();
+  if (!fracture_any) {
+    if (evflag) eval<1, 0, 0>();
+    else eval<0, 0, 0>();
+  } else if (!multi_s0) {
+    if (evflag) eval<1, 1, 0>();
+    else eval<0, 1, 0>();
   } else {
-    if (fracture_any) eval<0, 1>();
-    else eval<0, 0>();
+    if (evflag) eval<1, 1, 1>();
+    else eval<0, 1, 1>();
   }
 }
 
-template <int EVFLAG, int FRACTURE> void PairBBPD::eval()
+template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
 {
-  double **x = atom->x;
   double **f = atom->f;
+  const double *xx = atom->x[0];
+  const int *type = atom->type;
   const int nlocal = atom->nlocal;
-  const int *npartner = bonds->npartner;
-  int **jlocal = bonds->jlocal;
-  double **xi0 = bonds->xi0;
-  double **coef = bonds->coef;
-  double **rbreak2 = bonds->rbreak2;
-
   for (int i = 0; i < nlocal; i++) {
-    const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
-    double fx = 0.0, fy = 0.0, fz = 0.0;
-    const int n = npartner[i];
-    const int *jl = jlocal[i];
-    for (int k = 0; k < n; k++) {
-      const int j = jl[k];
-      if (j < 0) continue;
-      const double dx = x[j][0] - xi, dy = x[j][1] - yi, dz = x[j][2] - zi;
-      const double rsq = dx * dx + dy * dy + dz * dz;
-      if (FRACTURE && rsq > rbreak2[i][k]) {
-        bonds->break_bond(i, k);
-        continue;
+    const double *s0row = MULTI ? critical_stretch[type[i]] : nullptr;
+    double fi[3];
+    if (!FRACTURE) {
+      row_force<EVFLAG, 0, MULTI>(i, fi, s0row);
+    } else if (row_force<EVFLAG, 1, MULTI>(i, fi, s0row)) {
+      // a bond of the row is past its critical stretch: remove such bonds (irreversibly, in
+      // tag order), then sum the row again
+      int k = bonds->bond_start[i];
+      while (k < bonds->bond_start[i] + bonds->nbond[i]) {
+        const int j = bonds->bj[k];
+        const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
+                     dz = xx[3 * j + 2] - xx[3 * i + 2];
+        const double s0 = MULTI ? s0row[type[j]] : s0_single;
+        if (std::sqrt(dx * dx + dy * dy + dz * dz) - bonds->bxi0[k] > s0 * bonds->bxi0[k])
+          bonds->remove_bond(i, k);
+        else
+          k++;
       }
-      const double r = std::sqrt(rsq);
-      const double elong = r - xi0[i][k];
-      const double fbond = coef[i][k] * elong / r;
-      fx += fbond * dx;
-      fy += fbond * dy;
-      fz += fbond * dz;
-      if (EVFLAG) {
-        // half of the bond's micropotential (eq. 6) and virial: the other end tallies the rest
-        const double ebond = 0.25 * coef[i][k] * elong * elong;
-        if (eflag_global) eng_vdwl += ebond;
-        if (eflag_atom) eatom[i] += ebond;
-        if (vflag_either) {
-          const double v[6] = {0.5 * fbond * dx * dx, 0.5 * fbond * dy * dy, 0.5 * fbond * dz * dz,
-                               0.5 * fbond * dx * dy, 0.5 * fbond * dx * dz, 0.5 * fbond * dy * dz};
-          for (int m = 0; m < 6; m++) {
-            if (vflag_global) virial[m] += v[m];
-            if (vflag_atom) vatom[i][m] += v[m];
-          }
-        }
-      }
+      row_force<EVFLAG, 0, MULTI>(i, fi, s0row);
     }
-    f[i][0] += fx;
-    f[i][1] += fy;
-    f[i][2] += fz;
+    f[i][0] += fi[0];
+    f[i][1] += fi[1];
+    f[i][2] += fi[2];
   }
+}
+
+/* Force density on atom i from its intact bonds (eq. 21). The sum runs in
+   LANES fixed partial sums (bond k goes to lane k % LANES) combined in a fixed
+   order: the loop vectorises, and the result depends only on the row, never on
+   the domain decomposition. With FRACTURE it returns true, and tallies nothing,
+   if a bond of the row is past its critical stretch. */
+template <int EVFLAG, int FRACTURE, int MULTI>
+bool PairBBPD::row_force(int i, double *fi, const double *s0row)
+{
+  constexpr int LANES = 8;
+  const double *xx = atom->x[0];
+  const int *type = atom->type;
+  const int beg = bonds->bond_start[i], n = bonds->nbond[i];
+  const int *bj = bonds->bj + beg;
+  const double *bxi0 = bonds->bxi0 + beg;
+  const double *bcoef = bonds->bcoef + beg;
+  const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
+  const double s0 = s0_single;
+
+  double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
+  int broken = 0;
+  double eng = 0.0, vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+
+  auto bond = [&](int k, int l) {
+    const int j = bj[k];
+    const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
+    const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const double elong = r - bxi0[k];
+    if (FRACTURE) broken |= elong > (MULTI ? s0row[type[j]] : s0) * bxi0[k];
+    const double fbond = bcoef[k] * elong / r;
+    ax[l] += fbond * dx;
+    ay[l] += fbond * dy;
+    az[l] += fbond * dz;
+    if (EVFLAG) {
+      // half of the bond's micropotential (eq. 6) and virial: the other end tallies the rest
+      eng += 0.25 * bcoef[k] * elong * elong;
+      vir[0] += 0.5 * fbond * dx * dx;
+      vir[1] += 0.5 * fbond * dy * dy;
+      vir[2] += 0.5 * fbond * dz * dz;
+      vir[3] += 0.5 * fbond * dx * dy;
+      vir[4] += 0.5 * fbond * dx * dz;
+      vir[5] += 0.5 * fbond * dy * dz;
+    }
+  };
+  int k = 0;
+  for (; k + LANES <= n; k += LANES)
+#pragma GCC unroll 8
+    for (int l = 0; l < LANES; l++) bond(k + l, l);
+  for (int l = 0; k < n; k++, l++) bond(k, l);
+
+  if (FRACTURE && broken) return true;
+  fi[0] = ((ax[0] + ax[1]) + (ax[2] + ax[3])) + ((ax[4] + ax[5]) + (ax[6] + ax[7]));
+  fi[1] = ((ay[0] + ay[1]) + (ay[2] + ay[3])) + ((ay[4] + ay[5]) + (ay[6] + ay[7]));
+  fi[2] = ((az[0] + az[1]) + (az[2] + az[3])) + ((az[4] + az[5]) + (az[6] + az[7]));
+  if (EVFLAG) {
+    if (eflag_global) eng_vdwl += eng;
+    if (eflag_atom) eatom[i] += eng;
+    for (int m = 0; m < 6; m++) {
+      if (vflag_global) virial[m] += vir[m];
+      if (vflag_atom) vatom[i][m] += vir[m];
+    }
+  }
+  return false;
 }
 
 /* ----------------------------------------------------------------------
@@ -370,8 +423,7 @@ void PairBBPD::report(FixBBPDBonds *fb)
   double dtmin = std::numeric_limits<double>::infinity();
   for (int i = 0; i < atom->nlocal; i++) {
     double sum = 0.0;
-    for (int k = 0; k < fb->npartner[i]; k++)
-      if (fb->jlocal[i][k] >= 0) sum += fb->coef[i][k];
+    for (int k = fb->bond_start[i]; k < fb->bond_start[i] + fb->nbond[i]; k++) sum += fb->bcoef[k];
     if (sum > 0.0) dtmin = MIN(dtmin, BBPD::stable_timestep_paper(atom->rmass[i], sum));
   }
   MPI_Allreduce(&dtmin, &dt_bound_paper, 1, MPI_DOUBLE, MPI_MIN, world);
@@ -409,6 +461,8 @@ void PairBBPD::report(FixBBPDBonds *fb)
                         gmin, atom->natoms ? (double) gsum / atom->natoms : 0.0, gmax, gsum / 2,
                         nbroken / 2);
     mesg += fmt::format("  fracture: {}\n", fracture_any ? "on" : "off (elastic, no bond-failure checks)");
+    mesg += fmt::format("  bond storage: {:.1f} bytes per bond ({:.1f} per bond end)\n",
+                        fb->bytes_per_bond(), 0.5 * fb->bytes_per_bond());
     mesg += fmt::format("  stable timestep: eq. 25 {:.6g}, velocity-Verlet limit {:.6g}; "
                         "timestep = {:.6g} ({:.3g} of the limit)\n",
                         dt_bound_paper, dt_bound, update->dt, update->dt / dt_bound);

@@ -31,8 +31,8 @@ class PairBBPD : public Pair {
 
   // bond parameters for the bond-family fix
   double family_cutoff(int itype, int jtype) const { return horizon[itype][jtype] + 0.5 * spacing; }
-  void bond_params(int itype, int jtype, double xi0, double vj, double &coef, double &rbreak2,
-                   double &cvv) const;
+  double bond_coef(int itype, int jtype, double xi0, double vj) const;
+  double bond_volume(int itype, int jtype, double xi0, double vj) const;
   double grid_spacing_of(double vfrac) const;
   bool fracture() const { return fracture_any; }
   void report(class FixBBPDBonds *);
@@ -52,7 +52,11 @@ class PairBBPD : public Pair {
   double dt_bound_paper, dt_bound;    // eq. 25 and with the factor 2 (velocity Verlet limit)
 
   void allocate();
-  template <int EVFLAG, int FRACTURE> void eval();
+  int multi_s0;           // critical stretch differs between type pairs
+  double s0_single;       // the critical stretch when it does not
+  template <int EVFLAG, int FRACTURE, int MULTI> void eval();
+  template <int EVFLAG, int FRACTURE, int MULTI>
+  bool row_force(int i, double *fi, const double *s0row);
   void coeff_from_file(const char *file, const char *material, double &E, double &Gc);
 };
 

@@ -41,6 +41,9 @@ constexpr double NU_3D = 0.25;
 
 constexpr int GL_ORDER = 20;
 constexpr int PANELS = 4;
+// 2D crack integral: acos(z/xi) has a boundary layer of width ~z near xi = z
+// for small z; 32 panels bring the error from 1e-11 to 1e-15
+constexpr int CRACK_2D_PANELS = 32;
 
 const GaussLegendre &gl()
 {
@@ -183,9 +186,9 @@ double fracture_energy(const KernelInfo &k, Model m, double c0, double s0, doubl
           const double dxi_dt = 2.0 * (DELTA - z) * t;
           return w(xi) * xi * std::acos(std::min(1.0, z / xi)) * dxi_dt;
         };
-        return gl().integrate(inner, 0.0, 1.0, PANELS) * dz_du;
+        return gl().integrate(inner, 0.0, 1.0, CRACK_2D_PANELS) * dz_du;
       };
-      return 2.0 * geom * gl().integrate(outer, 0.0, 1.0, PANELS);
+      return 2.0 * geom * gl().integrate(outer, 0.0, 1.0, CRACK_2D_PANELS);
     }
     default: {
       auto outer = [&](double z) {
@@ -218,9 +221,11 @@ TEST_P(Calibration, IsotropicExpansionEnergy)
   EXPECT_TRUE(rel_near(energy_ratio(isotropic(model())), 1.0, TOL));
 }
 
-TEST_P(Calibration, PureShearEnergy)
+// a bar has no shear: this suite runs on the 2D and 3D models only
+class ShearCalibration : public Calibration {};
+
+TEST_P(ShearCalibration, PureShearEnergy)
 {
-  if (model() == Model::Bar1D) GTEST_SKIP() << "no shear in a bar";
   EXPECT_TRUE(rel_near(energy_ratio(pure_shear()), 1.0, TOL));
 }
 
@@ -236,13 +241,22 @@ TEST_P(Calibration, FractureEnergy)
   EXPECT_TRUE(rel_near(fracture_energy(kernel(), model(), c0(), s0, geom), GC, TOL));
 }
 
+std::string param_label(const ::testing::TestParamInfo<std::tuple<std::string, Model>> &info)
+{
+  return std::get<0>(info.param) + "_" +
+      BBPD::test::test_label(model_name(std::get<1>(info.param)));
+}
+
 INSTANTIATE_TEST_SUITE_P(AllKernelsModels, Calibration,
                          ::testing::Combine(::testing::ValuesIn(BBPD::test::kernel_names()),
                                             ::testing::ValuesIn(BBPD::test::all_models())),
-                         [](const auto &info) {
-                           return std::get<0>(info.param) + "_" +
-                               BBPD::test::test_label(model_name(std::get<1>(info.param)));
-                         });
+                         param_label);
+
+INSTANTIATE_TEST_SUITE_P(AllKernelsMultiD, ShearCalibration,
+                         ::testing::Combine(::testing::ValuesIn(BBPD::test::kernel_names()),
+                                            ::testing::Values(Model::PlaneStress,
+                                                              Model::PlaneStrain, Model::Solid3D)),
+                         param_label);
 
 // The Poisson ratios used above are the ones the header reports
 TEST(Calibration, ImpliedPoissonRatio)

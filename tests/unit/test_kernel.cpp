@@ -147,13 +147,15 @@ TEST(Kernel, ByName)
 TEST(PartialVolume, Eq19)
 {
   const double delta = 1.0, dx = 0.2;
-  EXPECT_DOUBLE_EQ(partial_volume(0.2, delta, dx), 1.0);
-  EXPECT_DOUBLE_EQ(partial_volume(0.9, delta, dx), 1.0);     // delta - dx/2
-  EXPECT_DOUBLE_EQ(partial_volume(0.95, delta, dx), 0.75);
-  EXPECT_DOUBLE_EQ(partial_volume(1.0, delta, dx), 0.5);     // cell centred on the horizon
-  EXPECT_DOUBLE_EQ(partial_volume(1.05, delta, dx), 0.25);
-  EXPECT_DOUBLE_EQ(partial_volume(1.1, delta, dx), 0.0);     // delta + dx/2
-  EXPECT_DOUBLE_EQ(partial_volume(2.0, delta, dx), 0.0);
+  constexpr double EPS = 1.0e-14;    // 0.95 etc. are not exact in binary
+  EXPECT_EQ(partial_volume(0.2, delta, dx), 1.0);
+  EXPECT_EQ(partial_volume(0.875, delta, dx), 1.0);
+  EXPECT_NEAR(partial_volume(0.95, delta, dx), 0.75, EPS);
+  EXPECT_NEAR(partial_volume(1.0, delta, dx), 0.5, EPS);    // cell centred on the horizon
+  EXPECT_NEAR(partial_volume(1.05, delta, dx), 0.25, EPS);
+  EXPECT_NEAR(partial_volume(1.0999, delta, dx), 0.0005, EPS);
+  EXPECT_EQ(partial_volume(1.125, delta, dx), 0.0);
+  EXPECT_EQ(partial_volume(2.0, delta, dx), 0.0);
 }
 
 /* ---------------------------------------------------------------------- */
