@@ -9,6 +9,7 @@
 ------------------------------------------------------------------------- */
 
 #include "pair_bbpd.h"
+#include "pair_bbpd_row.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -351,23 +352,31 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
 
 /* Force density on atom i from its intact bonds (eq. 21). The sum runs in
    LANES fixed partial sums (bond k goes to lane k % LANES) combined in a fixed
-   order: the loop vectorises, and the result depends only on the row, never on
-   the domain decomposition. With FRACTURE it returns true, and tallies nothing,
-   if a bond of the row is past its critical stretch. */
+   order, in the AVX-512 path and the portable path alike: the result depends
+   only on the row, never on the domain decomposition or on whether energy is
+   tallied. With FRACTURE it returns true, and tallies nothing, if a bond of the
+   row is past its critical stretch. */
 template <int EVFLAG, int FRACTURE, int MULTI>
 bool PairBBPD::row_force(int i, double *fi, const double *s0row)
 {
-  constexpr int LANES = 8;
   const double *xx = atom->x[0];
-  const int *type = atom->type;
   const int beg = bonds->bond_start[i], n = bonds->nbond[i];
   const int *bj = bonds->bj + beg;
   const double *bxi0 = bonds->bxi0 + beg;
   const double *bcoef = bonds->bcoef + beg;
+  double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
+
+#ifdef BBPD_AVX512
+  if (!EVFLAG && !MULTI) {
+    if (row_force_avx512<FRACTURE>(xx, i, bj, bxi0, bcoef, n, s0_single, ax, ay, az)) return true;
+    lane_sum(ax, ay, az, fi);
+    return false;
+  }
+#endif
+
+  const int *type = atom->type;
   const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
   const double s0 = s0_single;
-
-  double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
   int broken = 0;
   double eng = 0.0, vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 
@@ -392,16 +401,10 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row)
       vir[5] += 0.5 * fbond * dy * dz;
     }
   };
-  int k = 0;
-  for (; k + LANES <= n; k += LANES)
-#pragma GCC unroll 8
-    for (int l = 0; l < LANES; l++) bond(k + l, l);
-  for (int l = 0; k < n; k++, l++) bond(k, l);
+  for (int k = 0; k < n; k++) bond(k, k % LANES);
 
   if (FRACTURE && broken) return true;
-  fi[0] = ((ax[0] + ax[1]) + (ax[2] + ax[3])) + ((ax[4] + ax[5]) + (ax[6] + ax[7]));
-  fi[1] = ((ay[0] + ay[1]) + (ay[2] + ay[3])) + ((ay[4] + ay[5]) + (ay[6] + ay[7]));
-  fi[2] = ((az[0] + az[1]) + (az[2] + az[3])) + ((az[4] + az[5]) + (az[6] + az[7]));
+  lane_sum(ax, ay, az, fi);
   if (EVFLAG) {
     if (eflag_global) eng_vdwl += eng;
     if (eflag_atom) eatom[i] += eng;

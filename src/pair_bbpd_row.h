@@ -1,0 +1,69 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   BBPD plugin: the innermost bond loop of the bbpd/* pair styles.
+
+   Bond k of a row goes to lane k % LANES; lanes are summed in one fixed order
+   (lane_sum). The AVX-512 kernel computes each bond with the same operations in
+   the same order as the portable loop in pair_bbpd.cpp (no FMA contraction), so
+   both give identical bits.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_PAIR_BBPD_ROW_H
+#define LMP_PAIR_BBPD_ROW_H
+
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+#define BBPD_AVX512
+#include <immintrin.h>
+#endif
+
+namespace LAMMPS_NS {
+
+constexpr int LANES = 8;    // one AVX-512 register of doubles
+
+inline void lane_sum(const double *ax, const double *ay, const double *az, double *f)
+{
+  f[0] = ((ax[0] + ax[1]) + (ax[2] + ax[3])) + ((ax[4] + ax[5]) + (ax[6] + ax[7]));
+  f[1] = ((ay[0] + ay[1]) + (ay[2] + ay[3])) + ((ay[4] + ay[5]) + (ay[6] + ay[7]));
+  f[2] = ((az[0] + az[1]) + (az[2] + az[3])) + ((az[4] + az[5]) + (az[6] + az[7]));
+}
+
+#ifdef BBPD_AVX512
+/* lanes of the force density on atom i from n bonds (partner bj, reference length
+   bxi0, coefficient bcoef); with FRACTURE returns true if a bond is past s0 */
+template <int FRACTURE>
+inline bool row_force_avx512(const double *xx, int i, const int *bj, const double *bxi0,
+                             const double *bcoef, int n, double s0, double *ax, double *ay,
+                             double *az)
+{
+  const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
+                zi = _mm512_set1_pd(xx[3 * i + 2]), vs0 = _mm512_set1_pd(s0);
+  const __m256i three = _mm256_set1_epi32(3);
+  __m512d fx = _mm512_setzero_pd(), fy = fx, fz = fx;
+  __mmask8 broken = 0;
+  for (int k = 0; k < n; k += LANES) {
+    const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
+    const __m256i j3 = _mm256_mullo_epi32(_mm256_maskz_loadu_epi32(m, bj + k), three);
+    const __m512d dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(xi, m, j3, xx, 8), xi);
+    const __m512d dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(yi, m, j3, xx + 1, 8), yi);
+    const __m512d dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(zi, m, j3, xx + 2, 8), zi);
+    const __m512d rsq =
+        _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
+    const __m512d r = _mm512_sqrt_pd(rsq);
+    const __m512d xi0 = _mm512_maskz_loadu_pd(m, bxi0 + k);
+    const __m512d elong = _mm512_sub_pd(r, xi0);
+    if (FRACTURE) broken |= _mm512_mask_cmp_pd_mask(m, elong, _mm512_mul_pd(vs0, xi0), _CMP_GT_OQ);
+    const __m512d fbond = _mm512_maskz_div_pd(m, _mm512_mul_pd(_mm512_maskz_loadu_pd(m, bcoef + k), elong), r);
+    fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fbond, dx));
+    fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fbond, dy));
+    fz = _mm512_mask_add_pd(fz, m, fz, _mm512_mul_pd(fbond, dz));
+  }
+  if (FRACTURE && broken) return true;
+  _mm512_storeu_pd(ax, fx);
+  _mm512_storeu_pd(ay, fy);
+  _mm512_storeu_pd(az, fz);
+  return false;
+}
+#endif
+
+}    // namespace LAMMPS_NS
+
+#endif
