@@ -110,10 +110,11 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--steps", type=int, default=200)
     ap.add_argument("--nprocs", type=int, default=1)
-    ap.add_argument("--scenes", default="plate,block,kernels")
+    ap.add_argument("--scenes", default="plate,contact,kernels,block,mpi")
     args = ap.parse_args()
     scenes = args.scenes.split(",")
     rows = []
+    speedups = []
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         plate = {"nx": 200, "ny": 100}
@@ -121,6 +122,14 @@ def main():
             r_ours = run(PLATE, ours("constant", "plane/stress"), args.steps, args.nprocs, plate, tmp / "a")
             r_pmb = run(PLATE, pmb(r_ours["c0"]), args.steps, args.nprocs, plate, tmp / "b")
             rows.append(("plate 2D 20,301 atoms, contact off in ours", r_ours, r_pmb))
+        if "contact" in scenes:
+            r_ours = run(PLATE, ours("constant", "plane/stress", "contact yes"), args.steps, args.nprocs, plate, tmp / "e")
+            r_pmb = run(PLATE, pmb(r_ours["c0"]), args.steps, args.nprocs, plate, tmp / "f")
+            rows.append(("plate 2D, contact on in both", r_ours, r_pmb))
+        if "mpi" in scenes:
+            r1 = run(PLATE, ours("constant", "plane/stress"), args.steps, 1, plate, tmp / "g")
+            r2 = run(PLATE, ours("constant", "plane/stress"), args.steps, 2, plate, tmp / "h")
+            speedups.append(("plate 2D, bbpd/constant, 2 MPI ranks vs 1", r1, r2))
         if "kernels" in scenes:
             for k in ("triangular", "gaussian"):
                 r = run(PLATE, ours(k, "plane/stress"), args.steps, args.nprocs, plate, tmp / k)
@@ -144,6 +153,9 @@ def main():
         print(line)
         if b and b["bonds"] != a["bonds"]:
             print(f"  note: bond counts differ: ours {a['bonds']}, pmb {b['bonds']}")
+    for name, one, two in speedups:
+        print(f"{name}: {one['ms_per_step']:.3f} -> {two['ms_per_step']:.3f} ms/step, "
+              f"speed-up {one['ms_per_step'] / two['ms_per_step']:.2f}")
 
 
 if __name__ == "__main__":

@@ -3,6 +3,7 @@
 ------------------------------------------------------------------------- */
 
 #include "fix_bbpd_bonds.h"
+#include "bbpd_compat.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -15,6 +16,7 @@
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair_bbpd.h"
+#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,10 +25,14 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
+// an atom cloud this many times larger than the body at bond creation means the run has blown
+// up; stop before LAMMPS bins the exploded box (which can take all the memory)
+static constexpr double MAX_EXTENT_GROWTH = 1000.0;
+
 FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxpartner(1), npartner(nullptr), partner(nullptr), vinit(nullptr),
     bond_start(nullptr), nbond(nullptr), bj(nullptr), bxi0(nullptr), bcoef(nullptr), first(1),
-    nlocal_cache(0), nbond_cache(0), list(nullptr), pair(nullptr)
+    nlocal_cache(0), nbond_cache(0), list(nullptr), pair(nullptr), extent0(0.0)
 {
   if (narg != 3) error->all(FLERR, "Fix bbpd/bonds takes no arguments (it is created by the pair style)");
   restart_global = 1;
@@ -58,7 +64,7 @@ FixBBPDBonds::~FixBBPDBonds()
 
 int FixBBPDBonds::setmask()
 {
-  return POST_NEIGHBOR | MIN_POST_NEIGHBOR;
+  return POST_NEIGHBOR | MIN_POST_NEIGHBOR | PRE_EXCHANGE;
 }
 
 void FixBBPDBonds::init()
@@ -87,6 +93,34 @@ void FixBBPDBonds::setup_post_neighbor()
 void FixBBPDBonds::post_neighbor()
 {
   refresh_cache();
+}
+
+/* largest extent of the atoms (0 if none on any rank) */
+double FixBBPDBonds::local_extent()
+{
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300}, glo[3], ghi[3];
+  double **x = atom->x;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int m = 0; m < 3; m++) {
+      lo[m] = MIN(lo[m], x[i][m]);
+      hi[m] = MAX(hi[m], x[i][m]);
+    }
+  MPI_Allreduce(lo, glo, 3, MPI_DOUBLE, MPI_MIN, world);
+  MPI_Allreduce(hi, ghi, 3, MPI_DOUBLE, MPI_MAX, world);
+  double e = 0.0;
+  for (int m = 0; m < domain->dimension; m++) e = MAX(e, ghi[m] - glo[m]);
+  return e;
+}
+
+/* before atoms migrate (once per reneighboring): catch an exploding run */
+void FixBBPDBonds::pre_exchange()
+{
+  if (first || extent0 <= 0.0) return;
+  const double e = local_extent();
+  if (!(e <= MAX_EXTENT_GROWTH * extent0))
+    error->all(FLERR, "BBPD: the atoms spread over {:.3g} x the body's size at step {}: the run "
+               "is unstable; the timestep {:.6g} must stay below the stable bound printed at "
+               "setup", e / extent0, update->ntimestep, update->dt);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -133,6 +167,7 @@ void FixBBPDBonds::build_families()
                  "than two horizons", tag[i]);
   }
   first = 0;
+  extent0 = local_extent();
   refresh_cache();
   for (int i = 0; i < nlocal; i++) {
     vinit[i] = 0.0;
@@ -188,7 +223,7 @@ void FixBBPDBonds::refresh_cache()
                    "maximum bond elongation)", t, tag[i]);
       if (periodic) j = domain->closest_image(x[i], j);
       double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-      if (periodic) domain->minimum_image(FLERR, d);
+      if (periodic) BBPDCompat::minimum_image(domain, d);
       const double xi = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
       if (xi <= 0.0)
         error->one(FLERR, "Atoms {} and {} share a reference position: bonds need distinct atoms",

@@ -34,6 +34,7 @@ class FixBBPDBonds : public Fix {
   void init_list(int, class NeighList *) override;
   void setup_post_neighbor() override;
   void post_neighbor() override;
+  void pre_exchange() override;
   void min_post_neighbor() override { post_neighbor(); }
 
   double memory_usage() override;
@@ -66,6 +67,8 @@ class FixBBPDBonds : public Fix {
   int nlocal_cache, nbond_cache;    // allocated sizes of the per-atom and per-bond cache
   class NeighList *list;
   PairBBPD *pair;
+  double extent0;    // size of the body when the families were built
+  double local_extent();
 
   void build_families();
   void refresh_cache();

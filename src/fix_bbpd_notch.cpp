@@ -4,11 +4,14 @@
 
 #include "fix_bbpd_notch.h"
 
+#include "bbpd_compat.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "fix_bbpd_bonds.h"
+#include "force.h"
 
 #include <cmath>
 #include <cstring>
@@ -65,6 +68,8 @@ FixBBPDNotch::FixBBPDNotch(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
 void FixBBPDNotch::init()
 {
   if (!atom->peri_flag) error->all(FLERR, "Fix bbpd/notch requires atom_style peri");
+  if (!force->pair_match("^bbpd/", 0))
+    error->all(FLERR, "Fix bbpd/notch requires a bbpd/* pair style (it cuts their bonds)");
 }
 
 /* does the bond xa-xb cross the notch? points on the notch plane count as its positive side */
@@ -113,17 +118,29 @@ void FixBBPDNotch::cut_bonds(FixBBPDBonds *bonds)
 {
   double **x0 = atom->x0;
   int *mask = atom->mask;
+  const tagint *tag = atom->tag;
   const int dim = domain->dimension;
+  const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
   bigint n = 0;
+  // Both ends of a bond must agree: test it from its lower-tag end, and under periodic
+  // boundaries test both unwrapped copies (the notch may sit beside either end).
+  auto bond_cut = [&](int i, int j) {
+    const int lo = tag[i] < tag[j] ? i : j, hi = lo == i ? j : i;
+    double d[3] = {x0[hi][0] - x0[lo][0], x0[hi][1] - x0[lo][1], x0[hi][2] - x0[lo][2]};
+    if (periodic) BBPDCompat::minimum_image(domain, d);
+    const double a[3] = {x0[lo][0] + d[0], x0[lo][1] + d[1], x0[lo][2] + d[2]};
+    const double b[3] = {x0[hi][0] - d[0], x0[hi][1] - d[1], x0[hi][2] - d[2]};
+    for (const auto &c : cuts) {
+      if (crosses(c, x0[lo], a, dim)) return true;
+      if (periodic && crosses(c, b, x0[hi], dim)) return true;
+    }
+    return false;
+  };
   for (int i = 0; i < atom->nlocal; i++) {
     int k = bonds->bond_start[i];
     while (k < bonds->bond_start[i] + bonds->nbond[i]) {
       const int j = bonds->bj[k];
-      bool cut = false;
-      if ((mask[i] & groupbit) || (mask[j] & groupbit))
-        for (const auto &c : cuts)
-          if ((cut = crosses(c, x0[i], x0[j], dim))) break;
-      if (cut) {
+      if (((mask[i] & groupbit) || (mask[j] & groupbit)) && bond_cut(i, j)) {
         bonds->remove_bond(i, k);
         n++;
       } else {

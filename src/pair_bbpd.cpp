@@ -19,29 +19,43 @@
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
 #include "potential_file_reader.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <utility>
+#include <vector>
 
 using namespace LAMMPS_NS;
 
 static constexpr double DT_SAFETY_DEFAULT = 0.8;    // fraction of the stable bound before a warning
 static constexpr const char *BONDS_FIX_ID = "BBPD_BONDS";
+// short-range contact as in LAMMPS peri/pmb: distance 0.9 x grid spacing (Parks et al., Comput.
+// Phys. Commun. 179 (2008) 777) and stiffness 15 c0 (Silling, EMU theory manual, 2005, p. 18)
+static constexpr double CONTACT_FACTOR_DEFAULT = 0.9;
+static constexpr double CONTACT_STIFFNESS_FACTOR = 15.0;
 
 /* ---------------------------------------------------------------------- */
 
 PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k) :
     Pair(lmp), kernel(k), model(BBPD::Model::Solid3D), geom(1.0), spacing(0.0),
-    dt_safety(DT_SAFETY_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
+    dt_safety(DT_SAFETY_DEFAULT), contact(0), contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
     fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
     s0_user(nullptr), bonds(nullptr), dt_bound_paper(0.0), dt_bound(0.0), multi_s0(0),
     s0_single(0.0)
 {
   single_enable = 0;
   restartinfo = 1;
+  // pvector: stable time steps, for 'compute pair' and so for variables (e.g. timestep)
+  nextra = 2;
+  pvector = new double[nextra];
+  pvector[0] = pvector[1] = 0.0;
   one_coeff = 0;
   no_virial_fdotr_compute = 1;    // ghost forces are never set: tally the virial per bond
   manybody_flag = 1;              // bonds outlive the cutoff: no tail or shift logic applies
@@ -50,6 +64,7 @@ PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k) :
 PairBBPD::~PairBBPD()
 {
   if (copymode) return;
+  delete[] pvector;
   if (bonds && modify->get_fix_by_id(BONDS_FIX_ID)) modify->delete_fix(BONDS_FIX_ID);
   if (allocated) {
     memory->destroy(setflag);
@@ -105,11 +120,25 @@ void PairBBPD::settings(int narg, char **arg)
   geom = 0.0;
   spacing_user = 0;
   dt_safety = DT_SAFETY_DEFAULT;
+  contact = 0;
+  contact_factor = CONTACT_FACTOR_DEFAULT;
   while (iarg < narg) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "Pair style {}: keyword {} needs a value", style, key);
+    if (key == "contact") {
+      contact = utils::logical(FLERR, arg[iarg + 1], false, lmp);
+      iarg += 2;
+      continue;
+    }
     const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-    if (key == "thickness" || key == "area") {
+    if (key == "contact/distance") {
+      if (value <= 0.0 || value > 1.0)
+        error->all(FLERR, "Pair style {}: contact/distance must be in (0,1] (a fraction of the "
+                   "grid spacing)", style);
+      contact_factor = value;
+    } else if (key == "thickness" || key == "area") {
+      if (model == BBPD::Model::Solid3D)
+        error->all(FLERR, "Pair style {}: keyword {} does not apply to model 3d", style, key);
       if ((key == "thickness") != (BBPD::family_dimension(model) == 2))
         error->all(FLERR, "Pair style {}: keyword {} does not apply to model {} (thickness for "
                    "plane models, area for 1d)", style, key, m);
@@ -159,6 +188,9 @@ void PairBBPD::coeff(int narg, char **arg)
     if (strcmp(arg[3], "none") == 0) Gc = std::numeric_limits<double>::infinity();
     else Gc = utils::numeric(FLERR, arg[3], false, lmp);
   } else {
+    if (comm->me == 0 && utils::get_potential_file_path(arg[2]).empty())
+      error->one(FLERR, "Pair coeff for {}: '{}' is not a number (Young's modulus E) nor a "
+                 "readable potential file", style, arg[2]);
     coeff_from_file(arg[2], arg[3], E, Gc);
   }
   const double delta = utils::numeric(FLERR, arg[4], false, lmp);
@@ -202,11 +234,17 @@ void PairBBPD::coeff_from_file(const char *file, const char *material, double &E
     char *line;
     bool found = false;
     while ((line = reader.next_line(3))) {
+      const std::string text = utils::trim(line);
       ValueTokenizer values(line);
       if (values.next_string() != material) continue;
-      E = values.next_double();
-      const std::string g = values.next_string();
-      Gc = (g == "none") ? std::numeric_limits<double>::infinity() : utils::numeric(FLERR, g, false, lmp);
+      try {
+        E = values.next_double();
+        const std::string g = values.next_string();
+        Gc = (g == "none") ? std::numeric_limits<double>::infinity() : std::stod(g);
+      } catch (std::exception &e) {
+        error->one(FLERR, "Material {} in potential file {}: E and Gc must be numbers (Gc may be "
+                   "'none'), got '{}'", material, file, text);
+      }
       found = true;
       break;
     }
@@ -253,8 +291,10 @@ void PairBBPD::init_style()
     for (int j = i; j <= atom->ntypes; j++)
       if (setflag[i][j] && horizon[i][j] < spacing)
         error->all(FLERR, "Pair style {}: horizon {} for types {} {} is smaller than the grid "
-                   "spacing {}: use delta = m * spacing with m >= 1 (the paper uses m = 5)",
-                   style, horizon[i][j], i, j, spacing);
+                   "spacing {} ({}): use delta = m * spacing with m >= 1 (the paper uses m = 5)",
+                   style, horizon[i][j], i, j, spacing,
+                   spacing_user ? "given by the spacing keyword"
+                                : "derived from the atom volumes: check 'set ... volume' and thickness/area");
 
   fracture_any = 0;
   multi_s0 = 0;
@@ -270,6 +310,8 @@ void PairBBPD::init_style()
     bonds = dynamic_cast<FixBBPDBonds *>(
         modify->add_fix(std::string(BONDS_FIX_ID) + " all bbpd/bonds"));
   if (!bonds) error->all(FLERR, "Pair style {} could not create its bond-family fix", style);
+  // a neighbour list only when contact is asked for: bonds need none
+  if (contact) neighbor->add_request(this, NeighConst::REQ_FULL)->set_cutoff(contact_factor * spacing);
 }
 
 double PairBBPD::init_one(int i, int j)
@@ -315,6 +357,70 @@ void PairBBPD::compute(int eflag, int vflag)
     if (evflag) eval<1, 1, 1>();
     else eval<0, 1, 1>();
   }
+  if (contact) compute_contact();
+}
+
+/* is tag jtag an intact partner of local atom i? (partners sorted by tag) */
+bool PairBBPD::bonded(int i, tagint jtag) const
+{
+  const tagint *p = bonds->partner[i];
+  int lo = 0, hi = bonds->npartner[i] - 1;
+  while (lo <= hi) {
+    const int mid = (lo + hi) / 2;
+    const tagint v = p[mid] < 0 ? -p[mid] : p[mid];
+    if (v == jtag) return p[mid] > 0;
+    if (v < jtag) lo = mid + 1;
+    else hi = mid - 1;
+  }
+  return false;
+}
+
+/* repulsion between atoms closer than the contact distance that share no intact
+   bond; full list, so each atom sums its own contacts and ghosts get no force */
+void PairBBPD::compute_contact()
+{
+  double **x = atom->x;
+  double **f = atom->f;
+  const int *type = atom->type;
+  const tagint *tag = atom->tag;
+  const double *vfrac = atom->vfrac;
+  const double dc = contact_factor * spacing;
+  std::vector<std::pair<tagint, int>> close;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    close.clear();
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const double rsq = dx * dx + dy * dy + dz * dz;
+      if (rsq < dc * dc && rsq > 0.0 && !bonded(i, tag[j])) close.emplace_back(tag[j], j);
+    }
+    // sum in tag order: the neighbour-list order depends on the domain decomposition
+    std::sort(close.begin(), close.end());
+    for (const auto &c : close) {
+      const int j = c.second;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const int itype = type[i], jtype = type[j];
+      const double k = CONTACT_STIFFNESS_FACTOR * micromodulus[itype][jtype] * vfrac[j] / horizon[itype][jtype];
+      const double fpair = k * (dc - r) / r;
+      f[i][0] += fpair * dx;
+      f[i][1] += fpair * dy;
+      f[i][2] += fpair * dz;
+      if (evflag) {
+        const double e = 0.25 * k * (dc - r) * (dc - r);
+        if (eflag_global) eng_vdwl += e;
+        if (eflag_atom) eatom[i] += e;
+        const double v[6] = {0.5 * fpair * dx * dx, 0.5 * fpair * dy * dy, 0.5 * fpair * dz * dz,
+                             0.5 * fpair * dx * dy, 0.5 * fpair * dx * dz, 0.5 * fpair * dy * dz};
+        for (int m = 0; m < 6; m++) {
+          if (vflag_global) virial[m] += v[m];
+          if (vflag_atom) vatom[i][m] += v[m];
+        }
+      }
+    }
+  }
 }
 
 template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
@@ -344,10 +450,39 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
       }
       row_force<EVFLAG, 0, MULTI>(i, fi, s0row);
     }
+    // three compares per atom turn the first NaN/inf into an ERROR that names its cause
+    if (!std::isfinite(fi[0]) || !std::isfinite(fi[1]) || !std::isfinite(fi[2])) nonfinite_error(i);
     f[i][0] += fi[0];
     f[i][1] += fi[1];
     f[i][2] += fi[2];
   }
+}
+
+/* explain a non-finite force on atom i and stop */
+void PairBBPD::nonfinite_error(int i)
+{
+  const double *xx = atom->x[0];
+  const tagint *tag = atom->tag;
+  const std::string cause = fmt::format(
+      "timestep {:.6g} vs stable bound {:.6g}: reduce the timestep, or check the input for "
+      "atoms placed on top of each other", update->dt, dt_bound);
+  for (int m = 0; m < 3; m++)
+    if (!std::isfinite(xx[3 * i + m]))
+      error->one(FLERR, "Atom {} has a non-finite position at step {} (the run became unstable; {})",
+                 tag[i], update->ntimestep, cause);
+  for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + bonds->nbond[i]; k++) {
+    const int j = bonds->bj[k];
+    const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
+                 dz = xx[3 * j + 2] - xx[3 * i + 2];
+    const double rsq = dx * dx + dy * dy + dz * dz;
+    if (!std::isfinite(rsq))
+      error->one(FLERR, "Bond partner {} of atom {} has a non-finite position at step {} (the run "
+                 "became unstable; {})", tag[j], tag[i], update->ntimestep, cause);
+    if (rsq == 0.0)
+      error->one(FLERR, "Atoms {} and {} coincide at step {}: a bond of zero length has no "
+                 "direction ({})", tag[i], tag[j], update->ntimestep, cause);
+  }
+  error->one(FLERR, "Non-finite force on atom {} at step {} ({})", tag[i], update->ntimestep, cause);
 }
 
 /* Force density on atom i from its intact bonds (eq. 21). The sum runs in
@@ -431,6 +566,8 @@ void PairBBPD::report(FixBBPDBonds *fb)
   }
   MPI_Allreduce(&dtmin, &dt_bound_paper, 1, MPI_DOUBLE, MPI_MIN, world);
   dt_bound = dt_bound_paper * std::sqrt(2.0);
+  pvector[0] = dt_bound;
+  pvector[1] = dt_bound_paper;
 
   int nmin = INT_MAX, nmax = 0;
   bigint nsum = 0;
@@ -464,6 +601,8 @@ void PairBBPD::report(FixBBPDBonds *fb)
                         gmin, atom->natoms ? (double) gsum / atom->natoms : 0.0, gmax, gsum / 2,
                         nbroken / 2);
     mesg += fmt::format("  fracture: {}\n", fracture_any ? "on" : "off (elastic, no bond-failure checks)");
+    mesg += contact ? fmt::format("  contact: on, distance {:.6g}\n", contact_factor * spacing)
+                    : std::string("  contact: off (no neighbour list)\n");
     mesg += fmt::format("  bond storage: {:.1f} bytes per bond ({:.1f} per bond end)\n",
                         fb->bytes_per_bond(), 0.5 * fb->bytes_per_bond());
     mesg += fmt::format("  stable timestep: eq. 25 {:.6g}, velocity-Verlet limit {:.6g}; "
@@ -487,6 +626,8 @@ void PairBBPD::write_restart_settings(FILE *fp)
   fwrite(&spacing, sizeof(double), 1, fp);
   fwrite(&spacing_user, sizeof(int), 1, fp);
   fwrite(&dt_safety, sizeof(double), 1, fp);
+  fwrite(&contact, sizeof(int), 1, fp);
+  fwrite(&contact_factor, sizeof(double), 1, fp);
 }
 
 void PairBBPD::read_restart_settings(FILE *fp)
@@ -498,12 +639,16 @@ void PairBBPD::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &spacing, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &spacing_user, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &dt_safety, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &contact, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &contact_factor, sizeof(double), 1, fp, nullptr, error);
   }
   MPI_Bcast(&m, 1, MPI_INT, 0, world);
   MPI_Bcast(&geom, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&spacing, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&spacing_user, 1, MPI_INT, 0, world);
   MPI_Bcast(&dt_safety, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&contact, 1, MPI_INT, 0, world);
+  MPI_Bcast(&contact_factor, 1, MPI_DOUBLE, 0, world);
   model = static_cast<BBPD::Model>(m);
 }
 

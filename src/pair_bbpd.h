@@ -42,6 +42,8 @@ class PairBBPD : public Pair {
   double geom;       // thickness h (2D) or cross-section area A (1D); 1 in 3D
   double spacing;    // grid spacing used in the partial-volume correction (eq. 19)
   double dt_safety;  // warn when timestep > dt_safety * stable bound
+  int contact;       // short-range repulsion between non-bonded close atoms
+  double contact_factor;    // contact distance = contact_factor * spacing
 
  protected:
   int spacing_user;    // 1 if the spacing keyword was given
@@ -52,6 +54,9 @@ class PairBBPD : public Pair {
   double dt_bound_paper, dt_bound;    // eq. 25 and with the factor 2 (velocity Verlet limit)
 
   void allocate();
+  void compute_contact();
+  [[noreturn]] void nonfinite_error(int i);
+  bool bonded(int i, tagint jtag) const;
   int multi_s0;           // critical stretch differs between type pairs
   double s0_single;       // the critical stretch when it does not
   template <int EVFLAG, int FRACTURE, int MULTI> void eval();

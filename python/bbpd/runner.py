@@ -35,8 +35,8 @@ def run_lammps(script, workdir, nprocs=1, version=None, check=True, vars=None, t
     if "\n" in script or not Path(script).is_file():
         infile.write_text(script)
     else:
-        infile = Path(script).resolve()
-    cmd = [str(LMP), "-in", str(infile), "-log", log]
+        infile = Path(script)
+    cmd = [str(LMP), "-in", str(infile.resolve()), "-log", log]
     for k, v in (vars or {}).items():
         cmd += ["-var", str(k), str(v)]
     if nprocs > 1:
