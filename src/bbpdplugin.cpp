@@ -6,6 +6,7 @@
 
 #include "comm.h"
 #include "compute_bbpd_damage_atom.h"
+#include "compute_bbpd_dsif.h"
 #include "error.h"
 #include "fix_bbpd_bonds.h"
 #include "fix_bbpd_notch.h"
@@ -41,6 +42,10 @@ Fix *notch_creator(LAMMPS *lmp, int narg, char **arg)
 Compute *damage_creator(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputeBBPDDamageAtom(lmp, narg, arg);
+}
+Compute *dsif_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new ComputeBBPDDsif(lmp, narg, arg);
 }
 }    // namespace
 
@@ -94,5 +99,9 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "bbpd/damage/atom";
   plugin.info = "BBPD local damage (eq. 17) v" BBPD_VERSION;
   plugin.creator.v2 = (lammpsplugin_factory2 *) &damage_creator;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/dsif";
+  plugin.info = "BBPD dynamic stress intensity factors (eqs. 39-40) v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &dsif_creator;
   (*register_plugin)(&plugin, lmp);
 }

@@ -18,6 +18,10 @@
 
 using namespace LAMMPS_NS;
 
+// a bond through a notch's end point counts as cut: without this tolerance round-off decides,
+// and mirror-image notches would cut different bonds (relative to the notch's edge lengths)
+static constexpr double NOTCH_END_TOLERANCE = 1.0e-12;
+
 FixBBPDNotch::FixBBPDNotch(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), ncut(0)
 {
   const int dim = domain->dimension;
@@ -105,12 +109,13 @@ bool FixBBPDNotch::crosses(const Cut &c, const double *xa, const double *xb, int
   }
   if (dim == 2) {
     const double t = ad / aa;
-    return t >= 0.0 && t <= 1.0;
+    return t >= -NOTCH_END_TOLERANCE && t <= 1.0 + NOTCH_END_TOLERANCE;
   }
   const double det = aa * bb - ab * ab;
   const double t = (ad * bb - bd * ab) / det;
   const double w = (bd * aa - ad * ab) / det;
-  return t >= 0.0 && t <= 1.0 && w >= 0.0 && w <= 1.0;
+  return t >= -NOTCH_END_TOLERANCE && t <= 1.0 + NOTCH_END_TOLERANCE &&
+      w >= -NOTCH_END_TOLERANCE && w <= 1.0 + NOTCH_END_TOLERANCE;
 }
 
 /* break every intact bond crossing a notch; idempotent, so it is safe on every run setup */

@@ -1,0 +1,441 @@
+"""Kalthoff-Winkler impact benchmark (Bouaraquia & Mabssout 2026, sec. 4.2.3).
+
+Runs examples/kalthoff-winkler/in.kalthoff_winkler and measures, from its outputs only:
+
+initiation    first bond: first time step at which a bond with an end within delta of a
+              notch tip breaks (tips.dat: the damage summed over those atoms rises above its
+              value at t = 0, i.e. above what the notch cut); also the first break anywhere
+              in the plate, to show where fracture starts.
+              damage band: first time step at which an atom within delta of the tip, ahead of
+              it (x > tip x) on the outer side, reaches damage PHI_CRACK, i.e. the crack band
+              that a damage map shows has left the tip (before, those atoms have <= 0.12).
+crack path    at every damage snapshot (~1 us apart): crack atoms are those with damage
+              >= PHI_CRACK; the ones linked (8-neighbour grid links, <= 1.5 dx) to the notch
+              flanks form the notch's crack; the crack tip is its atom ahead of the notch tip
+              (x > tip x) on the outer side of the notch (away from the impacted strip, where
+              the experiment's cracks run) that is farthest from the notch tip.
+angle         direction of the principal axis of the crack atoms at the end whose distance
+              from the notch tip lies in FIT_RANGE, measured from the notch direction (+x)
+              towards the outer side (experiment: about 70 degrees).
+speed         slope of a least-squares line through crack length (tip distance from the notch
+              tip) against time, over the snapshots whose length lies in FIT_RANGE.
+symmetry      largest distance between the lower crack tip and the mirror image (about
+              y = Ly/2) of the upper one over all snapshots, and the largest damage difference
+              between mirror atoms at the end.
+far damage    atoms whose damage grew during the run and lie farther than delta + dx from
+              both notches and both crack paths, grouped into clusters (<= 1.5 dx links).
+              A cluster reaching the far edge (x > Lx - delta) is the far-edge crack opened by
+              the reflected impact wave (t_far_edge_us: first snapshot with new damage there);
+              anything else is reported as other far damage.
+
+Command line (from the repository root):
+  PYTHONPATH=python /usr/bin/python3 -m bbpd.benchmarks.kalthoff_winkler \
+      --kernels constant triangular gaussian --dx 2e-3 1e-3 --work /tmp/kw --figures DIR
+"""
+
+import argparse
+import json
+import math
+import re
+import time
+from pathlib import Path
+
+import numpy as np
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+from scipy.spatial import cKDTree
+
+from bbpd.runner import run_lammps
+
+ROOT = Path(__file__).resolve().parents[3]
+EXAMPLE = ROOT / "examples" / "kalthoff-winkler" / "in.kalthoff_winkler"
+KERNELS = ("constant", "triangular", "gaussian")
+
+# paper sec. 4.2.3: crack initiation times (us) and the experiment's crack angle
+PAPER_INITIATION_US = {"constant": 20.0, "triangular": 20.8, "gaussian": 21.7}
+EXPERIMENT_ANGLE_DEG = 70.0
+
+# damage of an atom next to a long straight cut is ~0.44 with m = 5 (half a spacing from the
+# cut), ~0.31 one row farther: 0.35 keeps the two rows that flank a crack
+PHI_CRACK = 0.35
+LINK = 1.5            # neighbour links in the crack graph, in grid spacings (8-neighbourhood)
+FIT_RANGE = (10.0e-3, 50.0e-3)   # crack length range for the angle and speed fits (m):
+                                 # beyond the tip's horizon at dx <= 2 mm, before the edge
+                                 # (a 70-degree crack meets y = 0 at a length of ~80 mm)
+
+
+# --------------------------------------------------------------------------- reading outputs
+
+def read_dump(path):
+    """Snapshots of a LAMMPS text dump: list of (step, {column: array})."""
+    snaps = []
+    with open(path) as f:
+        lines = f.read().splitlines()
+    i = 0
+    while i < len(lines):
+        if not lines[i].startswith("ITEM: TIMESTEP"):
+            i += 1
+            continue
+        step = int(lines[i + 1])
+        n = int(lines[i + 3])
+        cols = lines[i + 8].split()[2:]
+        body = " ".join(lines[i + 9:i + 9 + n])
+        data = np.fromstring(body, sep=" ").reshape(n, len(cols)) if n else np.zeros((0, len(cols)))
+        snaps.append((step, {c: data[:, k] for k, c in enumerate(cols)}))
+        i += 9 + n
+    return snaps
+
+
+def read_log(path):
+    """Run parameters printed by the input script and the pair style."""
+    text = Path(path).read_text()
+    m = re.search(r"^KW: kernel (\S+) dx (\S+) delta (\S+) dt (\S+) steps (\d+) plate (\S+) (\S+) "
+                  r"notch lines y = (\S+) (\S+) tip x = (\S+)", text, re.M)
+    if not m:
+        raise RuntimeError(f"{path}: no 'KW:' line; was it written by in.kalthoff_winkler?")
+    info = dict(kernel=m[1], dx=float(m[2]), delta=float(m[3]), dt=float(m[4]), nsteps=int(m[5]),
+                Lx=float(m[6]), Ly=float(m[7]), ylo=float(m[8]), yhi=float(m[9]), a=float(m[10]))
+    s0 = re.search(r"critical_stretch s0 = (\S+)", text)
+    info["critical_stretch"] = float(s0[1]) if s0 else None
+    bound = re.search(r"velocity-Verlet limit (\S+);", text)
+    info["dt_bound"] = float(bound[1]) if bound else None
+    loop = re.search(r"Loop time of (\S+) on (\d+) procs", text)
+    info["loop_s"] = float(loop[1]) if loop else None
+    info["nprocs"] = int(loop[2]) if loop else None
+    return info
+
+
+def read_tips(path):
+    """tips.dat: step, damage sums near the lower tip, the upper tip and over the plate, and
+    the largest damage in the outer quarter of each tip disk ahead of the tip (lower, upper)."""
+    d = np.loadtxt(path, comments="#")
+    return d[:, 0].astype(int), d[:, 1], d[:, 2], d[:, 3], d[:, 4], d[:, 5]
+
+
+# --------------------------------------------------------------------------- measurements
+
+def first_rise(steps, series, rel=1e-9):
+    """First step at which series exceeds its first value (a bond broke), or None."""
+    above = np.nonzero(series > series[0] * (1.0 + rel) + rel)[0]
+    return int(steps[above[0]]) if len(above) else None
+
+
+def clusters(points, link):
+    """Connected-component label of each point, linking points closer than `link`."""
+    n = len(points)
+    if n == 0:
+        return np.zeros(0, dtype=int)
+    pairs = cKDTree(points).query_pairs(link, output_type="ndarray")
+    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
+    return connected_components(graph, directed=False)[1]
+
+
+def notch_cracks(x, y, phi, g):
+    """Crack atoms of each notch: {'lo'/'hi': boolean mask of the outer-side crack ahead of the
+    tip, linked to the notch flanks}, and the mask of the notch flank atoms themselves."""
+    crack = phi >= PHI_CRACK
+    idx = np.nonzero(crack)[0]
+    labels = clusters(np.column_stack([x[idx], y[idx]]), LINK * g["dx"])
+    out = {}
+    for side, yn, outer in (("lo", g["ylo"], y < g["ylo"]), ("hi", g["yhi"], y > g["yhi"])):
+        # flank seeds: crack atoms on the two rows along the notch, well behind its tip
+        flank = crack & (x < g["a"] - g["delta"]) & (np.abs(y - yn) < g["dx"])
+        seeds = set(labels[np.isin(idx, np.nonzero(flank)[0])])
+        linked = np.zeros_like(crack)
+        linked[idx[np.isin(labels, list(seeds))]] = True
+        out[side] = linked & outer & (x > g["a"])
+        out[side + "_flank"] = linked & (x <= g["a"]) & (np.abs(y - yn) < 2 * g["dx"])
+    return out
+
+
+def tip_of(x, y, mask, tip, dx):
+    """Crack atom farthest from the notch tip, and that distance (0 if there is none).
+    Ties (grid atoms at equal distance) go to the largest x, which mirrors about y = Ly/2."""
+    if not mask.any():
+        return tip, 0.0
+    xm, ym = x[mask], y[mask]
+    r = np.hypot(xm - tip[0], ym - tip[1])
+    near = np.nonzero(r >= r.max() - 1e-6 * dx)[0]
+    k = near[np.argmax(xm[near])]
+    return (xm[k], ym[k]), float(r[k])
+
+
+def crack_angle(x, y, mask, tip, outer_sign, fit_range=FIT_RANGE):
+    """Angle (deg) of the crack's principal axis from +x towards the outer side, fitted over
+    the crack atoms whose distance from the notch tip lies in fit_range; None if < 3 atoms."""
+    r = np.hypot(x - tip[0], y - tip[1])
+    sel = mask & (r >= fit_range[0]) & (r <= fit_range[1])
+    if sel.sum() < 3:
+        return None
+    p = np.column_stack([x[sel], outer_sign * (y[sel] - tip[1])])
+    p = p - p.mean(axis=0)
+    axis = np.linalg.svd(p, full_matrices=False)[2][0]
+    if axis[0] < 0:
+        axis = -axis
+    return math.degrees(math.atan2(axis[1], axis[0]))
+
+
+def crack_speed(times, lengths, fit_range=FIT_RANGE):
+    """Mean crack speed (m/s): least-squares slope of length against time in fit_range."""
+    t = np.asarray(times)
+    L = np.asarray(lengths)
+    sel = (L >= fit_range[0]) & (L <= fit_range[1])
+    if sel.sum() < 2:
+        return None
+    return float(np.polyfit(t[sel], L[sel], 1)[0])
+
+
+def far_damage(x, y, phi, phi0, cracks, g):
+    """Clusters of atoms whose damage grew (phi > phi0) farther than delta + dx from the notch
+    flanks and the two cracks (masks from notch_cracks); far_edge marks those reaching
+    x > Lx - delta."""
+    dx, delta = g["dx"], g["delta"]
+    path = cracks["lo"] | cracks["hi"] | cracks["lo_flank"] | cracks["hi_flank"]
+    dist = np.full(len(x), np.inf)
+    if path.any():
+        dist = cKDTree(np.column_stack([x[path], y[path]])).query(np.column_stack([x, y]))[0]
+    far = (phi > phi0 + 1e-12) & (dist > delta + dx)
+    out = []
+    if far.any():
+        pts = np.column_stack([x[far], y[far]])
+        lab = clusters(pts, LINK * dx)
+        for c in np.unique(lab):
+            p = pts[lab == c] * 1e3
+            out.append(dict(
+                atoms=int(len(p)), x_mm=[float(p[:, 0].min()), float(p[:, 0].max())],
+                y_mm=[float(p[:, 1].min()), float(p[:, 1].max())],
+                far_edge=bool(p[:, 0].max() > (g["Lx"] - delta) * 1e3),
+                max_phi=float(phi[far][lab == c].max())))
+    return out
+
+
+def analyse(workdir):
+    """All measurements of one run directory (the files the input script writes)."""
+    workdir = Path(workdir)
+    g = read_log(workdir / "log.lammps")
+    dt, dx, delta = g["dt"], g["dx"], g["delta"]
+    tips = {"lo": (g["a"], g["ylo"]), "hi": (g["a"], g["yhi"])}
+    res = dict(g)
+
+    # initiation from the per-step monitor
+    steps, dlo, dhi, dall, qlo, qhi = read_tips(workdir / "tips.dat")
+    for side, series, quad in (("lo", dlo, qlo), ("hi", dhi, qhi)):
+        s = first_rise(steps, series)
+        res[f"t_init_{side}_us"] = None if s is None else s * dt * 1e6
+        band = np.nonzero(quad >= PHI_CRACK)[0]
+        res[f"t_band_{side}_us"] = float(steps[band[0]] * dt * 1e6) if len(band) else None
+    s_any = first_rise(steps, dall)
+    res["t_first_break_us"] = None if s_any is None else s_any * dt * 1e6
+    inits = [res[f"t_init_{s}_us"] for s in ("lo", "hi") if res[f"t_init_{s}_us"] is not None]
+    res["t_init_us"] = min(inits) if inits else None
+    bands = [res[f"t_band_{s}_us"] for s in ("lo", "hi") if res[f"t_band_{s}_us"] is not None]
+    res["t_band_us"] = min(bands) if bands else None
+    res["first_break_at_tip"] = (res["t_first_break_us"] is not None and bool(inits)
+                                 and abs(res["t_init_us"] - res["t_first_break_us"]) < 0.5 * dt * 1e6)
+
+    # crack-tip trajectories from the damage snapshots
+    traj = {"t_us": [], "lo": [], "hi": [], "L_lo": [], "L_hi": []}
+    sym = 0.0
+    res["t_far_edge_us"] = None
+    snaps = read_dump(workdir / "damage.dump")
+    initial = {int(i): p for i, p in zip(snaps[0][1]["id"], snaps[0][1]["c_dmg"])}
+    for step, s in snaps:
+        x, y, phi = s["f_ref[1]"], s["f_ref[2]"], s["c_dmg"]
+        if res["t_far_edge_us"] is None:
+            grew = phi > np.array([initial.get(int(i), 0.0) for i in s["id"]]) + 1e-12
+            if (grew & (x > g["Lx"] - delta)).any():
+                res["t_far_edge_us"] = step * dt * 1e6
+        cr = notch_cracks(x, y, phi, g)
+        traj["t_us"].append(step * dt * 1e6)
+        for side in ("lo", "hi"):
+            p, L = tip_of(x, y, cr[side], tips[side], dx)
+            traj[side].append([float(p[0]), float(p[1])])
+            traj["L_" + side].append(L)
+        plo, phi_ = traj["lo"][-1], traj["hi"][-1]
+        sym = max(sym, math.hypot(plo[0] - phi_[0], plo[1] - (g["Ly"] - phi_[1])))
+    res["trajectory"] = traj
+    res["symmetry_tip_mm"] = sym * 1e3
+    t = np.array(traj["t_us"]) * 1e-6
+    for side in ("lo", "hi"):
+        L = np.array(traj["L_" + side])
+        res[f"speed_{side}"] = crack_speed(t, L)
+        res[f"length_{side}_mm"] = float(L[-1] * 1e3)
+
+    # the end state: angle, mirror mismatch, damage far from the cracks
+    snaps = read_dump(workdir / "final.dump")
+    (_, s0), (_, s1) = snaps[0], snaps[-1]
+    x, y, phi = s1["f_ref[1]"], s1["f_ref[2]"], s1["c_dmg"]
+    cr = notch_cracks(x, y, phi, g)
+    for side, sign in (("lo", -1.0), ("hi", 1.0)):
+        res[f"angle_{side}_deg"] = crack_angle(x, y, cr[side], tips[side], sign)
+        res[f"crack_{side}"] = np.column_stack([x[cr[side]], y[cr[side]]]).tolist()
+    res["damage_map"] = {"x": x.tolist(), "y": y.tolist(), "phi": phi.tolist()}
+    mirror = {(round(a / dx * 2), round(b / dx * 2)): p for a, b, p in zip(x, y, phi)}
+    res["symmetry_phi"] = float(max(abs(p - mirror[(round(a / dx * 2), round((g["Ly"] - b) / dx * 2))])
+                                    for a, b, p in zip(x, y, phi)))
+    for key in ("angle_{}_deg", "speed_{}"):
+        vals = [res[key.format(s)] for s in ("lo", "hi") if res[key.format(s)] is not None]
+        res[key.replace("_{}", "")] = float(np.mean(vals)) if vals else None
+
+    far_clusters = far_damage(x, y, phi, s0["c_dmg"], cr, g)
+    res["far_damage"] = far_clusters
+    res["far_damage_other"] = sum(c["atoms"] for c in far_clusters if not c["far_edge"])
+    res["far_edge_crack"] = any(c["far_edge"] for c in far_clusters)
+    return res
+
+
+# --------------------------------------------------------------------------- running
+
+def run(kernel, dx, workdir, nprocs=2, tend=None, reuse=False):
+    """Run the example in workdir; return analyse(workdir) with the run's wall time (s).
+    reuse: analyse the outputs of an earlier finished run in workdir instead of running."""
+    workdir = Path(workdir)
+    wall_file = workdir / "wall_s.txt"
+    if not (reuse and wall_file.is_file()):
+        variables = {"kernel": kernel, "dx": repr(float(dx))}
+        if tend is not None:
+            variables["tend"] = repr(float(tend))
+        start = time.perf_counter()
+        run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=variables)
+        wall_file.write_text(f"{time.perf_counter() - start:.3f}\n")
+    res = analyse(workdir)
+    res["wall_s"] = float(wall_file.read_text())
+    (workdir / "results.json").write_text(json.dumps(res))
+    return res
+
+
+# --------------------------------------------------------------------------- figures
+
+def plot_damage_map(res, path):
+    """Damage at the end of the run on the reference configuration (paper Fig. 14)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    m = res["damage_map"]
+    fig, ax = plt.subplots(figsize=(3.6, 6.0))
+    try:
+        size = 4.0 * (res["dx"] / 1e-3) ** 2
+        sc = ax.scatter(np.array(m["x"]) * 1e3, np.array(m["y"]) * 1e3, c=m["phi"], s=size,
+                        marker="s", linewidths=0, cmap="jet", vmin=0.0, vmax=0.6)
+        fig.colorbar(sc, ax=ax, label="damage")
+        ax.set_aspect("equal")
+        ax.set_xlabel("x (mm)")
+        ax.set_ylabel("y (mm)")
+        ax.set_title(f"{res['kernel']}, dx = {res['dx'] * 1e3:g} mm, "
+                     f"t = {res['nsteps'] * res['dt'] * 1e6:.0f} us", fontsize=9)
+        fig.tight_layout()
+        fig.savefig(path, dpi=150)
+    finally:
+        plt.close(fig)
+    return path
+
+
+def plot_paths(results, path):
+    """Crack-tip trajectories of several runs, the notches and the 70-degree line (Fig. 15)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(3.8, 6.0))
+    try:
+        g = results[0]
+        ax.plot([0, g["Lx"] * 1e3, g["Lx"] * 1e3, 0, 0], [0, 0, g["Ly"] * 1e3, g["Ly"] * 1e3, 0],
+                color="black", linewidth=0.8)
+        for res in results:
+            ax.plot([0, res["a"] * 1e3], [res["ylo"] * 1e3] * 2, color="grey", linewidth=2)
+            ax.plot([0, res["a"] * 1e3], [res["yhi"] * 1e3] * 2, color="grey", linewidth=2)
+        by_dx = len({r["dx"] for r in results}) > 1    # a convergence plot, else kernels
+        palette = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple"]
+        for n, res in enumerate(results):
+            tr = res["trajectory"]
+            color = palette[n % len(palette)]
+            name = f"dx = {res['dx'] * 1e3:g} mm" if by_dx else res["kernel"]
+            for side, y0 in (("lo", res["ylo"]), ("hi", res["yhi"])):
+                L = np.array(tr["L_" + side])
+                p = np.array(tr[side])[L > 0]
+                p = np.vstack([[res["a"], y0], p]) * 1e3
+                ax.plot(p[:, 0], p[:, 1], "-", color=color, linewidth=1.2,
+                        label=f"{name} ({res['angle_deg']:.1f} deg)" if side == "lo" else None)
+        ang = math.radians(EXPERIMENT_ANGLE_DEG)
+        for y0, sign in ((g["ylo"], -1), (g["yhi"], 1)):
+            length = y0 / math.sin(ang) if sign < 0 else (g["Ly"] - y0) / math.sin(ang)
+            ax.plot([g["a"] * 1e3, (g["a"] + length * math.cos(ang)) * 1e3],
+                    [y0 * 1e3, (y0 + sign * length * math.sin(ang)) * 1e3], "k--", linewidth=1.0,
+                    label="70 deg (experiment)" if sign < 0 else None)
+        ax.set_aspect("equal")
+        ax.set_xlim(-5, g["Lx"] * 1e3 + 5)
+        ax.set_ylim(-5, g["Ly"] * 1e3 + 5)
+        ax.set_xlabel("x (mm)")
+        ax.set_ylabel("y (mm)")
+        ax.legend(fontsize=7, loc="center left")
+        ax.set_title(f"crack-tip paths, {g['kernel']}" if by_dx
+                     else f"crack-tip paths, dx = {g['dx'] * 1e3:g} mm", fontsize=9)
+        fig.tight_layout()
+        fig.savefig(path, dpi=150)
+    finally:
+        plt.close(fig)
+    return path
+
+
+# --------------------------------------------------------------------------- table
+
+def fmt(v, spec):
+    return "-" if v is None else format(v, spec)
+
+
+def table(results):
+    """Markdown table: kernel x resolution, with the paper's values beside ours."""
+    rows = ["| kernel | dx (mm) | atoms | steps | first bond (us) | damage band (us) | paper (us) | angle (deg) | exp. (deg) | speed (m/s) | tip mirror mismatch (mm) | "
+            "far-edge crack from (us) | other far damage (atoms) | wall (s) | ranks |",
+            "|" + "---|" * 15]
+    for r in sorted(results, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx"])):
+        natoms = len(r["damage_map"]["x"])
+        rows.append("| " + " | ".join([
+            r["kernel"], f"{r['dx'] * 1e3:g}", str(natoms), str(r["nsteps"]),
+            fmt(r["t_init_us"], ".1f"), fmt(r["t_band_us"], ".1f"),
+            f"{PAPER_INITIATION_US[r['kernel']]:.1f}", fmt(r["angle_deg"], ".1f"),
+            f"{EXPERIMENT_ANGLE_DEG:.0f}", fmt(r["speed"], ".0f"), f"{r['symmetry_tip_mm']:.2g}",
+            fmt(r["t_far_edge_us"], ".0f") if r["far_edge_crack"] else "none",
+            str(r["far_damage_other"]),
+            f"{r['wall_s']:.0f}", str(r["nprocs"])]) + " |")
+    return "\n".join(rows)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--kernels", nargs="+", default=list(KERNELS), choices=KERNELS)
+    ap.add_argument("--dx", nargs="+", type=float, default=[2e-3, 1e-3])
+    ap.add_argument("--work", default="/tmp/kalthoff-winkler", help="run directories go here")
+    ap.add_argument("--figures", default=None, help="write the PNGs here (default: --work)")
+    ap.add_argument("--np", type=int, default=2, dest="nprocs")
+    ap.add_argument("--reuse", action="store_true",
+                    help="re-analyse finished runs in --work instead of running them again")
+    args = ap.parse_args(argv)
+    work = Path(args.work)
+    figs = Path(args.figures or work)
+    figs.mkdir(parents=True, exist_ok=True)
+    results = []
+    for dx in args.dx:
+        for kernel in args.kernels:
+            res = run(kernel, dx, work / f"{kernel}-dx{dx * 1e3:g}mm", nprocs=args.nprocs,
+                      reuse=args.reuse)
+            results.append(res)
+            print(f"{kernel} dx = {dx * 1e3:g} mm: initiation {fmt(res['t_init_us'], '.2f')} us, "
+                  f"angle {fmt(res['angle_deg'], '.1f')} deg, speed {fmt(res['speed'], '.0f')} m/s, "
+                  f"wall {res['wall_s']:.0f} s", flush=True)
+            plot_damage_map(res, figs / f"damage_{kernel}_dx{dx * 1e3:g}mm.png")
+        same = [r for r in results if r["dx"] == dx]
+        if len(same) > 1:
+            plot_paths(same, figs / f"paths_dx{dx * 1e3:g}mm.png")
+    for kernel in args.kernels:
+        same = sorted((r for r in results if r["kernel"] == kernel), key=lambda r: -r["dx"])
+        if len(same) > 1:
+            plot_paths(same, figs / f"paths_{kernel}_convergence.png")
+    # the table covers every finished run in --work, also those of earlier invocations
+    runs = sorted(work.glob("*/results.json"))
+    results = [json.loads(p.read_text()) for p in runs]
+    print(table(results))
+    (work / "table.md").write_text(table(results) + "\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,223 @@
+"""Stationary Mode-I semi-infinite crack (Bouaraquia & Mabssout 2026, sec. 4.2.1).
+
+Runs examples/mode1-semi-infinite/in.mode1 (compute bbpd/dsif every step) and compares
+K_I(t) with Freund's solution (eq. 42) for t <= 3 t_c with the errors of eqs. 44-45, in two
+conventions:
+
+paper       nu = 0.3 in eq. 42, in C_d (plane-strain formula: C_d = 5944 m/s, so that
+            t_c = H/C_d = 3.36e-4 s = t_d, the paper's rise time) and in mu, kappa of
+            eq. 39-40.  The pair style is plane stress (the paper's 2D formulation).
+consistent  the constants of the BBPD model itself: plane stress nu = 1/3, whose in-plane
+            equations are plane strain with nu' = nu/(1+nu) = 1/4 and C_d = sqrt(E/(rho
+            (1-nu^2))) = 5434 m/s; plane strain nu = 1/4, C_d = sqrt(1.2 E/rho) = 5612 m/s.
+            Eq. 42 is evaluated with (nu', C_d), eq. 39-40 with nu.
+
+In plane stress 2 mu/(kappa+1) = E/4 whatever nu is, so the two conventions give the same
+K_PD there; they differ only in the analytic curve (amplitude factor and arrival time).
+
+Command line (from the repository root):
+  PYTHONPATH=python /usr/bin/python3 -m bbpd.benchmarks.mode1 --table2 --table3 \
+      --work /tmp/mode1 --figures examples/mode1-semi-infinite
+"""
+
+import argparse
+import re
+import time
+from pathlib import Path
+
+import numpy as np
+
+from bbpd import freund, metrics
+from bbpd.runner import run_lammps
+
+ROOT = Path(__file__).resolve().parents[3]
+EXAMPLE = ROOT / "examples" / "mode1-semi-infinite" / "in.mode1"
+KERNELS = ("constant", "triangular", "gaussian")
+
+# paper sec. 4.2.1
+E = 210.0e9
+RHO = 8000.0
+H = 2.0
+NU_PAPER = 0.3
+T_D = 3.36e-4
+DT_PAPER = 5.0e-6
+DX_PAPER_DT = 0.05     # finest grid at which the paper's dt stays well inside the stable bound
+SIGMA0 = 1.0e6         # any value: the model is linear
+T_END = 1.2e-3         # run length, > 3 t_c in both conventions
+
+# paper Tables 2 and 3: (peak %, L2 %)
+PAPER_TABLE2 = {0.1: (9.82, 17.70), 0.05: (0.21, 2.86), 0.025: (0.17, 2.74)}
+PAPER_TABLE3 = {"constant": (14.20, 15.48), "triangular": (5.99, 6.56), "gaussian": (0.21, 2.86)}
+
+CONVENTIONS = ("paper", "consistent")
+IMPLIED_NU = {"plane/stress": 1.0 / 3.0, "plane/strain": 0.25}
+
+
+def default_dt(dx):
+    """The paper's 5e-6 s down to dx = 0.05 m; below, scaled with dx (the stable bound is
+    proportional to dx at fixed m): 5e-6 s at 0.025 m would be 0.87 of the velocity-Verlet
+    limit and above eq. 25's bound."""
+    return DT_PAPER * min(1.0, dx / DX_PAPER_DT)
+
+
+def reference(convention, model="plane/stress", E=E, rho=RHO, H=H, sigma0=SIGMA0, t_d=T_D):
+    """(K_exact(t), t_c) of eq. 42 in one convention."""
+    if convention == "paper":
+        nu_eq, c_d = NU_PAPER, freund.dilatational_wave_speed(E, NU_PAPER, rho, freund.PLANE_STRAIN)
+    elif convention == "consistent":
+        nu = IMPLIED_NU[model]
+        if model == "plane/stress":
+            nu_eq = freund.equivalent_plane_stress_poisson(nu)
+            c_d = freund.dilatational_wave_speed(E, nu, rho, freund.PLANE_STRESS)
+        else:
+            nu_eq, c_d = nu, freund.dilatational_wave_speed(E, nu, rho, freund.PLANE_STRAIN)
+    else:
+        raise ValueError(f"convention must be one of {CONVENTIONS}, got {convention!r}")
+
+    def exact(t):
+        return freund.mode1_ramp_dsif(t, nu_eq, sigma0, c_d, t_d, H)
+
+    return exact, freund.crack_arrival_time(H, c_d)
+
+
+def read_k(path, dt):
+    """k.dat of in.mode1 -> t, K_I (paper constants), K_I (consistent), K_II (consistent)."""
+    d = np.loadtxt(path, comments="#", ndmin=2)
+    return d[:, 0] * dt, d[:, 1], d[:, 2], d[:, 3]
+
+
+def errors(t, k_paper, k_consistent, model="plane/stress", **material):
+    """Eqs. 44-45 (in %) over 0 <= t <= 3 t_c for both conventions."""
+    out = {}
+    for conv, k in (("paper", k_paper), ("consistent", k_consistent)):
+        exact, t_c = reference(conv, model, **material)
+        window = (0.0, freund.MODE1_VALIDITY_MULTIPLE * t_c)
+        out[conv] = {"peak": 100.0 * metrics.peak_relative_error(t, k, exact, window),
+                     "l2": 100.0 * metrics.l2_relative_error(t, k, exact, window),
+                     "t_c": t_c}
+    return out
+
+
+def _timestep_fraction(output):
+    m = re.search(r"timestep = \S+ \(([0-9.eE+-]+) of the limit\)", output)
+    return float(m.group(1)) if m else None
+
+
+def run(workdir, kernel="gaussian", dx=0.05, model="plane/stress", dt=None, nprocs=1,
+        efactor=1.0, tipshift=0.5, r1=1.0, r2=2.0, t_end=T_END):
+    """Run in.mode1 once; return errors (%) in both conventions, wall time and series."""
+    dt = default_dt(dx) if dt is None else dt
+    workdir = Path(workdir)
+    vars_ = {"kernel": kernel, "dx": dx, "model": model, "dt": dt, "tend": t_end,
+             "Efactor": efactor, "tipshift": tipshift, "r1": r1, "r2": r2,
+             "E": E, "rho": RHO, "H": H, "td": T_D, "sigma0": SIGMA0, "nu_paper": NU_PAPER}
+    start = time.perf_counter()
+    proc = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_)
+    wall = time.perf_counter() - start
+    loop = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs", proc.output)
+    t, k_paper, k_cons, k_ii = read_k(workdir / "k.dat", dt)
+    res = {"kernel": kernel, "dx": dx, "model": model, "dt": dt, "nprocs": nprocs,
+           "wall_time": wall, "loop_time": float(loop.group(1)) if loop else None,
+           "dt_fraction_of_limit": _timestep_fraction(proc.output),
+           "atoms": int(round(10.0 / dx)) * int(round(2 * H / dx)),
+           "t": t, "k_paper": k_paper, "k_consistent": k_cons, "k_ii": k_ii}
+    res.update(errors(t, k_paper, k_cons, model))
+    # K_II must vanish by symmetry until the lateral edges matter (they are 5 m away)
+    w = t <= freund.MODE1_VALIDITY_MULTIPLE * res["consistent"]["t_c"]
+    res["kii_over_ki"] = float(np.max(np.abs(k_ii[w])) / np.max(np.abs(k_cons[w])))
+    return res
+
+
+# --------------------------------------------------------------------------- reports
+
+def _row(res):
+    p, c = res["paper"], res["consistent"]
+    return (f"{p['peak']:6.2f} {p['l2']:6.2f} | {c['peak']:6.2f} {c['l2']:6.2f} | "
+            f"{res['wall_time']:6.1f} s ({res['nprocs']} rank, dt {res['dt']:.3g})")
+
+
+def table2(work, dxs=(0.1, 0.05, 0.025), nprocs=1, model="plane/stress"):
+    rows = {}
+    print("Table 2 (Gaussian, m = 5): dx | paper's numbers: peak L2 | ours, paper convention: "
+          "peak L2 | ours, consistent: peak L2 | wall time")
+    for dx in dxs:
+        res = run(Path(work) / f"gaussian_{dx}", "gaussian", dx, model, nprocs=nprocs)
+        rows[dx] = res
+        ref = PAPER_TABLE2.get(dx, (float("nan"), float("nan")))
+        print(f"{dx:6.3f} | {ref[0]:6.2f} {ref[1]:6.2f} | {_row(res)}")
+    return rows
+
+
+def table3(work, dx=0.05, nprocs=1, model="plane/stress"):
+    rows = {}
+    print(f"Table 3 (dx = {dx}, m = 5): kernel | paper's numbers: peak L2 | ours, paper "
+          "convention: peak L2 | ours, consistent: peak L2 | wall time")
+    for kernel in KERNELS:
+        res = run(Path(work) / f"{kernel}_{dx}", kernel, dx, model, nprocs=nprocs)
+        rows[kernel] = res
+        ref = PAPER_TABLE3[kernel]
+        print(f"{kernel:10s} | {ref[0]:6.2f} {ref[1]:6.2f} | {_row(res)}")
+    return rows
+
+
+TIP_STUDY = ((0.5, 1.0, 2.0), (0.5, 1.0, 3.0), (0.5, 2.0, 3.0), (0.5, 2.0, 4.0),
+             (-0.5, 1.0, 2.0), (0.0, 0.5, 1.5), (0.0, 1.5, 2.5), (0.0, 2.5, 4.5))
+
+
+def tip_study(work, dx=0.05, kernel="gaussian", nprocs=1):
+    """How K moves with the tip position and r1, r2 (README table)."""
+    print(f"tip study ({kernel}, dx = {dx}): tip x - a | r1 r2 (dx) | K_max/K_max,exact "
+          "(consistent) | peak L2 (consistent) | peak L2 (paper)")
+    out = []
+    for shift, r1, r2 in TIP_STUDY:
+        res = run(Path(work) / f"tip_{shift}_{r1}_{r2}", kernel, dx, nprocs=nprocs,
+                  tipshift=shift, r1=r1, r2=r2)
+        exact, t_c = reference("consistent")
+        w = res["t"] <= 3.0 * t_c
+        ratio = res["k_consistent"][w].max() / exact(res["t"][w]).max()
+        c, p = res["consistent"], res["paper"]
+        print(f"{shift:+5.1f} dx | {r1:3.1f} {r2:3.1f} | {ratio:6.3f} | {c['peak']:6.2f} "
+              f"{c['l2']:6.2f} | {p['peak']:6.2f} {p['l2']:6.2f}")
+        out.append((shift, r1, r2, ratio, res))
+    return out
+
+
+def figures(rows2, rows3, folder):
+    from bbpd.plots import plot_k_histories
+    folder = Path(folder)
+    norm = SIGMA0 * np.sqrt(H)
+    exact, t_c = reference("consistent")
+    exact_p, _ = reference("paper")
+    tt = np.linspace(0.0, 3.0 * t_c, 400)
+    for name, rows, label in (("fig9_resolutions.png", rows2, lambda k: f"dx = {k} m"),
+                              ("fig10_kernels.png", rows3, lambda k: k)):
+        if not rows:
+            continue
+        series = {label(k): (r["t"], r["k_consistent"] / norm) for k, r in rows.items()}
+        series["eq. 42, nu = 0.3 (paper)"] = (tt, exact_p(tt) / norm)
+        plot_k_histories(folder / name, series,
+                         analytic=("eq. 42, BBPD constants", tt, exact(tt) / norm),
+                         ylabel="K_I / (sigma0 sqrt(H))", window_end=3.0 * t_c)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--work", default="/tmp/bbpd-mode1")
+    ap.add_argument("--nprocs", type=int, default=1)
+    ap.add_argument("--model", default="plane/stress")
+    ap.add_argument("--table2", action="store_true")
+    ap.add_argument("--dx", type=float, nargs="+", default=[0.1, 0.05, 0.025])
+    ap.add_argument("--table3", action="store_true")
+    ap.add_argument("--tips", action="store_true", help="tip position / r1, r2 study")
+    ap.add_argument("--figures", help="folder for Fig. 9 and Fig. 10 PNGs")
+    args = ap.parse_args(argv)
+    rows2 = table2(args.work, args.dx, args.nprocs, args.model) if args.table2 else {}
+    rows3 = table3(args.work, 0.05, args.nprocs, args.model) if args.table3 else {}
+    if args.tips:
+        tip_study(args.work, nprocs=args.nprocs)
+    if args.figures:
+        figures(rows2, rows3, args.figures)
+
+
+if __name__ == "__main__":
+    main()
