@@ -9,7 +9,8 @@
 
    A kernel is one small struct with
      name         style suffix, e.g. "gaussian"
-     shape(r)     W as a function of r = |xi|/delta in [0,1]
+     shape(r)     W as a function of r = |xi|/delta, >= 0; also evaluated a little past
+                  r = 1 for the partial-volume bonds (eq. 19)
      moment(n)    M_n = int_0^1 W(r) r^n dr, n = 1..4 (closed form)
 ------------------------------------------------------------------------- */
 
@@ -31,10 +32,11 @@ struct ConstantKernel {
   static double moment(int n) { return 1.0 / (n + 1); }
 };
 
-// W = 1 - |xi|/delta
+// W = 1 - |xi|/delta, and 0 beyond the horizon (eq. 11: W >= 0). The partial-volume bonds
+// with delta < xi < delta + dx/2 would otherwise get a negative stiffness.
 struct TriangularKernel {
   static constexpr const char *name = "triangular";
-  static double shape(double r) { return 1.0 - r; }
+  static double shape(double r) { return r < 1.0 ? 1.0 - r : 0.0; }
   static double moment(int n) { return 1.0 / ((n + 1.0) * (n + 2.0)); }
 };
 

@@ -28,6 +28,9 @@ using namespace FixConst;
 // an atom cloud this many times larger than the body at bond creation means the run has blown
 // up; stop before LAMMPS bins the exploded box (which can take all the memory)
 static constexpr double MAX_EXTENT_GROWTH = 1000.0;
+// nor can an atom that moves this many grid spacings in one step be part of a valid run (a stable
+// step moves atoms a small fraction of a spacing: dt < spacing / wave speed, and v << wave speed)
+static constexpr double MAX_STEP_SPACINGS = 10.0;
 
 FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxpartner(1), npartner(nullptr), partner(nullptr), vinit(nullptr),
@@ -38,6 +41,7 @@ FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
   restart_global = 1;
   restart_peratom = 1;
   stores_ids = 1;
+  create_attribute = 1;    // atoms created later start with no bonds
 
   FixBBPDBonds::grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -95,13 +99,14 @@ void FixBBPDBonds::post_neighbor()
   refresh_cache();
 }
 
-/* largest extent of the atoms (0 if none on any rank) */
+/* largest extent of the atoms that still have bonds (free fragments may fly away) */
 double FixBBPDBonds::local_extent()
 {
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300}, glo[3], ghi[3];
   double **x = atom->x;
   for (int i = 0; i < atom->nlocal; i++)
     for (int m = 0; m < 3; m++) {
+      if (!first && nbond && nbond[i] == 0) continue;
       lo[m] = MIN(lo[m], x[i][m]);
       hi[m] = MAX(hi[m], x[i][m]);
     }
@@ -109,18 +114,26 @@ double FixBBPDBonds::local_extent()
   MPI_Allreduce(hi, ghi, 3, MPI_DOUBLE, MPI_MAX, world);
   double e = 0.0;
   for (int m = 0; m < domain->dimension; m++) e = MAX(e, ghi[m] - glo[m]);
-  return e;
+  return MAX(e, 0.0);
 }
 
 /* before atoms migrate (once per reneighboring): catch an exploding run */
 void FixBBPDBonds::pre_exchange()
 {
-  if (first || extent0 <= 0.0) return;
+  if (first) return;
+  // no atom may cross a horizon in one step, and the bonded body may not spread out
+  double vmax = 0.0, gvmax = 0.0;
+  double **v = atom->v;
+  for (int i = 0; i < atom->nlocal; i++)
+    vmax = MAX(vmax, v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+  MPI_Allreduce(&vmax, &gvmax, 1, MPI_DOUBLE, MPI_MAX, world);
   const double e = local_extent();
-  if (!(e <= MAX_EXTENT_GROWTH * extent0))
-    error->all(FLERR, "BBPD: the atoms spread over {:.3g} x the body's size at step {}: the run "
-               "is unstable; the timestep {:.6g} must stay below the stable bound printed at "
-               "setup", e / extent0, update->ntimestep, update->dt);
+  const double step = std::sqrt(gvmax) * update->dt;
+  if (!(step <= pair->spacing * MAX_STEP_SPACINGS) || (extent0 > 0.0 && !(e <= MAX_EXTENT_GROWTH * extent0)))
+    error->all(FLERR, "BBPD: the run is unstable at step {} (an atom moves {:.3g} grid spacings "
+               "per step, the bonded body spans {:.3g} x its size): the timestep {:.6g} must "
+               "stay below the stable bound printed at setup", update->ntimestep,
+               step / pair->spacing, extent0 > 0.0 ? e / extent0 : 0.0, update->dt);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -218,9 +231,11 @@ void FixBBPDBonds::refresh_cache()
       if (t <= 0) continue;
       int j = atom->map(t);
       if (j < 0)
-        error->one(FLERR, "Bond partner {} of atom {} is neither a local nor a ghost atom: "
-                   "increase the ghost cutoff with 'comm_modify cutoff' (at least horizon + "
-                   "maximum bond elongation)", t, tag[i]);
+        error->one(FLERR, "Bond partner {} of atom {} is neither a local nor a ghost atom at "
+                   "step {}: either the run is unstable (timestep {:.6g}, stable bound {:.6g}) "
+                   "or an intact bond stretched beyond the ghost cutoff: then increase it with "
+                   "'comm_modify cutoff' (at least horizon + maximum bond elongation)", t, tag[i],
+                   update->ntimestep, update->dt, *(double *) pair->extract_bound());
       if (periodic) j = domain->closest_image(x[i], j);
       double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
       if (periodic) BBPDCompat::minimum_image(domain, d);
@@ -309,6 +324,12 @@ void FixBBPDBonds::copy_arrays(int i, int j, int)
   npartner[j] = npartner[i];
   for (int k = 0; k < npartner[j]; k++) partner[j][k] = partner[i][k];
   vinit[j] = vinit[i];
+}
+
+void FixBBPDBonds::set_arrays(int i)
+{
+  npartner[i] = 0;
+  vinit[i] = 0.0;
 }
 
 int FixBBPDBonds::pack_exchange(int i, double *buf)

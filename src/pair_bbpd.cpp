@@ -526,14 +526,15 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row)
     ay[l] += fbond * dy;
     az[l] += fbond * dz;
     if (EVFLAG) {
-      // half of the bond's micropotential (eq. 6) and virial: the other end tallies the rest
+      // half of the bond's micropotential (eq. 6) and of its virial (x_i - x_j) (x) f_i, with
+      // f_i = fbond (x_j - x_i): the other end tallies the rest
       eng += 0.25 * bcoef[k] * elong * elong;
-      vir[0] += 0.5 * fbond * dx * dx;
-      vir[1] += 0.5 * fbond * dy * dy;
-      vir[2] += 0.5 * fbond * dz * dz;
-      vir[3] += 0.5 * fbond * dx * dy;
-      vir[4] += 0.5 * fbond * dx * dz;
-      vir[5] += 0.5 * fbond * dy * dz;
+      vir[0] -= 0.5 * fbond * dx * dx;
+      vir[1] -= 0.5 * fbond * dy * dy;
+      vir[2] -= 0.5 * fbond * dz * dz;
+      vir[3] -= 0.5 * fbond * dx * dy;
+      vir[4] -= 0.5 * fbond * dx * dz;
+      vir[5] -= 0.5 * fbond * dy * dz;
     }
   };
   for (int k = 0; k < n; k++) bond(k, k % LANES);
@@ -558,16 +559,29 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row)
 void PairBBPD::report(FixBBPDBonds *fb)
 {
   // stable time step from the actual bonds: sum_j C_v V_j c/xi = sum of coef (eq. 26)
+  // with contact on, one contact's stiffness is added (crack faces pressed together)
   double dtmin = std::numeric_limits<double>::infinity();
+  int limp = 0;
   for (int i = 0; i < atom->nlocal; i++) {
     double sum = 0.0;
     for (int k = fb->bond_start[i]; k < fb->bond_start[i] + fb->nbond[i]; k++) sum += fb->bcoef[k];
+    if (fb->nbond[i] > 0 && sum <= 0.0) limp = 1;
+    const int it = atom->type[i];
+    if (contact)
+      sum += CONTACT_STIFFNESS_FACTOR * micromodulus[it][it] * atom->vfrac[i] / horizon[it][it];
     if (sum > 0.0) dtmin = MIN(dtmin, BBPD::stable_timestep_paper(atom->rmass[i], sum));
   }
+  int anylimp = 0;
+  MPI_Allreduce(&limp, &anylimp, 1, MPI_INT, MPI_MAX, world);
+  if (anylimp)
+    error->all(FLERR, "Pair bbpd/{}: atoms have bonds but no stiffness (the kernel vanishes at "
+               "every partner, e.g. triangular with delta = spacing): increase the horizon",
+               kernel.name);
   MPI_Allreduce(&dtmin, &dt_bound_paper, 1, MPI_DOUBLE, MPI_MIN, world);
   dt_bound = dt_bound_paper * std::sqrt(2.0);
-  pvector[0] = dt_bound;
-  pvector[1] = dt_bound_paper;
+  // compute pair sums pvector over the ranks: only rank 0 contributes
+  pvector[0] = comm->me == 0 ? dt_bound : 0.0;
+  pvector[1] = comm->me == 0 ? dt_bound_paper : 0.0;
 
   int nmin = INT_MAX, nmax = 0;
   bigint nsum = 0;

@@ -35,6 +35,7 @@ class PairBBPD : public Pair {
   double bond_volume(int itype, int jtype, double xi0, double vj) const;
   double grid_spacing_of(double vfrac) const;
   bool fracture() const { return fracture_any; }
+  const double *extract_bound() const { return &dt_bound; }
   void report(class FixBBPDBonds *);
 
   const BBPD::KernelInfo kernel;

@@ -29,7 +29,7 @@ from scipy.spatial import cKDTree
 
 KERNELS = {
     "constant": lambda r: np.ones_like(np.asarray(r, dtype=float)),
-    "triangular": lambda r: 1.0 - np.asarray(r, dtype=float),
+    "triangular": lambda r: np.clip(1.0 - np.asarray(r, dtype=float), 0.0, None),
     "gaussian": lambda r: np.exp(-((2.0 * np.asarray(r, dtype=float)) ** 2)),
 }
 
@@ -151,6 +151,20 @@ class Bonds:
             f[:, k] += np.bincount(self.i[a], gi[:, k], minlength=n)
             f[:, k] -= np.bincount(self.j[a], gj[:, k], minlength=n)
         return f
+
+    def virial_density(self, y):
+        """Per-atom virial W_i = 1/2 sum_j (y_i - y_j) (x) f_ij (N x 6: xx yy zz xy xz yz),
+        the half of each bond's virial that LAMMPS tallies on atom i (per unit volume of i)."""
+        d, r, s = self.stretch(y)
+        n = len(self.x0)
+        a = self.intact
+        g = self.c[a] * s[a] * self.cv[a] / r[a]
+        w = np.zeros((n, 6))
+        for col, (p, q) in enumerate(((0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2))):
+            dd = -0.5 * g * d[a, p] * d[a, q]    # (y_i - y_j)_p (f_i)_q with f_i = g V_j d
+            w[:, col] += np.bincount(self.i[a], dd * self.volume[self.j[a]], minlength=n)
+            w[:, col] += np.bincount(self.j[a], dd * self.volume[self.i[a]], minlength=n)
+        return w
 
     def energy_density(self, y):
         """W_i = 1/2 sum_j (1/2 c s^2 xi) C_v V_j over intact bonds (per unit volume of i)."""

@@ -77,6 +77,36 @@ def lattice_body(dim):
 FORCE_CASES = [(k, m, 1) for k in KERNELS for m in MODELS] + [("gaussian", "plane/stress", 2)]
 
 
+@pytest.mark.parametrize("model", ["plane/strain", "3d"])
+def test_virial_matches_reference(lmp, tmp_path, model):
+    """Per-atom virial (compute stress/atom ... virial = -W_i) against the reference, under a
+    uniform stretch: the stress must be tensile (positive) in the stretched direction."""
+    dim = ref.DIMENSION[model]
+    x0, box = lattice_body(dim)
+    y = x0.copy()
+    y[:, 0] *= 1.0 + 1.0e-4
+    volume = THICKNESS * DX**2 if dim == 2 else DX**3
+    delta, c0, _ = material("gaussian", model)
+    ref.write_data(tmp_path / "body.data", x0, volume, DENSITY, box)
+    ref.write_positions(tmp_path / "current.dump", y, box)
+    coords = "x y z" if dim == 3 else "x y"
+    script = ("plugin load bbpdplugin.so\n" + header("gaussian", model, "body.data", "none", delta)
+              + "compute s all stress/atom NULL virial\n"
+              "run 0\n"
+              f"read_dump current.dump 0 {coords} box no replace yes\n"
+              "run 0\n"
+              "write_dump all custom virial.dump id c_s[1] c_s[2] c_s[3] c_s[4] c_s[5] c_s[6] "
+              "modify format float %.17g\n")
+    lmp(script)
+    got = ref.read_dump(tmp_path / "virial.dump")
+    stress = np.stack([got[f"c_s[{k}]"] for k in range(1, 7)], axis=1)
+    bonds = ref.Bonds(x0, volume, "gaussian", c0, delta, DX)
+    expected = -bonds.virial_density(y)
+    scale = np.abs(expected).max()
+    assert np.abs(stress - expected).max() < FORCE_RTOL * scale
+    assert stress[:, 0].min() > 0.0    # tension
+
+
 @pytest.mark.parametrize("kernel,model,nprocs", FORCE_CASES)
 def test_forces_match_reference(lmp, tmp_path, kernel, model, nprocs):
     dim = ref.DIMENSION[model]

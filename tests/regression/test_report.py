@@ -1,0 +1,158 @@
+"""The report machinery of tools/reproduce (python/bbpd/report.py) on a few tiny runs.
+
+Coarse grids (seconds in all), one run that must fail, and two calls: the tables of
+REPORT.md must hold the runs' own numbers beside the paper's, the failed run must show as
+FAILED with LAMMPS's error while the others are reported, the second call must reuse every
+finished run (and retry the failed one), and editing a declared input must rerun that job.
+"""
+import json
+import re
+from pathlib import Path
+
+import pytest
+
+from bbpd import report
+from bbpd.benchmarks import mode1
+
+ROOT = Path(__file__).resolve().parents[2]
+EX = ROOT / "examples"
+BENCH = ROOT / "python" / "bbpd" / "benchmarks"
+
+
+def tiny_specs(extra_input):
+    m1 = (EX / "mode1-semi-infinite" / "in.mode1", BENCH / "mode1.py")
+    m2 = (EX / "mode2-central-crack" / "in.mode2", BENCH / "mode2.py", extra_input)
+    kw = (EX / "kalthoff-winkler" / "in.kalthoff_winkler", BENCH / "kalthoff_winkler.py")
+    return [
+        report.make_spec("dispersion", "gaussian", 0.2e-3, "bbpd.report:dispersion_run",
+                         {"kernel": "gaussian"}, (EX / "dispersion-1d" / "in.dispersion",), 3.0),
+        report.make_spec("mode1", "gaussian", 0.2, "bbpd.benchmarks.mode1:run",
+                         {"kernel": "gaussian", "dx": 0.2, "nprocs": 1}, m1, 1.0),
+        # a Table 2 row whose run fails: LAMMPS rejects the model keyword
+        report.make_spec("mode1", "gaussian", 0.1, "bbpd.benchmarks.mode1:run",
+                         {"kernel": "gaussian", "dx": 0.1, "model": "no/such/model",
+                          "nprocs": 1}, m1, 1.0),
+        report.make_spec("mode2", "constant", 2e-3, "bbpd.benchmarks.mode2:run",
+                         {"kernel": "constant", "dx": 2e-3, "nprocs": 1}, m2, 1.0),
+        report.make_spec("mode2", "gaussian", 2e-3, "bbpd.benchmarks.mode2:run",
+                         {"kernel": "gaussian", "dx": 2e-3, "nprocs": 1}, m2, 1.0),
+        report.make_spec("kw", "gaussian", 4e-3, "bbpd.benchmarks.kalthoff_winkler:run",
+                         {"kernel": "gaussian", "dx": 4e-3, "nprocs": 1}, kw, 1.0),
+    ]
+
+
+def section(text, title_start):
+    """The text of one '## ' section of REPORT.md."""
+    parts = re.split(r"^## ", text, flags=re.M)
+    found = [p for p in parts if p.startswith(title_start)]
+    assert found, f"no section '{title_start}'"
+    return found[0]
+
+
+def table_rows(text, first_cell):
+    return [ln for ln in text.splitlines() if ln.startswith(f"| {first_cell} |")]
+
+
+@pytest.fixture(scope="module")
+def calls(tmp_path_factory):
+    """Two calls of the report on the same folder, and a third after an input changed."""
+    out = tmp_path_factory.mktemp("report")
+    extra = out / "extra-input.txt"
+    extra.write_text("first\n")
+    logs = []
+    for n in range(2):
+        lines = []
+        path, failed = report.reproduce(out, tiny_specs(extra), workers=2, log=lines.append)
+        logs.append((lines, path.read_text(), failed, cached_results(out)))
+    extra.write_text("second\n")
+    lines = []
+    report.reproduce(out, tiny_specs(extra), workers=2, log=lines.append)
+    logs.append((lines, None, None, None))
+    return out, logs
+
+
+def cached_results(out):
+    """(kernel, dx) -> result of every finished run in the cache"""
+    runs = [json.loads(p.read_text()) for p in (out / "runs").glob("*.json")]
+    return {(r["kernel"], r["dx"]): r for r in runs if "kernel" in r and "dx" in r}
+
+
+def test_tables_hold_the_runs_numbers(calls):
+    _, logs = calls
+    text, res = logs[0][1], logs[0][3]
+    for title in ("Wave dispersion", "Stationary Mode-I", "Mode-II", "Kalthoff-Winkler"):
+        assert f"## {title}" in text
+    # Mode II rows: our errors and the run time, as the runs measured them
+    m2 = section(text, "Mode-II")
+    for kernel in ("constant", "gaussian"):
+        r = res[(kernel, 2e-3)]
+        row = table_rows(m2, kernel)
+        assert len(row) == 1
+        cells = [c.strip() for c in row[0].split("|")[1:-1]]
+        assert cells[3] == f"{r['peak']:.2f}" and cells[4] == f"{r['l2']:.2f}"
+        assert cells[-1] == f"{r['wall_time']:.1f}"
+    # the paragraph is computed from those numbers
+    order = " < ".join(sorted(("constant", "gaussian"), key=lambda k: res[(k, 2e-3)]["l2"]))
+    assert f"L2 errors rank {order}" in m2
+    # Mode I Table 2: ours beside the paper's Table 2 value for dx = 0.1
+    m1 = section(text, "Stationary Mode-I")
+    r = res[("gaussian", 0.2)]
+    assert f"{r['consistent']['peak']:.2f} / {r['consistent']['l2']:.2f}" in m1
+    ref = mode1.PAPER_TABLE2[0.1]
+    assert f"{ref[0]:.2f} / {ref[1]:.2f}" in m1
+    kw = section(text, "Kalthoff-Winkler")
+    assert len(table_rows(kw, "gaussian")) == 1 and "21.7" in kw   # paper's initiation time
+    disp = section(text, "Wave dispersion")
+    assert len(table_rows(disp, "gaussian")) == 1
+
+
+def test_failed_run_is_reported_and_the_others_go_on(calls):
+    _, logs = calls
+    lines, text, failed, _ = logs[0]
+    assert failed == 1
+    row = [ln for ln in section(text, "Stationary Mode-I").splitlines()
+           if ln.startswith("| 0.1 |")]
+    assert len(row) == 1 and "FAILED" in row[0] and "ERROR" in row[0]
+    assert "1 failed" in text
+
+
+def test_figures_are_written(calls):
+    out, logs = calls
+    text = logs[0][1]
+    for name in ("fig4_dispersion.png", "fig9_resolutions.png", "fig12_kernels_dx2mm.png",
+                 "damage_gaussian_dx4mm.png"):
+        assert f"]({name})" in text
+        assert (out / name).stat().st_size > 10_000
+
+
+def test_versions_and_machine_are_stated(calls):
+    text = calls[1][0][1]
+    assert re.search(r"LAMMPS: \d+ \w+ \d{4}", text)
+    assert re.search(r"plugin v\d+\.\d+", text)
+    assert "cores" in text and "total wall time" in text
+
+
+def test_second_call_reuses_finished_runs(calls):
+    _, logs = calls
+    lines, text, failed, _ = logs[1]
+    reused = [ln for ln in lines if ln.strip().startswith("reuse")]
+    assert len(reused) == 5                       # every run but the failed one
+    ran = [ln for ln in lines if re.match(r"\s*\[\d+/\d+\]", ln)]
+    assert len(ran) == 1 and "FAILED" in ran[0]   # the failed one is tried again
+    assert "(1 made now, 5 reused" in text
+
+
+def test_changed_input_reruns_its_jobs_only(calls):
+    lines = calls[1][2][0]
+    ran = [ln for ln in lines if re.match(r"\s*\[\d+/\d+\]", ln)]
+    labels = sorted(re.sub(r"^\s*\[\d+/\d+\] (FAILED )?", "", ln).split(":")[0] for ln in ran)
+    assert labels == ["Mode I gaussian dx = 0.1 m", "Mode II constant dx = 2 mm",
+                      "Mode II gaussian dx = 2 mm"]
+
+
+def test_default_jobs_declare_their_input_scripts():
+    for spec in report.job_list(full=True):
+        names = [Path(p).name for p in spec.job.inputs]
+        assert any(n.startswith("in.") for n in names), spec.job.label
+        assert all(Path(p).is_file() for p in spec.job.inputs), spec.job.label
+        assert spec.job.kwargs["args"].get("nprocs", 1) == 1
