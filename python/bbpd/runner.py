@@ -17,6 +17,9 @@ class LammpsError(RuntimeError):
         self.message = message
         self.output = output
 
+    def __reduce__(self):    # picklable, so it can cross a process pool
+        return (type(self), (self.message, self.output))
+
 
 def error_line(output):
     """The first 'ERROR' line LAMMPS printed, or None."""
