@@ -110,7 +110,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--steps", type=int, default=200)
     ap.add_argument("--nprocs", type=int, default=1)
-    ap.add_argument("--scenes", default="plate,contact,kernels,block,mpi")
+    ap.add_argument("--scenes", default="plate,contact,kernels,compact,block,mpi")
     args = ap.parse_args()
     scenes = args.scenes.split(",")
     rows = []
@@ -122,6 +122,10 @@ def main():
             r_ours = run(PLATE, ours("constant", "plane/stress"), args.steps, args.nprocs, plate, tmp / "a")
             r_pmb = run(PLATE, pmb(r_ours["c0"]), args.steps, args.nprocs, plate, tmp / "b")
             rows.append(("plate 2D 20,301 atoms, contact off in ours", r_ours, r_pmb))
+        if "compact" in scenes:
+            r_ours = run(PLATE, ours("gaussian", "plane/stress", "bond/storage compact"), args.steps, args.nprocs, plate, tmp / "k")
+            r_pmb = run(PLATE, pmb(r_ours["c0"]), args.steps, args.nprocs, plate, tmp / "l")
+            rows.append(("plate 2D, bbpd/gaussian bond/storage compact", r_ours, r_pmb))
         if "contact" in scenes:
             r_ours = run(PLATE, ours("constant", "plane/stress", "contact yes"), args.steps, args.nprocs, plate, tmp / "e")
             r_pmb = run(PLATE, pmb(r_ours["c0"]), args.steps, args.nprocs, plate, tmp / "f")

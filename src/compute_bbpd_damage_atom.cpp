@@ -53,7 +53,7 @@ void ComputeBBPDDamageAtom::compute_peratom()
     double intact = 0.0;
     for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + bonds->nbond[i]; k++) {
       const int j = bonds->bj[k];
-      intact += pair->bond_volume(type[i], type[j], bonds->bxi0[k], vfrac[j]);
+      intact += pair->bond_volume(type[i], type[j], bonds->xi0_of(i, k), vfrac[j]);
     }
     damage[i] = 1.0 - intact / bonds->vinit[i];
   }

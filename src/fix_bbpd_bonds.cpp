@@ -185,7 +185,7 @@ void FixBBPDBonds::build_families()
   for (int i = 0; i < nlocal; i++) {
     vinit[i] = 0.0;
     for (int k = bond_start[i]; k < bond_start[i] + nbond[i]; k++)
-      vinit[i] += pair->bond_volume(type[i], type[bj[k]], bxi0[k], atom->vfrac[bj[k]]);
+      vinit[i] += pair->bond_volume(type[i], type[bj[k]], xi0_of(i, k), atom->vfrac[bj[k]]);
   }
 }
 
@@ -207,14 +207,18 @@ void FixBBPDBonds::refresh_cache()
     for (int k = 0; k < npartner[i]; k++) n += partner[i][k] > 0;
   }
   bond_start[nlocal] = n;
-  if (nbond_cache < n) {
+  const bool compact = pair->compact_storage;
+  if (nbond_cache < n || compact != (bxi0 == nullptr)) {
     nbond_cache = n + n / 8;    // headroom: migration changes the count a little
     memory->destroy(bj);
     memory->destroy(bxi0);
     memory->destroy(bcoef);
+    bxi0 = bcoef = nullptr;
     memory->create(bj, nbond_cache, "bbpd/bonds:bj");
-    memory->create(bxi0, nbond_cache, "bbpd/bonds:bxi0");
-    memory->create(bcoef, nbond_cache, "bbpd/bonds:bcoef");
+    if (!compact) {
+      memory->create(bxi0, nbond_cache, "bbpd/bonds:bxi0");
+      memory->create(bcoef, nbond_cache, "bbpd/bonds:bcoef");
+    }
   }
 
   double **x0 = atom->x0;
@@ -244,8 +248,10 @@ void FixBBPDBonds::refresh_cache()
         error->one(FLERR, "Atoms {} and {} share a reference position: bonds need distinct atoms",
                    tag[i], t);
       bj[m] = j;
-      bxi0[m] = xi;
-      bcoef[m] = pair->bond_coef(type[i], type[j], xi, vfrac[j]);
+      if (!compact) {
+        bxi0[m] = xi;
+        bcoef[m] = pair->bond_coef(type[i], type[j], xi, vfrac[j]);
+      }
       m++;
     }
     nbond[i] = m - bond_start[i];
@@ -270,18 +276,37 @@ void FixBBPDBonds::remove_bond(int i, int k)
     else hi = mid - 1;
   }
   const int last = bond_start[i] + nbond[i] - 1;
-  for (int m = k; m < last; m++) {
-    bj[m] = bj[m + 1];
-    bxi0[m] = bxi0[m + 1];
-    bcoef[m] = bcoef[m + 1];
-  }
+  for (int m = k; m < last; m++) bj[m] = bj[m + 1];
+  if (bxi0)
+    for (int m = k; m < last; m++) {
+      bxi0[m] = bxi0[m + 1];
+      bcoef[m] = bcoef[m + 1];
+    }
   nbond[i]--;
+}
+
+/* the same operations as refresh_cache(), so compact storage gives the same bits */
+double FixBBPDBonds::xi0_of(int i, int k) const
+{
+  if (bxi0) return bxi0[k];
+  double **x0 = atom->x0;
+  const int j = bj[k];
+  double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+  return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
+double FixBBPDBonds::coef_of(int i, int k, double xi0) const
+{
+  if (bcoef) return bcoef[k];
+  const int j = bj[k];
+  return pair->bond_coef(atom->type[i], atom->type[j], xi0, atom->vfrac[j]);
 }
 
 double FixBBPDBonds::bytes_per_bond() const
 {
-  // per bond end: partner tag (persistent) + bj + bxi0 + bcoef (cache); two ends per bond
-  return 2.0 * (sizeof(tagint) + sizeof(int) + 2.0 * sizeof(double));
+  // per bond end: partner tag (persistent) + bj [+ bxi0 + bcoef] (cache); two ends per bond
+  const double cached = pair->compact_storage ? 0.0 : 2.0 * sizeof(double);
+  return 2.0 * (sizeof(tagint) + sizeof(int) + cached);
 }
 
 void FixBBPDBonds::apply_notches()
@@ -308,7 +333,7 @@ double FixBBPDBonds::memory_usage()
   double bytes = nmax * (sizeof(int) + sizeof(double));
   bytes += nmax * maxpartner * sizeof(tagint);
   bytes += 2.0 * nlocal_cache * sizeof(int);
-  bytes += (double) nbond_cache * (sizeof(int) + 2.0 * sizeof(double));
+  bytes += (double) nbond_cache * (sizeof(int) + (bxi0 ? 2.0 * sizeof(double) : 0.0));
   return bytes;
 }
 

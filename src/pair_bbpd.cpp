@@ -45,7 +45,7 @@ static constexpr double CONTACT_STIFFNESS_FACTOR = 15.0;
 
 PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k) :
     Pair(lmp), kernel(k), model(BBPD::Model::Solid3D), geom(1.0), spacing(0.0),
-    dt_safety(DT_SAFETY_DEFAULT), contact(0), contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
+    dt_safety(DT_SAFETY_DEFAULT), contact(0), compact_storage(0), contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
     fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
     s0_user(nullptr), bonds(nullptr), dt_bound_paper(0.0), dt_bound(0.0), multi_s0(0),
     s0_single(0.0)
@@ -122,11 +122,21 @@ void PairBBPD::settings(int narg, char **arg)
   dt_safety = DT_SAFETY_DEFAULT;
   contact = 0;
   contact_factor = CONTACT_FACTOR_DEFAULT;
+  compact_storage = 0;
   while (iarg < narg) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "Pair style {}: keyword {} needs a value", style, key);
     if (key == "contact") {
       contact = utils::logical(FLERR, arg[iarg + 1], false, lmp);
+      iarg += 2;
+      continue;
+    }
+    if (key == "bond/storage") {
+      const std::string v = arg[iarg + 1];
+      if (v != "fast" && v != "compact")
+        error->all(FLERR, "Pair style {}: bond/storage must be 'fast' (48 bytes per bond) or "
+                   "'compact' (16 bytes per bond, slower)", style);
+      compact_storage = v == "compact";
       iarg += 2;
       continue;
     }
@@ -275,6 +285,10 @@ void PairBBPD::init_style()
   if (BBPD::family_dimension(model) == 2 && domain->dimension != 2)
     error->all(FLERR, "Pair style {} model {} requires 'dimension 2' (use model 3d for a 3D body)",
                style, BBPD::model_name(model));
+  if (compact_storage && (domain->xperiodic || domain->yperiodic || (domain->zperiodic && domain->dimension == 3)))
+    error->all(FLERR, "Pair style {}: bond/storage compact does not support periodic boundaries "
+               "(reference lengths are recomputed from x0, which is not unwrapped): use "
+               "bond/storage fast", style);
   if (model == BBPD::Model::Solid3D && domain->dimension != 3)
     error->all(FLERR, "Pair style {} model 3d requires 'dimension 3' (use plane/stress or "
                "plane/strain in 2D)", style);
@@ -443,7 +457,8 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
         const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
                      dz = xx[3 * j + 2] - xx[3 * i + 2];
         const double s0 = MULTI ? s0row[type[j]] : s0_single;
-        if (std::sqrt(dx * dx + dy * dy + dz * dz) - bonds->bxi0[k] > s0 * bonds->bxi0[k])
+        const double xi0 = bonds->xi0_of(i, k);
+        if (std::sqrt(dx * dx + dy * dy + dz * dz) - xi0 > s0 * xi0)
           bonds->remove_bond(i, k);
         else
           k++;
@@ -497,12 +512,13 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row)
   const double *xx = atom->x[0];
   const int beg = bonds->bond_start[i], n = bonds->nbond[i];
   const int *bj = bonds->bj + beg;
-  const double *bxi0 = bonds->bxi0 + beg;
-  const double *bcoef = bonds->bcoef + beg;
+  const bool compact = compact_storage;
+  const double *bxi0 = compact ? nullptr : bonds->bxi0 + beg;
+  const double *bcoef = compact ? nullptr : bonds->bcoef + beg;
   double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
 
 #ifdef BBPD_AVX512
-  if (!EVFLAG && !MULTI) {
+  if (!EVFLAG && !MULTI && !compact) {
     if (row_force_avx512<FRACTURE>(xx, i, bj, bxi0, bcoef, n, s0_single, ax, ay, az)) return true;
     lane_sum(ax, ay, az, fi);
     return false;
@@ -519,16 +535,18 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row)
     const int j = bj[k];
     const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
     const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
-    const double elong = r - bxi0[k];
-    if (FRACTURE) broken |= elong > (MULTI ? s0row[type[j]] : s0) * bxi0[k];
-    const double fbond = bcoef[k] * elong / r;
+    const double xi0 = compact ? bonds->xi0_of(i, beg + k) : bxi0[k];
+    const double coef = compact ? bonds->coef_of(i, beg + k, xi0) : bcoef[k];
+    const double elong = r - xi0;
+    if (FRACTURE) broken |= elong > (MULTI ? s0row[type[j]] : s0) * xi0;
+    const double fbond = coef * elong / r;
     ax[l] += fbond * dx;
     ay[l] += fbond * dy;
     az[l] += fbond * dz;
     if (EVFLAG) {
       // half of the bond's micropotential (eq. 6) and of its virial (x_i - x_j) (x) f_i, with
       // f_i = fbond (x_j - x_i): the other end tallies the rest
-      eng += 0.25 * bcoef[k] * elong * elong;
+      eng += 0.25 * coef * elong * elong;
       vir[0] -= 0.5 * fbond * dx * dx;
       vir[1] -= 0.5 * fbond * dy * dy;
       vir[2] -= 0.5 * fbond * dz * dz;
@@ -564,7 +582,8 @@ void PairBBPD::report(FixBBPDBonds *fb)
   int limp = 0;
   for (int i = 0; i < atom->nlocal; i++) {
     double sum = 0.0;
-    for (int k = fb->bond_start[i]; k < fb->bond_start[i] + fb->nbond[i]; k++) sum += fb->bcoef[k];
+    for (int k = fb->bond_start[i]; k < fb->bond_start[i] + fb->nbond[i]; k++)
+      sum += fb->coef_of(i, k, fb->xi0_of(i, k));
     if (fb->nbond[i] > 0 && sum <= 0.0) limp = 1;
     const int it = atom->type[i];
     if (contact)
@@ -642,6 +661,7 @@ void PairBBPD::write_restart_settings(FILE *fp)
   fwrite(&dt_safety, sizeof(double), 1, fp);
   fwrite(&contact, sizeof(int), 1, fp);
   fwrite(&contact_factor, sizeof(double), 1, fp);
+  fwrite(&compact_storage, sizeof(int), 1, fp);
 }
 
 void PairBBPD::read_restart_settings(FILE *fp)
@@ -655,6 +675,7 @@ void PairBBPD::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &dt_safety, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &contact, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &contact_factor, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &compact_storage, sizeof(int), 1, fp, nullptr, error);
   }
   MPI_Bcast(&m, 1, MPI_INT, 0, world);
   MPI_Bcast(&geom, 1, MPI_DOUBLE, 0, world);
@@ -663,6 +684,7 @@ void PairBBPD::read_restart_settings(FILE *fp)
   MPI_Bcast(&dt_safety, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&contact, 1, MPI_INT, 0, world);
   MPI_Bcast(&contact_factor, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&compact_storage, 1, MPI_INT, 0, world);
   model = static_cast<BBPD::Model>(m);
 }
 

@@ -44,6 +44,7 @@ class PairBBPD : public Pair {
   double spacing;    // grid spacing used in the partial-volume correction (eq. 19)
   double dt_safety;  // warn when timestep > dt_safety * stable bound
   int contact;       // short-range repulsion between non-bonded close atoms
+  int compact_storage;    // cache only partner indices (16 B/bond), recompute the rest
   double contact_factor;    // contact distance = contact_factor * spacing
 
  protected:

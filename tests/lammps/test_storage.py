@@ -1,0 +1,60 @@
+"""bond/storage compact (16 bytes per bond) gives the same bits as the default fast storage."""
+import pytest
+
+from bbpd.runner import LammpsError
+
+SCENE = """plugin load bbpdplugin.so
+units si
+dimension 2
+boundary s s p
+atom_style peri
+atom_modify map array
+lattice sq 0.001
+region box block 0 40 0 20 -0.5 0.5
+create_box 1 box
+create_atoms 1 box
+set group all density 7800
+set group all volume 1e-9
+pair_style bbpd/{kernel} plane/strain thickness 0.001 bond/storage {storage}
+pair_coeff 1 1 190e9 6.9e4 0.005
+region left block INF 3 INF INF INF INF
+group left region left
+velocity left set 32 0 0 units box
+fix 1 all nve
+fix 2 all enforce2d
+fix n all bbpd/notch segment 0.02 0.0095 0.03 0.0095
+compute d all bbpd/damage/atom
+compute pe all pe/atom
+timestep 8.7e-8
+thermo 50
+run 300
+write_dump all custom final.dump id x y vx vy c_d c_pe modify format float %.17g sort id
+run 0
+"""
+
+
+@pytest.mark.parametrize("kernel", ["triangular", "gaussian"])
+def test_compact_storage_is_bit_identical(lmp, tmp_path, kernel):
+    dumps, outs = {}, {}
+    for storage in ("fast", "compact"):
+        out = lmp(SCENE.format(kernel=kernel, storage=storage)).output
+        dumps[storage] = (tmp_path / "final.dump").read_text()
+        outs[storage] = out
+    assert "bond storage: 48.0 bytes per bond" in outs["fast"]
+    assert "bond storage: 16.0 bytes per bond" in outs["compact"]
+    broken = [line for line in outs["fast"].splitlines() if "total bonds" in line][-1]
+    assert "(1151 broken)" not in broken    # bonds broke during the run, beyond the notch
+    assert broken in outs["compact"]
+    assert dumps["fast"] == dumps["compact"]
+
+
+def test_compact_storage_rejects_periodic_boundaries(lmp):
+    script = SCENE.format(kernel="gaussian", storage="compact").replace("boundary s s p",
+                                                                       "boundary p s p")
+    with pytest.raises(LammpsError, match="bond/storage compact does not support periodic"):
+        lmp(script)
+
+
+def test_bond_storage_value_is_checked(lmp):
+    with pytest.raises(LammpsError, match="bond/storage must be 'fast'"):
+        lmp(SCENE.format(kernel="gaussian", storage="tiny"))
