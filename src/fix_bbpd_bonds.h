@@ -78,7 +78,6 @@ class FixBBPDBonds : public Fix {
   void build_families();
   void refresh_cache();
   void apply_notches();
-  void report_setup();
 };
 
 }    // namespace LAMMPS_NS

@@ -10,9 +10,6 @@
    cuts that row from the negative side instead of leaking.
 ------------------------------------------------------------------------- */
 
-#ifdef FIX_CLASS
-#else
-
 #ifndef LMP_FIX_BBPD_NOTCH_H
 #define LMP_FIX_BBPD_NOTCH_H
 
@@ -42,5 +39,4 @@ class FixBBPDNotch : public Fix {
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif
