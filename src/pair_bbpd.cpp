@@ -502,7 +502,7 @@ void PairBBPD::nonfinite_error(int i)
 
 /* Force density on atom i from its intact bonds (eq. 21). The sum runs in
    LANES fixed partial sums (bond k goes to lane k % LANES) combined in a fixed
-   order, in the AVX-512 path and the portable path alike: the result depends
+   order, in the SIMD (AVX-512, AVX2) and portable paths alike: the result depends
    only on the row, never on the domain decomposition or on whether energy is
    tallied. With FRACTURE it returns true, and tallies nothing, if a bond of the
    row is past its critical stretch. */
@@ -517,9 +517,9 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row)
   const double *bcoef = compact ? nullptr : bonds->bcoef + beg;
   double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
 
-#ifdef BBPD_AVX512
+#ifdef BBPD_SIMD
   if (!EVFLAG && !MULTI && !compact) {
-    if (row_force_avx512<FRACTURE>(xx, i, bj, bxi0, bcoef, n, s0_single, ax, ay, az)) return true;
+    if (row_force_simd<FRACTURE>(xx, i, bj, bxi0, bcoef, n, s0_single, ax, ay, az)) return true;
     lane_sum(ax, ay, az, fi);
     return false;
   }

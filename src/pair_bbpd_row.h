@@ -2,9 +2,9 @@
    BBPD plugin: the innermost bond loop of the bbpd/* pair styles.
 
    Bond k of a row goes to lane k % LANES; lanes are summed in one fixed order
-   (lane_sum). The AVX-512 kernel computes each bond with the same operations in
-   the same order as the portable loop in pair_bbpd.cpp (no FMA contraction), so
-   both give identical bits.
+   (lane_sum). The AVX-512 and AVX2 kernels compute each bond with the same
+   operations in the same order as the portable loop in pair_bbpd.cpp (no FMA
+   contraction), so all three give identical bits.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_BBPD_ROW_H
@@ -12,6 +12,11 @@
 
 #if defined(__AVX512F__) && defined(__AVX512VL__)
 #define BBPD_AVX512
+#define BBPD_SIMD
+#include <immintrin.h>
+#elif defined(__AVX2__)
+#define BBPD_AVX2
+#define BBPD_SIMD
 #include <immintrin.h>
 #endif
 
@@ -62,6 +67,51 @@ inline bool row_force_avx512(const double *xx, int i, const int *bj, const doubl
   _mm512_storeu_pd(az, fz);
   return false;
 }
+#define row_force_simd row_force_avx512
+#endif
+
+#ifdef BBPD_AVX2
+/* the same as row_force_avx512 with two 4-wide halves: lanes 0-3 and 4-7 */
+template <int FRACTURE>
+inline bool row_force_avx2(const double *xx, int i, const int *bj, const double *bxi0,
+                           const double *bcoef, int n, double s0, double *ax, double *ay, double *az)
+{
+  const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
+                zi = _mm256_set1_pd(xx[3 * i + 2]), vs0 = _mm256_set1_pd(s0);
+  const __m128i three = _mm_set1_epi32(3), iota = _mm_setr_epi32(0, 1, 2, 3);
+  __m256d fx[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()}, fy[2] = {fx[0], fx[0]},
+          fz[2] = {fx[0], fx[0]};
+  __m256d broken = _mm256_setzero_pd();
+  for (int k = 0; k < n; k += 4) {
+    const int h = (k / 4) & 1;    // which half of the 8 lanes
+    const __m128i m32 = _mm_cmpgt_epi32(_mm_set1_epi32(n - k), iota);
+    const __m256d m = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(m32));
+    const __m128i j3 = _mm_mullo_epi32(_mm_maskload_epi32(bj + k, m32), three);
+    const __m256d dx = _mm256_sub_pd(_mm256_mask_i32gather_pd(xi, xx, j3, m, 8), xi);
+    const __m256d dy = _mm256_sub_pd(_mm256_mask_i32gather_pd(yi, xx + 1, j3, m, 8), yi);
+    const __m256d dz = _mm256_sub_pd(_mm256_mask_i32gather_pd(zi, xx + 2, j3, m, 8), zi);
+    const __m256d rsq =
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
+    const __m256d r = _mm256_sqrt_pd(rsq);
+    const __m256d xi0 = _mm256_maskload_pd(bxi0 + k, _mm256_castpd_si256(m));
+    const __m256d elong = _mm256_sub_pd(r, xi0);
+    if (FRACTURE)
+      broken = _mm256_or_pd(broken, _mm256_and_pd(m, _mm256_cmp_pd(elong, _mm256_mul_pd(vs0, xi0), _CMP_GT_OQ)));
+    const __m256d fbond = _mm256_div_pd(
+        _mm256_mul_pd(_mm256_maskload_pd(bcoef + k, _mm256_castpd_si256(m)), elong), r);
+    fx[h] = _mm256_blendv_pd(fx[h], _mm256_add_pd(fx[h], _mm256_mul_pd(fbond, dx)), m);
+    fy[h] = _mm256_blendv_pd(fy[h], _mm256_add_pd(fy[h], _mm256_mul_pd(fbond, dy)), m);
+    fz[h] = _mm256_blendv_pd(fz[h], _mm256_add_pd(fz[h], _mm256_mul_pd(fbond, dz)), m);
+  }
+  if (FRACTURE && _mm256_movemask_pd(broken)) return true;
+  for (int h = 0; h < 2; h++) {
+    _mm256_storeu_pd(ax + 4 * h, fx[h]);
+    _mm256_storeu_pd(ay + 4 * h, fy[h]);
+    _mm256_storeu_pd(az + 4 * h, fz[h]);
+  }
+  return false;
+}
+#define row_force_simd row_force_avx2
 #endif
 
 }    // namespace LAMMPS_NS
