@@ -1,4 +1,5 @@
-"""bond/storage compact (16 bytes per bond) gives the same bits as the default fast storage."""
+"""Storage modes and code paths give the same bits: bond/storage compact (16 bytes per bond) vs
+the default, and the SIMD force kernel vs the portable loop that also tallies energy."""
 import pytest
 
 from bbpd.runner import LammpsError
@@ -58,3 +59,15 @@ def test_compact_storage_rejects_periodic_boundaries(lmp):
 def test_bond_storage_value_is_checked(lmp):
     with pytest.raises(LammpsError, match="bond/storage must be 'fast'"):
         lmp(SCENE.format(kernel="gaussian", storage="tiny"))
+
+
+def test_energy_steps_do_not_change_the_trajectory(lmp, tmp_path):
+    """Thermo on every step runs the portable energy-tallying loop; thermo at the end runs the
+    SIMD kernel (AVX-512 or AVX2 where the build has it): both must give the same bits."""
+    dumps = {}
+    for every in (1, 300):
+        script = SCENE.format(kernel="gaussian", storage="fast").replace("thermo 50",
+                                                                         f"thermo {every}")
+        lmp(script)
+        dumps[every] = (tmp_path / "final.dump").read_text()
+    assert dumps[1] == dumps[300]
