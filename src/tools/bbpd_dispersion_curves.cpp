@@ -13,6 +13,8 @@
 
 #include "bbpd_dispersion.h"
 
+#include "bbpd_cli.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -43,18 +45,11 @@ void usage(std::ostream &os)
 
 [[noreturn]] void fail(const std::string &msg)
 {
-  std::cerr << "bbpd-dispersion-curves: " << msg << "\n";
   usage(std::cerr);
-  std::exit(1);
+  cli::fail(msg);
 }
 
-double to_double(const std::string &flag, const char *text)
-{
-  char *end = nullptr;
-  const double v = std::strtod(text, &end);
-  if (end == text || *end != '\0') fail("bad number '" + std::string(text) + "' for " + flag);
-  return v;
-}
+using cli::to_double;
 
 Options parse(int argc, char **argv)
 {
@@ -129,6 +124,7 @@ void write_kernel(const Options &opt, const KernelInfo &kernel, const std::strin
 
 int main(int argc, char **argv)
 {
+  cli::program = "bbpd-dispersion-curves";
   const Options opt = parse(argc, argv);
   std::error_code ec;
   std::filesystem::create_directories(opt.out, ec);

@@ -30,6 +30,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include "bbpd_cli.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -65,19 +67,8 @@ void usage(std::ostream &os)
         "         [--window hann|none] [--pad P] --out FILE.csv INPUT\n";
 }
 
-[[noreturn]] void fail(const std::string &msg)
-{
-  std::cerr << "bbpd-measure-dispersion: " << msg << "\n";
-  std::exit(1);
-}
-
-double to_double(const std::string &flag, const char *text)
-{
-  char *end = nullptr;
-  const double v = std::strtod(text, &end);
-  if (end == text || *end != '\0') fail("bad number '" + std::string(text) + "' for " + flag);
-  return v;
-}
+using BBPD::cli::fail;
+using BBPD::cli::to_double;
 
 Options parse(int argc, char **argv)
 {
@@ -280,6 +271,7 @@ std::vector<RidgePoint> ridge(const Field &f, const Options &opt, double &domega
 
 int main(int argc, char **argv)
 {
+  BBPD::cli::program = "bbpd-measure-dispersion";
   const Options opt = parse(argc, argv);
   const Field field = read_field(opt);
   double domega = 0.0;
