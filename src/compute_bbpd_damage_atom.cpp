@@ -45,17 +45,11 @@ void ComputeBBPDDamageAtom::compute_peratom()
     vector_atom = damage;
   }
   const int *mask = atom->mask;
-  const int *type = atom->type;
-  const double *vfrac = atom->vfrac;
   for (int i = 0; i < atom->nlocal; i++) {
     damage[i] = 0.0;
     if (!(mask[i] & groupbit) || !bonds->families_built() || bonds->vinit[i] <= 0.0) continue;
-    double intact = 0.0;
-    for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + bonds->nbond[i]; k++) {
-      const int j = bonds->bj[k];
-      intact += pair->bond_volume(type[i], type[j], bonds->xi0_of(i, k), vfrac[j]);
-    }
-    damage[i] = 1.0 - intact / bonds->vinit[i];
+    // the fix keeps the intact volume per atom: no pass over the bonds here
+    damage[i] = 1.0 - bonds->vintact[i] / bonds->vinit[i];
   }
 }
 

@@ -34,7 +34,8 @@ static constexpr double MAX_STEP_SPACINGS = 10.0;
 
 FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxpartner(1), npartner(nullptr), partner(nullptr), vinit(nullptr),
-    bond_start(nullptr), nbond(nullptr), bj(nullptr), bxi0(nullptr), bcoef(nullptr), first(1),
+    bond_start(nullptr), nbond(nullptr), bj(nullptr), bxi0(nullptr), bcoef(nullptr),
+    vintact(nullptr), first(1),
     nlocal_cache(0), nbond_cache(0), list(nullptr), pair(nullptr), extent0(0.0)
 {
   if (narg != 3) error->all(FLERR, "Fix bbpd/bonds takes no arguments (it is created by the pair style)");
@@ -64,6 +65,7 @@ FixBBPDBonds::~FixBBPDBonds()
   memory->destroy(bj);
   memory->destroy(bxi0);
   memory->destroy(bcoef);
+  memory->destroy(vintact);
 }
 
 int FixBBPDBonds::setmask()
@@ -182,11 +184,7 @@ void FixBBPDBonds::build_families()
   first = 0;
   extent0 = local_extent();
   refresh_cache();
-  for (int i = 0; i < nlocal; i++) {
-    vinit[i] = 0.0;
-    for (int k = bond_start[i]; k < bond_start[i] + nbond[i]; k++)
-      vinit[i] += pair->bond_volume(type[i], type[bj[k]], xi0_of(i, k), atom->vfrac[bj[k]]);
-  }
+  for (int i = 0; i < nlocal; i++) vinit[i] = vintact[i];
 }
 
 /* local indices and bond coefficients after every reneighboring */
@@ -198,8 +196,10 @@ void FixBBPDBonds::refresh_cache()
     nlocal_cache = atom->nmax + 1;
     memory->destroy(bond_start);
     memory->destroy(nbond);
+    memory->destroy(vintact);
     memory->create(bond_start, nlocal_cache, "bbpd/bonds:bond_start");
     memory->create(nbond, nlocal_cache, "bbpd/bonds:nbond");
+    memory->create(vintact, nlocal_cache, "bbpd/bonds:vintact");
   }
   int n = 0;
   for (int i = 0; i < nlocal; i++) {
@@ -255,7 +255,17 @@ void FixBBPDBonds::refresh_cache()
       m++;
     }
     nbond[i] = m - bond_start[i];
+    vintact[i] = intact_volume(i);
   }
+}
+
+/* sum of C_v V_j over the intact bonds of atom i, in tag order */
+double FixBBPDBonds::intact_volume(int i) const
+{
+  double v = 0.0;
+  for (int k = bond_start[i]; k < bond_start[i] + nbond[i]; k++)
+    v += pair->bond_volume(atom->type[i], atom->type[bj[k]], xi0_of(i, k), atom->vfrac[bj[k]]);
+  return v;
 }
 
 /* break bond k of local atom i: flag its partner tag, then close the gap in the row */
@@ -283,6 +293,8 @@ void FixBBPDBonds::remove_bond(int i, int k)
       bcoef[m] = bcoef[m + 1];
     }
   nbond[i]--;
+  // summed again rather than decremented: the same bits as after the next reneighboring
+  vintact[i] = intact_volume(i);
 }
 
 /* the same operations as refresh_cache(), so compact storage gives the same bits */
@@ -332,7 +344,7 @@ double FixBBPDBonds::memory_usage()
   const double nmax = atom->nmax;
   double bytes = nmax * (sizeof(int) + sizeof(double));
   bytes += nmax * maxpartner * sizeof(tagint);
-  bytes += 2.0 * nlocal_cache * sizeof(int);
+  bytes += nlocal_cache * (2.0 * sizeof(int) + sizeof(double));
   bytes += (double) nbond_cache * (sizeof(int) + (bxi0 ? 2.0 * sizeof(double) : 0.0));
   return bytes;
 }

@@ -12,6 +12,7 @@
      bj[k]                   local/ghost index of the partner
      bxi0[k]                 reference bond length |x0_j - x0_i|
      bcoef[k]                c(xi0) C_v V_j / xi0: force density per unit elongation
+     vintact[i]              sum of C_v V_j over the intact bonds (damage, eq. 17)
    A bond that breaks is removed from its row at once (the row shifts), so the
    force loop has no per-bond branch. With 'bond/storage compact' (pair style)
    only bj is cached; bxi0 and bcoef are recomputed from x0 when needed (same
@@ -60,6 +61,7 @@ class FixBBPDBonds : public Fix {
   double *vinit;
   int *bond_start, *nbond, *bj;
   double *bxi0, *bcoef;
+  double *vintact;
 
   void remove_bond(int i, int k);
   double xi0_of(int i, int k) const;                // reference length of bond k of atom i
@@ -78,6 +80,7 @@ class FixBBPDBonds : public Fix {
   void build_families();
   void refresh_cache();
   void apply_notches();
+  double intact_volume(int i) const;
 };
 
 }    // namespace LAMMPS_NS

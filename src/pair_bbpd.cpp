@@ -518,9 +518,12 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row)
   double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
 
 #ifdef BBPD_SIMD
-  if (!EVFLAG && !MULTI && !compact) {
-    if (row_force_simd<FRACTURE>(xx, i, bj, bxi0, bcoef, n, s0_single, ax, ay, az)) return true;
+  if (!MULTI && !compact) {
+    RowTally tally;
+    if (row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, bxi0, bcoef, n, s0_single, ax, ay, az, &tally))
+      return true;
     lane_sum(ax, ay, az, fi);
+    if (EVFLAG) tally_lanes(i, tally);
     return false;
   }
 #endif
@@ -529,7 +532,7 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row)
   const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
   const double s0 = s0_single;
   int broken = 0;
-  double eng = 0.0, vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  RowTally lanes = {};    // energy and virial in the same lanes as the SIMD kernels
 
   auto bond = [&](int k, int l) {
     const int j = bj[k];
@@ -546,28 +549,35 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row)
     if (EVFLAG) {
       // half of the bond's micropotential (eq. 6) and of its virial (x_i - x_j) (x) f_i, with
       // f_i = fbond (x_j - x_i): the other end tallies the rest
-      eng += 0.25 * coef * elong * elong;
-      vir[0] -= 0.5 * fbond * dx * dx;
-      vir[1] -= 0.5 * fbond * dy * dy;
-      vir[2] -= 0.5 * fbond * dz * dz;
-      vir[3] -= 0.5 * fbond * dx * dy;
-      vir[4] -= 0.5 * fbond * dx * dz;
-      vir[5] -= 0.5 * fbond * dy * dz;
+      lanes.eng[l] += 0.25 * coef * elong * elong;
+      lanes.vir[0][l] -= 0.5 * fbond * dx * dx;
+      lanes.vir[1][l] -= 0.5 * fbond * dy * dy;
+      lanes.vir[2][l] -= 0.5 * fbond * dz * dz;
+      lanes.vir[3][l] -= 0.5 * fbond * dx * dy;
+      lanes.vir[4][l] -= 0.5 * fbond * dx * dz;
+      lanes.vir[5][l] -= 0.5 * fbond * dy * dz;
     }
   };
   for (int k = 0; k < n; k++) bond(k, k % LANES);
 
   if (FRACTURE && broken) return true;
   lane_sum(ax, ay, az, fi);
-  if (EVFLAG) {
-    if (eflag_global) eng_vdwl += eng;
-    if (eflag_atom) eatom[i] += eng;
-    for (int m = 0; m < 6; m++) {
-      if (vflag_global) virial[m] += vir[m];
-      if (vflag_atom) vatom[i][m] += vir[m];
-    }
-  }
+  if (EVFLAG) tally_lanes(i, lanes);
   return false;
+}
+
+/* energy and virial of the row of atom i, where LAMMPS asked for them */
+void PairBBPD::tally_lanes(int i, const RowTally &lanes)
+{
+  const double eng = lane_total(lanes.eng);
+  double vir[6];
+  for (int c = 0; c < 6; c++) vir[c] = lane_total(lanes.vir[c]);
+  if (eflag_global) eng_vdwl += eng;
+  if (eflag_atom) eatom[i] += eng;
+  for (int m = 0; m < 6; m++) {
+    if (vflag_global) virial[m] += vir[m];
+    if (vflag_atom) vatom[i][m] += vir[m];
+  }
 }
 
 /* ----------------------------------------------------------------------

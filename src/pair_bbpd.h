@@ -12,6 +12,8 @@
 
 namespace LAMMPS_NS {
 
+struct RowTally;    // pair_bbpd_row.h
+
 class PairBBPD : public Pair {
  public:
   PairBBPD(class LAMMPS *, BBPD::KernelInfo);
@@ -58,6 +60,7 @@ class PairBBPD : public Pair {
   void allocate();
   void compute_contact();
   [[noreturn]] void nonfinite_error(int i);
+  void tally_lanes(int i, const RowTally &lanes);
   bool bonded(int i, tagint jtag) const;
   int multi_s0;           // critical stretch differs between type pairs
   double s0_single;       // the critical stretch when it does not

@@ -24,6 +24,17 @@ namespace LAMMPS_NS {
 
 constexpr int LANES = 8;    // one AVX-512 register of doubles
 
+// energy (half of each bond's micropotential) and virial lanes of a row, when tallied
+struct RowTally {
+  double eng[LANES];
+  double vir[6][LANES];    // xx yy zz xy xz yz
+};
+
+inline double lane_total(const double *a)
+{
+  return ((a[0] + a[1]) + (a[2] + a[3])) + ((a[4] + a[5]) + (a[6] + a[7]));
+}
+
 inline void lane_sum(const double *ax, const double *ay, const double *az, double *f)
 {
   f[0] = ((ax[0] + ax[1]) + (ax[2] + ax[3])) + ((ax[4] + ax[5]) + (ax[6] + ax[7]));
@@ -34,11 +45,14 @@ inline void lane_sum(const double *ax, const double *ay, const double *az, doubl
 #ifdef BBPD_AVX512
 /* lanes of the force density on atom i from n bonds (partner bj, reference length
    bxi0, coefficient bcoef); with FRACTURE returns true if a bond is past s0 */
-template <int FRACTURE>
+template <int FRACTURE, int EV>
 inline bool row_force_avx512(const double *xx, int i, const int *bj, const double *bxi0,
                              const double *bcoef, int n, double s0, double *ax, double *ay,
-                             double *az)
+                             double *az, RowTally *tally)
 {
+  const __m512d quarter = _mm512_set1_pd(0.25), half = _mm512_set1_pd(0.5);
+  __m512d eacc = _mm512_setzero_pd(), vacc[6];
+  for (auto &v : vacc) v = _mm512_setzero_pd();
   const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
                 zi = _mm512_set1_pd(xx[3 * i + 2]), vs0 = _mm512_set1_pd(s0);
   const __m256i three = _mm256_set1_epi32(3);
@@ -60,11 +74,26 @@ inline bool row_force_avx512(const double *xx, int i, const int *bj, const doubl
     fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fbond, dx));
     fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fbond, dy));
     fz = _mm512_mask_add_pd(fz, m, fz, _mm512_mul_pd(fbond, dz));
+    if (EV) {
+      const __m512d coef = _mm512_maskz_loadu_pd(m, bcoef + k);
+      eacc = _mm512_mask_add_pd(eacc, m, eacc,
+                                _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(quarter, coef), elong), elong));
+      const __m512d hf = _mm512_mul_pd(half, fbond);
+      const __m512d d[3] = {dx, dy, dz};
+      const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
+      for (int c = 0; c < 6; c++)
+        vacc[c] = _mm512_mask_sub_pd(vacc[c], m, vacc[c],
+                                     _mm512_mul_pd(_mm512_mul_pd(hf, d[pa[c]]), d[pb[c]]));
+    }
   }
   if (FRACTURE && broken) return true;
   _mm512_storeu_pd(ax, fx);
   _mm512_storeu_pd(ay, fy);
   _mm512_storeu_pd(az, fz);
+  if (EV) {
+    _mm512_storeu_pd(tally->eng, eacc);
+    for (int c = 0; c < 6; c++) _mm512_storeu_pd(tally->vir[c], vacc[c]);
+  }
   return false;
 }
 #define row_force_simd row_force_avx512
@@ -72,10 +101,14 @@ inline bool row_force_avx512(const double *xx, int i, const int *bj, const doubl
 
 #ifdef BBPD_AVX2
 /* the same as row_force_avx512 with two 4-wide halves: lanes 0-3 and 4-7 */
-template <int FRACTURE>
+template <int FRACTURE, int EV>
 inline bool row_force_avx2(const double *xx, int i, const int *bj, const double *bxi0,
-                           const double *bcoef, int n, double s0, double *ax, double *ay, double *az)
+                           const double *bcoef, int n, double s0, double *ax, double *ay, double *az,
+                           RowTally *tally)
 {
+  const __m256d quarter = _mm256_set1_pd(0.25), half = _mm256_set1_pd(0.5);
+  __m256d eacc[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()}, vacc[6][2];
+  for (auto &v : vacc) v[0] = v[1] = _mm256_setzero_pd();
   const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
                 zi = _mm256_set1_pd(xx[3 * i + 2]), vs0 = _mm256_set1_pd(s0);
   const __m128i three = _mm_set1_epi32(3), iota = _mm_setr_epi32(0, 1, 2, 3);
@@ -102,12 +135,28 @@ inline bool row_force_avx2(const double *xx, int i, const int *bj, const double 
     fx[h] = _mm256_blendv_pd(fx[h], _mm256_add_pd(fx[h], _mm256_mul_pd(fbond, dx)), m);
     fy[h] = _mm256_blendv_pd(fy[h], _mm256_add_pd(fy[h], _mm256_mul_pd(fbond, dy)), m);
     fz[h] = _mm256_blendv_pd(fz[h], _mm256_add_pd(fz[h], _mm256_mul_pd(fbond, dz)), m);
+    if (EV) {
+      const __m256d coef = _mm256_maskload_pd(bcoef + k, _mm256_castpd_si256(m));
+      const __m256d e = _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(quarter, coef), elong), elong);
+      eacc[h] = _mm256_blendv_pd(eacc[h], _mm256_add_pd(eacc[h], e), m);
+      const __m256d hf = _mm256_mul_pd(half, fbond);
+      const __m256d d[3] = {dx, dy, dz};
+      const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
+      for (int c = 0; c < 6; c++) {
+        const __m256d v = _mm256_mul_pd(_mm256_mul_pd(hf, d[pa[c]]), d[pb[c]]);
+        vacc[c][h] = _mm256_blendv_pd(vacc[c][h], _mm256_sub_pd(vacc[c][h], v), m);
+      }
+    }
   }
   if (FRACTURE && _mm256_movemask_pd(broken)) return true;
   for (int h = 0; h < 2; h++) {
     _mm256_storeu_pd(ax + 4 * h, fx[h]);
     _mm256_storeu_pd(ay + 4 * h, fy[h]);
     _mm256_storeu_pd(az + 4 * h, fz[h]);
+    if (EV) {
+      _mm256_storeu_pd(tally->eng + 4 * h, eacc[h]);
+      for (int c = 0; c < 6; c++) _mm256_storeu_pd(tally->vir[c] + 4 * h, vacc[c][h]);
+    }
   }
   return false;
 }
