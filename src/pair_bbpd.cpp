@@ -443,33 +443,65 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
   const double *xx = atom->x[0];
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
-  for (int i = 0; i < nlocal; i++) {
-    const double *s0row = MULTI ? critical_stretch[type[i]] : nullptr;
-    double fi[3];
-    if (!FRACTURE) {
-      row_force<EVFLAG, 0, MULTI>(i, fi, s0row);
-    } else if (row_force<EVFLAG, 1, MULTI>(i, fi, s0row)) {
-      // a bond of the row is past its critical stretch: remove such bonds (irreversibly, in
-      // tag order), then sum the row again
-      int k = bonds->bond_start[i];
-      while (k < bonds->bond_start[i] + bonds->nbond[i]) {
-        const int j = bonds->bj[k];
-        const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
-                     dz = xx[3 * j + 2] - xx[3 * i + 2];
-        const double s0 = MULTI ? s0row[type[j]] : s0_single;
-        const double xi0 = bonds->xi0_of(i, k);
-        if (std::sqrt(dx * dx + dy * dy + dz * dz) - xi0 > s0 * xi0)
-          bonds->remove_bond(i, k);
-        else
-          k++;
+  // every atom sums only its own bonds, so threads share nothing but the energy/virial totals;
+  // the forces are the same bits for any number of threads
+  double totals[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  int bad = -1;    // an atom whose force is not finite (errors are raised outside the threads)
+#if defined(_OPENMP)
+#pragma omp parallel num_threads(comm->nthreads) if (comm->nthreads > 1)
+#endif
+  {
+    double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+#if defined(_OPENMP)
+    // chunks of 512 atoms dealt out in turn: rows differ in length near surfaces and cracks
+    // (plate, 2 threads: 1.92x speed-up; one half per thread: 1.65x)
+#pragma omp for schedule(static, 512)
+#endif
+    for (int i = 0; i < nlocal; i++) {
+      const double *s0row = MULTI ? critical_stretch[type[i]] : nullptr;
+      double fi[3];
+      if (!FRACTURE) {
+        row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc);
+      } else if (row_force<EVFLAG, 1, MULTI>(i, fi, s0row, acc)) {
+        // a bond of the row is past its critical stretch: remove such bonds (irreversibly, in
+        // tag order), then sum the row again
+        int k = bonds->bond_start[i];
+        while (k < bonds->bond_start[i] + bonds->nbond[i]) {
+          const int j = bonds->bj[k];
+          const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
+                       dz = xx[3 * j + 2] - xx[3 * i + 2];
+          const double s0 = MULTI ? s0row[type[j]] : s0_single;
+          const double xi0 = bonds->xi0_of(i, k);
+          if (std::sqrt(dx * dx + dy * dy + dz * dz) - xi0 > s0 * xi0)
+            bonds->remove_bond(i, k);
+          else
+            k++;
+        }
+        row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc);
       }
-      row_force<EVFLAG, 0, MULTI>(i, fi, s0row);
+      // three compares per atom turn the first NaN/inf into an ERROR that names its cause
+      if (!std::isfinite(fi[0]) || !std::isfinite(fi[1]) || !std::isfinite(fi[2])) {
+#if defined(_OPENMP)
+#pragma omp critical(bbpd_nonfinite)
+#endif
+        if (bad < 0 || i < bad) bad = i;
+      }
+      f[i][0] += fi[0];
+      f[i][1] += fi[1];
+      f[i][2] += fi[2];
     }
-    // three compares per atom turn the first NaN/inf into an ERROR that names its cause
-    if (!std::isfinite(fi[0]) || !std::isfinite(fi[1]) || !std::isfinite(fi[2])) nonfinite_error(i);
-    f[i][0] += fi[0];
-    f[i][1] += fi[1];
-    f[i][2] += fi[2];
+    if (EVFLAG) {
+#if defined(_OPENMP)
+#pragma omp critical(bbpd_totals)
+#endif
+      for (int m = 0; m < 7; m++) totals[m] += acc[m];
+    }
+  }
+  if (bad >= 0) nonfinite_error(bad);
+  if (EVFLAG) {
+    if (eflag_global) eng_vdwl += totals[0];
+    if (vflag_global)
+      for (int m = 0; m < 6; m++) virial[m] += totals[1 + m];
   }
 }
 
@@ -507,7 +539,7 @@ void PairBBPD::nonfinite_error(int i)
    tallied. With FRACTURE it returns true, and tallies nothing, if a bond of the
    row is past its critical stretch. */
 template <int EVFLAG, int FRACTURE, int MULTI>
-bool PairBBPD::row_force(int i, double *fi, const double *s0row)
+bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
 {
   const double *xx = atom->x[0];
   const int beg = bonds->bond_start[i], n = bonds->nbond[i];
@@ -523,7 +555,7 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row)
     if (row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, bxi0, bcoef, n, s0_single, ax, ay, az, &tally))
       return true;
     lane_sum(ax, ay, az, fi);
-    if (EVFLAG) tally_lanes(i, tally);
+    if (EVFLAG) tally_lanes(i, tally, acc);
     return false;
   }
 #endif
@@ -562,20 +594,21 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row)
 
   if (FRACTURE && broken) return true;
   lane_sum(ax, ay, az, fi);
-  if (EVFLAG) tally_lanes(i, lanes);
+  if (EVFLAG) tally_lanes(i, lanes, acc);
   return false;
 }
 
-/* energy and virial of the row of atom i, where LAMMPS asked for them */
-void PairBBPD::tally_lanes(int i, const RowTally &lanes)
+/* energy and virial of the row of atom i: per atom where LAMMPS asked for them, and the
+   global totals into acc (energy, then the six virial components) */
+void PairBBPD::tally_lanes(int i, const RowTally &lanes, double *acc)
 {
   const double eng = lane_total(lanes.eng);
   double vir[6];
   for (int c = 0; c < 6; c++) vir[c] = lane_total(lanes.vir[c]);
-  if (eflag_global) eng_vdwl += eng;
+  acc[0] += eng;
   if (eflag_atom) eatom[i] += eng;
   for (int m = 0; m < 6; m++) {
-    if (vflag_global) virial[m] += vir[m];
+    acc[1 + m] += vir[m];
     if (vflag_atom) vatom[i][m] += vir[m];
   }
 }

@@ -60,13 +60,13 @@ class PairBBPD : public Pair {
   void allocate();
   void compute_contact();
   [[noreturn]] void nonfinite_error(int i);
-  void tally_lanes(int i, const RowTally &lanes);
+  void tally_lanes(int i, const RowTally &lanes, double *acc);
   bool bonded(int i, tagint jtag) const;
   int multi_s0;           // critical stretch differs between type pairs
   double s0_single;       // the critical stretch when it does not
   template <int EVFLAG, int FRACTURE, int MULTI> void eval();
   template <int EVFLAG, int FRACTURE, int MULTI>
-  bool row_force(int i, double *fi, const double *s0row);
+  bool row_force(int i, double *fi, const double *s0row, double *acc);
   void coeff_from_file(const char *file, const char *material, double &E, double &Gc);
 };
 
