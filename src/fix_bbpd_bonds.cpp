@@ -239,7 +239,7 @@ void FixBBPDBonds::refresh_cache()
                    "step {}: either the run is unstable (timestep {:.6g}, stable bound {:.6g}) "
                    "or an intact bond stretched beyond the ghost cutoff: then increase it with "
                    "'comm_modify cutoff' (at least horizon + maximum bond elongation)", t, tag[i],
-                   update->ntimestep, update->dt, *(double *) pair->extract_bound());
+                   update->ntimestep, update->dt, *pair->extract_bound());
       if (periodic) j = domain->closest_image(x[i], j);
       double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
       if (periodic) BBPDCompat::minimum_image(domain, d);

@@ -36,7 +36,6 @@ class PairBBPD : public Pair {
   double bond_coef(int itype, int jtype, double xi0, double vj) const;
   double bond_volume(int itype, int jtype, double xi0, double vj) const;
   double grid_spacing_of(double vfrac) const;
-  bool fracture() const { return fracture_any; }
   const double *extract_bound() const { return &dt_bound; }
   void report(class FixBBPDBonds *);
 
