@@ -6,18 +6,16 @@ Prints the pair time per step, the time per directed bond evaluation (should not
 or m), and the setup time (bond families + caches) per bond: all should stay flat if the
 cost is linear in the number of bonds.
 
-Usage: bench/scaling.py [--sizes 1e4,1e5,1e6] [--ms 3,5,8] [--steps 20]
+Usage (from the repository root): tools/python bench/scaling.py [--sizes 1e4,1e5,1e6] [--ms 3,5,8] [--steps 20]
 """
 import argparse
 import re
-import sys
 import tempfile
 import time
 from math import sqrt
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "python"))
-from bbpd.runner import run_lammps  # noqa: E402
+from bbpd.runner import run_lammps
 
 SCRIPT = """
 plugin load bbpdplugin.so

@@ -13,7 +13,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 
 
 def local_extension(name):
-    """A Sphinx extension of doc/_ext, loaded from its file (sys.path stays untouched)."""
+    """A Sphinx extension of doc/_ext, loaded from its file, not through the import path."""
     spec = importlib.util.spec_from_file_location(f"bbpd_doc_{name}",
                                                   os.path.join(here, "_ext", f"{name}.py"))
     module = importlib.util.module_from_spec(spec)

@@ -10,7 +10,6 @@ import hashlib
 import importlib
 import json
 import os
-import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -44,7 +43,6 @@ def plugin_path():
 
 def _call(func, workdir, kwargs):
     module, name = func.split(":")
-    sys.path.insert(0, str(ROOT / "python"))
     fn = getattr(importlib.import_module(module), name)
     start = time.perf_counter()
     result = fn(workdir=workdir, **kwargs)

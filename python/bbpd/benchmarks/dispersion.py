@@ -15,7 +15,7 @@ errors     max |omega_measured/omega_analytic - 1| over the k whose ridge carrie
            (power >= MIN_POWER of the strongest) in a k dx range.
 
 Command line (from the repository root):
-  PYTHONPATH=python /usr/bin/python3 -m bbpd.benchmarks.dispersion --work /tmp/dispersion \
+  tools/python -m bbpd.benchmarks.dispersion --work /tmp/dispersion \
       --figures DIR
 """
 

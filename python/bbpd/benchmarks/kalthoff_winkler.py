@@ -29,7 +29,7 @@ far damage    atoms whose damage grew during the run and lie farther than delta 
               anything else is reported as other far damage.
 
 Command line (from the repository root):
-  PYTHONPATH=python /usr/bin/python3 -m bbpd.benchmarks.kalthoff_winkler \
+  tools/python -m bbpd.benchmarks.kalthoff_winkler \
       --kernels constant triangular gaussian --dx 2e-3 1e-3 --work /tmp/kw --figures DIR
 """
 

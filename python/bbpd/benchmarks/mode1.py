@@ -16,7 +16,7 @@ In plane stress 2 mu/(kappa+1) = E/4 whatever nu is, so the two conventions give
 K_PD there; they differ only in the analytic curve (amplitude factor and arrival time).
 
 Command line (from the repository root):
-  PYTHONPATH=python /usr/bin/python3 -m bbpd.benchmarks.mode1 --table2 --table3 \
+  tools/python -m bbpd.benchmarks.mode1 --table2 --table3 \
       --work /tmp/mode1 --figures examples/mode1-semi-infinite
 """
 

@@ -16,7 +16,7 @@ changes K_II by < 0.3 % up to 10 us (README).  Model: plane strain, whose implie
 the plate's nu, so E, nu, c_s and c_d of the reference are those of the BBPD model.
 
 Command line (from the repository root):
-  PYTHONPATH=python /usr/bin/python3 -m bbpd.benchmarks.mode2 --kernels constant triangular \
+  tools/python -m bbpd.benchmarks.mode2 --kernels constant triangular \
       gaussian --dx 1e-3 0.5e-3 --work /tmp/mode2 --figures examples/mode2-central-crack
 """
 

@@ -30,7 +30,7 @@ drift      a free (non-periodic) noisy plate at 0.5 Y for 20,000 steps, total en
            fluctuation of the measured energy around velocity Verlet's conserved shadow energy).
 
 Command line (from the repository root):
-  PYTHONPATH=python /usr/bin/python3 -m bbpd.benchmarks.stability --out DIR
+  tools/python -m bbpd.benchmarks.stability --out DIR
 writes DIR/stability.json and DIR/stability.md (the table of doc/stability.md).
 """
 
