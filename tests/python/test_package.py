@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """python/ is an installable package: pip installs it offline with Debian's setuptools, and
-nothing in the repository patches sys.path to find it."""
+nothing in the repository edits the import path to find it."""
 import re
 import shutil
 import subprocess
