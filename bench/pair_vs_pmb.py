@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Side-by-side cost of our bbpd/* pair styles and LAMMPS's peri/pmb on the same scene.
 
 Scene: 2D plate 200 x 100 spacing 1 mm (20,301 atoms), elastic, a small impact

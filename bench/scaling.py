@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Scaling of bbpd/constant with the number of atoms N and the horizon ratio m = delta/dx.
 
 2D plane-stress plates of N = 1e4, 1e5, 1e6 atoms for m = 3, 5, 8, elastic, a few steps.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Sphinx configuration of the BBPD documentation.
 # Build (Debian's python3-sphinx 5.3, no extra packages):
 #   /usr/bin/python3 -m sphinx -W -b html doc /tmp/docbuild

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Serve MathJax from the built HTML itself, so that formulas render without a network.
 
 Sphinx's mathjax extension loads MathJax from a CDN by default.  This extension points

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Run benchmark jobs on all cores with progress, reusing finished runs whose inputs did not change.
 
 A job is a module-level function called with keyword arguments and a work folder; it returns a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Wave dispersion of a 1D BBPD bar: analytic curves and dispersion measured from LAMMPS runs
 (Bouaraquia & Mabssout 2026, sec. 4.1, Figs. 4-6).
 
@@ -38,7 +39,7 @@ EXAMPLE = ROOT / "examples" / "dispersion-1d" / "in.dispersion"
 KERNELS = ("constant", "triangular", "gaussian")
 
 PAPER_M, PAPER_DELTA = 5, 1.0e-3   # Figs. 4-6: m = 5, delta = 1 mm
-KDX_RANGE = (0.1, 2.5)             # issue 5: agreement required up to k dx = 2.5 at least
+KDX_RANGE = (0.1, 2.5)             # agreement required up to k dx = 2.5 at least
 MIN_POWER = 1.0e-6                 # "carries energy": ridge power relative to the strongest;
                                    # dump round-off (10 digits) sits near 1e-18
 TABLE_KDX = (1.0, 2.0, 2.5)        # where the note quotes phase velocities

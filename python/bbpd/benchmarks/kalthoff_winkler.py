@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Kalthoff-Winkler impact benchmark (Bouaraquia & Mabssout 2026, sec. 4.2.3).
 
 Runs examples/kalthoff-winkler/in.kalthoff_winkler and measures, from its outputs only:

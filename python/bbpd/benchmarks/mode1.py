@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Stationary Mode-I semi-infinite crack (Bouaraquia & Mabssout 2026, sec. 4.2.1).
 
 Runs examples/mode1-semi-infinite/in.mode1 (compute bbpd/dsif every step) and compares

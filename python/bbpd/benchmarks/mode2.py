@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Mode-II central crack under uniform shear (Bouaraquia & Mabssout 2026, sec. 4.2.2).
 
 Runs examples/mode2-central-crack/in.mode2 (compute bbpd/dsif at both tips, every step) and
