@@ -34,9 +34,9 @@ import numpy as np
 
 from bbpd import jobs as jobmod
 from bbpd.jobs import Job
+from bbpd.kernels import COLORS, KERNELS
 
 ROOT = Path(__file__).resolve().parents[2]
-KERNELS = ("constant", "triangular", "gaussian")
 BENCH = ROOT / "python" / "bbpd" / "benchmarks"
 FREUND_PY = ROOT / "python" / "bbpd" / "freund.py"
 METRICS_PY = ROOT / "python" / "bbpd" / "metrics.py"
@@ -249,7 +249,6 @@ def ranking(values):
 
 # --------------------------------------------------------------------------- K(t) figures
 
-COLORS = {"constant": "tab:blue", "triangular": "tab:orange", "gaussian": "tab:green"}
 RESOLUTION_COLORS = ("tab:purple", "tab:red", "tab:green", "tab:blue", "tab:brown")
 
 

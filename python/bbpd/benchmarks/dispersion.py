@@ -32,11 +32,11 @@ from pathlib import Path
 
 import numpy as np
 
+from bbpd.kernels import COLORS, KERNELS
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "dispersion-1d" / "in.dispersion"
-KERNELS = ("constant", "triangular", "gaussian")
 
 PAPER_M, PAPER_DELTA = 5, 1.0e-3   # Figs. 4-6: m = 5, delta = 1 mm
 KDX_RANGE = (0.1, 2.5)             # agreement required up to k dx = 2.5 at least
@@ -260,7 +260,6 @@ def measure(kernels=KERNELS, work="/tmp/bbpd-dispersion", nprocs=1, kdx_range=KD
 
 # --------------------------------------------------------------------------- figures
 
-COLORS = {"constant": "tab:blue", "triangular": "tab:orange", "gaussian": "tab:green"}
 MARK_EVERY = 8        # measured points plotted: every 8th k (the grid has natoms/2 of them)
 OMEGA_UNIT = 1.0e6    # Fig. 4 plots omega in 1e6 rad/s
 

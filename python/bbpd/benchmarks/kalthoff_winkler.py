@@ -46,11 +46,11 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
+from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "kalthoff-winkler" / "in.kalthoff_winkler"
-KERNELS = ("constant", "triangular", "gaussian")
 
 # paper sec. 4.2.3: crack initiation times (us) and the experiment's crack angle
 PAPER_INITIATION_US = {"constant": 20.0, "triangular": 20.8, "gaussian": 21.7}

@@ -29,11 +29,11 @@ from pathlib import Path
 import numpy as np
 
 from bbpd import freund, metrics
+from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "mode1-semi-infinite" / "in.mode1"
-KERNELS = ("constant", "triangular", "gaussian")
 
 # paper sec. 4.2.1
 E = 210.0e9

@@ -29,11 +29,11 @@ from pathlib import Path
 import numpy as np
 
 from bbpd import freund, metrics
+from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "mode2-central-crack" / "in.mode2"
-KERNELS = ("constant", "triangular", "gaussian")
 
 # paper sec. 4.2.2 (plate 104 x 40 mm, 2a = 24 mm)
 E = 73.5e9

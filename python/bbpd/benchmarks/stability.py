@@ -44,9 +44,9 @@ from pathlib import Path
 import numpy as np
 
 from bbpd import reference as ref
+from bbpd.kernels import KERNELS
 from bbpd.runner import LammpsError, run_lammps
 
-KERNELS = ("constant", "triangular", "gaussian")
 HORIZON_RATIOS = (1, 2, 3, 5, 10)    # m = delta/dx
 
 DX = 1.0e-3              # m
