@@ -51,6 +51,21 @@ def shell_blocks():
                 yield pytest.param(body, id=f"{path.relative_to(ROOT)}:{line}")
 
 
+INLINE_COMMAND = re.compile(r"^(\w+=\S+ )*(tools/|bench/|/usr/bin/python3 |mpirun |cmake )")
+
+
+def inline_commands():
+    """Commands written inline (`tools/lmp -in in.script` in Markdown, ``...`` in RST)."""
+    for path in doc_files():
+        text = path.read_text(encoding="utf-8")
+        pattern = r"``([^`]+)``" if path.suffix == ".rst" else r"(?<!`)`([^`]+)`(?!`)"
+        for m in re.finditer(pattern, text):
+            code = " ".join(m.group(1).split())
+            if INLINE_COMMAND.match(code) and " " in code:
+                line = text[:m.start()].count("\n") + 1
+                yield pytest.param(code, id=f"{path.relative_to(ROOT)}:{line}: {code}")
+
+
 def split_commands(body):
     """Token lists of the commands of a block (continuations joined, comments dropped)."""
     commands = []
@@ -149,7 +164,7 @@ def run_cheap(command, session):
     return name
 
 
-@pytest.mark.parametrize("body", list(shell_blocks()))
+@pytest.mark.parametrize("body", list(shell_blocks()) + list(inline_commands()))
 def test_shell_block_runs_as_written(body):
     session = Session()
     for command in split_commands(body):
