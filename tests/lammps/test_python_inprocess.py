@@ -5,6 +5,7 @@ The in-process runs happen in a child Python started by tools/python: LAMMPS ini
 in the process that loads it, and this pytest process goes on to start mpirun for other tests.
 """
 import json
+import os
 import subprocess
 import textwrap
 from pathlib import Path
@@ -21,9 +22,10 @@ MODE1 = ROOT / "examples" / "mode1-semi-infinite" / "in.mode1"
 PAPER_TABLE2_L2_DX01 = 17.70    # %, Gaussian kernel at dx = 0.1 m (paper Table 2)
 
 
-def tools_python(*args, cwd, timeout=600):
+def tools_python(*args, cwd, timeout=600, version=None):
+    env = dict(os.environ, **({"BBPD_LAMMPS_VERSION": version} if version else {}))
     proc = subprocess.run([str(TOOLS_PYTHON), *args], cwd=cwd, capture_output=True, text=True,
-                          timeout=timeout)
+                          timeout=timeout, env=env)
     assert proc.returncode == 0, f"tools/python {' '.join(args)} failed:\n{proc.stderr[-3000:]}"
     return proc.stdout
 
@@ -109,3 +111,10 @@ def test_a_file_that_is_not_the_plugin_is_an_error(tmp_path):
     """)
     out = tools_python("-c", script, cwd=tmp_path)
     assert out.startswith("refused:") and "could not load" in out
+
+
+@pytest.mark.parametrize("version", ["20260704", "20250204"])
+def test_tools_python_selects_the_lammps_build(tmp_path, version):
+    script = ("import bbpd; lmp = bbpd.lammps(); "
+              "print(lmp.version(), lmp.has_style('compute', 'bbpd/dsif'))")
+    assert tools_python("-c", script, cwd=tmp_path, version=version).split() == [version, "True"]
