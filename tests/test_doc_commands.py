@@ -192,7 +192,8 @@ def test_every_markdown_code_block_names_its_language():
     for path in doc_files():
         if path.suffix == ".md":
             for lang, body, line in code_blocks(path):
-                assert lang, f"{path.relative_to(ROOT)}:{line}: ``` without a language (sh, lammps, ...)"
+                assert lang, \
+                    f"{path.relative_to(ROOT)}:{line}: ``` without a language (sh, lammps, ...)"
 
 
 def test_shell_blocks_are_found():

@@ -25,7 +25,8 @@ def test_licence_is_gpl2_or_later():
     text = (ROOT / "LICENSE").read_text()
     assert "GNU GENERAL PUBLIC LICENSE" in text and "Version 2, June 1991" in text
     assert "either version 2\nof the License, or (at your option) any later version" in text
-    assert 'license = {text = "GPL-2.0-or-later"}' in (ROOT / "python" / "pyproject.toml").read_text()
+    project = (ROOT / "python" / "pyproject.toml").read_text()
+    assert 'license = {text = "GPL-2.0-or-later"}' in project
 
 
 def test_every_source_file_has_an_spdx_line():
@@ -45,9 +46,8 @@ def test_clang_format_is_lammps_style():
         if theirs.is_file():
             assert ours == theirs.read_text()
             return
-    for setting in ("BasedOnStyle:                         LLVM", "ColumnLimit:                          100",
-                    "IndentWidth:                          2"):
-        assert setting in ours
+    for key, value in (("BasedOnStyle", "LLVM"), ("ColumnLimit", "100"), ("IndentWidth", "2")):
+        assert re.search(rf"^{key}:\s+{value}$", ours, re.M), key
 
 
 COMMENT = {".py": r"#.*|\"\"\"[\s\S]*?\"\"\"", ".cpp": r"//.*|/\*[\s\S]*?\*/",

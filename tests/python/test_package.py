@@ -13,7 +13,8 @@ PYTHON = "/usr/bin/python3"
 def test_editable_install_offline_into_a_venv(tmp_path):
     # a copy of python/, so that the install's metadata is not written into the checkout
     src = tmp_path / "python"
-    shutil.copytree(ROOT / "python", src, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+    shutil.copytree(ROOT / "python", src,
+                    ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
     venv = tmp_path / "venv"
     subprocess.run([PYTHON, "-m", "venv", "--system-site-packages", str(venv)], check=True)
     pip = subprocess.run([str(venv / "bin" / "python"), "-m", "pip", "install", "--no-index",
@@ -35,7 +36,8 @@ def test_package_version_is_the_plugin_version():
 
 
 def test_nothing_patches_sys_path():
-    tracked = subprocess.run(["git", "ls-files", "--cached", "--others", "--exclude-standard"], cwd=ROOT, capture_output=True, text=True,
+    tracked = subprocess.run(["git", "ls-files", "--cached", "--others", "--exclude-standard"],
+                             cwd=ROOT, capture_output=True, text=True,
                              check=True).stdout.split()
     needle = "sys." + "path"    # not written out whole, so that this file passes its own check
     offenders = [f for f in tracked if f.endswith(".py") and (ROOT / f).is_file()
