@@ -1,23 +1,22 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Side-by-side cost of our bbpd/* pair styles and LAMMPS's peri/pmb on the same scene.
 
-Scene (issue 7): 2D plate 200 x 100 spacing 1 mm (20,301 atoms), elastic, a small impact
+Scene: 2D plate 200 x 100 spacing 1 mm (20,301 atoms), elastic, a small impact
 on the left layer, 200 steps. peri/pmb's family is |xi| <= delta_pmb = 5.001 mm; ours is
 |xi| < delta + dx/2, so delta = 4.5011 mm gives the same bonds. peri/pmb's c is set to our
 constant-kernel c0 (same force law up to the partial-volume weights).
 
-Usage: bench/pair_vs_pmb.py [--steps 200] [--nprocs 1] [--scenes plate,block]
+Usage (from the repository root): tools/python bench/pair_vs_pmb.py [--steps 200] [--nprocs 1] [--scenes plate,block]
 Prints ms/step of the pair computation, undirected bond updates per second, bytes per
 bond of our bond storage, and the ratio pmb/ours.
 """
 import argparse
 import re
-import sys
 import tempfile
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "python"))
-from bbpd.runner import run_lammps  # noqa: E402
+from bbpd.runner import run_lammps
 
 E = 190e9
 RHO = 7800.0

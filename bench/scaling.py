@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Scaling of bbpd/constant with the number of atoms N and the horizon ratio m = delta/dx.
 
 2D plane-stress plates of N = 1e4, 1e5, 1e6 atoms for m = 3, 5, 8, elastic, a few steps.
@@ -6,18 +7,16 @@ Prints the pair time per step, the time per directed bond evaluation (should not
 or m), and the setup time (bond families + caches) per bond: all should stay flat if the
 cost is linear in the number of bonds.
 
-Usage: bench/scaling.py [--sizes 1e4,1e5,1e6] [--ms 3,5,8] [--steps 20]
+Usage (from the repository root): tools/python bench/scaling.py [--sizes 1e4,1e5,1e6] [--ms 3,5,8] [--steps 20]
 """
 import argparse
 import re
-import sys
 import tempfile
 import time
 from math import sqrt
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "python"))
-from bbpd.runner import run_lammps  # noqa: E402
+from bbpd.runner import run_lammps
 
 SCRIPT = """
 plugin load bbpdplugin.so

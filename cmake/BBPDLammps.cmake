@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Where the plugin gets LAMMPS from, the way LAMMPS's own plugin examples do it:
 #   * the headers from a LAMMPS source tree (LAMMPS_SOURCE_DIR): a plugin needs headers that an
 #     installed LAMMPS does not ship (lammpsplugin.h, neigh_request.h, version.h, ...);

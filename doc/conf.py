@@ -1,16 +1,25 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Sphinx configuration of the BBPD documentation.
-# Build (Debian's python3-sphinx 5.3, no extra packages):
+# Build (Debian's python3-sphinx 5.3; MathJax from Debian's libjs-mathjax, no network):
 #   /usr/bin/python3 -m sphinx -W -b html doc /tmp/docbuild
+import importlib.util
 import os
 import re
-import sys
 
 from docutils import nodes
 from pygments.lexer import RegexLexer, bygroups
 from pygments.token import Comment, Keyword, Name, Number, String, Text, Whitespace
 
 here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(here, "_ext"))
+
+
+def local_extension(name):
+    """A Sphinx extension of doc/_ext, loaded from its file, not through the import path."""
+    spec = importlib.util.spec_from_file_location(f"bbpd_doc_{name}",
+                                                  os.path.join(here, "_ext", f"{name}.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 
 def plugin_version():
@@ -25,7 +34,7 @@ author = "BBPD developers"
 copyright = "2026, BBPD developers"
 version = release = plugin_version()
 
-extensions = ["sphinx.ext.mathjax", "mdinclude"]
+extensions = ["sphinx.ext.mathjax"]    # plus doc/_ext/mathjax_local.py and mdinclude.py (setup)
 exclude_patterns = ["_ext"]
 source_suffix = {".rst": "restructuredtext"}
 master_doc = "index"
@@ -79,5 +88,7 @@ def lammps_doc_link(app, env, node, contnode):
 
 
 def setup(app):
+    local_extension("mathjax_local").setup(app)
+    local_extension("mdinclude").setup(app)
     app.add_lexer("LAMMPS", LAMMPSLexer)
     app.connect("missing-reference", lammps_doc_link)

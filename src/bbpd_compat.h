@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
    BBPD plugin: differences between the LAMMPS versions we support
    (4 Feb 2025 and 4 Jul 2026), resolved at compile time by overload

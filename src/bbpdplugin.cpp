@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    BBPD plugin: registers every style of bbpdplugin.so with LAMMPS.
 ------------------------------------------------------------------------- */

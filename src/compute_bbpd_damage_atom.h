@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
    BBPD plugin: compute bbpd/damage/atom -- local damage phi of eq. 17,
    phi_i = 1 - sum_{intact j} C_v V_j / sum_{all j} C_v V_j

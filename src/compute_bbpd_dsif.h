@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
    BBPD plugin: compute bbpd/dsif -- dynamic stress intensity factors
    (K_I, K_II) by two-point displacement extrapolation, eqs. 39-40.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    BBPD plugin: kernel-weighted bond-based peridynamics pair styles.
 

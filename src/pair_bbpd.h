@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
    BBPD plugin: kernel-weighted bond-based peridynamics pair styles
    bbpd/constant, bbpd/triangular, bbpd/gaussian (one class, the kernel is a

@@ -1,15 +1,7 @@
 """Shared pytest fixtures: run our LAMMPS (tools/lmp) on an input script."""
-import os
-import subprocess
-import sys
-from pathlib import Path
-
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "python"))
-
-from bbpd.runner import run_lammps  # noqa: E402
+from bbpd.runner import run_lammps    # python/ is on pytest's pythonpath (pytest.ini)
 
 
 @pytest.fixture

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Build LAMMPS (PERI, PLUGIN, MPI, OpenMP, shared lib) from Debian's source package into a
 # cache outside the clone, keyed by version and options. Reused when present.
 # Usage: tools/build-lammps.sh [VERSION_KEY]   (default: $BBPD_LAMMPS_VERSION or 20260704)

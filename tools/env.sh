@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Shared settings for the project's scripts (sourced, not run).
 BBPD_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 : "${BBPD_CACHE:=${XDG_CACHE_HOME:-$HOME/.cache}/bbpd}"

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Fetch a pinned LAMMPS source tarball from Debian's source package, through a private
 # apt configuration derived from this machine's own Debian sources (system apt is untouched).
 # Usage: tools/lammps-source.sh VERSION_KEY DEST_DIR   (VERSION_KEY: 20260704 | 20250204)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Sphinx directive ``markdown-include``: show a Markdown file of the repository
 (an example's README.md, doc/performance.md, ...) inside an RST page.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Displacement extrapolation of DSIFs, paper eqs. 39-40 (reference for the
 LAMMPS compute).
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Analytic dynamic stress intensity factors (DSIFs) for the benchmarks of
 section 4.2 of the paper (kernel-bbpd-dynamic-fracture.md).
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Run benchmark jobs on all cores with progress, reusing finished runs whose inputs did not change.
 
 A job is a module-level function called with keyword arguments and a work folder; it returns a
@@ -10,7 +11,6 @@ import hashlib
 import importlib
 import json
 import os
-import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -44,7 +44,6 @@ def plugin_path():
 
 def _call(func, workdir, kwargs):
     module, name = func.split(":")
-    sys.path.insert(0, str(ROOT / "python"))
     fn = getattr(importlib.import_module(module), name)
     start = time.perf_counter()
     result = fn(workdir=workdir, **kwargs)

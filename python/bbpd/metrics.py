@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Error metrics of section 4.2.1 of the paper.
 
 eq. 44  peak relative error   |max K_PD - max K_exact| / max K_exact

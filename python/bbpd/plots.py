@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Plot helpers for the DSIF benchmarks of section 4.2 (PNG, Agg backend)."""
 
 import matplotlib

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Independent NumPy implementation of kernel-weighted bond-based peridynamics.
 
 Written from the paper (Bouaraquia & Mabssout 2026), not from the C++ plugin,

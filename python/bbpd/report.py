@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Reproduce the paper's four benchmarks for the three kernels and write report/REPORT.md.
 
   tools/reproduce [--full] [--out DIR] [--jobs N]
@@ -33,9 +34,9 @@ import numpy as np
 
 from bbpd import jobs as jobmod
 from bbpd.jobs import Job
+from bbpd.kernels import COLORS, KERNELS
 
 ROOT = Path(__file__).resolve().parents[2]
-KERNELS = ("constant", "triangular", "gaussian")
 BENCH = ROOT / "python" / "bbpd" / "benchmarks"
 FREUND_PY = ROOT / "python" / "bbpd" / "freund.py"
 METRICS_PY = ROOT / "python" / "bbpd" / "metrics.py"
@@ -43,8 +44,8 @@ METRICS_PY = ROOT / "python" / "bbpd" / "metrics.py"
 HEARTBEAT_S = 30.0            # a running job says so this often
 ESTIMATES_ENV = "BBPD_REPORT_ESTIMATES"   # label -> expected seconds, for the heartbeat
 
-# Resolutions.  Default: the whole set of LAMMPS runs in < 10 min on 2 cores (measured here:
-# about 2 min on 2 shared cores); --full adds finer grids (about 3 min more).
+# Resolutions.  Default: the whole set of LAMMPS runs stays within minutes on 2 cores (the
+# README has the measured time); --full adds finer grids.
 MODE1_TABLE2_DX = (0.1, 0.05, 0.025)        # m, Gaussian (paper Table 2)
 MODE1_TABLE3_DX = 0.05                      # m, three kernels (paper Table 3)
 MODE2_DX = (1.0e-3, 0.5e-3)                 # m, three kernels (Fig. 12; the paper gives no dx)
@@ -248,7 +249,6 @@ def ranking(values):
 
 # --------------------------------------------------------------------------- K(t) figures
 
-COLORS = {"constant": "tab:blue", "triangular": "tab:orange", "gaussian": "tab:green"}
 RESOLUTION_COLORS = ("tab:purple", "tab:red", "tab:green", "tab:blue", "tab:brown")
 
 

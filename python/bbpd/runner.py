@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Run our LAMMPS build (tools/lmp) on an input script, serially or under mpirun."""
 import os
 import subprocess

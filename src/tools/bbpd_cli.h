@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    Command-line helpers shared by the BBPD tools: a fatal error that names the
    tool, and strict number parsing for option values.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    bbpd-dispersion-curves: dispersion of a 1D BBPD bar for each kernel, the
    data of Figs. 4-6 of Bouaraquia & Mabssout (2026), k from 0 to pi/dx.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    bbpd-measure-dispersion: measured dispersion relation omega(k) of a 1D
    field u(x,t) sampled on a uniform grid (x_i = i dx, t_n = n dt_s), e.g. the

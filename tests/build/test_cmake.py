@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Building the plugin the LAMMPS way: sizes and MPI from the LAMMPS it is built for, a serial
 (MPI STUBS) LAMMPS, and `cmake --install` into the folder that LAMMPS_PLUGIN_PATH users load from."""
 import os

@@ -1,10 +1,10 @@
-"""Numerical stability of the bbpd/* pair styles under fix nve (issue 8).
+"""Numerical stability of the bbpd/* pair styles under fix nve.
 
 The stable time step Y = min_i sqrt(2 rho_i / sum_j C_v V_j c/xi) printed at setup (and
 exposed as c_ID[1] of 'compute ID all pair bbpd/KERNEL') is compared with the same sum
 computed by NumPy from the paper's formulas (python/bbpd/reference.py), and with the exact
 velocity-Verlet limit 2/omega_max of a periodic plate from its lattice dynamics
-(python/bbpd/benchmarks/stability.py). The extreme cases of the issue each end in a finite,
+(python/bbpd/benchmarks/stability.py). The extreme cases each end in a finite,
 physically checked result or in a clear ERROR; every LAMMPS run has a timeout, so a hang
 fails the test instead of blocking the suite.
 """

@@ -14,9 +14,9 @@ import pytest
 from bbpd.benchmarks import dispersion as disp
 
 KERNELS = disp.KERNELS
-TOL = 0.01            # issue 5: within 1% wherever the spectrum carries energy
+TOL = 0.01            # within 1% wherever the spectrum carries energy
 STRICT_TOL = 1.0e-3   # what the measurement resolves (observed ~1e-5), to show that it sees C_v
-KDX_REQUIRED = 2.5    # issue 5: agreement up to k dx = 2.5 at least
+KDX_REQUIRED = 2.5    # agreement up to k dx = 2.5 at least
 
 # c0 A delta^2 / E of the paper's Table 1 (1D)
 E4 = math.exp(4.0)

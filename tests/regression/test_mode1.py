@@ -1,7 +1,7 @@
 """Stationary Mode-I semi-infinite crack (paper sec. 4.2.1, examples/mode1-semi-infinite)
 against Freund's solution (eq. 42) with the error metrics of eqs. 44-45.
 
-Default suite: Gaussian kernel at dx = 0.05 m (16,000 atoms, 240 steps, ~5 s on one core) and
+Default suite: Gaussian kernel at dx = 0.05 m (16,000 atoms, 240 steps) and
 a check that the top-row body force carries the edge traction into the plate.
 Slow: the resolution sweep (Table 2) and the three kernels (Table 3).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* Shared helpers for the BBPD unit tests. */
 
 #ifndef BBPD_TEST_UTIL_H

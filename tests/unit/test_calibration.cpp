@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* Micromodulus c0 and critical stretch s0 of bbpd_kernel.h checked against
    numerical quadrature of their defining integrals, for every kernel and
    model:

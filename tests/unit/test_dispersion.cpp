@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* bbpd_dispersion.h: continuous (eq. 29), discrete (eq. 31) and
    time-discrete dispersion of a 1D bar, against the paper's closed forms
    (eqs. 32-34, 36-38), series solutions, finite differences and limits. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* bbpd_kernel.h against the paper as printed: Table 1 (c0 of three kernels in
    1D, plane stress and plane strain), eqs. 14-16 (s0 in 2D), eq. 19 (C_v) and
    eq. 25 (time step); 3D against Silling & Askari (2005). Kernel moments

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* bbpd_quadrature.h: exactness degree, smooth and oscillatory integrands. */
 
 #include "bbpd_quadrature.h"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Wave dispersion of a 1D BBPD bar: analytic curves and dispersion measured from LAMMPS runs
 (Bouaraquia & Mabssout 2026, sec. 4.1, Figs. 4-6).
 
@@ -15,7 +16,7 @@ errors     max |omega_measured/omega_analytic - 1| over the k whose ridge carrie
            (power >= MIN_POWER of the strongest) in a k dx range.
 
 Command line (from the repository root):
-  PYTHONPATH=python /usr/bin/python3 -m bbpd.benchmarks.dispersion --work /tmp/dispersion \
+  tools/python -m bbpd.benchmarks.dispersion --work /tmp/dispersion \
       --figures DIR
 """
 
@@ -31,14 +32,14 @@ from pathlib import Path
 
 import numpy as np
 
+from bbpd.kernels import COLORS, KERNELS
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "dispersion-1d" / "in.dispersion"
-KERNELS = ("constant", "triangular", "gaussian")
 
 PAPER_M, PAPER_DELTA = 5, 1.0e-3   # Figs. 4-6: m = 5, delta = 1 mm
-KDX_RANGE = (0.1, 2.5)             # issue 5: agreement required up to k dx = 2.5 at least
+KDX_RANGE = (0.1, 2.5)             # agreement required up to k dx = 2.5 at least
 MIN_POWER = 1.0e-6                 # "carries energy": ridge power relative to the strongest;
                                    # dump round-off (10 digits) sits near 1e-18
 TABLE_KDX = (1.0, 2.0, 2.5)        # where the note quotes phase velocities
@@ -259,7 +260,6 @@ def measure(kernels=KERNELS, work="/tmp/bbpd-dispersion", nprocs=1, kdx_range=KD
 
 # --------------------------------------------------------------------------- figures
 
-COLORS = {"constant": "tab:blue", "triangular": "tab:orange", "gaussian": "tab:green"}
 MARK_EVERY = 8        # measured points plotted: every 8th k (the grid has natoms/2 of them)
 OMEGA_UNIT = 1.0e6    # Fig. 4 plots omega in 1e6 rad/s
 

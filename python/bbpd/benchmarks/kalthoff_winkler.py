@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Kalthoff-Winkler impact benchmark (Bouaraquia & Mabssout 2026, sec. 4.2.3).
 
 Runs examples/kalthoff-winkler/in.kalthoff_winkler and measures, from its outputs only:
@@ -29,7 +30,7 @@ far damage    atoms whose damage grew during the run and lie farther than delta 
               anything else is reported as other far damage.
 
 Command line (from the repository root):
-  PYTHONPATH=python /usr/bin/python3 -m bbpd.benchmarks.kalthoff_winkler \
+  tools/python -m bbpd.benchmarks.kalthoff_winkler \
       --kernels constant triangular gaussian --dx 2e-3 1e-3 --work /tmp/kw --figures DIR
 """
 
@@ -45,11 +46,11 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
+from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "kalthoff-winkler" / "in.kalthoff_winkler"
-KERNELS = ("constant", "triangular", "gaussian")
 
 # paper sec. 4.2.3: crack initiation times (us) and the experiment's crack angle
 PAPER_INITIATION_US = {"constant": 20.0, "triangular": 20.8, "gaussian": 21.7}

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Stationary Mode-I semi-infinite crack (Bouaraquia & Mabssout 2026, sec. 4.2.1).
 
 Runs examples/mode1-semi-infinite/in.mode1 (compute bbpd/dsif every step) and compares
@@ -16,7 +17,7 @@ In plane stress 2 mu/(kappa+1) = E/4 whatever nu is, so the two conventions give
 K_PD there; they differ only in the analytic curve (amplitude factor and arrival time).
 
 Command line (from the repository root):
-  PYTHONPATH=python /usr/bin/python3 -m bbpd.benchmarks.mode1 --table2 --table3 \
+  tools/python -m bbpd.benchmarks.mode1 --table2 --table3 \
       --work /tmp/mode1 --figures examples/mode1-semi-infinite
 """
 
@@ -28,11 +29,11 @@ from pathlib import Path
 import numpy as np
 
 from bbpd import freund, metrics
+from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "mode1-semi-infinite" / "in.mode1"
-KERNELS = ("constant", "triangular", "gaussian")
 
 # paper sec. 4.2.1
 E = 210.0e9

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Mode-II central crack under uniform shear (Bouaraquia & Mabssout 2026, sec. 4.2.2).
 
 Runs examples/mode2-central-crack/in.mode2 (compute bbpd/dsif at both tips, every step) and
@@ -16,7 +17,7 @@ changes K_II by < 0.3 % up to 10 us (README).  Model: plane strain, whose implie
 the plate's nu, so E, nu, c_s and c_d of the reference are those of the BBPD model.
 
 Command line (from the repository root):
-  PYTHONPATH=python /usr/bin/python3 -m bbpd.benchmarks.mode2 --kernels constant triangular \
+  tools/python -m bbpd.benchmarks.mode2 --kernels constant triangular \
       gaussian --dx 1e-3 0.5e-3 --work /tmp/mode2 --figures examples/mode2-central-crack
 """
 
@@ -28,11 +29,11 @@ from pathlib import Path
 import numpy as np
 
 from bbpd import freund, metrics
+from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "mode2-central-crack" / "in.mode2"
-KERNELS = ("constant", "triangular", "gaussian")
 
 # paper sec. 4.2.2 (plate 104 x 40 mm, 2a = 24 mm)
 E = 73.5e9

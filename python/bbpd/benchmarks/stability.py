@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Stable time step of the bbpd/* pair styles under fix nve (velocity Verlet): the bound
 printed at setup against the largest time step that is stable in practice.
 
@@ -30,7 +31,7 @@ drift      a free (non-periodic) noisy plate at 0.5 Y for 20,000 steps, total en
            fluctuation of the measured energy around velocity Verlet's conserved shadow energy).
 
 Command line (from the repository root):
-  PYTHONPATH=python /usr/bin/python3 -m bbpd.benchmarks.stability --out DIR
+  tools/python -m bbpd.benchmarks.stability --out DIR
 writes DIR/stability.json and DIR/stability.md (the table of doc/stability.md).
 """
 
@@ -43,10 +44,10 @@ from pathlib import Path
 import numpy as np
 
 from bbpd import reference as ref
+from bbpd.kernels import KERNELS
 from bbpd.runner import LammpsError, run_lammps
 
-KERNELS = ("constant", "triangular", "gaussian")
-HORIZON_RATIOS = (1, 2, 3, 5, 10)    # m = delta/dx, issue 8
+HORIZON_RATIOS = (1, 2, 3, 5, 10)    # m = delta/dx
 
 DX = 1.0e-3              # m
 THICKNESS = 1.0e-3       # m
@@ -55,7 +56,7 @@ DENSITY = 7800.0         # kg/m^3, same source
 NOISE = 1.0              # m/s: amplitude of the random initial velocities
 SEED = 20260704
 
-STEPS = 10000            # issue 8: energy growth over 10,000 steps
+STEPS = 10000            # energy growth over 10,000 steps
 GROWTH = 10.0            # stable: max energy of the second half < GROWTH x that of the first
 HALT = 1.0e6             # energy above HALT x the initial one: unstable, stop the run
 RTOL = 1.0e-3            # bisection stops when (hi - lo)/lo < RTOL
