@@ -20,7 +20,8 @@ SHELL = {"sh", "bash", "shell", "console"}
 VERSION = os.environ.get("BBPD_LAMMPS_VERSION", "20260704")
 BUILT = (ROOT / "build" / f"lammps-{VERSION}" / "bbpd-env.sh").is_file()
 GENERATED = ("build", "report")    # folders the commands create; not in a fresh clone
-NOT_RUN = {"tools/bootstrap", "tools/test", "tools/reproduce", "cmake", "mpirun", "mkdir", "cd"}
+NOT_RUN = {"tools/bootstrap", "tools/test", "tools/reproduce", "cmake", "mpirun", "mkdir", "cd",
+           "export"}
 
 
 def doc_files():
