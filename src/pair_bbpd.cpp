@@ -4,8 +4,9 @@
    Force density on atom i from partner j (eqs. 19, 21, 22):
      f_ij = c0 W(xi/delta) s C_v V_j (y_j - y_i)/|y_j - y_i|,   s = (|y| - xi)/xi
    Every bond is evaluated from both ends (full bond lists, no Newton's third
-   law across ranks): each atom sums its own partners in tag order, so the
-   result does not depend on the domain decomposition.
+   law across ranks): each atom sums its own partners in the order of their
+   reference offsets, so the result depends neither on the domain
+   decomposition nor on the atom numbering.
 ------------------------------------------------------------------------- */
 
 #include "pair_bbpd.h"
@@ -483,8 +484,8 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
       if (!FRACTURE) {
         row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc);
       } else if (row_force<EVFLAG, 1, MULTI>(i, fi, s0row, acc)) {
-        // a bond of the row is past its critical stretch: remove such bonds (irreversibly, in
-        // tag order), then sum the row again
+        // a bond of the row is (near) past its critical stretch: remove such bonds
+        // (irreversibly, in row order), then sum the row again
         int k = bonds->bond_start[i];
         while (k < bonds->bond_start[i] + bonds->nbond[i]) {
           const int j = bonds->bj[k];
