@@ -97,7 +97,9 @@ void FixBBPDBonds::init()
   }
   // in a periodic box the two ends of a bond see different images of each other (x + L rounds
   // differently from x - L): both decide breaking from their owners' unshifted positions
-  const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
+  // (a 2D body has no image in z)
+  const bool periodic = domain->xperiodic || domain->yperiodic ||
+      (domain->zperiodic && domain->dimension == 3);
   need_raw = periodic && pair->fracture_on();
   comm_forward = need_raw ? 3 : 0;
 }
@@ -275,9 +277,10 @@ void FixBBPDBonds::build_families()
   partner = nullptr;
   grow_arrays(atom->nmax);
 
-  // partners in the order of their reference offset, compared exactly (ties: tag order, only
-  // for partners that share a reference position): the summation order then depends on the
-  // geometry alone, not on how atoms are numbered (create_atoms numbers them rank by rank)
+  // partners in the order of their reference offset (z, then y, then x, compared exactly; ties:
+  // tag order, only for partners that share a reference position): the summation order then
+  // depends on the geometry alone, not on how atoms are numbered (create_atoms numbers them
+  // rank by rank). x varies fastest, as in LAMMPS's spatial sort of the atoms in memory.
   const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
   std::vector<std::pair<std::array<double, 3>, tagint>> family;
   std::vector<tagint> tags;
@@ -290,7 +293,7 @@ void FixBBPDBonds::build_families()
       if (!in_family(i, j)) continue;
       double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
       if (periodic) BBPDCompat::minimum_image(domain, d);
-      family.push_back({{d[0], d[1], d[2]}, tag[j]});
+      family.push_back({{d[2], d[1], d[0]}, tag[j]});
     }
     std::sort(family.begin(), family.end());
     tags.clear();

@@ -6,7 +6,7 @@
      npartner[i]       number of bonds the atom started with
      partner[i][k]     tag of partner k; negative = broken. Partners are kept in
                        the order of their reference offset x0_j - x0_i (compared
-                       exactly, lexicographically): the summation order then
+                       exactly: z, then y, then x): the summation order then
                        depends on the geometry only, not on the atom numbering
      vinit[i]          sum of C_v V_j over the initial family (damage, eq. 17)
    Cached per intact bond, rebuilt only when LAMMPS reneighbors (post_neighbor),
