@@ -79,7 +79,8 @@ class FixBBPDBonds : public Fix {
   double bytes_per_bond() const;
   // unshifted position of atom j (local, or a ghost: its owner's coordinates) in a periodic box
   const double *raw_x(int j) const { return j < atom->nlocal ? atom->x[j] : xraw[j]; }
-  bool raw_positions() const { return need_raw; }
+  // (false if no force evaluation has sent them yet, e.g. a pair computed outside a run)
+  bool raw_positions() const { return need_raw && nmax_raw >= atom->nlocal + atom->nghost; }
 
  protected:
   int first;    // 1 until bond families exist
