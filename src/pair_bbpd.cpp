@@ -378,11 +378,13 @@ void PairBBPD::compute(int eflag, int vflag)
   break_margin = 0.0;
   if (fracture_any && bonds->raw_positions()) {
     // the local and the canonical bond length differ by the round-off of one periodic shift
-    // per component: a few ulps of the largest coordinate (box corner + ghost cutoff)
+    // per component: a few ulps of the largest coordinate (box corner + ghost cutoff, and the
+    // tilts of a triclinic box, whose ghost cutoff is in box fractions)
     const double cut = MAX(comm->cutghost[0], MAX(comm->cutghost[1], comm->cutghost[2]));
     double big = 0.0;
     for (int m = 0; m < 3; m++)
       big = MAX(big, std::fabs(domain->boxlo[m]) + std::fabs(domain->boxhi[m]) + cut);
+    big += std::fabs(domain->xy) + std::fabs(domain->xz) + std::fabs(domain->yz);
     break_margin = BREAK_MARGIN_ULPS * DBL_EPSILON * big;
   }
   if (!fracture_any) {
