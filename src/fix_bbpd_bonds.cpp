@@ -17,14 +17,19 @@
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair_bbpd.h"
+#include "math_const.h"
 #include "update.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <utility>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
+using MathConst::MY_PI;
 
 // an atom cloud this many times larger than the body at bond creation means the run has blown
 // up; stop before LAMMPS bins the exploded box (which can take all the memory)
@@ -32,18 +37,25 @@ static constexpr double MAX_EXTENT_GROWTH = 1000.0;
 // nor can an atom that moves this many grid spacings in one step be part of a valid run (a stable
 // step moves atoms a small fraction of a spacing: dt < spacing / wave speed, and v << wave speed)
 static constexpr double MAX_STEP_SPACINGS = 10.0;
+// LAMMPS's default page size is 100 x its default 'neigh_modify one' (neighbor.cpp); the family
+// build asks for at least this ratio when it raises 'one' (LAMMPS requires page >= 10 x one)
+static constexpr int PAGE_PER_ONE = 10;
 
 FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxpartner(1), npartner(nullptr), partner(nullptr), vinit(nullptr),
     bond_start(nullptr), nbond(nullptr), bj(nullptr), bxi0(nullptr), bcoef(nullptr),
     vintact(nullptr), first(1),
-    nlocal_cache(0), nbond_cache(0), list(nullptr), pair(nullptr), extent0(0.0)
+    nlocal_cache(0), nbond_cache(0), list(nullptr), pair(nullptr), extent0(0.0), need_raw(0),
+    nmax_raw(0), xraw(nullptr)
 {
   if (narg != 3) error->all(FLERR, "Fix bbpd/bonds takes no arguments (it is created by the pair style)");
   restart_global = 1;
   restart_peratom = 1;
   stores_ids = 1;
   create_attribute = 1;    // atoms created later start with no bonds
+  // a migrating atom carries all its partner tags: LAMMPS must size its exchange buffer for them
+  maxexchange_dynamic = 1;
+  set_maxexchange();
 
   FixBBPDBonds::grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -67,11 +79,12 @@ FixBBPDBonds::~FixBBPDBonds()
   memory->destroy(bxi0);
   memory->destroy(bcoef);
   memory->destroy(vintact);
+  memory->destroy(xraw);
 }
 
 int FixBBPDBonds::setmask()
 {
-  return POST_NEIGHBOR | MIN_POST_NEIGHBOR | PRE_EXCHANGE;
+  return POST_NEIGHBOR | MIN_POST_NEIGHBOR | PRE_EXCHANGE | PRE_FORCE | MIN_PRE_FORCE;
 }
 
 void FixBBPDBonds::init()
@@ -79,7 +92,87 @@ void FixBBPDBonds::init()
   pair = dynamic_cast<PairBBPD *>(force->pair_match("^bbpd/", 0));
   if (!pair) error->all(FLERR, "Fix bbpd/bonds requires a bbpd/* pair style");
   // the occasional full list is only needed to build the families once
-  if (first) neighbor->add_request(this, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
+  if (first) {
+    neighbor->add_request(this, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
+    size_family_neighbor_list();
+  }
+  // in a periodic box the two ends of a bond see different images of each other (x + L rounds
+  // differently from x - L): both decide breaking from their owners' unshifted positions
+  // (a 2D body has no image in z)
+  const bool periodic = domain->xperiodic || domain->yperiodic ||
+      (domain->zperiodic && domain->dimension == 3);
+  need_raw = periodic && pair->fracture_on();
+  comm_forward = need_raw ? 3 : 0;
+}
+
+/* The family build lists every atom within the family cutoff + skin. An atom's cell of volume
+   at least dmin^d (d the family dimension, dmin the smallest grid spacing implied by the atom
+   volumes) lies within half a cell diagonal of the atom, so at most
+   ball_d(R + sqrt(d) dmin / 2) / dmin^d atoms are within R of it. Raise LAMMPS's per-atom
+   neighbor limit (neigh_modify one, and page) to that bound when it is larger. */
+void FixBBPDBonds::size_family_neighbor_list()
+{
+  double vmin = 1e300, gvmin = 1e300;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->vfrac[i] > 0.0) vmin = MIN(vmin, atom->vfrac[i]);
+  MPI_Allreduce(&vmin, &gvmin, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (gvmin >= 1e300) return;
+  const int d = BBPD::family_dimension(pair->model);
+  const double dmin = pair->grid_spacing_of(gvmin);
+  const double r = (pair->cutforce + neighbor->skin) / dmin + 0.5 * std::sqrt((double) d);
+  const double ball = d == 1 ? 2.0 * r : d == 2 ? MY_PI * r * r : 4.0 / 3.0 * MY_PI * r * r * r;
+  if (!(ball < (double) MAXSMALLINT / PAGE_PER_ONE))
+    error->all(FLERR, "BBPD: bond families of up to {:.3g} partners per atom cannot be listed: "
+               "reduce the horizon (delta/spacing)", ball);
+  const int need = static_cast<int>(std::ceil(ball));
+  if (need <= neighbor->oneatom) return;
+  neighbor->oneatom = need;
+  neighbor->pgsize = MAX(neighbor->pgsize, PAGE_PER_ONE * need);
+  if (comm->me == 0)
+    utils::logmesg(lmp, "BBPD: bond families need up to {} neighbors per atom: set "
+                   "'neigh_modify one {} page {}'\n", need, neighbor->oneatom, neighbor->pgsize);
+}
+
+/* ghosts get their owners' unshifted positions before every force evaluation */
+void FixBBPDBonds::setup_pre_force(int vflag)
+{
+  pre_force(vflag);
+}
+
+void FixBBPDBonds::pre_force(int)
+{
+  if (!need_raw) return;
+  if (atom->nmax > nmax_raw) {
+    nmax_raw = atom->nmax;
+    memory->destroy(xraw);
+    memory->create(xraw, nmax_raw, 3, "bbpd/bonds:xraw");
+  }
+  comm->forward_comm(this);
+}
+
+int FixBBPDBonds::pack_forward_comm(int n, int *list, double *buf, int, int *)
+{
+  // no periodic shift: the receiver wants the owner's coordinates
+  double **x = atom->x;
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int j = list[k];
+    const double *src = j < atom->nlocal ? x[j] : xraw[j];
+    buf[m++] = src[0];
+    buf[m++] = src[1];
+    buf[m++] = src[2];
+  }
+  return m;
+}
+
+void FixBBPDBonds::unpack_forward_comm(int n, int first_atom, double *buf)
+{
+  int m = 0;
+  for (int i = first_atom; i < first_atom + n; i++) {
+    xraw[i][0] = buf[m++];
+    xraw[i][1] = buf[m++];
+    xraw[i][2] = buf[m++];
+  }
 }
 
 void FixBBPDBonds::init_list(int, NeighList *ptr)
@@ -132,11 +225,25 @@ void FixBBPDBonds::pre_exchange()
   MPI_Allreduce(&vmax, &gvmax, 1, MPI_DOUBLE, MPI_MAX, world);
   const double e = local_extent();
   const double step = std::sqrt(gvmax) * update->dt;
-  if (!(step <= pair->spacing * MAX_STEP_SPACINGS) || (extent0 > 0.0 && !(e <= MAX_EXTENT_GROWTH * extent0)))
-    error->all(FLERR, "BBPD: the run is unstable at step {} (an atom moves {:.3g} grid spacings "
-               "per step, the bonded body spans {:.3g} x its size): the timestep {:.6g} must "
-               "stay below the stable bound printed at setup", update->ntimestep,
-               step / pair->spacing, extent0 > 0.0 ? e / extent0 : 0.0, update->dt);
+  const bool too_fast = !(step <= pair->spacing * MAX_STEP_SPACINGS);
+  if (!too_fast && (extent0 <= 0.0 || e <= MAX_EXTENT_GROWTH * extent0)) return;
+  const double bound = *pair->extract_bound();
+  const std::string what = fmt::format(
+      "BBPD: the run is unstable at step {} (an atom moves {:.3g} grid spacings per step, the "
+      "bonded body spans {:.3g} x its size)", update->ntimestep, step / pair->spacing,
+      extent0 > 0.0 ? e / extent0 : 0.0);
+  if (!(update->dt <= pair->dt_safety * bound))
+    error->all(FLERR, "{}: the timestep {:.6g} ({:.3g} of the stable bound {:.6g} printed at "
+               "setup) must stay below that bound", what, update->dt, update->dt / bound, bound);
+  // below the stable bound the timestep is not the cause: atoms were set moving faster than
+  // the material can carry (a stable run moves atoms a small fraction of a spacing per step),
+  // e.g. an impact velocity far above the wave speed
+  error->all(FLERR, "{}: atoms move at up to {:.3g} (velocity units), far faster than a signal "
+             "crosses the grid (about {:.3g}: grid spacing / stable timestep), while the "
+             "timestep {:.6g} is only {:.3g} of the stable bound. Reduce the imposed velocities "
+             "(velocity, fix move, boundary conditions) or use a stiffer material, so that atoms "
+             "move well below one grid spacing per step", what, std::sqrt(gvmax),
+             pair->spacing / bound, update->dt, update->dt / bound);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -145,6 +252,7 @@ void FixBBPDBonds::build_families()
 {
   neighbor->build_one(list);
   double **x = atom->x;
+  double **x0 = atom->x0;
   tagint *tag = atom->tag;
   int *type = atom->type;
   const int nlocal = atom->nlocal;
@@ -165,20 +273,37 @@ void FixBBPDBonds::build_families()
   }
   MPI_Allreduce(&mymax, &maxpartner, 1, MPI_INT, MPI_MAX, world);
   maxpartner = MAX(maxpartner, 1);
+  set_maxexchange();
   memory->destroy(partner);
   partner = nullptr;
   grow_arrays(atom->nmax);
 
+  // partners in the order of their reference offset (z, then y, then x, compared exactly; ties:
+  // tag order, only for partners that share a reference position): the summation order then
+  // depends on the geometry alone, not on how atoms are numbered (create_atoms numbers them
+  // rank by rank). x varies fastest, as in LAMMPS's spatial sort of the atoms in memory.
+  const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
+  std::vector<std::pair<std::array<double, 3>, tagint>> family;
+  std::vector<tagint> tags;
   for (int i = 0; i < nlocal; i++) npartner[i] = 0;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
+    family.clear();
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = list->firstneigh[i][jj] & NEIGHMASK;
-      if (in_family(i, j)) partner[i][npartner[i]++] = tag[j];
+      if (!in_family(i, j)) continue;
+      double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+      if (periodic) BBPDCompat::minimum_image(domain, d);
+      family.push_back({{d[2], d[1], d[0]}, tag[j]});
     }
-    // tag order fixes the summation order on every rank count
-    std::sort(partner[i], partner[i] + npartner[i]);
-    if (std::adjacent_find(partner[i], partner[i] + npartner[i]) != partner[i] + npartner[i])
+    std::sort(family.begin(), family.end());
+    tags.clear();
+    for (const auto &p : family) {
+      partner[i][npartner[i]++] = p.second;
+      tags.push_back(p.second);
+    }
+    std::sort(tags.begin(), tags.end());
+    if (std::adjacent_find(tags.begin(), tags.end()) != tags.end())
       error->one(FLERR, "Atom {} bonds twice to the same partner: the periodic box is smaller "
                  "than two horizons", tag[i]);
   }
@@ -202,6 +327,14 @@ void FixBBPDBonds::refresh_cache()
     memory->create(nbond, nlocal_cache, "bbpd/bonds:nbond");
     memory->create(vintact, nlocal_cache, "bbpd/bonds:vintact");
   }
+  // bond ends of this rank, counted in a bigint: the cache indexes them with int
+  bigint nbig = 0;
+  for (int i = 0; i < nlocal; i++)
+    for (int k = 0; k < npartner[i]; k++) nbig += partner[i][k] > 0;
+  if (nbig > MAXSMALLINT)
+    error->one(FLERR, "BBPD: rank {} holds {} bond ends, more than the {} one rank can index: "
+               "run on more MPI ranks (at least {} x as many)", comm->me, nbig, MAXSMALLINT,
+               nbig / MAXSMALLINT + 1);
   int n = 0;
   for (int i = 0; i < nlocal; i++) {
     bond_start[i] = n;
@@ -210,7 +343,8 @@ void FixBBPDBonds::refresh_cache()
   bond_start[nlocal] = n;
   const bool compact = pair->compact_storage;
   if (nbond_cache < n || compact != (bxi0 == nullptr)) {
-    nbond_cache = n + n / 8;    // headroom: migration changes the count a little
+    // headroom: migration changes the count a little
+    nbond_cache = static_cast<int>(MIN((bigint) n + n / 8, (bigint) MAXSMALLINT));
     memory->destroy(bj);
     memory->destroy(bxi0);
     memory->destroy(bcoef);
@@ -260,7 +394,7 @@ void FixBBPDBonds::refresh_cache()
   }
 }
 
-/* sum of C_v V_j over the intact bonds of atom i, in tag order */
+/* sum of C_v V_j over the intact bonds of atom i, in row order */
 double FixBBPDBonds::intact_volume(int i) const
 {
   double v = 0.0;
@@ -274,18 +408,12 @@ void FixBBPDBonds::remove_bond(int i, int k)
 {
   const tagint t = atom->tag[bj[k]];
   tagint *p = partner[i];
-  // partners are sorted by tag and a broken one keeps its tag's magnitude
-  int lo = 0, hi = npartner[i] - 1;
-  while (lo <= hi) {
-    const int mid = (lo + hi) / 2;
-    const tagint v = p[mid] < 0 ? -p[mid] : p[mid];
-    if (v == t) {
-      p[mid] = -t;
+  // partners are in reference-offset order; bonds break rarely, so a scan is enough
+  for (int m = 0; m < npartner[i]; m++)
+    if (p[m] == t) {
+      p[m] = -t;
       break;
     }
-    if (v < t) lo = mid + 1;
-    else hi = mid - 1;
-  }
   const int last = bond_start[i] + nbond[i] - 1;
   for (int m = k; m < last; m++) bj[m] = bj[m + 1];
   if (bxi0)
@@ -347,6 +475,7 @@ double FixBBPDBonds::memory_usage()
   bytes += nmax * maxpartner * sizeof(tagint);
   bytes += nlocal_cache * (2.0 * sizeof(int) + sizeof(double));
   bytes += (double) nbond_cache * (sizeof(int) + (bxi0 ? 2.0 * sizeof(double) : 0.0));
+  bytes += 3.0 * nmax_raw * sizeof(double);
   return bytes;
 }
 
@@ -388,13 +517,17 @@ int FixBBPDBonds::unpack_exchange(int nlocal, double *buf)
   return m;
 }
 
+// global restart data: {first + RESTART_WITH_EXTENT, maxpartner, extent0}; files written before
+// extent0 was stored hold {first, maxpartner} with first 0 or 1
+static constexpr int RESTART_WITH_EXTENT = 2;
+
 void FixBBPDBonds::write_restart(FILE *fp)
 {
   if (comm->me == 0) {
-    double list[2] = {(double) first, (double) maxpartner};
-    int size = 2 * sizeof(double);
+    double list[3] = {(double) (first + RESTART_WITH_EXTENT), (double) maxpartner, extent0};
+    int size = 3 * sizeof(double);
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), 2, fp);
+    fwrite(list, sizeof(double), 3, fp);
   }
 }
 
@@ -403,6 +536,11 @@ void FixBBPDBonds::restart(char *buf)
   auto *list = (double *) buf;
   first = static_cast<int>(list[0]);
   maxpartner = static_cast<int>(list[1]);
+  if (first >= RESTART_WITH_EXTENT) {
+    first -= RESTART_WITH_EXTENT;
+    extent0 = list[2];
+  }
+  set_maxexchange();
   memory->destroy(partner);
   partner = nullptr;
   grow_arrays(atom->nmax);

@@ -5,10 +5,13 @@
    Created by the pair style (ID BBPD_BONDS); not meant for input scripts.
    Persistent per-atom data, carried through atom migration and restart files:
      npartner[i]       number of bonds the atom started with
-     partner[i][k]     tag of partner k, sorted ascending; negative = broken
+     partner[i][k]     tag of partner k; negative = broken. Partners are kept in
+                       the order of their reference offset x0_j - x0_i (compared
+                       exactly: z, then y, then x): the summation order then
+                       depends on the geometry only, not on the atom numbering
      vinit[i]          sum of C_v V_j over the initial family (damage, eq. 17)
    Cached per intact bond, rebuilt only when LAMMPS reneighbors (post_neighbor),
-   one flat structure-of-arrays row per local atom, partners in tag order:
+   one flat structure-of-arrays row per local atom, partners in that order:
      bond_start[i], nbond[i]  first entry and number of intact bonds of atom i
      bj[k]                   local/ghost index of the partner
      bxi0[k]                 reference bond length |x0_j - x0_i|
@@ -23,6 +26,7 @@
 #ifndef LMP_FIX_BBPD_BONDS_H
 #define LMP_FIX_BBPD_BONDS_H
 
+#include "atom.h"
 #include "fix.h"
 
 namespace LAMMPS_NS {
@@ -40,6 +44,11 @@ class FixBBPDBonds : public Fix {
   void post_neighbor() override;
   void pre_exchange() override;
   void min_post_neighbor() override { post_neighbor(); }
+  void setup_pre_force(int) override;
+  void pre_force(int) override;
+  void min_pre_force(int vflag) override { pre_force(vflag); }
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
 
   double memory_usage() override;
   void grow_arrays(int) override;
@@ -69,6 +78,10 @@ class FixBBPDBonds : public Fix {
   double coef_of(int i, int k, double xi0) const;    // its coefficient
   bigint count_broken() const;
   double bytes_per_bond() const;
+  // unshifted position of atom j (local, or a ghost: its owner's coordinates) in a periodic box
+  const double *raw_x(int j) const { return j < atom->nlocal ? atom->x[j] : xraw[j]; }
+  // (false if no force evaluation has sent them yet, e.g. a pair computed outside a run)
+  bool raw_positions() const { return need_raw && nmax_raw >= atom->nlocal + atom->nghost; }
 
  protected:
   int first;    // 1 until bond families exist
@@ -77,6 +90,12 @@ class FixBBPDBonds : public Fix {
   PairBBPD *pair;
   double extent0;    // size of the body when the families were built
   double local_extent();
+  int need_raw;       // periodic box with fracture: ghosts carry their owner's position
+  int nmax_raw;
+  double **xraw;      // owner's (unshifted) position of each ghost
+
+  void size_family_neighbor_list();
+  void set_maxexchange() { maxexchange = maxpartner + 2; }
 
   void build_families();
   void refresh_cache();

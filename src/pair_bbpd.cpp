@@ -5,12 +5,14 @@
    Force density on atom i from partner j (eqs. 19, 21, 22):
      f_ij = c0 W(xi/delta) s C_v V_j (y_j - y_i)/|y_j - y_i|,   s = (|y| - xi)/xi
    Every bond is evaluated from both ends (full bond lists, no Newton's third
-   law across ranks): each atom sums its own partners in tag order, so the
-   result does not depend on the domain decomposition.
+   law across ranks): each atom sums its own partners in the order of their
+   reference offsets, so the result depends neither on the domain
+   decomposition nor on the atom numbering.
 ------------------------------------------------------------------------- */
 
 #include "pair_bbpd.h"
 #include "pair_bbpd_row.h"
+#include "bbpd_compat.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -27,6 +29,8 @@
 #include "update.h"
 
 #include <algorithm>
+#include <array>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -41,6 +45,9 @@ static constexpr const char *BONDS_FIX_ID = "BBPD_BONDS";
 // Phys. Commun. 179 (2008) 777) and stiffness 15 c0 (Silling, EMU theory manual, 2005, p. 18)
 static constexpr double CONTACT_FACTOR_DEFAULT = 0.9;
 static constexpr double CONTACT_STIFFNESS_FACTOR = 15.0;
+// margin of the quick bond-failure test in periodic boxes, in units of DBL_EPSILON x the largest
+// coordinate: covers the round-off of x + L and of the minimum image (2 ulps each) per component
+static constexpr double BREAK_MARGIN_ULPS = 16.0;
 
 /* ---------------------------------------------------------------------- */
 
@@ -49,7 +56,7 @@ PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k) :
     dt_safety(DT_SAFETY_DEFAULT), contact(0), compact_storage(0), contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
     fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
     s0_user(nullptr), bonds(nullptr), dt_bound_paper(0.0), dt_bound(0.0), multi_s0(0),
-    s0_single(0.0)
+    s0_single(0.0), s0_seen(0), break_margin(0.0)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -225,11 +232,11 @@ void PairBBPD::coeff(int narg, char **arg)
       youngs[i][j] = E;
       fracture_energy[i][j] = Gc;
       horizon[i][j] = delta;
-      micromodulus[i][j] = BBPD::micromodulus(kernel, model, E, delta, geom);
+      // c0 and s0 (unless given) are calibrated in init_one(), from the model and thickness
+      // of the pair_style in force then
+      micromodulus[i][j] = 0.0;
       s0_user[i][j] = s0 > 0.0;
-      critical_stretch[i][j] = s0 > 0.0 ? s0
-          : std::isinf(Gc) ? std::numeric_limits<double>::infinity()
-                           : BBPD::critical_stretch(kernel, model, micromodulus[i][j], Gc, delta, geom);
+      critical_stretch[i][j] = s0 > 0.0 ? s0 : 0.0;
       setflag[i][j] = 1;
       count++;
     }
@@ -311,14 +318,10 @@ void PairBBPD::init_style()
                    spacing_user ? "given by the spacing keyword"
                                 : "derived from the atom volumes: check 'set ... volume' and thickness/area");
 
+  // set by init_one() (called for every type pair after init_style)
   fracture_any = 0;
   multi_s0 = 0;
-  s0_single = critical_stretch[1][1];
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      if (setflag[i][j] && std::isfinite(critical_stretch[i][j])) fracture_any = 1;
-      if (setflag[i][j] && critical_stretch[i][j] != s0_single) multi_s0 = 1;
-    }
+  s0_seen = 0;
 
   bonds = dynamic_cast<FixBBPDBonds *>(modify->get_fix_by_id(BONDS_FIX_ID));
   if (!bonds)
@@ -334,6 +337,17 @@ double PairBBPD::init_one(int i, int j)
   if (setflag[i][j] == 0)
     error->all(FLERR, "Pair style bbpd/{}: pair_coeff for types {} {} is missing (bbpd styles "
                "do not mix coefficients)", kernel.name, i, j);
+  // calibrated at every init, so that a re-issued pair_style (model, thickness, area) applies
+  micromodulus[i][j] = BBPD::micromodulus(kernel, model, youngs[i][j], horizon[i][j], geom);
+  if (!s0_user[i][j])
+    critical_stretch[i][j] = std::isinf(fracture_energy[i][j])
+        ? std::numeric_limits<double>::infinity()
+        : BBPD::critical_stretch(kernel, model, micromodulus[i][j], fracture_energy[i][j],
+                                 horizon[i][j], geom);
+  if (std::isfinite(critical_stretch[i][j])) fracture_any = 1;
+  if (!s0_seen) s0_single = critical_stretch[i][j];
+  else if (critical_stretch[i][j] != s0_single) multi_s0 = 1;
+  s0_seen = 1;
   youngs[j][i] = youngs[i][j];
   fracture_energy[j][i] = fracture_energy[i][j];
   horizon[j][i] = horizon[i][j];
@@ -362,6 +376,18 @@ void PairBBPD::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (!bonds || !bonds->families_built()) return;
+  break_margin = 0.0;
+  if (fracture_any && bonds->raw_positions()) {
+    // the local and the canonical bond length differ by the round-off of one periodic shift
+    // per component: a few ulps of the largest coordinate (box corner + ghost cutoff, and the
+    // tilts of a triclinic box, whose ghost cutoff is in box fractions)
+    const double cut = MAX(comm->cutghost[0], MAX(comm->cutghost[1], comm->cutghost[2]));
+    double big = 0.0;
+    for (int m = 0; m < 3; m++)
+      big = MAX(big, std::fabs(domain->boxlo[m]) + std::fabs(domain->boxhi[m]) + cut);
+    big += std::fabs(domain->xy) + std::fabs(domain->xz) + std::fabs(domain->yz);
+    break_margin = BREAK_MARGIN_ULPS * DBL_EPSILON * big;
+  }
   if (!fracture_any) {
     if (evflag) eval<1, 0, 0>();
     else eval<0, 0, 0>();
@@ -375,18 +401,13 @@ void PairBBPD::compute(int eflag, int vflag)
   if (contact) compute_contact();
 }
 
-/* is tag jtag an intact partner of local atom i? (partners sorted by tag) */
+/* is tag jtag an intact partner of local atom i? (asked only for atoms closer than the contact
+   distance, a few per atom at most) */
 bool PairBBPD::bonded(int i, tagint jtag) const
 {
   const tagint *p = bonds->partner[i];
-  int lo = 0, hi = bonds->npartner[i] - 1;
-  while (lo <= hi) {
-    const int mid = (lo + hi) / 2;
-    const tagint v = p[mid] < 0 ? -p[mid] : p[mid];
-    if (v == jtag) return p[mid] > 0;
-    if (v < jtag) lo = mid + 1;
-    else hi = mid - 1;
-  }
+  for (int k = 0; k < bonds->npartner[i]; k++)
+    if (p[k] == jtag) return true;
   return false;
 }
 
@@ -400,7 +421,7 @@ void PairBBPD::compute_contact()
   const tagint *tag = atom->tag;
   const double *vfrac = atom->vfrac;
   const double dc = contact_factor * spacing;
-  std::vector<std::pair<tagint, int>> close;
+  std::vector<std::pair<std::array<double, 4>, int>> close;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
@@ -409,9 +430,11 @@ void PairBBPD::compute_contact()
       const int j = jlist[jj] & NEIGHMASK;
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
       const double rsq = dx * dx + dy * dy + dz * dz;
-      if (rsq < dc * dc && rsq > 0.0 && !bonded(i, tag[j])) close.emplace_back(tag[j], j);
+      if (rsq < dc * dc && rsq > 0.0 && !bonded(i, tag[j]))
+        close.push_back({{dx, dy, dz, (double) tag[j]}, j});
     }
-    // sum in tag order: the neighbour-list order depends on the domain decomposition
+    // sum in the order of the offsets (exact; tags only break ties of coincident atoms): the
+    // neighbour-list order depends on the domain decomposition, tags on the numbering
     std::sort(close.begin(), close.end());
     for (const auto &c : close) {
       const int j = c.second;
@@ -464,16 +487,13 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
       if (!FRACTURE) {
         row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc);
       } else if (row_force<EVFLAG, 1, MULTI>(i, fi, s0row, acc)) {
-        // a bond of the row is past its critical stretch: remove such bonds (irreversibly, in
-        // tag order), then sum the row again
+        // a bond of the row is (near) past its critical stretch: remove such bonds
+        // (irreversibly, in row order), then sum the row again
         int k = bonds->bond_start[i];
         while (k < bonds->bond_start[i] + bonds->nbond[i]) {
           const int j = bonds->bj[k];
-          const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
-                       dz = xx[3 * j + 2] - xx[3 * i + 2];
           const double s0 = MULTI ? s0row[type[j]] : s0_single;
-          const double xi0 = bonds->xi0_of(i, k);
-          if (std::sqrt(dx * dx + dy * dy + dz * dz) - xi0 > s0 * xi0)
+          if (past_critical(i, j, bonds->xi0_of(i, k), s0))
             bonds->remove_bond(i, k);
           else
             k++;
@@ -504,6 +524,18 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
     if (vflag_global)
       for (int m = 0; m < 6; m++) virial[m] += totals[1 + m];
   }
+}
+
+/* is bond i-j past its critical stretch? Decided from the same minimum-image difference of the
+   owners' unshifted positions at both ends (in a periodic box the ghost image x +- L rounds
+   differently at the two ends, and one end could break a bond the other keeps) */
+bool PairBBPD::past_critical(int i, int j, double xi0, double s0) const
+{
+  const double *xi = atom->x[i];
+  const double *xj = bonds->raw_positions() ? bonds->raw_x(j) : atom->x[j];
+  double d[3] = {xj[0] - xi[0], xj[1] - xi[1], xj[2] - xi[2]};
+  if (bonds->raw_positions()) BBPDCompat::minimum_image(domain, d);
+  return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - xi0 > s0 * xi0;
 }
 
 /* explain a non-finite force on atom i and stop */
@@ -553,7 +585,8 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
 #ifdef BBPD_SIMD
   if (!MULTI && !compact) {
     RowTally tally;
-    if (row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, bxi0, bcoef, n, s0_single, ax, ay, az, &tally))
+    if (row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, bxi0, bcoef, n, s0_single, break_margin, ax,
+                                         ay, az, &tally))
       return true;
     lane_sum(ax, ay, az, fi);
     if (EVFLAG) tally_lanes(i, tally, acc);
@@ -574,7 +607,7 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
     const double xi0 = compact ? bonds->xi0_of(i, beg + k) : bxi0[k];
     const double coef = compact ? bonds->coef_of(i, beg + k, xi0) : bcoef[k];
     const double elong = r - xi0;
-    if (FRACTURE) broken |= elong > (MULTI ? s0row[type[j]] : s0) * xi0;
+    if (FRACTURE) broken |= elong + break_margin > (MULTI ? s0row[type[j]] : s0) * xi0;
     const double fbond = coef * elong / r;
     ax[l] += fbond * dx;
     ay[l] += fbond * dy;

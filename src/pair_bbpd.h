@@ -38,6 +38,7 @@ class PairBBPD : public Pair {
   double bond_volume(int itype, int jtype, double xi0, double vj) const;
   double grid_spacing_of(double vfrac) const;
   const double *extract_bound() const { return &dt_bound; }
+  bool fracture_on() const { return fracture_any; }
   void report(class FixBBPDBonds *);
 
   const BBPD::KernelInfo kernel;
@@ -64,6 +65,9 @@ class PairBBPD : public Pair {
   bool bonded(int i, tagint jtag) const;
   int multi_s0;           // critical stretch differs between type pairs
   double s0_single;       // the critical stretch when it does not
+  int s0_seen;            // init_one() has met a type pair (s0_single holds its s0)
+  double break_margin;    // periodic box: bonds this close to s0 are re-checked canonically
+  bool past_critical(int i, int j, double xi0, double s0) const;
   template <int EVFLAG, int FRACTURE, int MULTI> void eval();
   template <int EVFLAG, int FRACTURE, int MULTI>
   bool row_force(int i, double *fi, const double *s0row, double *acc);

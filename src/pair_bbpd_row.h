@@ -45,17 +45,19 @@ inline void lane_sum(const double *ax, const double *ay, const double *az, doubl
 
 #ifdef BBPD_AVX512
 /* lanes of the force density on atom i from n bonds (partner bj, reference length
-   bxi0, coefficient bcoef); with FRACTURE returns true if a bond is past s0 */
+   bxi0, coefficient bcoef); with FRACTURE returns true if a bond is past s0 or within
+   margin of it (elong + margin > s0 xi0; margin is 0 except in periodic boxes) */
 template <int FRACTURE, int EV>
 inline bool row_force_avx512(const double *xx, int i, const int *bj, const double *bxi0,
-                             const double *bcoef, int n, double s0, double *ax, double *ay,
-                             double *az, RowTally *tally)
+                             const double *bcoef, int n, double s0, double margin, double *ax,
+                             double *ay, double *az, RowTally *tally)
 {
   const __m512d quarter = _mm512_set1_pd(0.25), half = _mm512_set1_pd(0.5);
   __m512d eacc = _mm512_setzero_pd(), vacc[6];
   for (auto &v : vacc) v = _mm512_setzero_pd();
   const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
-                zi = _mm512_set1_pd(xx[3 * i + 2]), vs0 = _mm512_set1_pd(s0);
+                zi = _mm512_set1_pd(xx[3 * i + 2]), vs0 = _mm512_set1_pd(s0),
+                vmargin = _mm512_set1_pd(margin);
   const __m256i three = _mm256_set1_epi32(3);
   __m512d fx = _mm512_setzero_pd(), fy = fx, fz = fx;
   __mmask8 broken = 0;
@@ -70,7 +72,9 @@ inline bool row_force_avx512(const double *xx, int i, const int *bj, const doubl
     const __m512d r = _mm512_sqrt_pd(rsq);
     const __m512d xi0 = _mm512_maskz_loadu_pd(m, bxi0 + k);
     const __m512d elong = _mm512_sub_pd(r, xi0);
-    if (FRACTURE) broken |= _mm512_mask_cmp_pd_mask(m, elong, _mm512_mul_pd(vs0, xi0), _CMP_GT_OQ);
+    if (FRACTURE)
+      broken |= _mm512_mask_cmp_pd_mask(m, _mm512_add_pd(elong, vmargin), _mm512_mul_pd(vs0, xi0),
+                                        _CMP_GT_OQ);
     const __m512d fbond = _mm512_maskz_div_pd(m, _mm512_mul_pd(_mm512_maskz_loadu_pd(m, bcoef + k), elong), r);
     fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fbond, dx));
     fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fbond, dy));
@@ -104,14 +108,15 @@ inline bool row_force_avx512(const double *xx, int i, const int *bj, const doubl
 /* the same as row_force_avx512 with two 4-wide halves: lanes 0-3 and 4-7 */
 template <int FRACTURE, int EV>
 inline bool row_force_avx2(const double *xx, int i, const int *bj, const double *bxi0,
-                           const double *bcoef, int n, double s0, double *ax, double *ay, double *az,
-                           RowTally *tally)
+                           const double *bcoef, int n, double s0, double margin, double *ax,
+                           double *ay, double *az, RowTally *tally)
 {
   const __m256d quarter = _mm256_set1_pd(0.25), half = _mm256_set1_pd(0.5);
   __m256d eacc[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()}, vacc[6][2];
   for (auto &v : vacc) v[0] = v[1] = _mm256_setzero_pd();
   const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
-                zi = _mm256_set1_pd(xx[3 * i + 2]), vs0 = _mm256_set1_pd(s0);
+                zi = _mm256_set1_pd(xx[3 * i + 2]), vs0 = _mm256_set1_pd(s0),
+                vmargin = _mm256_set1_pd(margin);
   const __m128i three = _mm_set1_epi32(3), iota = _mm_setr_epi32(0, 1, 2, 3);
   __m256d fx[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()}, fy[2] = {fx[0], fx[0]},
           fz[2] = {fx[0], fx[0]};
@@ -130,7 +135,8 @@ inline bool row_force_avx2(const double *xx, int i, const int *bj, const double 
     const __m256d xi0 = _mm256_maskload_pd(bxi0 + k, _mm256_castpd_si256(m));
     const __m256d elong = _mm256_sub_pd(r, xi0);
     if (FRACTURE)
-      broken = _mm256_or_pd(broken, _mm256_and_pd(m, _mm256_cmp_pd(elong, _mm256_mul_pd(vs0, xi0), _CMP_GT_OQ)));
+      broken = _mm256_or_pd(broken, _mm256_and_pd(m, _mm256_cmp_pd(_mm256_add_pd(elong, vmargin),
+                                                                   _mm256_mul_pd(vs0, xi0), _CMP_GT_OQ)));
     const __m256d fbond = _mm256_div_pd(
         _mm256_mul_pd(_mm256_maskload_pd(bcoef + k, _mm256_castpd_si256(m)), elong), r);
     fx[h] = _mm256_blendv_pd(fx[h], _mm256_add_pd(fx[h], _mm256_mul_pd(fbond, dx)), m);

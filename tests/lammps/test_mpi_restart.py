@@ -4,9 +4,9 @@ The bbpd styles evaluate every bond from both ends and sum each atom's partners 
 (pair_bbpd.cpp), so a run must give the same bits on 1, 2 and 4 ranks, and `run 2N` must give
 the same bits as `run N` + write_restart + read_restart (in a new process) + `run N`.
 
-The atoms come from data files so that their tags do not depend on the rank count:
-create_atoms numbers atoms rank by rank, and a different tag order is a different (equally
-valid) summation order, which changes the last bits (measured: 1e-17 m in positions).
+The atoms come from data files, so their tags do not depend on the rank count; that the
+numbering does not matter either (create_atoms numbers atoms rank by rank) is tested in
+test_reliability.py.
 """
 import re
 

@@ -1,0 +1,90 @@
+"""The plugin built with AddressSanitizer (build/asan-VERSION from tools/bootstrap, CMake option
+BBPD_SANITIZE) over scenes that exercise its memory handling: atoms with large families
+migrating between ranks (pack/unpack_exchange), bonds breaking (rows shifting), notches,
+restart files and contact. An out-of-bounds access stops LAMMPS with an AddressSanitizer
+report, which fails the run. The default suite keeps one small case of each kind; the larger
+scenes are marked slow."""
+import os
+import subprocess
+
+import pytest
+
+from bbpd.runner import ROOT
+
+import test_mpi_restart as mr  # the scenes of those tests (tests/lammps is on pytest's pythonpath)
+import test_reliability as rel
+
+TIMEOUT = 900
+
+
+@pytest.fixture(scope="module")
+def asan():
+    version = os.environ.get("BBPD_LAMMPS_VERSION", "20260704")
+    build = ROOT / "build" / f"asan-{version}"
+    assert (build / "bbpd-env.sh").is_file(), f"{build} is missing: run tools/bootstrap (it builds it)"
+    # recompiled here too, so that a direct pytest run after a source edit tests the edit
+    proc = subprocess.run(["cmake", "--build", str(build), "--target", "bbpdplugin", "-j2"],
+                          capture_output=True, text=True, timeout=1800)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+
+
+@pytest.fixture
+def sanitized(asan, monkeypatch):
+    """tools/lmp runs the sanitizer build with its runtime preloaded"""
+    monkeypatch.setenv("BBPD_SANITIZE", "1")
+
+
+def clean(out):
+    assert "AddressSanitizer" not in out
+    return out
+
+
+def test_sanitizer_build_is_the_one_run(sanitized, lmp):
+    """tools/lmp loads the plugin of build/asan-VERSION, linked to the sanitizer runtime, and
+    preloads that runtime"""
+    out = lmp("""variable pre getenv LD_PRELOAD
+variable path getenv LD_LIBRARY_PATH
+print "PRELOAD ${pre}"
+print "PATH ${path}"
+plugin load bbpdplugin.so
+""").output
+    preload = next(l for l in out.splitlines() if l.startswith("PRELOAD "))
+    path = next(l for l in out.splitlines() if l.startswith("PATH "))
+    assert "libasan" in preload
+    plugin_dir = path.split()[1].split(":")[0]
+    assert "/build/asan-" in plugin_dir
+    ldd = subprocess.run(["ldd", plugin_dir + "/bbpdplugin.so"], capture_output=True, text=True)
+    assert "libasan" in ldd.stdout
+    assert "Loading plugin: BBPD pair style, Gaussian kernel" in out
+
+
+def test_migrating_large_families(sanitized, lmp):
+    """m = 6 (1150 partners per atom) crossing between 2 ranks: two exchanges."""
+    script = rel.migrating_block(14, 6).replace("run 40", "run 20")
+    clean(lmp(script, nprocs=2, timeout=TIMEOUT).output)
+
+
+def test_fracture_restart_two_ranks(sanitized, tmp_path):
+    """the 2D Kalthoff-Winkler plate of test_mpi_restart: notch, breaking bonds, migration,
+    write_restart on 2 ranks and read_restart on 1"""
+    wd = tmp_path / "restarted"
+    first, second = mr.restart_scripts("2d", 2, 100)
+    clean(mr.run_in(wd, "2d", first, 2))
+    clean(mr.run_in(wd, "2d", second, 1))
+
+
+@pytest.mark.slow
+def test_m7_migration(sanitized, lmp):
+    clean(lmp(rel.migrating_block(16, 7), nprocs=2, timeout=TIMEOUT).output)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("scene", ["3d", "contact"])
+def test_scenes_two_ranks(sanitized, tmp_path, scene):
+    wd = tmp_path / scene
+    clean(mr.run_in(wd, scene, mr.fresh_script(scene, 2, 200), 2))
+
+
+@pytest.mark.slow
+def test_periodic_breaking(sanitized, lmp, tmp_path):
+    clean(lmp(rel.straddling_pairs(tmp_path), nprocs=2, timeout=TIMEOUT).output)
