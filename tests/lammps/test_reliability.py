@@ -157,7 +157,7 @@ def test_periodic_bonds_break_at_both_ends(lmp, tmp_path, nprocs):
 # --------------------------------------------------------------------------- restart
 
 def exploding_plate(velocity_scale):
-    """A soft 3 x 3 plate (E = 1e3 Pa: stable bound ~2 ms) set flying apart at up to
+    """A soft 3 x 3 plate (E = 1e3 Pa: stable time-step bound 2e-3 s) set flying apart at up to
     1400 m/s with a timestep of 1e-6 s: atoms move 1.4 spacings per step, so only the growth
     of the still-bonded body (1000 x its size after ~1000 steps) reveals the explosion."""
     return HEAD + f"""dimension 2
