@@ -164,7 +164,22 @@ def test_triangular_m1_is_rejected_at_setup(lmp):
         "timestep 1e-9\nthermo 100\nrun 100\n"
     with pytest.raises(LammpsError) as err:
         run(lmp, script)
+    # the setup ERROR of pair_bbpd.cpp, not any failure (a crash has no ERROR line)
+    assert err.value.message.startswith("ERROR")
+    assert "atoms have bonds but no stiffness" in err.value.message
+    assert "increase the horizon" in err.value.message
     assert "Step" not in err.value.output.split("Setting up Verlet run")[-1]
+
+
+def test_run_point_counts_only_instabilities(tmp_path):
+    """A stability-map point is unstable only on the plugin's unstable-run ERROR: a bad input
+    (here E < 0) is raised, not counted as an unstable time step."""
+    assert st.is_instability_error("ERROR: BBPD: the run is unstable at step 5 (an atom ...")
+    assert not st.is_instability_error("LAMMPS exited with -11")
+    assert not st.is_instability_error("ERROR: Pair coeff for bbpd/gaussian: Young's modulus")
+    with pytest.raises(LammpsError, match="Young's modulus E must be > 0"):
+        st.run_point(tmp_path, "gaussian", 3, 0.5, steps=100, side=12, youngs=-1.0,
+                     timeout=TIMEOUT)
 
 
 # --------------------------------------------------------------------------- stiffness, density
