@@ -8,7 +8,6 @@ broken during a run. A count of bonds (1 - n_intact/n) or weights without C_v or
 from eq. 17 on this body by far more than the tolerance.
 """
 import numpy as np
-import pytest
 
 from bbpd import reference as ref
 

@@ -8,7 +8,9 @@
   doc/fix_bbpd_notch.rst states;
 - compute bbpd/dsif options offset and tolerance, and how it resolves ties.
 """
+import importlib.util
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -211,18 +213,16 @@ def test_atom_on_the_notch_line_is_on_the_positive_side(lmp, tmp_path, direction
 
 # --------------------------------------------------------------------------- dsif options
 
-def dsif_body(extra_field=""):
-    """Plate of test_dsif.py with its exact crack-face field, plus an extra displacement."""
-    import importlib.util
-    from pathlib import Path
+def load_test_dsif():
+    """test_dsif.py: its plate, exact crack-face field and runner."""
     spec = importlib.util.spec_from_file_location("bbpd_test_dsif",
                                                   Path(__file__).with_name("test_dsif.py"))
-    td = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(td)
-    return td
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 
-TD = dsif_body()
+TD = load_test_dsif()
 
 
 def run_k(lmp, body, args, nprocs=1):

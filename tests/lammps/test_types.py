@@ -7,7 +7,6 @@ critical stretch of each type pair (a uniform stretch breaks exactly the bonds w
 passes their pair's s0), momentum over a dynamic run with two densities and breaking bonds.
 """
 import numpy as np
-import pytest
 
 from bbpd import reference as ref
 
