@@ -1,6 +1,8 @@
 """The LAMMPS 4 Feb 2025 compatibility build (tools/bootstrap with BBPD_LAMMPS_VERSION=20250204,
 built by tools/test) beyond loading the plugin: forces against the NumPy reference, bitwise
-rank-count invariance with a growing crack, and restart against a continuous run.
+rank-count invariance with a growing crack, restart against a continuous run, and a notch
+across a periodic boundary (the one place where the plugin calls a LAMMPS function whose
+signature differs between the versions, src/bbpd_compat.h).
 
 The checks are those of test_forces.py and test_mpi_restart.py, run with the compatibility
 build selected through BBPD_LAMMPS_VERSION (tools/lmp reads it); every run's banner is checked,
@@ -63,3 +65,10 @@ def test_compat_rank_count_invariance(compat, tmp_path):
 
 def test_compat_restart_equals_continuous_run(compat, tmp_path):
     mpi_restart.test_restart_equals_continuous_run(tmp_path, 1, 2)
+
+
+def test_compat_notch_across_periodic_boundary(compat, tmp_path):
+    """Periodic images go through BBPDCompat::minimum_image, whose 2025 overload differs."""
+    def lmp(script, **kw):
+        return runner.run_lammps(script, workdir=tmp_path, **kw)
+    forces.test_notch_cuts_bonds_across_periodic_boundary(lmp, tmp_path)
