@@ -176,6 +176,18 @@ class Bonds:
         return (np.bincount(self.i[a], w * self.volume[self.j[a]], minlength=n)
                 + np.bincount(self.j[a], w * self.volume[self.i[a]], minlength=n))
 
+    def damage(self):
+        """phi_i = 1 - sum_intact C_v V_j / sum_all C_v V_j over the family of i (eq. 17)."""
+        n = len(self.x0)
+        w_i = self.cv * self.volume[self.j]    # bond weight seen from end i
+        w_j = self.cv * self.volume[self.i]    # and from end j
+        a = self.intact
+        total = np.bincount(self.i, w_i, minlength=n) + np.bincount(self.j, w_j, minlength=n)
+        intact = (np.bincount(self.i[a], w_i[a], minlength=n)
+                  + np.bincount(self.j[a], w_j[a], minlength=n))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(total > 0.0, 1.0 - intact / total, 0.0)
+
     def breaking_energy(self, s0, mask=None):
         """sum over bonds (in mask) of the work to break them: 1/2 c s0^2 xi C_v V_i V_j."""
         m = self.intact if mask is None else (self.intact & mask)

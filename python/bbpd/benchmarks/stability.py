@@ -38,6 +38,7 @@ writes DIR/stability.json and DIR/stability.md (the table of doc/stability.md).
 import argparse
 import json
 import math
+import re
 import time
 from pathlib import Path
 
@@ -177,6 +178,18 @@ def printed_bound(output):
     raise ValueError("no BOUND line in the LAMMPS output")
 
 
+# the ERROR lines the plugin prints when a run blows up (fix_bbpd_bonds.cpp, pair_bbpd.cpp);
+# any other ERROR, or an exit without one (a crash), is not an instability
+INSTABILITY_ERRORS = re.compile(r"the run is unstable|the run became unstable|"
+                                r"either the run is unstable")
+
+
+def is_instability_error(message):
+    """True if a LammpsError message is the plugin's unstable-run ERROR."""
+    return bool(message) and message.startswith("ERROR") and \
+        INSTABILITY_ERRORS.search(message) is not None
+
+
 def run_point(workdir, kernel, m, ratio, steps=STEPS, side=None, periodic=True, timeout=600,
               **kw):
     """Run one plate; returns dict(stable, growth, steps_done, bound, error); growth is the
@@ -186,6 +199,8 @@ def run_point(workdir, kernel, m, ratio, steps=STEPS, side=None, periodic=True, 
     try:
         out = run_lammps(script, workdir, timeout=timeout).output
     except LammpsError as e:
+        if not is_instability_error(e.message):
+            raise    # a bad input or a crash is not a point of the stability map
         return {"stable": False, "growth": math.inf, "steps_done": None, "bound": None,
                 "error": e.message}
     table = ref.thermo_tables(out)[-1]

@@ -1,0 +1,96 @@
+"""The three force kernels give the same bits: AVX-512, AVX2 and the portable loop.
+
+src/pair_bbpd_row.h picks the kernel at compile time from the target's macros: AVX-512
+(__AVX512F__ and __AVX512VL__) before AVX2 (__AVX2__), else the portable loop of
+pair_bbpd.cpp. The default build (-march=native) on an AVX-512 host therefore never runs the
+AVX2 kernel. This test builds the plugin again with -mno-avx512f (the AVX2 kernel; in the
+default suite) and without -march=native (the portable loop; slow), into build/, checks from
+the machine code which kernel each build holds (zmm registers for AVX-512, ymm for AVX2), and
+compares the final state of a run in which a crack grows (the scene of test_storage.py) with
+the default build's, bit for bit.
+"""
+import importlib.util
+import os
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+VERSION = os.environ.get("BBPD_LAMMPS_VERSION", "20260704")
+DEFAULT_BUILD = ROOT / "build" / f"lammps-{VERSION}"
+
+_spec = importlib.util.spec_from_file_location("bbpd_test_storage",
+                                               Path(__file__).with_name("test_storage.py"))
+storage = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(storage)
+
+VARIANTS = {"avx2": ["-D", "BBPD_NATIVE=ON", "-D", "CMAKE_CXX_FLAGS=-mno-avx512f"],
+            "portable": ["-D", "BBPD_NATIVE=OFF"]}
+
+
+def cache_value(key):
+    text = (DEFAULT_BUILD / "CMakeCache.txt").read_text()
+    return re.search(rf"^{key}:\w+=(.*)$", text, re.M).group(1)
+
+
+def build_variant(name):
+    """Configure and build the plugin alone into build/<name>-VERSION; returns the .so path."""
+    folder = ROOT / "build" / f"{name}-{VERSION}"
+    configure = ["cmake", "-S", str(ROOT), "-B", str(folder),
+                 "-D", f"LAMMPS_SOURCE_DIR={cache_value('LAMMPS_SOURCE_DIR')}",
+                 "-D", "BBPD_BUILD_TESTS=OFF"] + VARIANTS[name]
+    for cmd in (configure, ["cmake", "--build", str(folder), "--target", "bbpdplugin", "-j",
+                            str(os.cpu_count() or 1)]):
+        proc = subprocess.run(cmd, capture_output=True, text=True)
+        assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    return folder / "bbpdplugin.so"
+
+
+def registers(path):
+    """(zmm used, ymm used) in the machine code of a shared object."""
+    code = subprocess.run(["objdump", "-d", "--no-show-raw-insn", str(path)],
+                          capture_output=True, text=True, check=True).stdout
+    return "%zmm" in code, "%ymm" in code
+
+
+def host_has(flag):
+    return re.search(rf"\b{flag}\b", Path("/proc/cpuinfo").read_text()) is not None
+
+
+def final_state(lmp, tmp_path, plugin):
+    script = storage.SCENE.format(kernel="gaussian", storage="fast")
+    if plugin is not None:
+        script = script.replace("plugin load bbpdplugin.so", f"plugin load {plugin}")
+    out = lmp(script).output
+    notch, final = storage.broken_counts(out)
+    assert final > notch + 100    # a crack grew
+    return (tmp_path / "final.dump").read_text(), final
+
+
+@pytest.fixture(scope="module")
+def default_state(tmp_path_factory):
+    from bbpd.runner import run_lammps
+    wd = tmp_path_factory.mktemp("default")
+    out = run_lammps(storage.SCENE.format(kernel="gaussian", storage="fast"), wd).output
+    return (wd / "final.dump").read_text(), storage.broken_counts(out)[1]
+
+
+@pytest.mark.skipif(not host_has("avx2"), reason="the host has no AVX2")
+def test_avx2_kernel_gives_the_default_bits(lmp, tmp_path, default_state):
+    plugin = build_variant("avx2")
+    zmm, ymm = registers(plugin)
+    assert not zmm and ymm, "the -mno-avx512f build must hold the AVX2 kernel"
+    if host_has("avx512f") and host_has("avx512vl"):
+        assert registers(DEFAULT_BUILD / "bbpdplugin.so")[0], \
+            "the default build on an AVX-512 host must hold the AVX-512 kernel"
+    assert final_state(lmp, tmp_path, plugin) == default_state
+
+
+@pytest.mark.slow
+def test_portable_loop_gives_the_default_bits(lmp, tmp_path, default_state):
+    plugin = build_variant("portable")
+    zmm, ymm = registers(plugin)
+    assert not zmm and not ymm, "a build without -march=native must hold the portable loop"
+    assert final_state(lmp, tmp_path, plugin) == default_state
