@@ -40,6 +40,7 @@ def build_variant(name):
     folder = ROOT / "build" / f"{name}-{VERSION}"
     configure = ["cmake", "-S", str(ROOT), "-B", str(folder),
                  "-D", f"LAMMPS_SOURCE_DIR={cache_value('LAMMPS_SOURCE_DIR')}",
+                 "-D", f"LAMMPS_DIR={cache_value('LAMMPS_DIR')}",
                  "-D", "BBPD_BUILD_TESTS=OFF"] + VARIANTS[name]
     for cmd in (configure, ["cmake", "--build", str(folder), "--target", "bbpdplugin", "-j",
                             str(os.cpu_count() or 1)]):
