@@ -14,6 +14,14 @@ of the two incident plane shear waves (python/bbpd/freund.py), valid from their 
    shear strain is tau/mu within 5 %, so the excess is the near-tip sliding profile of the
    peridynamic crack.  The tolerances below are a regression guard around those numbers, not
    a verification: a load on one edge only (half the amplitude) or a wrong wave speed fails.
+3. K_II from the J-integral (compute bbpd/jintegral, annulus 5-12.5 mm), which reads the field
+   away from the tip, is on the reference: measured peak / L2 (%) and K_II/K_II,ref at the
+   window end: dx = 1 mm constant 7.49 / 12.42 / 0.925, triangular 5.22 / 12.01 / 0.948,
+   Gaussian 2.21 / 11.30 / 0.978; dx = 0.5 mm 4.74 / 7.48 / 0.953, 0.46 / 7.94 / 1.005,
+   1.85 / 7.62 / 1.018; dx = 0.25 mm 2.58 / 4.44 / 0.974, 0.53 / 5.64 / 1.005,
+   0.37 / 5.55 / 1.004 (the L2 error is the first microsecond, where K is small).  The
+   extrapolation's excess is therefore in the near-tip reading, not in the field: asserted as
+   |K_J/K_ref - 1| < 1/2 |K_dsif/K_ref - 1| at the window end.
 """
 import re
 
@@ -28,6 +36,9 @@ PEAK_TOL = 35.0       # % (measured 14-29)
 L2_TOL = 32.0         # % (measured 24-29)
 SYMMETRY_TOL = 1e-8   # left tip vs right tip (measured 2e-10)
 KI_TOL = 1e-3         # K_I/K_II (measured 1e-4)
+J_PEAK_TOL = 10.0     # % K_II from J (measured 0.4-7.5)
+J_L2_TOL = 15.0       # % (measured 4.4-12.4)
+J_END_TOL = 0.10      # |K_II/K_II,ref - 1| at the window end, from J (measured 0.004-0.075)
 
 
 @pytest.mark.parametrize("mode", [1, 2])
@@ -94,6 +105,14 @@ def check(res):
     assert res["peak"] < PEAK_TOL and res["l2"] < L2_TOL
     assert res["left_right"] < SYMMETRY_TOL
     assert res["ki_over_kii"] < KI_TOL
+    j = res["jintegral"]
+    ratio_j, ratio_d = j["k_end"] / res["k_end_exact"], res["k_end"] / res["k_end_exact"]
+    print(f"  from J: peak {j['peak']:.2f} L2 {j['l2']:.2f} K_end/ref {ratio_j:.3f}")
+    assert j["peak"] < J_PEAK_TOL and j["l2"] < J_L2_TOL
+    assert abs(ratio_j - 1.0) < J_END_TOL
+    assert abs(ratio_j - 1.0) < 0.5 * abs(ratio_d - 1.0)
+    assert np.max(np.abs(res["k_i_j"][(res["t"] >= res["window"][0])])) < KI_TOL * np.max(
+        np.abs(res["k_ii_j"]))
     # nothing reaches the tip before the shear waves (less a horizon of nonlocal reach)
     t, k = res["t"], res["k_ii"]
     early = t < res["window"][0] - 2.0 * 5 * res["dx"] / mode2.wave_speeds()[0]
