@@ -166,15 +166,36 @@ struct Point {
   double rho, area;     // mass density, area of the point
 };
 
-/* the three integrands, times the area: out = {J, I(aux K_I = 1), I(aux K_II = 1)} */
-inline void integrand(const Point &p, const Elastic &el, double rin, double rout, double out[3])
+/* what depends on the position only: the weight q, its gradient and the gradients of the
+   unit auxiliary Williams fields (mode I, mode II); zero at the tip itself, where the
+   auxiliary field is singular */
+struct Aux {
+  double q, dq[2];
+  double ga[2][2][2];
+};
+
+inline void aux_fields(const double x[2], const Elastic &el, double rin, double rout, Aux &a)
 {
-  const double r = std::hypot(p.x[0], p.x[1]);
-  double q, dqdr;
-  q_weight(r, rin, rout, q, dqdr);
+  const double r = std::hypot(x[0], x[1]);
+  double dqdr;
+  q_weight(r, rin, rout, a.q, dqdr);
+  a.dq[0] = r > 0.0 ? dqdr * x[0] / r : 0.0;
+  a.dq[1] = r > 0.0 ? dqdr * x[1] / r : 0.0;
+  for (int mode = 0; mode < 2; mode++) {
+    if (r == 0.0 || a.q == 0.0) {
+      for (int i = 0; i < 2; i++) a.ga[mode][i][0] = a.ga[mode][i][1] = 0.0;
+      continue;
+    }
+    williams_gradient(mode == 0 ? 1.0 : 0.0, mode == 0 ? 0.0 : 1.0, x[0], x[1], el, a.ga[mode]);
+  }
+}
+
+/* the three integrands, times the area: out = {J, I(aux K_I = 1), I(aux K_II = 1)} */
+inline void integrand(const Point &p, const Elastic &el, const Aux &a, double out[3])
+{
   out[0] = out[1] = out[2] = 0.0;
-  if (q == 0.0) return;
-  const double dq[2] = {r > 0.0 ? dqdr * p.x[0] / r : 0.0, r > 0.0 ? dqdr * p.x[1] / r : 0.0};
+  if (a.q == 0.0) return;
+  const double q = a.q, *dq = a.dq;
 
   double sig[2][2];
   hooke(p.gu, el, sig);
@@ -192,10 +213,9 @@ inline void integrand(const Point &p, const Elastic &el, double rin, double rout
   }
   out[0] = p.area * (jq + jd * q);
 
-  if (r == 0.0) return;    // the auxiliary field is singular at the tip itself
   for (int mode = 0; mode < 2; mode++) {
-    double ga[2][2], sa[2][2];
-    williams_gradient(mode == 0 ? 1.0 : 0.0, mode == 0 ? 0.0 : 1.0, p.x[0], p.x[1], el, ga);
+    const double(*ga)[2] = a.ga[mode];
+    double sa[2][2];
     hooke(ga, el, sa);
     double iq = 0.0, id = 0.0, cross = 0.0;
     for (int i = 0; i < 2; i++) {
@@ -208,6 +228,13 @@ inline void integrand(const Point &p, const Elastic &el, double rin, double rout
     iq -= cross * dq[0];
     out[1 + mode] = p.area * (iq + id * q);
   }
+}
+
+inline void integrand(const Point &p, const Elastic &el, double rin, double rout, double out[3])
+{
+  Aux a;
+  aux_fields(p.x, el, rin, rout, a);
+  integrand(p, el, a, out);
 }
 
 /* K from the interaction integral with a unit auxiliary field */

@@ -5,7 +5,6 @@
 #include "compute_bbpd_jintegral.h"
 
 #include "atom.h"
-#include "bbpd_jintegral.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -41,7 +40,8 @@ ComputeBBPDJIntegral::ComputeBBPDJIntegral(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), jvec{0.0, 0.0, 0.0}, tip_value{0.0, 0.0}, tip_ivar{-1, -1},
     dir{1.0, 0.0}, rin_user(UNSET), rout_user(UNSET), grad_user(UNSET), youngs_user(UNSET),
     poisson_user(UNSET), thickness_user(UNSET), plane(PLANE_UNSET), pair(nullptr), rin(0.0),
-    rout(0.0), rgrad(0.0), thickness(0.0), cached(0), cached_tip{0.0, 0.0}, itype_tip(1)
+    rout(0.0), rgrad(0.0), thickness(0.0), cached(0), cached_tip{0.0, 0.0},
+    aux_elastic{0.0, 0.0, 0.0}, itype_tip(1)
 {
   if (narg < 6 || strcmp(arg[3], "tip") != 0)
     error->all(FLERR, "Illegal compute bbpd/jintegral command: expected 'compute ID group "
@@ -314,6 +314,7 @@ void ComputeBBPDJIntegral::build_cache(const double *tip)
                rout, tip[0], tip[1]);
 
   fields.assign(NFIELD * n, 0.0);
+  aux.clear();    // made by compute_vector() with the elastic constants
   cached_tip[0] = tip[0];
   cached_tip[1] = tip[1];
   cached = 1;
@@ -382,9 +383,18 @@ void ComputeBBPDJIntegral::compute_vector()
   int plane_stress;
   elastic_constants(E, nu, plane_stress);
   const JI::Elastic el{E, nu, plane_stress != 0};
+  const int npoint = static_cast<int>(points.size());
+  if (aux.empty() || aux_elastic[0] != E || aux_elastic[1] != nu ||
+      aux_elastic[2] != plane_stress) {
+    aux.resize(npoint);
+    for (int p = 0; p < npoint; p++)
+      JI::aux_fields(&xloc[2 * points[p]], el, rin, rout, aux[p]);
+    aux_elastic[0] = E;
+    aux_elastic[1] = nu;
+    aux_elastic[2] = plane_stress;
+  }
 
   double sum[3] = {0.0, 0.0, 0.0};
-  const int npoint = static_cast<int>(points.size());
   for (int p = 0; p < npoint; p++) {
     const int k = points[p];
     const double *fk = &fields[NFIELD * k];
@@ -411,7 +421,7 @@ void ComputeBBPDJIntegral::compute_vector()
     pt.rho = rho[k];
     pt.area = area[k];
     double out[3];
-    JI::integrand(pt, el, rin, rout, out);
+    JI::integrand(pt, el, aux[p], out);
     for (int c = 0; c < 3; c++) sum[c] += out[c];
   }
   jvec[0] = sum[0];
@@ -422,5 +432,6 @@ void ComputeBBPDJIntegral::compute_vector()
 double ComputeBBPDJIntegral::memory_usage()
 {
   return sizeof(double) * (xloc.size() + area.size() + rho.size() + kinv.size() + fields.size()) +
+      sizeof(JI::Aux) * aux.size() +
       sizeof(tagint) * tags.size() + sizeof(int) * (points.size() + nbr_start.size() + nbr.size());
 }

@@ -21,6 +21,7 @@
 #ifndef LMP_COMPUTE_BBPD_JINTEGRAL_H
 #define LMP_COMPUTE_BBPD_JINTEGRAL_H
 
+#include "bbpd_jintegral.h"
 #include "compute.h"
 #include "lmptype.h"
 
@@ -50,7 +51,8 @@ class ComputeBBPDJIntegral : public Compute {
   // resolved parameters (init)
   double rin, rout, rgrad, thickness;
 
-  // cache: atoms within rout + rgrad of the tip, sorted by reference position; valid while the tip is fixed
+  // cache: atoms within rout + rgrad of the tip, sorted by reference position; valid while
+  // the tip does not move
   int cached;
   double cached_tip[2];
   std::vector<tagint> tags;
@@ -59,6 +61,8 @@ class ComputeBBPDJIntegral : public Compute {
   std::vector<int> points;           // atoms with r <= rout and a valid stencil
   std::vector<int> nbr_start, nbr;   // stencil of each point (CSR)
   std::vector<double> kinv;          // inverse moment of each point's stencil, 3 per point
+  std::vector<BBPD::JIntegral::Aux> aux;    // q and auxiliary fields of each point
+  double aux_elastic[3];                    // E, nu, plane stress the auxiliary fields belong to
   int itype_tip;                     // type of the atom nearest to the tip
   std::vector<double> fields;        // gathered u, v, a (crack-tip coordinates) and owner count
 
