@@ -14,7 +14,6 @@ import math
 import re
 
 import numpy as np
-
 import pytest
 
 from bbpd.runner import LammpsError
