@@ -531,7 +531,7 @@ def mode2_section(specs, results, figdir, notes):
         if failed(res):
             rows.append(failed_row(res, len(header), lead))
             continue
-        r = _arrays(res, ("t", "k_ii", "k_i", "k_ii_left"))
+        r = _arrays(res, ("t", "k_ii", "k_i", "k_ii_left", "k_ii_j"))
         ok[(s.kernel, s.dx)] = r
         j = r.get("jintegral")
         rows.append(lead + [f"{r['peak']:.2f}", f"{r['l2']:.2f}",
@@ -601,6 +601,17 @@ def mode2_section(specs, results, figdir, notes):
                                       "three kernels", "t (us)",
                                       r"$K_{II}/(\tau\sqrt{\pi a})$"), path, notes)
         figs += [name] if name else []
+        jseries = [(f"{k} from J (peak {r['jintegral']['peak']:.1f} %)", r["t"] * 1e6,
+                    mode2.normalise(r["k_ii_j"]), COLORS[k])
+                   for (k, d), r in ok.items() if d == dx and "k_ii_j" in r]
+        if jseries:
+            jpath = figdir / f"fig12_jintegral_dx{dx * 1e3:g}mm.png"
+            name = _figure(lambda: plot_k(jpath, jseries, refs,
+                                          (win.t_start * 1e6, win.t_end_ignoring_corners * 1e6),
+                                          f"Mode-II K_II(t) from the J-integral, dx = "
+                                          f"{dx * 1e3:g} mm, three kernels", "t (us)",
+                                          r"$K_{II}/(\tau\sqrt{\pi a})$"), jpath, notes)
+            figs += [name] if name else []
     return {"title": "Mode-II central crack under shear (sec. 4.2.2, Fig. 12)",
             "setup": "Plate 104 x 40 mm, central crack 2a = 24 mm, step shear tau on both long "
                      "edges, plane strain (nu = 1/4), m = 5. K_II by compute bbpd/dsif and by "
