@@ -30,6 +30,7 @@ constexpr double UNSET = -1.0;
 // FE practice keeps q,j out of the process zone), the gradient stencil in grid spacings
 // (the nearest and next-nearest neighbours, with a margin against round-off)
 constexpr double RIN_DEFAULT = 2.0, ROUT_DEFAULT = 5.0, GRADIENT_DEFAULT = 2.01;
+constexpr int MAX_BINS = 512;    // bins per side for the stencil search (bounds its memory)
 constexpr int NPACK = 6;     // gathered per atom at cache time: tag, x0 (2), area, rho, type
 constexpr int NFIELD = 7;    // gathered per atom and call: u (2), v (2), a (2), owner count
 }    // namespace
@@ -171,7 +172,8 @@ void ComputeBBPDJIntegral::current_tip(double *tip) const
 
 /* ----------------------------------------------------------------------
    gather the atoms within rout + rgrad of the tip (reference positions) to
-   every rank in atom-ID order and build each point's gradient stencil
+   every rank in the order of their reference positions and build each
+   point's gradient stencil
 ------------------------------------------------------------------------- */
 
 void ComputeBBPDJIntegral::build_cache(const double *tip)
@@ -258,13 +260,14 @@ void ComputeBBPDJIntegral::build_cache(const double *tip)
     }
   }
 
-  // stencils by binning the gathered atoms with cells of side rgrad
+  // stencils by binning the gathered atoms with cells of side >= rgrad
   double blo[2] = {1.0e300, 1.0e300};
   for (int k = 0; k < n; k++)
     for (int m = 0; m < 2; m++) blo[m] = std::min(blo[m], xloc[2 * k + m]);
-  const int nb = static_cast<int>(std::ceil(2.0 * reach / rgrad)) + 2;
+  const double side = std::max(rgrad, 2.0 * reach / MAX_BINS);
+  const int nb = static_cast<int>(std::ceil(2.0 * reach / side)) + 2;
   auto cell = [&](int k, int m) {
-    return std::min(nb - 1, static_cast<int>((xloc[2 * k + m] - blo[m]) / rgrad));
+    return std::min(nb - 1, static_cast<int>((xloc[2 * k + m] - blo[m]) / side));
   };
   std::vector<int> head(nb * nb, -1), next(n, -1);
   for (int k = n - 1; k >= 0; k--) {    // lists in the sorted order
@@ -304,6 +307,10 @@ void ComputeBBPDJIntegral::build_cache(const double *tip)
     nbr_start.push_back(static_cast<int>(nbr.size()));
     kinv.insert(kinv.end(), ki, ki + 3);
   }
+  if (points.empty() && unresolved)
+    error->all(FLERR, "Compute bbpd/jintegral {}: none of the {} atoms of the disc has enough "
+               "neighbours within gradient = {} for a gradient; increase gradient (at least "
+               "the grid spacing)", id, unresolved, rgrad);
   if (unresolved && comm->me == 0)
     error->warning(FLERR, "Compute bbpd/jintegral {}: {} atoms of the disc have too few "
                    "neighbours within gradient = {} for a gradient and are left out; increase "

@@ -217,6 +217,9 @@ CASES = {
     "jint-without-bbpd-pair": (script(**PMB, extra=JINT.format("tip 0.005 0.005 rin 0.001 "
                                                                 "rout 0.002")),
                                "without a bbpd/* pair style needs"),
+    "jint-gradient-below-spacing": (script(extra=JINT.format("tip 0.005 0.005 rin 0.001 "
+                                                             "rout 0.002 gradient 0.0005")),
+                                    "increase gradient (at least the grid spacing)"),
     "jint-unknown-keyword": (script(extra=JINT.format("tip 0.005 0.005 r1 0.001")),
                              "unknown keyword 'r1'"),
     "jint-rin-zero": (script(extra=JINT.format("tip 0.005 0.005 rin 0 rout 0.002")),
