@@ -8,6 +8,7 @@
 #include "comm.h"
 #include "compute_bbpd_damage_atom.h"
 #include "compute_bbpd_dsif.h"
+#include "compute_bbpd_jintegral.h"
 #include "error.h"
 #include "fix_bbpd_bonds.h"
 #include "fix_bbpd_notch.h"
@@ -47,6 +48,10 @@ Compute *damage_creator(LAMMPS *lmp, int narg, char **arg)
 Compute *dsif_creator(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputeBBPDDsif(lmp, narg, arg);
+}
+Compute *jintegral_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new ComputeBBPDJIntegral(lmp, narg, arg);
 }
 }    // namespace
 
@@ -104,5 +109,9 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "bbpd/dsif";
   plugin.info = "BBPD dynamic stress intensity factors (eqs. 39-40) v" BBPD_VERSION;
   plugin.creator.v2 = (lammpsplugin_factory2 *) &dsif_creator;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/jintegral";
+  plugin.info = "BBPD dynamic J-integral and K_I, K_II by the domain integral v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &jintegral_creator;
   (*register_plugin)(&plugin, lmp);
 }

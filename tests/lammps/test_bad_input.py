@@ -48,6 +48,7 @@ TWO_TYPES = dict(ntypes="2", types="create_atoms 1 box\nregion half block 0 5 IN
 PMB = dict(pair_style="pair_style peri/pmb",
            pair_coeff="pair_coeff * * 1.0e22 0.003015 0.001 0.0")
 NOTCH_2D = "fix n all bbpd/notch segment 0 0.0045 0.004 0.0045"
+JINT = "compute J all bbpd/jintegral {}\nthermo_style custom step c_J[1] c_J[2] c_J[3]"
 
 # id: (script, expected substring of the ERROR line)
 CASES = {
@@ -194,6 +195,44 @@ CASES = {
     "damage-extra-arg": (script(extra="compute d all bbpd/damage/atom 1"), "takes no arguments"),
     "damage-without-bbpd-pair": (script(**PMB, extra="compute d all bbpd/damage/atom"),
                                  "requires a bbpd/* pair style"),
+    # ---- compute ID group bbpd/jintegral tip X Y [rin R1] [rout R2] [gradient RG] ...
+    #      (plate [0, 10 mm]^2, horizon 3.015 mm: the default annulus 2..5 delta does not fit)
+    "jint-no-tip": (script(extra=JINT.format("rin 0.001 rout 0.002")),
+                    "expected 'compute ID group bbpd/jintegral tip X Y"),
+    "jint-rout-below-rin": (script(extra=JINT.format("tip 0.005 0.005 rin 0.003 rout 0.002")),
+                            "need rout > rin, got rin = 0.003 rout = 0.002; increase rout"),
+    "jint-rin-above-default-rout": (script(extra=JINT.format("tip 0.005 0.005 rin 0.02")),
+                                    "need rout > rin"),
+    "jint-annulus-outside": (script(extra=JINT.format("tip 0.005 0.005 rin 0.001 rout 0.006")),
+                             "reaches outside the body"),
+    "jint-default-annulus-outside": (script(extra=JINT.format("tip 0.005 0.005")),
+                                     "choose rout <= 0.005"),
+    "jint-tip-outside": (script(extra=JINT.format("tip 0.02 0.005 rin 0.001 rout 0.002")),
+                         "lies outside the body"),
+    "jint-3d": (script(BASE_3D, extra=JINT.format("tip 0.003 0.003 rin 0.001 rout 0.002")),
+                "works with the 2D models only: pair model is 3d"),
+    "jint-1d": (script(pair_style="pair_style bbpd/gaussian 1d area 1.0e-6",
+                       extra=JINT.format("tip 0.005 0.005 rin 0.001 rout 0.002")),
+                "works with the 2D models only: pair model is 1d"),
+    "jint-without-bbpd-pair": (script(**PMB, extra=JINT.format("tip 0.005 0.005 rin 0.001 "
+                                                                "rout 0.002")),
+                               "without a bbpd/* pair style needs"),
+    "jint-gradient-below-spacing": (script(extra=JINT.format("tip 0.005 0.005 rin 0.001 "
+                                                             "rout 0.002 gradient 0.0005")),
+                                    "increase gradient (at least the grid spacing)"),
+    "jint-unknown-keyword": (script(extra=JINT.format("tip 0.005 0.005 r1 0.001")),
+                             "unknown keyword 'r1'"),
+    "jint-rin-zero": (script(extra=JINT.format("tip 0.005 0.005 rin 0 rout 0.002")),
+                      "rin must be > 0"),
+    "jint-plane-typo": (script(extra=JINT.format("tip 0.005 0.005 plane strian")),
+                        "plane must be stress or strain, got strian"),
+    "jint-nu-half": (script(extra=JINT.format("tip 0.005 0.005 nu 0.5")),
+                     "nu must lie in (-1, 0.5)"),
+    "jint-direction-zero": (script(extra=JINT.format("tip 0.005 0.005 direction 0 0")),
+                            "direction 0 0 has zero length"),
+    "jint-tip-variable-missing": (script(extra=JINT.format("tip v_tx 0.005 rin 0.001 "
+                                                           "rout 0.002")),
+                                  "tip variable tx does not exist"),
     # ---- fix bbpd/bonds is internal (created by the pair style)
     "bonds-fix-with-args": (script(extra="fix b all bbpd/bonds 1"), "takes no arguments"),
     "bonds-fix-without-bbpd-pair": (script(**PMB, extra="fix b all bbpd/bonds"),
@@ -234,7 +273,8 @@ def test_bad_input_stops_with_error(tmp_path, text, expected):
 # errors raised on rank 0 only (file reading) or collectively (settings, init) under MPI:
 # the other ranks must not hang in a collective call
 @pytest.mark.parametrize("name", ["coeff-file-unknown-material", "coeff-file-unit-mismatch",
-                                  "init-horizon-below-spacing", "notch-segment-zero-length"])
+                                  "init-horizon-below-spacing", "notch-segment-zero-length",
+                                  "jint-annulus-outside"])
 def test_bad_input_stops_under_mpi(tmp_path, name):
     text, expected = CASES[name]
     check_error_exit(run_case(tmp_path, text, nprocs=2), expected)

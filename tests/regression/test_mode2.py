@@ -18,6 +18,14 @@ of the two incident plane shear waves (python/bbpd/freund.py), valid from their 
    change that moves K_II by more than ~1.5 % of the reference shows up.  A load on one edge
    only (half the amplitude) or a wrong wave speed fails.  The slow three-kernel run at
    0.5 mm reproduces its table row to the printed digits.
+3. K_II from the J-integral (compute bbpd/jintegral, annulus 5-12.5 mm), which reads the field
+   away from the tip, is on the reference: measured peak / L2 (%) and K_II/K_II,ref at the
+   window end: dx = 1 mm constant 7.49 / 12.42 / 0.925, triangular 5.22 / 12.01 / 0.948,
+   Gaussian 2.21 / 11.30 / 0.978; dx = 0.5 mm 4.74 / 7.48 / 0.953, 0.46 / 7.94 / 1.005,
+   1.85 / 7.62 / 1.018; dx = 0.25 mm 2.58 / 4.44 / 0.974, 0.53 / 5.64 / 1.005,
+   0.37 / 5.55 / 1.004 (the L2 error is the first microsecond, where K is small).  The
+   extrapolation's excess is therefore in the near-tip reading, not in the field: asserted as
+   |K_J/K_ref - 1| < 1/2 |K_dsif/K_ref - 1| at the window end.
 """
 import re
 
@@ -35,6 +43,11 @@ MEASURED = {("constant", 1.0e-3): (18.67, 28.57), ("triangular", 1.0e-3): (13.90
 MARGIN = 1.5          # percentage points either side of the measured value
 SYMMETRY_TOL = 1e-8   # left tip vs right tip (measured 2e-10)
 KI_TOL = 1e-3         # K_I/K_II (measured 1e-4)
+# K_II from J, measured (peak %, L2 %, K_II/K_II,ref at the window end) per (kernel, dx)
+MEASURED_J = {("constant", 1.0e-3): (7.49, 12.42, 0.925), ("triangular", 1.0e-3): (5.22, 12.01, 0.948),
+              ("gaussian", 1.0e-3): (2.21, 11.30, 0.978), ("constant", 0.5e-3): (4.74, 7.48, 0.953),
+              ("triangular", 0.5e-3): (0.46, 7.94, 1.005), ("gaussian", 0.5e-3): (1.85, 7.62, 1.018)}
+J_END_MARGIN = 0.01   # on K_II/K_II,ref at the window end
 
 
 @pytest.mark.parametrize("mode", [1, 2])
@@ -103,6 +116,16 @@ def check(res):
     assert res["l2"] == pytest.approx(l2, abs=MARGIN)
     assert res["left_right"] < SYMMETRY_TOL
     assert res["ki_over_kii"] < KI_TOL
+    j = res["jintegral"]
+    ratio_j, ratio_d = j["k_end"] / res["k_end_exact"], res["k_end"] / res["k_end_exact"]
+    print(f"  from J: peak {j['peak']:.2f} L2 {j['l2']:.2f} K_end/ref {ratio_j:.3f}")
+    j_peak, j_l2, j_end = MEASURED_J[(res["kernel"], res["dx"])]
+    assert j["peak"] == pytest.approx(j_peak, abs=MARGIN)
+    assert j["l2"] == pytest.approx(j_l2, abs=MARGIN)
+    assert ratio_j == pytest.approx(j_end, abs=J_END_MARGIN)
+    assert abs(ratio_j - 1.0) < 0.5 * abs(ratio_d - 1.0)
+    assert np.max(np.abs(res["k_i_j"][(res["t"] >= res["window"][0])])) < KI_TOL * np.max(
+        np.abs(res["k_ii_j"]))
     # nothing reaches the tip before the shear waves (less a horizon of nonlocal reach)
     t, k = res["t"], res["k_ii"]
     early = t < res["window"][0] - 2.0 * 5 * res["dx"] / mode2.wave_speeds()[0]

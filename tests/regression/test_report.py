@@ -94,10 +94,16 @@ def test_tables_hold_the_runs_numbers(calls):
     # the paragraph is computed from those numbers
     order = " < ".join(sorted(("constant", "gaussian"), key=lambda k: res[(k, 2e-3)]["l2"]))
     assert f"L2 errors rank {order}" in m2
+    # the J-integral columns and the verdict computed from them
+    r = res[("gaussian", 2e-3)]
+    assert f"{r['jintegral']['peak']:.2f} / {r['jintegral']['l2']:.2f}" in m2
+    assert "the excess lives" in m2
     # Mode I Table 2: ours beside the paper's Table 2 value for dx = 0.1
     m1 = section(text, "Stationary Mode-I")
     r = res[("gaussian", 0.2)]
     assert f"{r['consistent']['peak']:.2f} / {r['consistent']['l2']:.2f}" in m1
+    j = r["jintegral"]["consistent"]
+    assert f"{j['peak']:.2f} / {j['l2']:.2f}" in m1
     ref = mode1.PAPER_TABLE2[0.1]
     assert f"{ref[0]:.2f} / {ref[1]:.2f}" in m1
     kw = section(text, "Kalthoff-Winkler")

@@ -87,6 +87,12 @@ def read_k(path, dt):
     return d[:, 0] * dt, d[:, 1], d[:, 2], d[:, 3]
 
 
+def read_j(path):
+    """J columns of k.dat (compute bbpd/jintegral): J, K_I, K_II; None if the run had none."""
+    d = np.loadtxt(path, comments="#", ndmin=2)
+    return None if d.shape[1] < 7 else (d[:, 4], d[:, 5], d[:, 6])
+
+
 def errors(t, k_paper, k_consistent, model="plane/stress", **material):
     """Eqs. 44-45 (in %) over 0 <= t <= 3 t_c for both conventions."""
     out = {}
@@ -123,6 +129,10 @@ def run(workdir, kernel="gaussian", dx=0.05, model="plane/stress", dt=None, npro
            "atoms": int(round(10.0 / dx)) * int(round(2 * H / dx)),
            "t": t, "k_paper": k_paper, "k_consistent": k_cons, "k_ii": k_ii}
     res.update(errors(t, k_paper, k_cons, model))
+    jcols = read_j(workdir / "k.dat")
+    if jcols is not None:    # K_I from the J-integral (interaction integral), both conventions
+        res["j"], res["k_j"], res["kii_j"] = jcols
+        res["jintegral"] = errors(t, res["k_j"], res["k_j"], model)
     # K_II must vanish by symmetry until the lateral edges matter (they are 5 m away)
     w = t <= freund.MODE1_VALIDITY_MULTIPLE * res["consistent"]["t_c"]
     res["kii_over_ki"] = float(np.max(np.abs(k_ii[w])) / np.max(np.abs(k_cons[w])))
@@ -133,14 +143,16 @@ def run(workdir, kernel="gaussian", dx=0.05, model="plane/stress", dt=None, npro
 
 def _row(res):
     p, c = res["paper"], res["consistent"]
-    return (f"{p['peak']:6.2f} {p['l2']:6.2f} | {c['peak']:6.2f} {c['l2']:6.2f} | "
+    j = res.get("jintegral", {}).get("consistent")
+    jtxt = f"{j['peak']:6.2f} {j['l2']:6.2f} | " if j else ""
+    return (f"{p['peak']:6.2f} {p['l2']:6.2f} | {c['peak']:6.2f} {c['l2']:6.2f} | {jtxt}"
             f"{res['wall_time']:6.1f} s ({res['nprocs']} rank, dt {res['dt']:.3g})")
 
 
 def table2(work, dxs=(0.1, 0.05, 0.025), nprocs=1, model="plane/stress"):
     rows = {}
     print("Table 2 (Gaussian, m = 5): dx | paper's numbers: peak L2 | ours, paper convention: "
-          "peak L2 | ours, consistent: peak L2 | wall time")
+          "peak L2 | ours, consistent: peak L2 | K_I from J, consistent: peak L2 | wall time")
     for dx in dxs:
         res = run(Path(work) / f"gaussian_{dx}", "gaussian", dx, model, nprocs=nprocs)
         rows[dx] = res
@@ -152,7 +164,8 @@ def table2(work, dxs=(0.1, 0.05, 0.025), nprocs=1, model="plane/stress"):
 def table3(work, dx=0.05, nprocs=1, model="plane/stress"):
     rows = {}
     print(f"Table 3 (dx = {dx}, m = 5): kernel | paper's numbers: peak L2 | ours, paper "
-          "convention: peak L2 | ours, consistent: peak L2 | wall time")
+          "convention: peak L2 | ours, consistent: peak L2 | K_I from J, consistent: peak L2 | "
+          "wall time")
     for kernel in KERNELS:
         res = run(Path(work) / f"{kernel}_{dx}", kernel, dx, model, nprocs=nprocs)
         rows[kernel] = res

@@ -84,6 +84,12 @@ def read_k(path, dt):
     return d[:, 0] * dt, d[:, 1], d[:, 2], d[:, 3]
 
 
+def read_j(path):
+    """J columns of k.dat (compute bbpd/jintegral, right tip): J, K_I, K_II; None if absent."""
+    d = np.loadtxt(path, comments="#", ndmin=2)
+    return None if d.shape[1] < 7 else (d[:, 4], d[:, 5], d[:, 6])
+
+
 def errors(t, k_ii, model="plane/strain", td=0.0):
     """Eqs. 44-45 (in %) against the reference over its validity window."""
     w = window(model)
@@ -116,6 +122,11 @@ def run(workdir, kernel="gaussian", dx=0.5e-3, model="plane/strain", td=0.0, dt=
     res["ki_over_kii"] = float(np.max(np.abs(k_i[w])) / scale)
     res["k_end"] = float(normalise(k_ii[w][-1]))
     res["k_end_exact"] = float(normalise(reference(model, td)(t[w][-1])))
+    jcols = read_j(workdir / "k.dat")
+    if jcols is not None:    # K_II from the J-integral (interaction integral)
+        res["j"], res["k_i_j"], res["k_ii_j"] = jcols
+        res["jintegral"] = errors(t, res["k_ii_j"], model, td)
+        res["jintegral"]["k_end"] = float(normalise(res["k_ii_j"][w][-1]))
     return res
 
 
@@ -220,13 +231,17 @@ def classical_window(mode=2):
 def table(work, kernels=KERNELS, dxs=(1.0e-3, 0.5e-3), td=0.0, nprocs=1):
     rows = {}
     print("Mode II: kernel dx | peak L2 (%) vs the analytic reference | K_II/(tau sqrt(pi a)) "
-          "at the window end: ours / analytic | wall time")
+          "at the window end: ours / analytic | K_II from J: peak L2, value at the window end "
+          "| wall time")
     for dx in dxs:
         for kernel in kernels:
             res = run(Path(work) / f"{kernel}_{dx}", kernel, dx, td=td, nprocs=nprocs)
             rows[(kernel, dx)] = res
+            j = res.get("jintegral")
+            jtxt = (f"J: {j['peak']:6.2f} {j['l2']:6.2f} {j['k_end']:.3f} | " if j else "")
             print(f"{kernel:10s} {dx:7.2e} | {res['peak']:6.2f} {res['l2']:6.2f} | "
-                  f"{res['k_end']:.3f} / {res['k_end_exact']:.3f} | {res['wall_time']:5.1f} s")
+                  f"{res['k_end']:.3f} / {res['k_end_exact']:.3f} | {jtxt}"
+                  f"{res['wall_time']:5.1f} s")
     return rows
 
 
