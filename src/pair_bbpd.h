@@ -32,7 +32,8 @@ class PairBBPD : public Pair {
   void *extract(const char *, int &) override;
 
   // bond parameters for the bond-family fix
-  double family_cutoff(int itype, int jtype) const { return horizon[itype][jtype] + 0.5 * spacing; }
+  double family_cutoff(int itype, int jtype) const { return compat_pmb ? horizon[itype][jtype] : horizon[itype][jtype] + 0.5 * spacing; }
+  bool in_family(int itype, int jtype, double rsq) const;
   double bond_coef(int itype, int jtype, double xi0, double vj) const;
   double bond_volume(int itype, int jtype, double xi0, double vj) const;
   double grid_spacing_of(double vfrac) const;
@@ -67,6 +68,20 @@ class PairBBPD : public Pair {
   template <int EVFLAG, int FRACTURE, int MULTI>
   bool row_force(int i, double *fi, const double *s0row, double *acc);
   void coeff_from_file(const char *file, const char *material, double &E, double &Gc);
+
+  // peri/pmb's rules ('compat pmb') and the Silling-Askari critical stretch (pair_bbpd_pmb.cpp)
+ public:
+  int compat_pmb;             // families, volumes, short-range forces and breaking as peri/pmb
+  double lattice_constant;    // compat pmb: lc of the lattice command, as in peri/pmb
+ protected:
+  double **alpha;             // s0 = s00 - alpha * smallest stretch of the atom at the last step
+  int alpha_any;              // the Silling-Askari rule is in use (compat pmb or some alpha > 0)
+  int nmax_smin;
+  double *smin_new;           // smallest bond stretch of each local atom in this step
+  void coeff_pmb(int, char **);
+  void init_pmb();
+  template <int EVFLAG> void eval_alpha();
+  void compute_short_range();
 };
 
 }    // namespace LAMMPS_NS

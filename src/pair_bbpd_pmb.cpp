@@ -1,0 +1,267 @@
+/* ----------------------------------------------------------------------
+   BBPD plugin: the rules of LAMMPS's peri/pmb in the bbpd pair styles.
+
+   'pair_style bbpd/constant MODEL compat pmb' takes 'pair_coeff I J c delta s00 alpha'
+   as peri/pmb does and follows its rules (bbpd_pmb_rules.h): families |xi| <= delta,
+   the volume ramp within lc/2 of the horizon, short-range forces between all atoms
+   closer than min(0.9 |xi|, 1.35 lc), and in each step: all intact bonds exert their
+   force, then a bond breaks when its stretch exceeds s00 - alpha max(smin_i, smin_j),
+   smin being the smallest stretch of each atom's bonds at the previous step.
+   Without compat, 'alpha A' applies the same rule (compression only) to every kernel,
+   with the usual bbpd order: a bond past its critical stretch exerts no force.
+   smin lives in the per-atom s0 of atom_style peri, which LAMMPS already sends to
+   ghost atoms every step and carries through migration and restart files.
+------------------------------------------------------------------------- */
+
+#include "pair_bbpd.h"
+#include "bbpd_compat.h"
+#include "bbpd_pmb_rules.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_bbpd_bonds.h"
+#include "lattice.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <utility>
+#include <vector>
+
+using namespace LAMMPS_NS;
+using namespace BBPD::PMB;
+
+/* ----------------------------------------------------------------------
+   compat pmb: pair_coeff I J c delta s00 alpha (peri/pmb's four numbers)
+------------------------------------------------------------------------- */
+
+void PairBBPD::coeff_pmb(int narg, char **arg)
+{
+  if (narg != 6)
+    error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: expected 'I J c delta s00 alpha' "
+               "(the numbers of pair_coeff peri/pmb), got {} arguments", narg);
+  if (!allocated) allocate();
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  const double c = utils::numeric(FLERR, arg[2], false, lmp);
+  const double delta = utils::numeric(FLERR, arg[3], false, lmp);
+  const double s00 = utils::numeric(FLERR, arg[4], false, lmp);
+  const double a = utils::numeric(FLERR, arg[5], false, lmp);
+  if (!(c > 0.0)) error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: c must be > 0");
+  if (!(delta > 0.0)) error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: delta must be > 0");
+  if (!(s00 > 0.0)) error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: s00 must be > 0");
+  if (!(a >= 0.0) || !std::isfinite(a))
+    error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: alpha must be >= 0");
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      youngs[i][j] = 0.0;    // not used: c is given
+      fracture_energy[i][j] = std::numeric_limits<double>::infinity();
+      horizon[i][j] = delta;
+      micromodulus[i][j] = c;
+      critical_stretch[i][j] = s00;
+      s0_user[i][j] = 1;
+      alpha[i][j] = a;
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
+/* part of init_style: the lattice constant and short-range list of compat pmb, and the
+   starting smin of the Silling-Askari rule */
+void PairBBPD::init_pmb()
+{
+  alpha_any = compat_pmb;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j] && alpha[i][j] > 0.0) alpha_any = 1;
+  // before the families exist no atom has a bond: no smin yet (as peri/pmb)
+  if (alpha_any && !bonds->families_built())
+    for (int i = 0; i < atom->nlocal; i++) atom->s0[i] = NO_BOND_STRETCH;
+  if (!compat_pmb) return;
+
+  if (contact)
+    error->all(FLERR, "Pair style bbpd/constant: compat pmb brings peri/pmb's short-range forces; "
+               "drop 'contact yes'");
+  const Lattice *lat = domain->lattice;
+  if (!lat || lat->style == Lattice::NONE)
+    error->all(FLERR, "Pair style bbpd/constant compat pmb needs a lattice command before the run: "
+               "peri/pmb's volume ramp and short-range distance use its lattice constant");
+  if (lat->xlattice != lat->ylattice || lat->xlattice != lat->zlattice)
+    error->all(FLERR, "Pair style bbpd/constant compat pmb needs a lattice with the same constant "
+               "in x, y and z (as peri/pmb)");
+  lattice_constant = lat->xlattice;
+  neighbor->add_request(this, NeighConst::REQ_FULL)
+      ->set_cutoff(SHORT_RANGE_LATTICE_FACTOR * lattice_constant);
+}
+
+/* ----------------------------------------------------------------------
+   bond forces and breaking with the Silling-Askari critical stretch
+------------------------------------------------------------------------- */
+
+template <int EVFLAG> void PairBBPD::eval_alpha()
+{
+  double **f = atom->f;
+  const double *xx = atom->x[0];
+  const int *type = atom->type;
+  double *smin = atom->s0;    // smallest bond stretch at the previous step, ghosts included
+  const int nlocal = atom->nlocal;
+  if (nlocal > nmax_smin) {
+    nmax_smin = atom->nmax;
+    memory->destroy(smin_new);
+    memory->create(smin_new, nmax_smin, "pair:smin_new");
+  }
+  const bool pmb = compat_pmb;
+  const bool clamp = !pmb;
+  double totals[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  int bad = -1;
+
+#if defined(_OPENMP)
+#pragma omp parallel num_threads(comm->nthreads) if (comm->nthreads > 1)
+#endif
+  {
+    double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+#if defined(_OPENMP)
+#pragma omp for schedule(static, 512)
+#endif
+    for (int i = 0; i < nlocal; i++) {
+      const int itype = type[i];
+      auto stretch_of = [&](int k) {
+        const int j = bonds->bj[k];
+        const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
+                     dz = xx[3 * j + 2] - xx[3 * i + 2];
+        const double xi0 = bonds->xi0_of(i, k);
+        double elong = std::sqrt(dx * dx + dy * dy + dz * dz) - xi0;
+        if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
+        return elong / xi0;
+      };
+      auto s0_of = [&](int k) {
+        const int j = bonds->bj[k];
+        return BBPD::PMB::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
+                                           smin[i], smin[j], clamp);
+      };
+      const int beg = bonds->bond_start[i];
+      double snew = std::numeric_limits<double>::max();
+      bool broken = false;
+      for (int k = beg; k < beg + bonds->nbond[i]; k++) {
+        const double s = stretch_of(k);
+        snew = std::min(snew, s);
+        broken |= s > s0_of(k);
+      }
+      smin_new[i] = bonds->nbond[i] > 0 ? snew : NO_BOND_STRETCH;
+      double fi[3];
+      // peri/pmb applies the force of a bond in the step it breaks; bbpd drops it at once
+      if (pmb) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc);
+      if (broken) {
+        int k = beg;
+        while (k < beg + bonds->nbond[i]) {
+          if (stretch_of(k) > s0_of(k)) bonds->remove_bond(i, k);
+          else k++;
+        }
+      }
+      if (!pmb) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc);
+      if (!std::isfinite(fi[0]) || !std::isfinite(fi[1]) || !std::isfinite(fi[2])) {
+#if defined(_OPENMP)
+#pragma omp critical(bbpd_nonfinite)
+#endif
+        if (bad < 0 || i < bad) bad = i;
+      }
+      f[i][0] += fi[0];
+      f[i][1] += fi[1];
+      f[i][2] += fi[2];
+    }
+    if (EVFLAG) {
+#if defined(_OPENMP)
+#pragma omp critical(bbpd_totals)
+#endif
+      for (int m = 0; m < 7; m++) totals[m] += acc[m];
+    }
+  }
+  if (bad >= 0) nonfinite_error(bad);
+  // the new smin takes effect at the next step, once sent to the ghosts
+  for (int i = 0; i < nlocal; i++) smin[i] = smin_new[i];
+  if (EVFLAG) {
+    if (eflag_global) eng_vdwl += totals[0];
+    if (vflag_global)
+      for (int m = 0; m < 6; m++) virial[m] += totals[1 + m];
+  }
+}
+
+template void PairBBPD::eval_alpha<0>();
+template void PairBBPD::eval_alpha<1>();
+
+/* ----------------------------------------------------------------------
+   compat pmb: short-range forces between all atoms (bonded or not) closer than
+   min(0.9 |xi|, 1.35 lc), stiffness 15 c V_j / delta. Full list: each atom sums its
+   own pairs in tag order, so the result does not depend on the decomposition.
+------------------------------------------------------------------------- */
+
+void PairBBPD::compute_short_range()
+{
+  double **x = atom->x, **x0 = atom->x0, **f = atom->f;
+  const int *type = atom->type;
+  const tagint *tag = atom->tag;
+  const double *vfrac = atom->vfrac;
+  const double lc = lattice_constant;
+  // no pair beyond this can be in range; the margin keeps the filter exact after rounding
+  const double rmax = SHORT_RANGE_LATTICE_FACTOR * lc * (1.0 + 1.0e-12);
+  const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
+
+  // the short-range distance of a pair from its reference positions
+  auto distance_of = [&](int i, int j) {
+    double d0[3] = {x0[i][0] - x0[j][0], x0[i][1] - x0[j][1], x0[i][2] - x0[j][2]};
+    if (periodic) BBPDCompat::minimum_image(domain, d0);
+    return short_range_distance(std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), lc);
+  };
+
+  std::vector<std::pair<tagint, int>> close;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    close.clear();
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const double rsq = dx * dx + dy * dy + dz * dz;
+      if (rsq >= rmax * rmax) continue;
+      if (std::sqrt(rsq) < distance_of(i, j)) close.emplace_back(tag[j], j);
+    }
+    // sum in tag order: the neighbour-list order depends on the domain decomposition
+    std::sort(close.begin(), close.end());
+    for (const auto &c : close) {
+      const int j = c.second;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const int itype = type[i], jtype = type[j];
+      const double dr = r - distance_of(i, j);
+      // written as in peri/pmb
+      const double rk = (SHORT_RANGE_STIFFNESS_FACTOR * micromodulus[itype][jtype] * vfrac[j]) *
+          (dr / horizon[itype][jtype]);
+      const double fpair = r > 0.0 ? -(rk / r) : 0.0;
+      f[i][0] += dx * fpair;
+      f[i][1] += dy * fpair;
+      f[i][2] += dz * fpair;
+      if (evflag) {
+        const double e = 0.25 * rk * dr;    // half of the pair's energy: the other end adds the rest
+        if (eflag_global) eng_vdwl += e;
+        if (eflag_atom) eatom[i] += e;
+        const double v[6] = {0.5 * fpair * dx * dx, 0.5 * fpair * dy * dy, 0.5 * fpair * dz * dz,
+                             0.5 * fpair * dx * dy, 0.5 * fpair * dx * dz, 0.5 * fpair * dy * dz};
+        for (int m = 0; m < 6; m++) {
+          if (vflag_global) virial[m] += v[m];
+          if (vflag_atom) vatom[i][m] += v[m];
+        }
+      }
+    }
+  }
+}

@@ -1,0 +1,180 @@
+"""'pair_style bbpd/constant ... compat pmb' against LAMMPS's own peri/pmb, and the
+Silling-Askari critical stretch ('alpha').
+
+Forces: a perturbed 3D block whose reference lattice is read from a data file (%.17g),
+so both styles start from the same doubles; a few atoms are pushed towards a neighbour
+so bonded pairs come closer than 0.9 |xi| and the short-range force acts on them.
+"""
+import re
+
+import numpy as np
+import pytest
+
+from bbpd import reference as ref
+
+DX = 1.0e-3
+DENSITY = 2200.0
+C_PMB = 1.6863e22 * (0.5e-3 / DX) ** 4    # peri/pmb example's c, scaled to this spacing
+DELTA = 3.0002 * DX    # as the example: 1.5001 mm at lc = 0.5 mm; xi = 3 dx gets the ramp
+S00_ELASTIC = 0.5      # nothing breaks under the perturbation below
+ALPHA = 0.25
+PERTURBATION = 1.0e-3    # of dx, random on every atom
+PUSH = 0.15              # of dx: pushed atoms come within 0.85 dx < 0.9 dx of a neighbour
+FORCE_RTOL = 1.0e-12     # of the largest force: different summation order only
+SEED = 20261201
+
+
+def block():
+    x0 = ref.square_lattice((7, 7, 7), DX)
+    pad = 5 * DX
+    box = [(x0[:, k].min() - pad, x0[:, k].max() + pad) for k in range(3)]
+    return x0, box
+
+
+def perturbed(x0):
+    """Random perturbation; three atoms pushed towards their +x neighbour."""
+    rng = np.random.default_rng(SEED)
+    y = x0 + PERTURBATION * DX * rng.uniform(-1.0, 1.0, x0.shape)
+    pushed = [3 * 49 + 3 * 7 + 2, 1 * 49 + 5 * 7 + 4, 5 * 49 + 1 * 7 + 1]    # interior-ish atoms
+    for a in pushed:
+        y[a, 0] += PUSH * DX
+    return y
+
+
+def short_range_pairs(x0, y):
+    """Pairs closer than min(0.9 |xi|, 1.35 lc) (peri/pmb's short-range rule)."""
+    i, j = np.triu_indices(len(x0), 1)
+    xi = np.linalg.norm(x0[j] - x0[i], axis=1)
+    r = np.linalg.norm(y[j] - y[i], axis=1)
+    return np.count_nonzero(r < np.minimum(0.9 * xi, 1.35 * DX))
+
+
+def force_script(pair_lines, plugin):
+    return ((("plugin load bbpdplugin.so\n" if plugin else "")
+             + "units si\nboundary s s s\natom_style peri\natom_modify map array\n"
+             "read_data body.data\n"
+             f"lattice sc {DX!r}\n"
+             + pair_lines +
+             "neighbor 0.0005 bin\n"
+             "run 0\n"
+             "read_dump current.dump 0 x y z box no replace yes\n"
+             "run 0\n"
+             "write_dump all custom forces.dump id x y z fx fy fz modify format float %.17g\n"))
+
+
+def run_forces(lmp, tmp_path, pair_lines, plugin, nprocs=1):
+    out = lmp(force_script(pair_lines, plugin), nprocs=nprocs).output
+    got = ref.read_dump(tmp_path / "forces.dump")
+    return out, np.stack([got["fx"], got["fy"], got["fz"]], axis=1)
+
+
+def test_forces_equal_peri_pmb(lmp, tmp_path):
+    """compat pmb gives peri/pmb's forces (bonds with the volume ramp, short-range forces
+    between bonded atoms) to 1e-12 of the largest force, on 1 and 2 ranks; ours are the
+    same bits on 1 and 2 ranks."""
+    x0, box = block()
+    y = perturbed(x0)
+    assert short_range_pairs(x0, y) >= 3    # the short-range force is exercised
+    ref.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
+    ref.write_positions(tmp_path / "current.dump", y, box)
+    numbers = f"{C_PMB!r} {DELTA!r} {S00_ELASTIC!r} {ALPHA!r}"
+
+    _, f_pmb = run_forces(lmp, tmp_path, f"pair_style peri/pmb\npair_coeff * * {numbers}\n",
+                          plugin=False)
+    ours = f"pair_style bbpd/constant 3d compat pmb\npair_coeff * * {numbers}\n"
+    out1, f1 = run_forces(lmp, tmp_path, ours, plugin=True)
+    out2, f2 = run_forces(lmp, tmp_path, ours, plugin=True, nprocs=2)
+    assert "compat pmb" in out1
+    # |xi| <= delta gives 122 partners to an interior atom at delta = 3.0002 dx
+    assert "max 122" in out1
+    scale = np.linalg.norm(f_pmb, axis=1).max()
+    for f in (f1, f2):
+        err = np.linalg.norm(f - f_pmb, axis=1).max() / scale
+        print(f"max per-atom force difference to peri/pmb: {err:.3g} of the largest force")
+        assert err < FORCE_RTOL, f"max per-atom force error {err:.3g} of the largest force"
+    np.testing.assert_array_equal(f1, f2)
+
+
+def test_short_range_force_is_needed(lmp, tmp_path):
+    """The same comparison fails without the short-range force (the test can fail)."""
+    x0, box = block()
+    y = perturbed(x0)
+    ref.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
+    ref.write_positions(tmp_path / "current.dump", y, box)
+    numbers = f"{C_PMB!r} {DELTA!r} {S00_ELASTIC!r} {ALPHA!r}"
+    _, f_pmb = run_forces(lmp, tmp_path, f"pair_style peri/pmb\npair_coeff * * {numbers}\n",
+                          plugin=False)
+    # plain bbpd/constant with c and the same bonds: no short-range force, other volumes
+    _, f_plain = run_forces(lmp, tmp_path,
+                            "pair_style bbpd/constant 3d\n"
+                            f"pair_coeff * * 1.0e9 none {DELTA!r}\n", plugin=True)
+    scale = np.linalg.norm(f_pmb, axis=1).max()
+    assert np.linalg.norm(f_plain - f_pmb, axis=1).max() / scale > 1e-3
+
+
+# ---------------------------------------------------------------------------
+# alpha: two atoms, one bond; each 'run 0' is one force evaluation (and breaking check)
+
+PAIR_XI = 1.0e-3
+S00 = 1.0e-3
+
+
+def bond_history(lmp, pair_lines, stretches, lattice=True):
+    """Put the bond at each stretch in turn (one force evaluation each); return the number
+    of broken bonds after the first evaluation (stretch 0) and after each stretch."""
+    lines = ["plugin load bbpdplugin.so", "units si", "boundary f f f", "atom_style peri",
+             "atom_modify map array", "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box",
+             "create_box 1 box", "create_atoms 1 single 0 0 0 units box",
+             f"create_atoms 1 single {PAIR_XI!r} 0 0 units box",
+             f"set group all volume {PAIR_XI**3!r}", f"set group all density {DENSITY!r}"]
+    if lattice:
+        lines.append(f"lattice sc {PAIR_XI!r}")
+    lines += pair_lines.splitlines() + ["run 0"]
+    for s in stretches:
+        lines += [f"set atom 2 x {PAIR_XI * (1.0 + s)!r}", "run 0"]
+    lines.append("run 0")
+    out = lmp("\n".join(lines) + "\n").output
+    # each setup reports the bonds left by the evaluations before it
+    return [int(v) for v in re.findall(r"total bonds 1 \((\d) broken\)", out)][1:]
+
+
+@pytest.mark.parametrize("style", ["plain", "compat"])
+def test_alpha_compression_then_tension(lmp, style):
+    """A bond compressed at one step survives, at the next, a stretch that breaks it with
+    alpha = 0: its critical stretch is s00 - alpha * (-0.01) there."""
+    stretch = 1.002 * S00    # above s00, below s00 + 0.25 * 0.01
+    def pair(a):
+        if style == "compat":
+            return f"pair_style bbpd/constant 3d compat pmb\npair_coeff * * 1.0e20 0.0015 {S00!r} {a!r}"
+        return ("pair_style bbpd/constant 3d\n"
+                f"pair_coeff * * 1.0e9 none 0.0015 critical_stretch {S00!r} alpha {a!r}")
+    # alpha = 0: it breaks at once
+    assert bond_history(lmp, pair(0.0), [-0.01, stretch]) == [0, 0, 1]
+    # alpha = 0.25: it survives, and breaks one step later (compression forgotten)
+    assert bond_history(lmp, pair(ALPHA), [-0.01, stretch, stretch]) == [0, 0, 0, 1]
+    # without the compression it breaks with alpha too
+    assert bond_history(lmp, pair(ALPHA), [0.0, stretch]) == [0, 0, 1]
+
+
+def test_alpha_tension_rule_differs(lmp):
+    """peri/pmb's rule lowers s0 after tension (s0 = s00 - alpha * smin, smin > 0); the
+    bbpd alpha keyword counts compression only. A bond at 0.9 s00 then 0.98 s00 breaks
+    under compat pmb and survives with the keyword."""
+    hist = [0.9 * S00, 0.98 * S00]
+    compat = bond_history(lmp, "pair_style bbpd/constant 3d compat pmb\n"
+                          f"pair_coeff * * 1.0e20 0.0015 {S00!r} {ALPHA!r}", hist)
+    plain = bond_history(lmp, "pair_style bbpd/constant 3d\n"
+                         f"pair_coeff * * 1.0e9 none 0.0015 critical_stretch {S00!r} alpha {ALPHA!r}",
+                         hist)
+    assert compat == [0, 0, 1]
+    assert plain == [0, 0, 0]
+
+
+def test_compat_needs_lattice(lmp):
+    proc = lmp("plugin load bbpdplugin.so\nunits si\nboundary f f f\natom_style peri\n"
+               "atom_modify map array\nregion box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box\n"
+               "create_box 1 box\ncreate_atoms 1 single 0 0 0 units box\n"
+               "set group all volume 1e-9\nset group all density 1000\n"
+               "pair_style bbpd/constant 3d compat pmb\npair_coeff * * 1e20 0.0015 0.001 0.25\n"
+               "run 0\n", check=False)
+    assert "needs a lattice command" in proc.error
