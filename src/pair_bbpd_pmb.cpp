@@ -123,6 +123,13 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
   }
   const bool pmb = compat_pmb;
   const bool clamp = !pmb;
+  const double *bxi0 = bonds->bxi0;    // null with bond/storage compact
+  // one s00 and alpha for every type pair: no per-bond lookups
+  bool multi = false;
+  const double s00_one = critical_stretch[1][1], alpha_one = alpha[1][1];
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = 1; j <= atom->ntypes; j++)
+      if (critical_stretch[i][j] != s00_one || alpha[i][j] != alpha_one) multi = true;
   double totals[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   int bad = -1;
 
@@ -136,21 +143,24 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
 #endif
     for (int i = 0; i < nlocal; i++) {
       const int itype = type[i];
+      const int beg = bonds->bond_start[i];
+      const int *bj = bonds->bj;
+      const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
+      const double smin_i = smin[i];
       auto stretch_of = [&](int k) {
-        const int j = bonds->bj[k];
-        const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
-                     dz = xx[3 * j + 2] - xx[3 * i + 2];
-        const double xi0 = bonds->xi0_of(i, k);
+        const int j = bj[k];
+        const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
+        const double xi0 = bxi0 ? bxi0[k] : bonds->xi0_of(i, k);
         double elong = std::sqrt(dx * dx + dy * dy + dz * dz) - xi0;
         if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
         return elong / xi0;
       };
       auto s0_of = [&](int k) {
-        const int j = bonds->bj[k];
+        const int j = bj[k];
+        if (!multi) return BBPD::PMB::critical_stretch(s00_one, alpha_one, smin_i, smin[j], clamp);
         return BBPD::PMB::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
-                                           smin[i], smin[j], clamp);
+                                           smin_i, smin[j], clamp);
       };
-      const int beg = bonds->bond_start[i];
       double snew = std::numeric_limits<double>::max();
       bool broken = false;
       for (int k = beg; k < beg + bonds->nbond[i]; k++) {
@@ -224,16 +234,20 @@ void PairBBPD::compute_short_range()
     return short_range_distance(std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), lc);
   };
 
+  const double *xx = x[0];
+  const double rmaxsq = rmax * rmax;
   std::vector<std::pair<tagint, int>> close;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
+    const int jnum = list->numneigh[i];
+    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
     close.clear();
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+    for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const double dx = xi - xx[3 * j], dy = yi - xx[3 * j + 1], dz = zi - xx[3 * j + 2];
       const double rsq = dx * dx + dy * dy + dz * dz;
-      if (rsq >= rmax * rmax) continue;
+      if (rsq >= rmaxsq) continue;
       if (std::sqrt(rsq) < distance_of(i, j)) close.emplace_back(tag[j], j);
     }
     // sum in tag order: the neighbour-list order depends on the domain decomposition
