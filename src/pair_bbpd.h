@@ -10,6 +10,8 @@
 #include "bbpd_kernel.h"
 #include "pair.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 struct RowTally;    // pair_bbpd_row.h
@@ -82,6 +84,11 @@ class PairBBPD : public Pair {
   void init_pmb();
   template <int EVFLAG> void eval_alpha();
   void compute_short_range();
+  // short-range candidates: pairs of the neighbour list that can come in range before the
+  // atoms move half a candidate skin (per ilist entry: sr_first, then partners in sr_pairs)
+  std::vector<int> sr_first, sr_pairs;
+  std::vector<double> sr_xhold;
+  void short_range_candidates(double skin);
 };
 
 }    // namespace LAMMPS_NS

@@ -16,6 +16,7 @@
 #include "pair_bbpd.h"
 #include "bbpd_compat.h"
 #include "bbpd_pmb_rules.h"
+#include "pair_bbpd_pmb_row.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -163,10 +164,16 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
       };
       double snew = std::numeric_limits<double>::max();
       bool broken = false;
-      for (int k = beg; k < beg + bonds->nbond[i]; k++) {
-        const double s = stretch_of(k);
-        snew = std::min(snew, s);
-        broken |= s > s0_of(k);
+      const int n = bonds->nbond[i];
+      if (!multi && bxi0) {
+        broken = pmb ? row_stretch<true, false>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew)
+                     : row_stretch<false, true>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew);
+      } else {
+        for (int k = beg; k < beg + n; k++) {
+          const double s = stretch_of(k);
+          snew = std::min(snew, s);
+          broken |= s > s0_of(k);
+        }
       }
       smin_new[i] = bonds->nbond[i] > 0 ? snew : NO_BOND_STRETCH;
       double fi[3];
@@ -236,15 +243,24 @@ void PairBBPD::compute_short_range()
 
   const double *xx = x[0];
   const double rmaxsq = rmax * rmax;
+  const double skin = SHORT_RANGE_CANDIDATE_SKIN * lc;
+  const int nall = atom->nlocal + atom->nghost;
+  bool rebuild = neighbor->ago == 0 || sr_xhold.size() != 3 * (size_t) nall ||
+      sr_first.size() != (size_t) list->inum + 1;
+  for (int i = 0; !rebuild && i < nall; i++) {
+    const double dx = xx[3 * i] - sr_xhold[3 * i], dy = xx[3 * i + 1] - sr_xhold[3 * i + 1],
+                 dz = xx[3 * i + 2] - sr_xhold[3 * i + 2];
+    rebuild = dx * dx + dy * dy + dz * dz > 0.2 * skin * skin;    // under half the skin, with room for round-off
+  }
+  if (rebuild) short_range_candidates(skin);
+
   std::vector<std::pair<tagint, int>> close;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
-    const int *jlist = list->firstneigh[i];
-    const int jnum = list->numneigh[i];
     const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
     close.clear();
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
+    for (int m = sr_first[ii]; m < sr_first[ii + 1]; m++) {
+      const int j = sr_pairs[m];
       const double dx = xi - xx[3 * j], dy = yi - xx[3 * j + 1], dz = zi - xx[3 * j + 2];
       const double rsq = dx * dx + dy * dy + dz * dz;
       if (rsq >= rmaxsq) continue;
@@ -278,4 +294,37 @@ void PairBBPD::compute_short_range()
       }
     }
   }
+}
+
+/* candidates for the short-range force: the pairs of the neighbour list within their
+   short-range distance plus 'skin'. No atom moves half the skin before the next rebuild,
+   so every pair in range is a candidate; which ones are is a matter of speed only. */
+void PairBBPD::short_range_candidates(double skin)
+{
+  const double *xx = atom->x[0];
+  double **x0 = atom->x0;
+  const double lc = lattice_constant;
+  const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
+  const double reach = SHORT_RANGE_LATTICE_FACTOR * lc + skin;
+  const int nall = atom->nlocal + atom->nghost;
+  sr_xhold.assign(xx, xx + 3 * nall);
+  sr_first.assign(list->inum + 1, 0);
+  sr_pairs.clear();
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
+    sr_first[ii] = (int) sr_pairs.size();
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double dx = xi - xx[3 * j], dy = yi - xx[3 * j + 1], dz = zi - xx[3 * j + 2];
+      const double rsq = dx * dx + dy * dy + dz * dz;
+      if (rsq >= reach * reach) continue;
+      double d0[3] = {x0[i][0] - x0[j][0], x0[i][1] - x0[j][1], x0[i][2] - x0[j][2]};
+      if (periodic) BBPDCompat::minimum_image(domain, d0);
+      const double d = short_range_distance(std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), lc);
+      if (std::sqrt(rsq) < d + skin) sr_pairs.push_back(j);
+    }
+  }
+  sr_first[list->inum] = (int) sr_pairs.size();
 }
