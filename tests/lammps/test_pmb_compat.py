@@ -6,6 +6,7 @@ so both styles start from the same doubles; a few atoms are pushed towards a nei
 so bonded pairs come closer than 0.9 |xi| and the short-range force acts on them.
 """
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -178,3 +179,20 @@ def test_compat_needs_lattice(lmp):
                "pair_style bbpd/constant 3d compat pmb\npair_coeff * * 1e20 0.0015 0.001 0.25\n"
                "run 0\n", check=False)
     assert "needs a lattice command" in proc.error
+
+
+def test_cylinder_bitwise_on_1_and_2_ranks(lmp, tmp_path):
+    """The ported peri/pmb cylinder (smaller, shattering: short-range forces and breaking
+    with alpha on every step) ends in the same bits on 1 and 2 MPI ranks."""
+    example = Path(__file__).resolve().parents[2] / "examples" / "peri-pmb-dropin" / "in.bbpd.pmb"
+    script = example.read_text().replace("variable        steps index 1000",
+                                          "variable        steps index 300")
+    script = script.replace("variable        scale index 1", "variable        scale index 0.6")
+    states = []
+    for nprocs in (1, 2):
+        out = lmp(script + f"write_dump all custom end{nprocs}.dump id x y z vx vy vz c_1 "
+                  "modify format float %.17g\n", nprocs=nprocs).output
+        assert ref.thermo_tables(out)[-1]["c_dmean"][-1] > 0.1    # bonds broke
+        states.append(ref.read_dump(tmp_path / f"end{nprocs}.dump"))
+    for key in ("x", "y", "z", "vx", "vy", "vz", "c_1"):
+        np.testing.assert_array_equal(states[0][key], states[1][key])
