@@ -50,7 +50,7 @@ PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k) :
     fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
     s0_user(nullptr), bonds(nullptr), dt_bound_paper(0.0), dt_bound(0.0), multi_s0(0),
     s0_single(0.0), compat_pmb(0), lattice_constant(0.0), alpha(nullptr), alpha_any(0),
-    nmax_smin(0), smin_new(nullptr)
+    nmax_smin(0), smin_new(nullptr), alpha_state(nullptr)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -68,6 +68,7 @@ PairBBPD::~PairBBPD()
   if (copymode) return;
   delete[] pvector;
   memory->destroy(smin_new);
+  if (alpha_state && modify->get_fix_by_id("BBPD_ALPHA")) modify->delete_fix("BBPD_ALPHA");
   if (bonds && modify->get_fix_by_id(BONDS_FIX_ID)) modify->delete_fix(BONDS_FIX_ID);
   if (allocated) {
     memory->destroy(setflag);

@@ -80,9 +80,11 @@ class PairBBPD : public Pair {
   int alpha_any;              // the Silling-Askari rule is in use (compat pmb or some alpha > 0)
   int nmax_smin;
   double *smin_new;           // smallest bond stretch of each local atom in this step
+  class FixBBPDAlpha *alpha_state;    // what a second evaluation of the same step needs
   void coeff_pmb(int, char **);
   void init_pmb();
   template <int EVFLAG> void eval_alpha();
+  template <int EVFLAG> void broken_bond_force(int i, int k, double *fb, double *acc);
   void compute_short_range();
   // short-range candidates: pairs of the neighbour list that can come in range before the
   // atoms move half a candidate skin (per ilist entry: sr_first, then partners in sr_pairs)

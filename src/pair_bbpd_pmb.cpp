@@ -22,12 +22,15 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_bbpd_alpha.h"
 #include "fix_bbpd_bonds.h"
 #include "lattice.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
+#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -86,6 +89,12 @@ void PairBBPD::init_pmb()
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
       if (setflag[i][j] && alpha[i][j] > 0.0) alpha_any = 1;
+  if (alpha_any) {
+    alpha_state = dynamic_cast<FixBBPDAlpha *>(modify->get_fix_by_id("BBPD_ALPHA"));
+    if (!alpha_state)
+      alpha_state = dynamic_cast<FixBBPDAlpha *>(modify->add_fix("BBPD_ALPHA all bbpd/alpha"));
+    if (!alpha_state) error->all(FLERR, "Pair style bbpd: could not create its fix bbpd/alpha");
+  }
   // before the families exist no atom has a bond: no smin yet (as peri/pmb)
   if (alpha_any && !bonds->families_built())
     for (int i = 0; i < atom->nlocal; i++) atom->s0[i] = NO_BOND_STRETCH;
@@ -131,6 +140,10 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = 1; j <= atom->ntypes; j++)
       if (critical_stretch[i][j] != s00_one || alpha[i][j] != alpha_one) multi = true;
+  // a second evaluation of the last step (setup of a new run, read_restart): no breaking,
+  // no new smallest stretches, and the bonds that broke then act again
+  const bool replay = update->setupflag && update->ntimestep == alpha_state->last_step;
+  double **fbroken = alpha_state->fbroken;
   double totals[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   int bad = -1;
 
@@ -162,31 +175,43 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         return BBPD::PMB::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
                                            smin_i, smin[j], clamp);
       };
-      double snew = std::numeric_limits<double>::max();
-      bool broken = false;
-      const int n = bonds->nbond[i];
-      if (!multi && bxi0) {
-        broken = pmb ? row_stretch<true, false>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew)
-                     : row_stretch<false, true>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew);
-      } else {
-        for (int k = beg; k < beg + n; k++) {
-          const double s = stretch_of(k);
-          snew = std::min(snew, s);
-          broken |= s > s0_of(k);
-        }
-      }
-      smin_new[i] = bonds->nbond[i] > 0 ? snew : NO_BOND_STRETCH;
       double fi[3];
-      // peri/pmb applies the force of a bond in the step it breaks; bbpd drops it at once
-      if (pmb) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc);
-      if (broken) {
-        int k = beg;
-        while (k < beg + bonds->nbond[i]) {
-          if (stretch_of(k) > s0_of(k)) bonds->remove_bond(i, k);
-          else k++;
+      if (replay) {
+        smin_new[i] = smin_i;
+      } else {
+        double snew = std::numeric_limits<double>::max();
+        bool broken = false;
+        const int n = bonds->nbond[i];
+        if (!multi && bxi0) {
+          broken = pmb ? row_stretch<true, false>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew)
+                       : row_stretch<false, true>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew);
+        } else {
+          for (int k = beg; k < beg + n; k++) {
+            const double s = stretch_of(k);
+            snew = std::min(snew, s);
+            broken |= s > s0_of(k);
+          }
         }
+        smin_new[i] = n > 0 ? snew : NO_BOND_STRETCH;
+        double fb[3] = {0.0, 0.0, 0.0};
+        if (broken) {
+          int k = beg;
+          while (k < beg + bonds->nbond[i]) {
+            if (!(stretch_of(k) > s0_of(k))) {
+              k++;
+              continue;
+            }
+            // peri/pmb applies the force of a bond in the step it breaks; bbpd drops it at once
+            if (pmb) broken_bond_force<EVFLAG>(i, k, fb, acc);
+            bonds->remove_bond(i, k);
+          }
+        }
+        if (pmb)
+          for (int m = 0; m < 3; m++) fbroken[i][m] = fb[m];
       }
-      if (!pmb) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc);
+      row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc);
+      if (pmb)
+        for (int m = 0; m < 3; m++) fi[m] += fbroken[i][m];
       if (!std::isfinite(fi[0]) || !std::isfinite(fi[1]) || !std::isfinite(fi[2])) {
 #if defined(_OPENMP)
 #pragma omp critical(bbpd_nonfinite)
@@ -207,10 +232,40 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
   if (bad >= 0) nonfinite_error(bad);
   // the new smin takes effect at the next step, once sent to the ghosts
   for (int i = 0; i < nlocal; i++) smin[i] = smin_new[i];
+  alpha_state->last_step = update->ntimestep;
   if (EVFLAG) {
     if (eflag_global) eng_vdwl += totals[0];
     if (vflag_global)
       for (int m = 0; m < 6; m++) virial[m] += totals[1 + m];
+  }
+}
+
+/* add the force density of bond k of atom i (about to break) to fb, in the order the
+   bonds break; tally its energy and virial as row_force does */
+template <int EVFLAG> void PairBBPD::broken_bond_force(int i, int k, double *fb, double *acc)
+{
+  const double *xx = atom->x[0];
+  const int j = bonds->bj[k];
+  const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
+               dz = xx[3 * j + 2] - xx[3 * i + 2];
+  const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+  const double xi0 = bonds->xi0_of(i, k);
+  const double coef = bonds->coef_of(i, k, xi0);
+  const double elong = r - xi0;
+  const double fbond = coef * elong / r;
+  fb[0] += fbond * dx;
+  fb[1] += fbond * dy;
+  fb[2] += fbond * dz;
+  if (EVFLAG) {
+    const double eng = 0.25 * coef * elong * elong;
+    const double vir[6] = {-0.5 * fbond * dx * dx, -0.5 * fbond * dy * dy, -0.5 * fbond * dz * dz,
+                           -0.5 * fbond * dx * dy, -0.5 * fbond * dx * dz, -0.5 * fbond * dy * dz};
+    acc[0] += eng;
+    if (eflag_atom) eatom[i] += eng;
+    for (int m = 0; m < 6; m++) {
+      acc[1 + m] += vir[m];
+      if (vflag_atom) vatom[i][m] += vir[m];
+    }
   }
 }
 

@@ -114,7 +114,7 @@ def test_short_range_force_is_needed(lmp, tmp_path):
 
 
 # ---------------------------------------------------------------------------
-# alpha: two atoms, one bond; each 'run 0' is one force evaluation (and breaking check)
+# alpha: two atoms, one bond; each 'run 1' is one new force evaluation (and breaking check)
 
 PAIR_XI = 1.0e-3
 S00 = 1.0e-3
@@ -130,10 +130,12 @@ def bond_history(lmp, pair_lines, stretches, lattice=True):
              f"set group all volume {PAIR_XI**3!r}", f"set group all density {DENSITY!r}"]
     if lattice:
         lines.append(f"lattice sc {PAIR_XI!r}")
-    lines += pair_lines.splitlines() + ["run 0"]
+    # no integrator: 'run 1' evaluates the forces at the atoms' positions (the setup of a run
+    # only repeats the last step's evaluation, which neither breaks bonds nor updates smin)
+    lines += pair_lines.splitlines() + ["run 1"]
     for s in stretches:
-        lines += [f"set atom 2 x {PAIR_XI * (1.0 + s)!r}", "run 0"]
-    lines.append("run 0")
+        lines += [f"set atom 2 x {PAIR_XI * (1.0 + s)!r}", "run 1"]
+    lines.append("run 1")
     out = lmp("\n".join(lines) + "\n").output
     # each setup reports the bonds left by the evaluations before it
     return [int(v) for v in re.findall(r"total bonds 1 \((\d) broken\)", out)][1:]
@@ -196,3 +198,26 @@ def test_cylinder_bitwise_on_1_and_2_ranks(lmp, tmp_path):
         states.append(ref.read_dump(tmp_path / f"end{nprocs}.dump"))
     for key in ("x", "y", "z", "vx", "vy", "vz", "c_1"):
         np.testing.assert_array_equal(states[0][key], states[1][key])
+
+
+def test_cylinder_restart_equals_continuous_run(lmp, tmp_path):
+    """compat pmb across write_restart/read_restart (new process): the smallest stretches
+    (per-atom s0), compat and alpha come back, and the run continues in the same bits."""
+    example = Path(__file__).resolve().parents[2] / "examples" / "peri-pmb-dropin" / "in.bbpd.pmb"
+    script = example.read_text().replace("variable        scale index 1",
+                                          "variable        scale index 0.6")
+    head, tail = script.split("fix             1 all nve", 1)
+    dump = ("write_dump all custom end.dump id x y z vx vy vz c_1 modify format float %.17g\n")
+    lmp(script.replace("variable        steps index 1000", "variable        steps index 300")
+        + dump)
+    straight = ref.read_dump(tmp_path / "end.dump")
+    lmp(script.replace("variable        steps index 1000", "variable        steps index 150")
+        + "write_restart state.restart\n")
+    # a new process: the plugin, the lattice (compat pmb needs it, as peri/pmb), the fixes
+    second = ("plugin load bbpdplugin.so\nread_restart state.restart\nneighbor 0.0010 bin\n"
+              "lattice sc 0.0005\nvariable steps index 150\nfix 1 all nve" + tail + dump)
+    lmp(second)
+    restarted = ref.read_dump(tmp_path / "end.dump")
+    assert straight["c_1"].mean() > 0.1
+    for key in ("x", "y", "z", "vx", "vy", "vz", "c_1"):
+        np.testing.assert_array_equal(straight[key], restarted[key])
