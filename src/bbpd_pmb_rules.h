@@ -24,7 +24,7 @@ namespace PMB {
   constexpr double SHORT_RANGE_STIFFNESS_FACTOR = 15.0;
   // the short-range force keeps its own list of candidate pairs, rebuilt when an atom has
   // moved half this many lattice constants (a performance choice: it must be > 0)
-  constexpr double SHORT_RANGE_CANDIDATE_SKIN = 0.3;
+  constexpr double SHORT_RANGE_CANDIDATE_SKIN = 0.6;
   // peri/pmb sets an elongation below this to zero ("avoid roundoff errors")
   constexpr double NEAR_ZERO = 2.2204e-16;
   // smallest stretch of an atom without intact bonds: it never lowers a partner's s0
