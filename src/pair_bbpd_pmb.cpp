@@ -111,7 +111,8 @@ void PairBBPD::init_pmb()
     error->all(FLERR, "Pair style bbpd/constant compat pmb needs a lattice with the same constant "
                "in x, y and z (as peri/pmb)");
   lattice_constant = lat->xlattice;
-  neighbor->add_request(this, NeighConst::REQ_FULL)
+  // a half list without Newton's third law: every pair with a local atom, once per rank
+  neighbor->add_request(this, NeighConst::REQ_NEWTON_OFF)
       ->set_cutoff(SHORT_RANGE_LATTICE_FACTOR * lattice_constant);
 }
 
@@ -274,8 +275,8 @@ template void PairBBPD::eval_alpha<1>();
 
 /* ----------------------------------------------------------------------
    compat pmb: short-range forces between all atoms (bonded or not) closer than
-   min(0.9 |xi|, 1.35 lc), stiffness 15 c V_j / delta. Full list: each atom sums its
-   own pairs in tag order, so the result does not depend on the decomposition.
+   min(0.9 |xi|, 1.35 lc), stiffness 15 c V_j / delta. Each atom sums its own pairs
+   in tag order, so the result does not depend on the decomposition.
 ------------------------------------------------------------------------- */
 
 void PairBBPD::compute_short_range()
@@ -300,8 +301,9 @@ void PairBBPD::compute_short_range()
   const double rmaxsq = rmax * rmax;
   const double skin = SHORT_RANGE_CANDIDATE_SKIN * lc;
   const int nall = atom->nlocal + atom->nghost;
+  const int nlocal = atom->nlocal;
   bool rebuild = neighbor->ago == 0 || sr_xhold.size() != 3 * (size_t) nall ||
-      sr_first.size() != (size_t) list->inum + 1;
+      sr_first.size() != (size_t) nlocal + 1;
   for (int i = 0; !rebuild && i < nall; i++) {
     const double dx = xx[3 * i] - sr_xhold[3 * i], dy = xx[3 * i + 1] - sr_xhold[3 * i + 1],
                  dz = xx[3 * i + 2] - sr_xhold[3 * i + 2];
@@ -310,11 +312,10 @@ void PairBBPD::compute_short_range()
   if (rebuild) short_range_candidates(skin);
 
   std::vector<std::pair<tagint, int>> close;
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
+  for (int i = 0; i < nlocal; i++) {
     const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
     close.clear();
-    for (int m = sr_first[ii]; m < sr_first[ii + 1]; m++) {
+    for (int m = sr_first[i]; m < sr_first[i + 1]; m++) {
       const int j = sr_pairs[m];
       const double dx = xi - xx[3 * j], dy = yi - xx[3 * j + 1], dz = zi - xx[3 * j + 2];
       const double rsq = dx * dx + dy * dy + dz * dz;
@@ -361,15 +362,15 @@ void PairBBPD::short_range_candidates(double skin)
   const double lc = lattice_constant;
   const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
   const double reach = SHORT_RANGE_LATTICE_FACTOR * lc + skin;
-  const int nall = atom->nlocal + atom->nghost;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   sr_xhold.assign(xx, xx + 3 * nall);
-  sr_first.assign(list->inum + 1, 0);
-  sr_pairs.clear();
+  // pairs in reach from the half list, then each local end gets the pair (counting sort)
+  std::vector<std::pair<int, int>> found;
+  sr_first.assign(nlocal + 1, 0);
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
     const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
-    sr_first[ii] = (int) sr_pairs.size();
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const double dx = xi - xx[3 * j], dy = yi - xx[3 * j + 1], dz = zi - xx[3 * j + 2];
@@ -378,8 +379,17 @@ void PairBBPD::short_range_candidates(double skin)
       double d0[3] = {x0[i][0] - x0[j][0], x0[i][1] - x0[j][1], x0[i][2] - x0[j][2]};
       if (periodic) BBPDCompat::minimum_image(domain, d0);
       const double d = short_range_distance(std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), lc);
-      if (std::sqrt(rsq) < d + skin) sr_pairs.push_back(j);
+      if (std::sqrt(rsq) >= d + skin) continue;
+      found.emplace_back(i, j);
+      sr_first[i + 1]++;
+      if (j < nlocal) sr_first[j + 1]++;
     }
   }
-  sr_first[list->inum] = (int) sr_pairs.size();
+  for (int i = 0; i < nlocal; i++) sr_first[i + 1] += sr_first[i];
+  sr_pairs.resize(sr_first[nlocal]);
+  std::vector<int> fill(sr_first.begin(), sr_first.end() - 1);
+  for (const auto &p : found) {
+    sr_pairs[fill[p.first]++] = p.second;
+    if (p.second < nlocal) sr_pairs[fill[p.second]++] = p.first;
+  }
 }
