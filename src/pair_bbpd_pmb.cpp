@@ -177,12 +177,30 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
                                            smin_i, smin[j], clamp);
       };
       double fi[3];
+      bool done = false;    // fi (and the tallies) summed by the fused kernel
       if (replay) {
         smin_new[i] = smin_i;
       } else {
         double snew = std::numeric_limits<double>::max();
         bool broken = false;
         const int n = bonds->nbond[i];
+#ifdef BBPD_AVX512
+        if (!multi && bxi0) {
+          double ax[LANES], ay[LANES], az[LANES];
+          RowTally tally;
+          broken = pmb ? row_force_stretch_avx512<EVFLAG, true, false>(
+                             xx, i, bj + beg, bxi0 + beg, bonds->bcoef + beg, n, smin, s00_one,
+                             alpha_one, &snew, ax, ay, az, &tally)
+                       : row_force_stretch_avx512<EVFLAG, false, true>(
+                             xx, i, bj + beg, bxi0 + beg, bonds->bcoef + beg, n, smin, s00_one,
+                             alpha_one, &snew, ax, ay, az, &tally);
+          if (!broken) {
+            lane_sum(ax, ay, az, fi);
+            if (EVFLAG) tally_lanes(i, tally, acc);
+            done = true;
+          }
+        } else
+#endif
         if (!multi && bxi0) {
           broken = pmb ? row_stretch<true, false>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew)
                        : row_stretch<false, true>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew);
@@ -210,7 +228,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         if (pmb)
           for (int m = 0; m < 3; m++) fbroken[i][m] = fb[m];
       }
-      row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc);
+      if (!done) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc);
       if (pmb)
         for (int m = 0; m < 3; m++) fi[m] += fbroken[i][m];
       if (!std::isfinite(fi[0]) || !std::isfinite(fi[1]) || !std::isfinite(fi[2])) {
