@@ -183,13 +183,51 @@ def test_compat_needs_lattice(lmp):
     assert "needs a lattice command" in proc.error
 
 
-def test_cylinder_bitwise_on_1_and_2_ranks(lmp, tmp_path):
-    """The ported peri/pmb cylinder (smaller, shattering: short-range forces and breaking
-    with alpha on every step) ends in the same bits on 1 and 2 MPI ranks."""
-    example = Path(__file__).resolve().parents[2] / "examples" / "peri-pmb-dropin" / "in.bbpd.pmb"
-    script = example.read_text().replace("variable        steps index 1000",
-                                          "variable        steps index 300")
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "peri-pmb-dropin" / "in.bbpd.pmb"
+# the cylinder's material for the kernel models: E = pi c delta^4 / 12 (doc/migrating_from_peri)
+PLAIN_ALPHA = ("pair_style      bbpd/gaussian 3d contact yes\n"
+               "pair_coeff      * * 22.355e9 5.0 0.0015001 alpha 0.25\n")
+# a second atom type that no atom has, with another s00: the per-bond (multi-type) loop
+TWO_TYPES = ("pair_coeff      * * 1.6863e22 0.0015001 0.0005 0.25\n"
+             "pair_coeff      2 2 1.6863e22 0.0015001 0.001 0.25\n")
+
+
+def cylinder(variant, steps=300):
+    script = EXAMPLE.read_text().replace("variable        steps index 1000",
+                                         f"variable        steps index {steps}")
     script = script.replace("variable        scale index 1", "variable        scale index 0.6")
+    pmb_lines = ("pair_style      bbpd/constant 3d compat pmb\n"
+                 "pair_coeff      * * 1.6863e22 0.0015001 0.0005 0.25\n")
+    assert pmb_lines in script
+    if variant == "plain-alpha":
+        script = script.replace(pmb_lines, PLAIN_ALPHA)
+    elif variant == "compact":
+        script = script.replace("compat pmb\n", "compat pmb bond/storage compact\n", 1)
+    elif variant == "two-types":
+        script = script.replace("create_box      1 target", "create_box      2 target")
+        script = script.replace(pmb_lines, pmb_lines.splitlines()[0] + "\n" + TWO_TYPES)
+    return script
+
+
+def test_per_bond_loop_gives_the_same_bits(lmp, tmp_path):
+    """The per-bond loop (type pairs with different s00; compact bond storage) gives the
+    bits of the one-type SIMD loop when every atom has the same type."""
+    states = []
+    for variant in ("compat", "two-types", "compact"):
+        lmp(cylinder(variant) + "write_dump all custom end.dump id x y z vx vy vz c_1 "
+            "modify format float %.17g\n")
+        states.append(ref.read_dump(tmp_path / "end.dump"))
+    assert states[0]["c_1"].mean() > 0.1
+    for other in states[1:]:
+        for key in ("x", "y", "z", "vx", "vy", "vz", "c_1"):
+            np.testing.assert_array_equal(states[0][key], other[key])
+
+
+@pytest.mark.parametrize("variant", ["compat", "plain-alpha"])
+def test_cylinder_bitwise_on_1_and_2_ranks(lmp, tmp_path, variant):
+    """The ported peri/pmb cylinder (smaller, shattering: short-range forces or contact, and
+    breaking with alpha on every step) ends in the same bits on 1 and 2 MPI ranks."""
+    script = cylinder(variant)
     states = []
     for nprocs in (1, 2):
         out = lmp(script + f"write_dump all custom end{nprocs}.dump id x y z vx vy vz c_1 "
@@ -203,9 +241,8 @@ def test_cylinder_bitwise_on_1_and_2_ranks(lmp, tmp_path):
 def test_cylinder_restart_equals_continuous_run(lmp, tmp_path):
     """compat pmb across write_restart/read_restart (new process): the smallest stretches
     (per-atom s0), compat and alpha come back, and the run continues in the same bits."""
-    example = Path(__file__).resolve().parents[2] / "examples" / "peri-pmb-dropin" / "in.bbpd.pmb"
-    script = example.read_text().replace("variable        scale index 1",
-                                          "variable        scale index 0.6")
+    script = EXAMPLE.read_text().replace("variable        scale index 1",
+                                         "variable        scale index 0.6")
     head, tail = script.split("fix             1 all nve", 1)
     dump = ("write_dump all custom end.dump id x y z vx vy vz c_1 modify format float %.17g\n")
     lmp(script.replace("variable        steps index 1000", "variable        steps index 300")
