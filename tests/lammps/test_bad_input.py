@@ -132,6 +132,32 @@ CASES = {
                                            "Expected floating point parameter instead of 'big'"),
     "coeff-unknown-keyword": (script(pair_coeff="pair_coeff * * 190.0e9 6.9e4 0.003015 s0 0.01"),
                               "unknown keyword 's0'"),
+    "coeff-alpha-negative": (script(pair_coeff="pair_coeff * * 190.0e9 6.9e4 0.003015 alpha -0.25"),
+                             "alpha must be >= 0"),
+    "coeff-alpha-missing-value": (script(pair_coeff="pair_coeff * * 190.0e9 6.9e4 0.003015 "
+                                         "critical_stretch 0.01 alpha"), "got 8 arguments"),
+    # ---- compat pmb: pair_coeff I J c delta s00 alpha, as peri/pmb
+    "compat-not-pmb": (script(BASE_3D, pair_style="pair_style bbpd/constant 3d compat lps"),
+                       "compat must be 'pmb'"),
+    "compat-gaussian": (script(BASE_3D, pair_style="pair_style bbpd/gaussian 3d compat pmb"),
+                        "compat pmb needs the constant kernel"),
+    "compat-coeff-E-Gc": (script(BASE_3D, pair_style="pair_style bbpd/constant 3d compat pmb"),
+                          "expected 'I J c delta s00 alpha'"),
+    "compat-coeff-s00-zero": (script(BASE_3D, pair_style="pair_style bbpd/constant 3d compat pmb",
+                                     pair_coeff="pair_coeff * * 1.0e22 0.003015 0.0 0.25"),
+                              "s00 must be > 0"),
+    "compat-coeff-alpha-negative": (script(BASE_3D,
+                                           pair_style="pair_style bbpd/constant 3d compat pmb",
+                                           pair_coeff="pair_coeff * * 1.0e22 0.003015 0.001 -1"),
+                                    "alpha must be >= 0"),
+    "compat-with-contact": (script(BASE_3D, pair_style="pair_style bbpd/constant 3d contact yes "
+                                   "compat pmb", pair_coeff="pair_coeff * * 1.0e22 0.003015 0.001 0.25"),
+                            "drop 'contact yes'"),
+    "compat-lattice-not-cubic": (script(BASE_3D, lattice="lattice custom 0.001 a1 1 0 0 a2 0 1 0 "
+                                        "a3 0 0 2 basis 0 0 0",
+                                        pair_style="pair_style bbpd/constant 3d compat pmb",
+                                        pair_coeff="pair_coeff * * 1.0e22 0.003015 0.001 0.25"),
+                                 "same constant in x, y and z"),
     "coeff-file-unknown-material": (script(pair_coeff="pair_coeff * * kalthoff_winkler_steel.bbpd "
                                            "unobtainium 0.003015"),
                                     "Material unobtainium not found"),
