@@ -86,10 +86,10 @@ class PairBBPD : public Pair {
   template <int EVFLAG> void eval_alpha();
   template <int EVFLAG> void broken_bond_force(int i, int k, double *fb, double *acc);
   void compute_short_range();
-  // short-range candidates: pairs of the neighbour list that can come in range before the
-  // atoms move half a candidate skin (per ilist entry: sr_first, then partners in sr_pairs)
+  // short-range candidates: pairs that can come in range before the atoms move half a
+  // candidate skin (atom i's partners: sr_pairs[sr_first[i] .. sr_first[i + 1]])
   std::vector<int> sr_first, sr_pairs;
-  std::vector<double> sr_xhold;
+  std::vector<double> sr_dist, sr_xhold;    // short-range distance of each candidate pair
   void short_range_candidates(double skin);
 };
 

@@ -111,9 +111,15 @@ void PairBBPD::init_pmb()
     error->all(FLERR, "Pair style bbpd/constant compat pmb needs a lattice with the same constant "
                "in x, y and z (as peri/pmb)");
   lattice_constant = lat->xlattice;
-  // a half list without Newton's third law: every pair with a local atom, once per rank
-  neighbor->add_request(this, NeighConst::REQ_NEWTON_OFF)
-      ->set_cutoff(SHORT_RANGE_LATTICE_FACTOR * lattice_constant);
+  // the short-range partners are found among the local and ghost atoms (no neighbour list):
+  // the ghosts cover every pair closer than the horizon
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j] && horizon[i][j] < SHORT_RANGE_LATTICE_FACTOR * lattice_constant)
+        error->all(FLERR, "Pair style bbpd/constant compat pmb: horizon {} for types {} {} is "
+                   "shorter than the short-range distance {} x lattice constant {}: use a horizon "
+                   "of at least {}", horizon[i][j], i, j, SHORT_RANGE_LATTICE_FACTOR,
+                   lattice_constant, SHORT_RANGE_LATTICE_FACTOR * lattice_constant);
 }
 
 /* ----------------------------------------------------------------------
@@ -299,27 +305,20 @@ template void PairBBPD::eval_alpha<1>();
 
 void PairBBPD::compute_short_range()
 {
-  double **x = atom->x, **x0 = atom->x0, **f = atom->f;
+  double **x = atom->x, **f = atom->f;
   const int *type = atom->type;
   const tagint *tag = atom->tag;
   const double *vfrac = atom->vfrac;
   const double lc = lattice_constant;
-  // no pair beyond this can be in range; the margin keeps the filter exact after rounding
-  const double rmax = SHORT_RANGE_LATTICE_FACTOR * lc * (1.0 + 1.0e-12);
-  const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
-
-  // the short-range distance of a pair from its reference positions
-  auto distance_of = [&](int i, int j) {
-    double d0[3] = {x0[i][0] - x0[j][0], x0[i][1] - x0[j][1], x0[i][2] - x0[j][2]};
-    if (periodic) BBPDCompat::minimum_image(domain, d0);
-    return short_range_distance(std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), lc);
-  };
+  const double rmax = SHORT_RANGE_LATTICE_FACTOR * lc;
 
   const double *xx = x[0];
-  const double rmaxsq = rmax * rmax;
-  const double skin = SHORT_RANGE_CANDIDATE_SKIN * lc;
-  const int nall = atom->nlocal + atom->nghost;
-  const int nlocal = atom->nlocal;
+  double horizon_min = std::numeric_limits<double>::infinity();
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) horizon_min = std::min(horizon_min, horizon[i][j]);
+  // candidate pairs must stay within the horizon, which the ghost atoms cover
+  const double skin = std::min(SHORT_RANGE_CANDIDATE_SKIN * lc, horizon_min - rmax);
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   bool rebuild = neighbor->ago == 0 || sr_xhold.size() != 3 * (size_t) nall ||
       sr_first.size() != (size_t) nlocal + 1;
   for (int i = 0; !rebuild && i < nall; i++) {
@@ -327,7 +326,7 @@ void PairBBPD::compute_short_range()
                  dz = xx[3 * i + 2] - sr_xhold[3 * i + 2];
     rebuild = dx * dx + dy * dy + dz * dz > 0.2 * skin * skin;    // under half the skin, with room for round-off
   }
-  if (rebuild) short_range_candidates(skin);
+  if (rebuild) short_range_candidates(std::max(skin, 0.0));
 
   std::vector<std::pair<tagint, int>> close;
   for (int i = 0; i < nlocal; i++) {
@@ -335,19 +334,20 @@ void PairBBPD::compute_short_range()
     close.clear();
     for (int m = sr_first[i]; m < sr_first[i + 1]; m++) {
       const int j = sr_pairs[m];
+      const double d = sr_dist[m];
       const double dx = xi - xx[3 * j], dy = yi - xx[3 * j + 1], dz = zi - xx[3 * j + 2];
       const double rsq = dx * dx + dy * dy + dz * dz;
-      if (rsq >= rmaxsq) continue;
-      if (std::sqrt(rsq) < distance_of(i, j)) close.emplace_back(tag[j], j);
+      if (rsq >= d * d * (1.0 + 1.0e-12)) continue;    // the exact test follows
+      if (std::sqrt(rsq) < d) close.emplace_back(tag[j], m);
     }
-    // sum in tag order: the neighbour-list order depends on the domain decomposition
+    // sum in tag order: the candidates' order depends on the domain decomposition
     std::sort(close.begin(), close.end());
     for (const auto &c : close) {
-      const int j = c.second;
-      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const int j = sr_pairs[c.second];
+      const double dx = xi - xx[3 * j], dy = yi - xx[3 * j + 1], dz = zi - xx[3 * j + 2];
       const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
       const int itype = type[i], jtype = type[j];
-      const double dr = r - distance_of(i, j);
+      const double dr = r - sr_dist[c.second];
       // written as in peri/pmb
       const double rk = (SHORT_RANGE_STIFFNESS_FACTOR * micromodulus[itype][jtype] * vfrac[j]) *
           (dr / horizon[itype][jtype]);
@@ -370,9 +370,9 @@ void PairBBPD::compute_short_range()
   }
 }
 
-/* candidates for the short-range force: the pairs of the neighbour list within their
-   short-range distance plus 'skin'. No atom moves half the skin before the next rebuild,
-   so every pair in range is a candidate; which ones are is a matter of speed only. */
+/* candidates for the short-range force: the pairs of a local atom and a local or ghost
+   atom within their short-range distance plus 'skin', found by binning. No atom moves half
+   the skin before the next rebuild, so every pair in range is a candidate. */
 void PairBBPD::short_range_candidates(double skin)
 {
   const double *xx = atom->x[0];
@@ -382,32 +382,65 @@ void PairBBPD::short_range_candidates(double skin)
   const double reach = SHORT_RANGE_LATTICE_FACTOR * lc + skin;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   sr_xhold.assign(xx, xx + 3 * nall);
-  // pairs in reach from the half list, then each local end gets the pair (counting sort)
-  std::vector<std::pair<int, int>> found;
   sr_first.assign(nlocal + 1, 0);
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
-    const int *jlist = list->firstneigh[i];
-    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const double dx = xi - xx[3 * j], dy = yi - xx[3 * j + 1], dz = zi - xx[3 * j + 2];
-      const double rsq = dx * dx + dy * dy + dz * dz;
-      if (rsq >= reach * reach) continue;
-      double d0[3] = {x0[i][0] - x0[j][0], x0[i][1] - x0[j][1], x0[i][2] - x0[j][2]};
-      if (periodic) BBPDCompat::minimum_image(domain, d0);
-      const double d = short_range_distance(std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), lc);
-      if (std::sqrt(rsq) >= d + skin) continue;
-      found.emplace_back(i, j);
-      sr_first[i + 1]++;
-      if (j < nlocal) sr_first[j + 1]++;
+  sr_pairs.clear();
+  sr_dist.clear();
+  if (nall == 0) return;
+
+  // bins of at least the reach, coarser if the atoms are spread out (flying fragments)
+  double lo[3], hi[3];
+  for (int m = 0; m < 3; m++) lo[m] = hi[m] = xx[m];
+  for (int i = 0; i < nall; i++)
+    for (int m = 0; m < 3; m++) {
+      lo[m] = std::min(lo[m], xx[3 * i + m]);
+      hi[m] = std::max(hi[m], xx[3 * i + m]);
     }
+  for (int m = 0; m < 3; m++)
+    if (!std::isfinite(hi[m] - lo[m]))
+      error->one(FLERR, "Pair bbpd/constant compat pmb: non-finite atom positions at step {}: "
+                 "the run is unstable, reduce the timestep", update->ntimestep);
+  double b = reach;
+  int nb[3];
+  auto nbins = [&]() {
+    for (int m = 0; m < 3; m++) nb[m] = static_cast<int>(std::min((hi[m] - lo[m]) / b, 1.0e6)) + 1;
+    return (double) nb[0] * nb[1] * nb[2];
+  };
+  while (nbins() > 4.0 * nall + 64.0) b *= 1.5;
+  auto cell = [&](int i, int m) {
+    return std::min(nb[m] - 1, static_cast<int>((xx[3 * i + m] - lo[m]) / b));
+  };
+  std::vector<int> start((size_t) nb[0] * nb[1] * nb[2] + 1, 0), bin_of(nall), atoms(nall);
+  for (int i = 0; i < nall; i++) {
+    bin_of[i] = (cell(i, 0) * nb[1] + cell(i, 1)) * nb[2] + cell(i, 2);
+    start[bin_of[i] + 1]++;
   }
-  for (int i = 0; i < nlocal; i++) sr_first[i + 1] += sr_first[i];
-  sr_pairs.resize(sr_first[nlocal]);
-  std::vector<int> fill(sr_first.begin(), sr_first.end() - 1);
-  for (const auto &p : found) {
-    sr_pairs[fill[p.first]++] = p.second;
-    if (p.second < nlocal) sr_pairs[fill[p.second]++] = p.first;
+  for (size_t c = 1; c < start.size(); c++) start[c] += start[c - 1];
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (int i = 0; i < nall; i++) atoms[fill[bin_of[i]]++] = i;
+
+  for (int i = 0; i < nlocal; i++) {
+    sr_first[i] = (int) sr_pairs.size();
+    const int c[3] = {cell(i, 0), cell(i, 1), cell(i, 2)};
+    for (int ax = std::max(c[0] - 1, 0); ax <= std::min(c[0] + 1, nb[0] - 1); ax++)
+      for (int ay = std::max(c[1] - 1, 0); ay <= std::min(c[1] + 1, nb[1] - 1); ay++)
+        for (int az = std::max(c[2] - 1, 0); az <= std::min(c[2] + 1, nb[2] - 1); az++) {
+          const int bin = (ax * nb[1] + ay) * nb[2] + az;
+          for (int a = start[bin]; a < start[bin + 1]; a++) {
+            const int j = atoms[a];
+            if (j == i) continue;
+            const double dx = xx[3 * i] - xx[3 * j], dy = xx[3 * i + 1] - xx[3 * j + 1],
+                         dz = xx[3 * i + 2] - xx[3 * j + 2];
+            const double rsq = dx * dx + dy * dy + dz * dz;
+            if (rsq >= reach * reach) continue;
+            double d0[3] = {x0[i][0] - x0[j][0], x0[i][1] - x0[j][1], x0[i][2] - x0[j][2]};
+            if (periodic) BBPDCompat::minimum_image(domain, d0);
+            const double d =
+                short_range_distance(std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), lc);
+            if (std::sqrt(rsq) >= d + skin) continue;
+            sr_pairs.push_back(j);
+            sr_dist.push_back(d);
+          }
+        }
   }
+  sr_first[nlocal] = (int) sr_pairs.size();
 }

@@ -153,6 +153,10 @@ CASES = {
     "compat-with-contact": (script(BASE_3D, pair_style="pair_style bbpd/constant 3d contact yes "
                                    "compat pmb", pair_coeff="pair_coeff * * 1.0e22 0.003015 0.001 0.25"),
                             "drop 'contact yes'"),
+    "compat-horizon-below-short-range": (script(BASE_3D,
+                                                pair_style="pair_style bbpd/constant 3d compat pmb",
+                                                pair_coeff="pair_coeff * * 1.0e22 0.0012 0.001 0.25"),
+                                         "shorter than the short-range distance"),
     "compat-lattice-not-cubic": (script(BASE_3D, lattice="lattice custom 0.001 a1 1 0 0 a2 0 1 0 "
                                         "a3 0 0 2 basis 0 0 0",
                                         pair_style="pair_style bbpd/constant 3d compat pmb",
