@@ -25,18 +25,27 @@ FORCE_RTOL = 1.0e-12     # of the largest force: different summation order only
 SEED = 20261201
 
 
-def block():
-    x0 = ref.square_lattice((7, 7, 7), DX)
+THICKNESS = 1.0e-3    # of the 2D plate
+
+
+def block(dim=3):
+    x0 = ref.square_lattice((7, 7, 7) if dim == 3 else (12, 12), DX)
     pad = 5 * DX
     box = [(x0[:, k].min() - pad, x0[:, k].max() + pad) for k in range(3)]
+    if dim == 2:
+        box[2] = (-0.5 * DX, 0.5 * DX)
     return x0, box
 
 
-def perturbed(x0):
+def perturbed(x0, dim=3):
     """Random perturbation; three atoms pushed towards their +x neighbour."""
     rng = np.random.default_rng(SEED)
     y = x0 + PERTURBATION * DX * rng.uniform(-1.0, 1.0, x0.shape)
-    pushed = [3 * 49 + 3 * 7 + 2, 1 * 49 + 5 * 7 + 4, 5 * 49 + 1 * 7 + 1]    # interior-ish atoms
+    if dim == 3:
+        pushed = [3 * 49 + 3 * 7 + 2, 1 * 49 + 5 * 7 + 4, 5 * 49 + 1 * 7 + 1]    # interior-ish atoms
+    else:
+        y[:, 2] = 0.0
+        pushed = [5 * 12 + 5, 2 * 12 + 8, 8 * 12 + 3]
     for a in pushed:
         y[a, 0] += PUSH * DX
     return y
@@ -50,44 +59,49 @@ def short_range_pairs(x0, y):
     return np.count_nonzero(r < np.minimum(0.9 * xi, 1.35 * DX))
 
 
-def force_script(pair_lines, plugin):
+def force_script(pair_lines, plugin, dim=3):
+    geometry = ("boundary s s s\n" if dim == 3 else "dimension 2\nboundary s s p\n")
     return ((("plugin load bbpdplugin.so\n" if plugin else "")
-             + "units si\nboundary s s s\natom_style peri\natom_modify map array\n"
+             + "units si\n" + geometry + "atom_style peri\natom_modify map array\n"
              "read_data body.data\n"
-             f"lattice sc {DX!r}\n"
+             f"lattice {'sc' if dim == 3 else 'sq'} {DX!r}\n"
              + pair_lines +
              "neighbor 0.0005 bin\n"
              "run 0\n"
-             "read_dump current.dump 0 x y z box no replace yes\n"
+             f"read_dump current.dump 0 {'x y z' if dim == 3 else 'x y'} box no replace yes\n"
              "run 0\n"
              "write_dump all custom forces.dump id x y z fx fy fz modify format float %.17g\n"))
 
 
-def run_forces(lmp, tmp_path, pair_lines, plugin, nprocs=1):
-    out = lmp(force_script(pair_lines, plugin), nprocs=nprocs).output
+def run_forces(lmp, tmp_path, pair_lines, plugin, nprocs=1, dim=3):
+    out = lmp(force_script(pair_lines, plugin, dim), nprocs=nprocs).output
     got = ref.read_dump(tmp_path / "forces.dump")
     return out, np.stack([got["fx"], got["fy"], got["fz"]], axis=1)
 
 
-def test_forces_equal_peri_pmb(lmp, tmp_path):
+@pytest.mark.parametrize("model", ["3d", "plane/stress"])
+def test_forces_equal_peri_pmb(lmp, tmp_path, model):
     """compat pmb gives peri/pmb's forces (bonds with the volume ramp, short-range forces
     between bonded atoms) to 1e-12 of the largest force, on 1 and 2 ranks; ours are the
-    same bits on 1 and 2 ranks."""
-    x0, box = block()
-    y = perturbed(x0)
+    same bits on 1 and 2 ranks. In 2D, peri/pmb runs in dimension 2 as well."""
+    dim = 3 if model == "3d" else 2
+    x0, box = block(dim)
+    y = perturbed(x0, dim)
     assert short_range_pairs(x0, y) >= 3    # the short-range force is exercised
-    ref.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
+    ref.write_data(tmp_path / "body.data", x0, DX**3 if dim == 3 else THICKNESS * DX**2,
+                   DENSITY, box)
     ref.write_positions(tmp_path / "current.dump", y, box)
     numbers = f"{C_PMB!r} {DELTA!r} {S00_ELASTIC!r} {ALPHA!r}"
 
     _, f_pmb = run_forces(lmp, tmp_path, f"pair_style peri/pmb\npair_coeff * * {numbers}\n",
-                          plugin=False)
-    ours = f"pair_style bbpd/constant 3d compat pmb\npair_coeff * * {numbers}\n"
-    out1, f1 = run_forces(lmp, tmp_path, ours, plugin=True)
-    out2, f2 = run_forces(lmp, tmp_path, ours, plugin=True, nprocs=2)
+                          plugin=False, dim=dim)
+    thick = "" if dim == 3 else f" thickness {THICKNESS!r}"
+    ours = f"pair_style bbpd/constant {model}{thick} compat pmb\npair_coeff * * {numbers}\n"
+    out1, f1 = run_forces(lmp, tmp_path, ours, plugin=True, dim=dim)
+    out2, f2 = run_forces(lmp, tmp_path, ours, plugin=True, nprocs=2, dim=dim)
     assert "compat pmb" in out1
-    # |xi| <= delta gives 122 partners to an interior atom at delta = 3.0002 dx
-    assert "max 122" in out1
+    # |xi| <= delta gives an interior atom 122 partners (3D), 28 (2D) at delta = 3.0002 dx
+    assert f"max {122 if dim == 3 else 28}" in out1
     scale = np.linalg.norm(f_pmb, axis=1).max()
     for f in (f1, f2):
         err = np.linalg.norm(f - f_pmb, axis=1).max() / scale
