@@ -10,7 +10,8 @@
    Without compat, 'alpha A' applies the same rule (compression only) to every kernel,
    with the usual bbpd order: a bond past its critical stretch exerts no force.
    smin lives in the per-atom s0 of atom_style peri, which LAMMPS already sends to
-   ghost atoms every step and carries through migration and restart files.
+   ghost atoms every step and carries through migration and restart files; fix
+   bbpd/alpha keeps what a second evaluation of the same step needs (fix_bbpd_alpha.h).
 ------------------------------------------------------------------------- */
 
 #include "pair_bbpd.h"
@@ -27,8 +28,6 @@
 #include "lattice.h"
 #include "memory.h"
 #include "modify.h"
-#include "neigh_list.h"
-#include "neigh_request.h"
 #include "neighbor.h"
 #include "update.h"
 
@@ -81,8 +80,8 @@ void PairBBPD::coeff_pmb(int narg, char **arg)
   if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
 }
 
-/* part of init_style: the lattice constant and short-range list of compat pmb, and the
-   starting smin of the Silling-Askari rule */
+/* part of init_style: the state fix and starting smin of the Silling-Askari rule, and the
+   lattice constant of compat pmb */
 void PairBBPD::init_pmb()
 {
   alpha_any = compat_pmb;
