@@ -237,6 +237,20 @@ def test_per_bond_loop_gives_the_same_bits(lmp, tmp_path):
             np.testing.assert_array_equal(states[0][key], other[key])
 
 
+def test_cylinder_bitwise_on_1_and_2_threads(lmp, tmp_path):
+    """compat pmb on 2 OpenMP threads ends in the bits of 1 thread."""
+    states = []
+    for threads in (1, 2):
+        script = cylinder("compat").replace("units           si",
+                                            f"package omp {threads}\nunits           si", 1)
+        out = lmp(script + "write_dump all custom end.dump id x y z vx vy vz c_1 "
+                  "modify format float %.17g\n").output
+        assert f"1 MPI tasks x {threads} OpenMP threads" in out
+        states.append(ref.read_dump(tmp_path / "end.dump"))
+    for key in ("x", "y", "z", "vx", "vy", "vz", "c_1"):
+        np.testing.assert_array_equal(states[0][key], states[1][key])
+
+
 @pytest.mark.parametrize("variant", ["compat", "plain-alpha"])
 def test_cylinder_bitwise_on_1_and_2_ranks(lmp, tmp_path, variant):
     """The ported peri/pmb cylinder (smaller, shattering: short-range forces or contact, and
