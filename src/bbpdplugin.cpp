@@ -10,6 +10,7 @@
 #include "compute_bbpd_dsif.h"
 #include "compute_bbpd_jintegral.h"
 #include "error.h"
+#include "fix_bbpd_alpha.h"
 #include "fix_bbpd_bonds.h"
 #include "fix_bbpd_notch.h"
 #include "info.h"
@@ -36,6 +37,10 @@ template <class K> Pair *pair_creator(LAMMPS *lmp)
 Fix *bonds_creator(LAMMPS *lmp, int narg, char **arg)
 {
   return new FixBBPDBonds(lmp, narg, arg);
+}
+Fix *alpha_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixBBPDAlpha(lmp, narg, arg);
 }
 Fix *notch_creator(LAMMPS *lmp, int narg, char **arg)
 {
@@ -95,6 +100,10 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "bbpd/bonds";
   plugin.info = "BBPD bond families (internal, created by the pair style) v" BBPD_VERSION;
   plugin.creator.v2 = (lammpsplugin_factory2 *) &bonds_creator;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/alpha";
+  plugin.info = "BBPD Silling-Askari breaking state (internal, created by the pair style) v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &alpha_creator;
   (*register_plugin)(&plugin, lmp);
   plugin.name = "bbpd/notch";
   plugin.info = "BBPD pre-cracks by broken bonds v" BBPD_VERSION;

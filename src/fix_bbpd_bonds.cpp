@@ -259,8 +259,7 @@ void FixBBPDBonds::build_families()
 
   auto in_family = [&](int i, int j) {
     const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
-    const double rc = pair->family_cutoff(type[i], type[j]);
-    return dx * dx + dy * dy + dz * dz < rc * rc;
+    return pair->in_family(type[i], type[j], dx * dx + dy * dy + dz * dz);
   };
 
   int mymax = 0;

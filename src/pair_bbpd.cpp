@@ -13,6 +13,7 @@
 #include "pair_bbpd.h"
 #include "pair_bbpd_row.h"
 #include "bbpd_compat.h"
+#include "bbpd_pmb_rules.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -56,7 +57,9 @@ PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k) :
     dt_safety(DT_SAFETY_DEFAULT), contact(0), compact_storage(0), contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
     fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
     s0_user(nullptr), bonds(nullptr), dt_bound_paper(0.0), dt_bound(0.0), multi_s0(0),
-    s0_single(0.0), s0_seen(0), break_margin(0.0)
+    s0_single(0.0), s0_seen(0), break_margin(0.0),
+    compat_pmb(0), lattice_constant(0.0), alpha(nullptr), alpha_any(0),
+    nmax_smin(0), smin_new(nullptr), alpha_state(nullptr)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -73,6 +76,8 @@ PairBBPD::~PairBBPD()
 {
   if (copymode) return;
   delete[] pvector;
+  memory->destroy(smin_new);
+  if (alpha_state && modify->get_fix_by_id("BBPD_ALPHA")) modify->delete_fix("BBPD_ALPHA");
   if (bonds && modify->get_fix_by_id(BONDS_FIX_ID)) modify->delete_fix(BONDS_FIX_ID);
   if (allocated) {
     memory->destroy(setflag);
@@ -83,6 +88,7 @@ PairBBPD::~PairBBPD()
     memory->destroy(micromodulus);
     memory->destroy(critical_stretch);
     memory->destroy(s0_user);
+    memory->destroy(alpha);
   }
 }
 
@@ -98,10 +104,12 @@ void PairBBPD::allocate()
   memory->create(micromodulus, n, n, "pair:micromodulus");
   memory->create(critical_stretch, n, n, "pair:critical_stretch");
   memory->create(s0_user, n, n, "pair:s0_user");
+  memory->create(alpha, n, n, "pair:alpha");
   for (int i = 0; i < n; i++)
     for (int j = 0; j < n; j++) {
       setflag[i][j] = 0;
       s0_user[i][j] = 0;
+      alpha[i][j] = 0.0;
     }
 }
 
@@ -131,9 +139,21 @@ void PairBBPD::settings(int narg, char **arg)
   contact = 0;
   contact_factor = CONTACT_FACTOR_DEFAULT;
   compact_storage = 0;
+  compat_pmb = 0;
   while (iarg < narg) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "Pair style {}: keyword {} needs a value", style, key);
+    if (key == "compat") {
+      if (strcmp(arg[iarg + 1], "pmb") != 0)
+        error->all(FLERR, "Pair style {}: compat must be 'pmb' (the rules of pair style peri/pmb)",
+                   style);
+      if (strcmp(kernel.name, "constant") != 0)
+        error->all(FLERR, "Pair style {}: compat pmb needs the constant kernel, as peri/pmb: use "
+                   "bbpd/constant", style);
+      compat_pmb = 1;
+      iarg += 2;
+      continue;
+    }
     if (key == "contact") {
       contact = utils::logical(FLERR, arg[iarg + 1], false, lmp);
       iarg += 2;
@@ -191,9 +211,14 @@ void PairBBPD::settings(int narg, char **arg)
 void PairBBPD::coeff(int narg, char **arg)
 {
   const std::string style = std::string("bbpd/") + kernel.name;
-  if (narg != 5 && narg != 7)
-    error->all(FLERR, "Pair coeff for {}: expected 'I J E Gc delta [critical_stretch s0]' or "
-               "'I J file material delta [critical_stretch s0]', got {} arguments", style, narg);
+  if (compat_pmb) {
+    coeff_pmb(narg, arg);
+    return;
+  }
+  if (narg != 5 && narg != 7 && narg != 9)
+    error->all(FLERR, "Pair coeff for {}: expected 'I J E Gc delta [critical_stretch s0] [alpha A]' "
+               "or 'I J file material delta [critical_stretch s0] [alpha A]', got {} arguments",
+               style, narg);
   if (!allocated) allocate();
 
   int ilo, ihi, jlo, jhi;
@@ -212,13 +237,20 @@ void PairBBPD::coeff(int narg, char **arg)
     coeff_from_file(arg[2], arg[3], E, Gc);
   }
   const double delta = utils::numeric(FLERR, arg[4], false, lmp);
-  double s0 = -1.0;
-  if (narg == 7) {
-    if (strcmp(arg[5], "critical_stretch") != 0)
-      error->all(FLERR, "Pair coeff for {}: unknown keyword '{}' (expected critical_stretch)", style,
-                 arg[5]);
-    s0 = utils::numeric(FLERR, arg[6], false, lmp);
-    if (s0 <= 0.0) error->all(FLERR, "Pair coeff for {}: critical_stretch must be > 0", style);
+  double s0 = -1.0, a = 0.0;
+  for (int iarg = 5; iarg + 1 < narg; iarg += 2) {
+    if (strcmp(arg[iarg], "critical_stretch") == 0) {
+      s0 = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (s0 <= 0.0) error->all(FLERR, "Pair coeff for {}: critical_stretch must be > 0", style);
+    } else if (strcmp(arg[iarg], "alpha") == 0) {
+      a = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (a < 0.0 || !std::isfinite(a))
+        error->all(FLERR, "Pair coeff for {}: alpha must be >= 0 (Silling-Askari: 0.25 is "
+                   "typical, 0 turns the rule off)", style);
+    } else {
+      error->all(FLERR, "Pair coeff for {}: unknown keyword '{}' (expected critical_stretch or "
+                 "alpha)", style, arg[iarg]);
+    }
   }
   if (E <= 0.0) error->all(FLERR, "Pair coeff for {}: Young's modulus E must be > 0", style);
   if (Gc <= 0.0)
@@ -237,6 +269,7 @@ void PairBBPD::coeff(int narg, char **arg)
       micromodulus[i][j] = 0.0;
       s0_user[i][j] = s0 > 0.0;
       critical_stretch[i][j] = s0 > 0.0 ? s0 : 0.0;
+      alpha[i][j] = a;
       setflag[i][j] = 1;
       count++;
     }
@@ -330,6 +363,7 @@ void PairBBPD::init_style()
   if (!bonds) error->all(FLERR, "Pair style {} could not create its bond-family fix", style);
   // a neighbour list only when contact is asked for: bonds need none
   if (contact) neighbor->add_request(this, NeighConst::REQ_FULL)->set_cutoff(contact_factor * spacing);
+  init_pmb();
 }
 
 double PairBBPD::init_one(int i, int j)
@@ -337,8 +371,10 @@ double PairBBPD::init_one(int i, int j)
   if (setflag[i][j] == 0)
     error->all(FLERR, "Pair style bbpd/{}: pair_coeff for types {} {} is missing (bbpd styles "
                "do not mix coefficients)", kernel.name, i, j);
-  // calibrated at every init, so that a re-issued pair_style (model, thickness, area) applies
-  micromodulus[i][j] = BBPD::micromodulus(kernel, model, youngs[i][j], horizon[i][j], geom);
+  // calibrated at every init, so that a re-issued pair_style (model, thickness, area) applies;
+  // compat pmb takes peri/pmb's c and s00 as given
+  if (!compat_pmb)
+    micromodulus[i][j] = BBPD::micromodulus(kernel, model, youngs[i][j], horizon[i][j], geom);
   if (!s0_user[i][j])
     critical_stretch[i][j] = std::isinf(fracture_energy[i][j])
         ? std::numeric_limits<double>::infinity()
@@ -354,6 +390,7 @@ double PairBBPD::init_one(int i, int j)
   micromodulus[j][i] = micromodulus[i][j];
   critical_stretch[j][i] = critical_stretch[i][j];
   s0_user[j][i] = s0_user[i][j];
+  alpha[j][i] = alpha[i][j];
   return family_cutoff(i, j);
 }
 
@@ -361,13 +398,24 @@ double PairBBPD::init_one(int i, int j)
 double PairBBPD::bond_coef(int itype, int jtype, double xi, double vj) const
 {
   const double delta = horizon[itype][jtype];
+  if (compat_pmb)    // peri/pmb: c V_j times its volume ramp near the horizon
+    return micromodulus[itype][jtype] * vj * BBPD::PMB::volume_scale(xi, delta, lattice_constant) / xi;
   return micromodulus[itype][jtype] * kernel.shape(xi / delta) * bond_volume(itype, jtype, xi, vj) / xi;
 }
 
 /* partner volume inside the horizon, C_v V_j (eq. 19) */
 double PairBBPD::bond_volume(int itype, int jtype, double xi, double vj) const
 {
+  if (compat_pmb) return vj;    // peri/pmb's damage counts whole volumes
   return BBPD::partial_volume(xi, horizon[itype][jtype], spacing) * vj;
+}
+
+/* is a pair at squared reference distance rsq in a family? */
+bool PairBBPD::in_family(int itype, int jtype, double rsq) const
+{
+  if (compat_pmb) return BBPD::PMB::in_family(rsq, horizon[itype][jtype]);
+  const double rc = family_cutoff(itype, jtype);
+  return rsq < rc * rc;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -388,7 +436,10 @@ void PairBBPD::compute(int eflag, int vflag)
     big += std::fabs(domain->xy) + std::fabs(domain->xz) + std::fabs(domain->yz);
     break_margin = BREAK_MARGIN_ULPS * DBL_EPSILON * big;
   }
-  if (!fracture_any) {
+  if (alpha_any) {
+    if (evflag) eval_alpha<1>();
+    else eval_alpha<0>();
+  } else if (!fracture_any) {
     if (evflag) eval<1, 0, 0>();
     else eval<0, 0, 0>();
   } else if (!multi_s0) {
@@ -399,6 +450,7 @@ void PairBBPD::compute(int eflag, int vflag)
     else eval<0, 1, 1>();
   }
   if (contact) compute_contact();
+  if (compat_pmb) compute_short_range();
 }
 
 /* is tag jtag an intact partner of local atom i? (asked only for atoms closer than the contact
@@ -663,7 +715,7 @@ void PairBBPD::report(FixBBPDBonds *fb)
       sum += fb->coef_of(i, k, fb->xi0_of(i, k));
     if (fb->nbond[i] > 0 && sum <= 0.0) limp = 1;
     const int it = atom->type[i];
-    if (contact)
+    if (contact || compat_pmb)
       sum += CONTACT_STIFFNESS_FACTOR * micromodulus[it][it] * atom->vfrac[i] / horizon[it][it];
     if (sum > 0.0) dtmin = MIN(dtmin, BBPD::stable_timestep_paper(atom->rmass[i], sum));
   }
@@ -700,11 +752,23 @@ void PairBBPD::report(FixBBPDBonds *fb)
                                        : fmt::format(" ({} {})", model == BBPD::Model::Bar1D ? "area" : "thickness", geom));
     for (int i = 1; i <= atom->ntypes; i++)
       for (int j = i; j <= atom->ntypes; j++)
+        if (compat_pmb)
+          mesg += fmt::format("  types {} {}: compat pmb: c = {:.8g}  horizon = {:.6g}  s00 = {:.8g}  "
+                              "alpha = {:.6g}\n", i, j, micromodulus[i][j], horizon[i][j],
+                              critical_stretch[i][j], alpha[i][j]);
+        else
         mesg += fmt::format("  types {} {}: E = {:.6g}  Gc = {:.6g}  horizon = {:.6g}  "
                             "micromodulus c0 = {:.8g}  critical_stretch s0 = {:.8g}{}\n",
                             i, j, youngs[i][j], fracture_energy[i][j], horizon[i][j],
                             micromodulus[i][j], critical_stretch[i][j],
                             s0_user[i][j] ? " (given)" : "");
+    if (compat_pmb)
+      mesg += fmt::format("  compat pmb: families |xi| <= delta, volume ramp and short-range forces "
+                          "below min({} |xi|, {} lc), lattice constant lc = {:.6g}\n",
+                          BBPD::PMB::SHORT_RANGE_BOND_FACTOR, BBPD::PMB::SHORT_RANGE_LATTICE_FACTOR,
+                          lattice_constant);
+    else if (alpha_any)
+      mesg += "  Silling-Askari critical stretch: s0 - alpha min(0, smallest stretch of the atom)\n";
     mesg += fmt::format("  grid spacing for the volume correction = {:.6g}{}\n", spacing,
                         spacing_user ? " (given)" : " (from atom volumes)");
     mesg += fmt::format("  bonds per atom: min {} mean {:.6g} max {}; total bonds {} ({} broken)\n",
@@ -739,6 +803,7 @@ void PairBBPD::write_restart_settings(FILE *fp)
   fwrite(&contact, sizeof(int), 1, fp);
   fwrite(&contact_factor, sizeof(double), 1, fp);
   fwrite(&compact_storage, sizeof(int), 1, fp);
+  fwrite(&compat_pmb, sizeof(int), 1, fp);
 }
 
 void PairBBPD::read_restart_settings(FILE *fp)
@@ -753,6 +818,7 @@ void PairBBPD::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &contact, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &contact_factor, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &compact_storage, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &compat_pmb, sizeof(int), 1, fp, nullptr, error);
   }
   MPI_Bcast(&m, 1, MPI_INT, 0, world);
   MPI_Bcast(&geom, 1, MPI_DOUBLE, 0, world);
@@ -762,6 +828,7 @@ void PairBBPD::read_restart_settings(FILE *fp)
   MPI_Bcast(&contact, 1, MPI_INT, 0, world);
   MPI_Bcast(&contact_factor, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&compact_storage, 1, MPI_INT, 0, world);
+  MPI_Bcast(&compat_pmb, 1, MPI_INT, 0, world);
   model = static_cast<BBPD::Model>(m);
 }
 
@@ -778,6 +845,7 @@ void PairBBPD::write_restart(FILE *fp)
         fwrite(&micromodulus[i][j], sizeof(double), 1, fp);
         fwrite(&critical_stretch[i][j], sizeof(double), 1, fp);
         fwrite(&s0_user[i][j], sizeof(int), 1, fp);
+        fwrite(&alpha[i][j], sizeof(double), 1, fp);
       }
     }
 }
@@ -796,8 +864,10 @@ void PairBBPD::read_restart(FILE *fp)
       if (me == 0) {
         utils::sfread(FLERR, v, sizeof(double), 5, fp, nullptr, error);
         utils::sfread(FLERR, &s0_user[i][j], sizeof(int), 1, fp, nullptr, error);
+        utils::sfread(FLERR, &alpha[i][j], sizeof(double), 1, fp, nullptr, error);
       }
       MPI_Bcast(v, 5, MPI_DOUBLE, 0, world);
+      MPI_Bcast(&alpha[i][j], 1, MPI_DOUBLE, 0, world);
       MPI_Bcast(&s0_user[i][j], 1, MPI_INT, 0, world);
       youngs[i][j] = v[0];
       fracture_energy[i][j] = v[1];
@@ -825,3 +895,7 @@ void *PairBBPD::extract(const char *name, int &dim)
   if (strcmp(name, "horizon") == 0) return (void *) horizon;
   return nullptr;
 }
+
+// the bond loop of the Silling-Askari path (pair_bbpd_pmb.cpp) sums rows with these
+template bool PairBBPD::row_force<0, 0, 0>(int, double *, const double *, double *);
+template bool PairBBPD::row_force<1, 0, 0>(int, double *, const double *, double *);

@@ -11,6 +11,8 @@
 #include "bbpd_kernel.h"
 #include "pair.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 struct RowTally;    // pair_bbpd_row.h
@@ -33,7 +35,8 @@ class PairBBPD : public Pair {
   void *extract(const char *, int &) override;
 
   // bond parameters for the bond-family fix
-  double family_cutoff(int itype, int jtype) const { return horizon[itype][jtype] + 0.5 * spacing; }
+  double family_cutoff(int itype, int jtype) const { return compat_pmb ? horizon[itype][jtype] : horizon[itype][jtype] + 0.5 * spacing; }
+  bool in_family(int itype, int jtype, double rsq) const;
   double bond_coef(int itype, int jtype, double xi0, double vj) const;
   double bond_volume(int itype, int jtype, double xi0, double vj) const;
   double grid_spacing_of(double vfrac) const;
@@ -72,6 +75,27 @@ class PairBBPD : public Pair {
   template <int EVFLAG, int FRACTURE, int MULTI>
   bool row_force(int i, double *fi, const double *s0row, double *acc);
   void coeff_from_file(const char *file, const char *material, double &E, double &Gc);
+
+  // peri/pmb's rules ('compat pmb') and the Silling-Askari critical stretch (pair_bbpd_pmb.cpp)
+ public:
+  int compat_pmb;             // families, volumes, short-range forces and breaking as peri/pmb
+  double lattice_constant;    // compat pmb: lc of the lattice command, as in peri/pmb
+ protected:
+  double **alpha;             // s0 = s00 - alpha * smallest stretch of the atom at the last step
+  int alpha_any;              // the Silling-Askari rule is in use (compat pmb or some alpha > 0)
+  int nmax_smin;
+  double *smin_new;           // smallest bond stretch of each local atom in this step
+  class FixBBPDAlpha *alpha_state;    // what a second evaluation of the same step needs
+  void coeff_pmb(int, char **);
+  void init_pmb();
+  template <int EVFLAG> void eval_alpha();
+  template <int EVFLAG> void broken_bond_force(int i, int k, double *fb, double *acc);
+  void compute_short_range();
+  // short-range candidates: pairs that can come in range before the atoms move half a
+  // candidate skin (atom i's partners: sr_pairs[sr_first[i] .. sr_first[i + 1]])
+  std::vector<int> sr_first, sr_pairs;
+  std::vector<double> sr_dist, sr_xhold;    // short-range distance of each candidate pair
+  void short_range_candidates(double skin);
 };
 
 }    // namespace LAMMPS_NS

@@ -1,0 +1,453 @@
+/* ----------------------------------------------------------------------
+   BBPD plugin: the rules of LAMMPS's peri/pmb in the bbpd pair styles.
+
+   'pair_style bbpd/constant MODEL compat pmb' takes 'pair_coeff I J c delta s00 alpha'
+   as peri/pmb does and follows its rules (bbpd_pmb_rules.h): families |xi| <= delta,
+   the volume ramp within lc/2 of the horizon, short-range forces between all atoms
+   closer than min(0.9 |xi|, 1.35 lc), and in each step: all intact bonds exert their
+   force, then a bond breaks when its stretch exceeds s00 - alpha max(smin_i, smin_j),
+   smin being the smallest stretch of each atom's bonds at the previous step.
+   Without compat, 'alpha A' applies the same rule (compression only) to every kernel,
+   with the usual bbpd order: a bond past its critical stretch exerts no force.
+   smin lives in the per-atom s0 of atom_style peri, which LAMMPS already sends to
+   ghost atoms every step and carries through migration and restart files; fix
+   bbpd/alpha keeps what a second evaluation of the same step needs (fix_bbpd_alpha.h).
+------------------------------------------------------------------------- */
+
+#include "pair_bbpd.h"
+#include "bbpd_compat.h"
+#include "bbpd_pmb_rules.h"
+#include "pair_bbpd_pmb_row.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_bbpd_alpha.h"
+#include "fix_bbpd_bonds.h"
+#include "lattice.h"
+#include "memory.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <utility>
+#include <vector>
+
+using namespace LAMMPS_NS;
+using namespace BBPD::PMB;
+
+/* ----------------------------------------------------------------------
+   compat pmb: pair_coeff I J c delta s00 alpha (peri/pmb's four numbers)
+------------------------------------------------------------------------- */
+
+void PairBBPD::coeff_pmb(int narg, char **arg)
+{
+  if (narg != 6)
+    error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: expected 'I J c delta s00 alpha' "
+               "(the numbers of pair_coeff peri/pmb), got {} arguments", narg);
+  if (!allocated) allocate();
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  const double c = utils::numeric(FLERR, arg[2], false, lmp);
+  const double delta = utils::numeric(FLERR, arg[3], false, lmp);
+  const double s00 = utils::numeric(FLERR, arg[4], false, lmp);
+  const double a = utils::numeric(FLERR, arg[5], false, lmp);
+  if (!(c > 0.0)) error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: c must be > 0");
+  if (!(delta > 0.0)) error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: delta must be > 0");
+  if (!(s00 > 0.0)) error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: s00 must be > 0");
+  if (!(a >= 0.0) || !std::isfinite(a))
+    error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: alpha must be >= 0");
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      youngs[i][j] = 0.0;    // not used: c is given
+      fracture_energy[i][j] = std::numeric_limits<double>::infinity();
+      horizon[i][j] = delta;
+      micromodulus[i][j] = c;
+      critical_stretch[i][j] = s00;
+      s0_user[i][j] = 1;
+      alpha[i][j] = a;
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
+/* part of init_style: the state fix and starting smin of the Silling-Askari rule, and the
+   lattice constant of compat pmb */
+void PairBBPD::init_pmb()
+{
+  alpha_any = compat_pmb;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j] && alpha[i][j] > 0.0) alpha_any = 1;
+  // the alpha loop decides breaking from each end's own image of its partner: in a periodic
+  // box the two ends could disagree for a bond across the boundary
+  const bool periodic = domain->xperiodic || domain->yperiodic ||
+      (domain->zperiodic && domain->dimension == 3);
+  if (alpha_any && periodic)
+    error->all(FLERR, "Pair style bbpd/{}: {} is not supported in a periodic box yet (bonds across "
+               "the boundary could break at one end only): use boundary s or f, or drop alpha",
+               kernel.name, compat_pmb ? "compat pmb" : "alpha");
+  if (alpha_any) {
+    alpha_state = dynamic_cast<FixBBPDAlpha *>(modify->get_fix_by_id("BBPD_ALPHA"));
+    if (!alpha_state)
+      alpha_state = dynamic_cast<FixBBPDAlpha *>(modify->add_fix("BBPD_ALPHA all bbpd/alpha"));
+    if (!alpha_state) error->all(FLERR, "Pair style bbpd: could not create its fix bbpd/alpha");
+  }
+  // before the families exist no atom has a bond: no smin yet (as peri/pmb)
+  if (alpha_any && !bonds->families_built())
+    for (int i = 0; i < atom->nlocal; i++) atom->s0[i] = NO_BOND_STRETCH;
+  if (!compat_pmb) return;
+
+  if (contact)
+    error->all(FLERR, "Pair style bbpd/constant: compat pmb brings peri/pmb's short-range forces; "
+               "drop 'contact yes'");
+  const Lattice *lat = domain->lattice;
+  if (!lat || lat->style == Lattice::NONE)
+    error->all(FLERR, "Pair style bbpd/constant compat pmb needs a lattice command before the run: "
+               "peri/pmb's volume ramp and short-range distance use its lattice constant");
+  if (lat->xlattice != lat->ylattice || lat->xlattice != lat->zlattice)
+    error->all(FLERR, "Pair style bbpd/constant compat pmb needs a lattice with the same constant "
+               "in x, y and z (as peri/pmb)");
+  lattice_constant = lat->xlattice;
+  // the short-range partners are found among the local and ghost atoms (no neighbour list):
+  // the ghosts cover every pair closer than the horizon
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j] && horizon[i][j] < SHORT_RANGE_LATTICE_FACTOR * lattice_constant)
+        error->all(FLERR, "Pair style bbpd/constant compat pmb: horizon {} for types {} {} is "
+                   "shorter than the short-range distance {} x lattice constant {}: use a horizon "
+                   "of at least {}", horizon[i][j], i, j, SHORT_RANGE_LATTICE_FACTOR,
+                   lattice_constant, SHORT_RANGE_LATTICE_FACTOR * lattice_constant);
+}
+
+/* ----------------------------------------------------------------------
+   bond forces and breaking with the Silling-Askari critical stretch
+------------------------------------------------------------------------- */
+
+template <int EVFLAG> void PairBBPD::eval_alpha()
+{
+  double **f = atom->f;
+  const double *xx = atom->x[0];
+  const int *type = atom->type;
+  double *smin = atom->s0;    // smallest bond stretch at the previous step, ghosts included
+  const int nlocal = atom->nlocal;
+  if (nlocal > nmax_smin) {
+    nmax_smin = atom->nmax;
+    memory->destroy(smin_new);
+    memory->create(smin_new, nmax_smin, "pair:smin_new");
+  }
+  const bool pmb = compat_pmb;
+  const bool clamp = !pmb;
+  const double *bxi0 = bonds->bxi0;    // null with bond/storage compact
+  // one s00 and alpha for every type pair: no per-bond lookups
+  bool multi = false;
+  const double s00_one = critical_stretch[1][1], alpha_one = alpha[1][1];
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = 1; j <= atom->ntypes; j++)
+      if (critical_stretch[i][j] != s00_one || alpha[i][j] != alpha_one) multi = true;
+  // a second evaluation of the last step (setup of a new run, read_restart): no breaking,
+  // no new smallest stretches, and the bonds that broke then act again
+  const bool replay = update->setupflag && update->ntimestep == alpha_state->last_step;
+  double **fbroken = alpha_state->fbroken;
+  double totals[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  int bad = -1;
+
+#if defined(_OPENMP)
+#pragma omp parallel num_threads(comm->nthreads) if (comm->nthreads > 1)
+#endif
+  {
+    double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+#if defined(_OPENMP)
+#pragma omp for schedule(static, 512)
+#endif
+    for (int i = 0; i < nlocal; i++) {
+      const int itype = type[i];
+      const int beg = bonds->bond_start[i];
+      const int *bj = bonds->bj;
+      const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
+      const double smin_i = smin[i];
+      auto stretch_of = [&](int k) {
+        const int j = bj[k];
+        const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
+        const double xi0 = bxi0 ? bxi0[k] : bonds->xi0_of(i, k);
+        double elong = std::sqrt(dx * dx + dy * dy + dz * dz) - xi0;
+        if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
+        return elong / xi0;
+      };
+      auto s0_of = [&](int k) {
+        const int j = bj[k];
+        if (!multi) return BBPD::PMB::critical_stretch(s00_one, alpha_one, smin_i, smin[j], clamp);
+        return BBPD::PMB::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
+                                           smin_i, smin[j], clamp);
+      };
+      double fi[3];
+      bool done = false;    // fi (and the tallies) summed by the fused kernel
+      if (replay) {
+        smin_new[i] = smin_i;
+      } else {
+        double snew = std::numeric_limits<double>::max();
+        bool broken = false;
+        const int n = bonds->nbond[i];
+#ifdef BBPD_AVX512
+        if (!multi && bxi0) {
+          double ax[LANES], ay[LANES], az[LANES];
+          RowTally tally;
+          broken = pmb ? row_force_stretch_avx512<EVFLAG, true, false>(
+                             xx, i, bj + beg, bxi0 + beg, bonds->bcoef + beg, n, smin, s00_one,
+                             alpha_one, &snew, ax, ay, az, &tally)
+                       : row_force_stretch_avx512<EVFLAG, false, true>(
+                             xx, i, bj + beg, bxi0 + beg, bonds->bcoef + beg, n, smin, s00_one,
+                             alpha_one, &snew, ax, ay, az, &tally);
+          if (!broken) {
+            lane_sum(ax, ay, az, fi);
+            if (EVFLAG) tally_lanes(i, tally, acc);
+            done = true;
+          }
+        } else
+#endif
+        if (!multi && bxi0) {
+          broken = pmb ? row_stretch<true, false>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew)
+                       : row_stretch<false, true>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew);
+        } else {
+          for (int k = beg; k < beg + n; k++) {
+            const double s = stretch_of(k);
+            snew = std::min(snew, s);
+            broken |= s > s0_of(k);
+          }
+        }
+        smin_new[i] = n > 0 ? snew : NO_BOND_STRETCH;
+        double fb[3] = {0.0, 0.0, 0.0};
+        if (broken) {
+          int k = beg;
+          while (k < beg + bonds->nbond[i]) {
+            if (!(stretch_of(k) > s0_of(k))) {
+              k++;
+              continue;
+            }
+            // peri/pmb applies the force of a bond in the step it breaks; bbpd drops it at once
+            if (pmb) broken_bond_force<EVFLAG>(i, k, fb, acc);
+            bonds->remove_bond(i, k);
+          }
+        }
+        if (pmb)
+          for (int m = 0; m < 3; m++) fbroken[i][m] = fb[m];
+      }
+      if (!done) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc);
+      if (pmb)
+        for (int m = 0; m < 3; m++) fi[m] += fbroken[i][m];
+      if (!std::isfinite(fi[0]) || !std::isfinite(fi[1]) || !std::isfinite(fi[2])) {
+#if defined(_OPENMP)
+#pragma omp critical(bbpd_nonfinite)
+#endif
+        if (bad < 0 || i < bad) bad = i;
+      }
+      f[i][0] += fi[0];
+      f[i][1] += fi[1];
+      f[i][2] += fi[2];
+    }
+    if (EVFLAG) {
+#if defined(_OPENMP)
+#pragma omp critical(bbpd_totals)
+#endif
+      for (int m = 0; m < 7; m++) totals[m] += acc[m];
+    }
+  }
+  if (bad >= 0) nonfinite_error(bad);
+  // the new smin takes effect at the next step, once sent to the ghosts
+  for (int i = 0; i < nlocal; i++) smin[i] = smin_new[i];
+  alpha_state->last_step = update->ntimestep;
+  if (EVFLAG) {
+    if (eflag_global) eng_vdwl += totals[0];
+    if (vflag_global)
+      for (int m = 0; m < 6; m++) virial[m] += totals[1 + m];
+  }
+}
+
+/* add the force density of bond k of atom i (about to break) to fb, in the order the
+   bonds break; tally its energy and virial as row_force does */
+template <int EVFLAG> void PairBBPD::broken_bond_force(int i, int k, double *fb, double *acc)
+{
+  const double *xx = atom->x[0];
+  const int j = bonds->bj[k];
+  const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
+               dz = xx[3 * j + 2] - xx[3 * i + 2];
+  const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+  const double xi0 = bonds->xi0_of(i, k);
+  const double coef = bonds->coef_of(i, k, xi0);
+  const double elong = r - xi0;
+  const double fbond = coef * elong / r;
+  fb[0] += fbond * dx;
+  fb[1] += fbond * dy;
+  fb[2] += fbond * dz;
+  if (EVFLAG) {
+    const double eng = 0.25 * coef * elong * elong;
+    const double vir[6] = {-0.5 * fbond * dx * dx, -0.5 * fbond * dy * dy, -0.5 * fbond * dz * dz,
+                           -0.5 * fbond * dx * dy, -0.5 * fbond * dx * dz, -0.5 * fbond * dy * dz};
+    acc[0] += eng;
+    if (eflag_atom) eatom[i] += eng;
+    for (int m = 0; m < 6; m++) {
+      acc[1 + m] += vir[m];
+      if (vflag_atom) vatom[i][m] += vir[m];
+    }
+  }
+}
+
+template void PairBBPD::eval_alpha<0>();
+template void PairBBPD::eval_alpha<1>();
+
+/* ----------------------------------------------------------------------
+   compat pmb: short-range forces between all atoms (bonded or not) closer than
+   min(0.9 |xi|, 1.35 lc), stiffness 15 c V_j / delta. Each atom sums its own pairs
+   in tag order, so the result does not depend on the decomposition.
+------------------------------------------------------------------------- */
+
+void PairBBPD::compute_short_range()
+{
+  double **x = atom->x, **f = atom->f;
+  const int *type = atom->type;
+  const tagint *tag = atom->tag;
+  const double *vfrac = atom->vfrac;
+  const double lc = lattice_constant;
+  const double rmax = SHORT_RANGE_LATTICE_FACTOR * lc;
+
+  const double *xx = x[0];
+  double horizon_min = std::numeric_limits<double>::infinity();
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) horizon_min = std::min(horizon_min, horizon[i][j]);
+  // candidate pairs must stay within the horizon, which the ghost atoms cover
+  const double skin = std::min(SHORT_RANGE_CANDIDATE_SKIN * lc, horizon_min - rmax);
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  bool rebuild = neighbor->ago == 0 || sr_xhold.size() != 3 * (size_t) nall ||
+      sr_first.size() != (size_t) nlocal + 1;
+  for (int i = 0; !rebuild && i < nall; i++) {
+    const double dx = xx[3 * i] - sr_xhold[3 * i], dy = xx[3 * i + 1] - sr_xhold[3 * i + 1],
+                 dz = xx[3 * i + 2] - sr_xhold[3 * i + 2];
+    rebuild = dx * dx + dy * dy + dz * dz > 0.2 * skin * skin;    // under half the skin, with room for round-off
+  }
+  if (rebuild) short_range_candidates(std::max(skin, 0.0));
+
+  std::vector<std::pair<tagint, int>> close;
+  for (int i = 0; i < nlocal; i++) {
+    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
+    close.clear();
+    for (int m = sr_first[i]; m < sr_first[i + 1]; m++) {
+      const int j = sr_pairs[m];
+      const double d = sr_dist[m];
+      const double dx = xi - xx[3 * j], dy = yi - xx[3 * j + 1], dz = zi - xx[3 * j + 2];
+      const double rsq = dx * dx + dy * dy + dz * dz;
+      if (rsq >= d * d * (1.0 + 1.0e-12)) continue;    // the exact test follows
+      if (std::sqrt(rsq) < d) close.emplace_back(tag[j], m);
+    }
+    // sum in tag order: the candidates' order depends on the domain decomposition
+    std::sort(close.begin(), close.end());
+    for (const auto &c : close) {
+      const int j = sr_pairs[c.second];
+      const double dx = xi - xx[3 * j], dy = yi - xx[3 * j + 1], dz = zi - xx[3 * j + 2];
+      const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const int itype = type[i], jtype = type[j];
+      const double dr = r - sr_dist[c.second];
+      // written as in peri/pmb
+      const double rk = (SHORT_RANGE_STIFFNESS_FACTOR * micromodulus[itype][jtype] * vfrac[j]) *
+          (dr / horizon[itype][jtype]);
+      const double fpair = r > 0.0 ? -(rk / r) : 0.0;
+      f[i][0] += dx * fpair;
+      f[i][1] += dy * fpair;
+      f[i][2] += dz * fpair;
+      if (evflag) {
+        const double e = 0.25 * rk * dr;    // half of the pair's energy: the other end adds the rest
+        if (eflag_global) eng_vdwl += e;
+        if (eflag_atom) eatom[i] += e;
+        const double v[6] = {0.5 * fpair * dx * dx, 0.5 * fpair * dy * dy, 0.5 * fpair * dz * dz,
+                             0.5 * fpair * dx * dy, 0.5 * fpair * dx * dz, 0.5 * fpair * dy * dz};
+        for (int m = 0; m < 6; m++) {
+          if (vflag_global) virial[m] += v[m];
+          if (vflag_atom) vatom[i][m] += v[m];
+        }
+      }
+    }
+  }
+}
+
+/* candidates for the short-range force: the pairs of a local atom and a local or ghost
+   atom within their short-range distance plus 'skin', found by binning. No atom moves half
+   the skin before the next rebuild, so every pair in range is a candidate. */
+void PairBBPD::short_range_candidates(double skin)
+{
+  const double *xx = atom->x[0];
+  double **x0 = atom->x0;
+  const double lc = lattice_constant;
+  const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
+  const double reach = SHORT_RANGE_LATTICE_FACTOR * lc + skin;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  sr_xhold.assign(xx, xx + 3 * nall);
+  sr_first.assign(nlocal + 1, 0);
+  sr_pairs.clear();
+  sr_dist.clear();
+  if (nall == 0) return;
+
+  // bins of at least the reach, coarser if the atoms are spread out (flying fragments)
+  double lo[3], hi[3];
+  for (int m = 0; m < 3; m++) lo[m] = hi[m] = xx[m];
+  for (int i = 0; i < nall; i++)
+    for (int m = 0; m < 3; m++) {
+      lo[m] = std::min(lo[m], xx[3 * i + m]);
+      hi[m] = std::max(hi[m], xx[3 * i + m]);
+    }
+  for (int m = 0; m < 3; m++)
+    if (!std::isfinite(hi[m] - lo[m]))
+      error->one(FLERR, "Pair bbpd/constant compat pmb: non-finite atom positions at step {}: "
+                 "the run is unstable, reduce the timestep", update->ntimestep);
+  double b = reach;
+  int nb[3];
+  auto nbins = [&]() {
+    for (int m = 0; m < 3; m++) nb[m] = static_cast<int>(std::min((hi[m] - lo[m]) / b, 1.0e6)) + 1;
+    return (double) nb[0] * nb[1] * nb[2];
+  };
+  while (nbins() > 4.0 * nall + 64.0) b *= 1.5;
+  auto cell = [&](int i, int m) {
+    return std::min(nb[m] - 1, static_cast<int>((xx[3 * i + m] - lo[m]) / b));
+  };
+  std::vector<int> start((size_t) nb[0] * nb[1] * nb[2] + 1, 0), bin_of(nall), atoms(nall);
+  for (int i = 0; i < nall; i++) {
+    bin_of[i] = (cell(i, 0) * nb[1] + cell(i, 1)) * nb[2] + cell(i, 2);
+    start[bin_of[i] + 1]++;
+  }
+  for (size_t c = 1; c < start.size(); c++) start[c] += start[c - 1];
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (int i = 0; i < nall; i++) atoms[fill[bin_of[i]]++] = i;
+
+  for (int i = 0; i < nlocal; i++) {
+    sr_first[i] = (int) sr_pairs.size();
+    const int c[3] = {cell(i, 0), cell(i, 1), cell(i, 2)};
+    for (int ax = std::max(c[0] - 1, 0); ax <= std::min(c[0] + 1, nb[0] - 1); ax++)
+      for (int ay = std::max(c[1] - 1, 0); ay <= std::min(c[1] + 1, nb[1] - 1); ay++)
+        for (int az = std::max(c[2] - 1, 0); az <= std::min(c[2] + 1, nb[2] - 1); az++) {
+          const int bin = (ax * nb[1] + ay) * nb[2] + az;
+          for (int a = start[bin]; a < start[bin + 1]; a++) {
+            const int j = atoms[a];
+            if (j == i) continue;
+            const double dx = xx[3 * i] - xx[3 * j], dy = xx[3 * i + 1] - xx[3 * j + 1],
+                         dz = xx[3 * i + 2] - xx[3 * j + 2];
+            const double rsq = dx * dx + dy * dy + dz * dz;
+            if (rsq >= reach * reach) continue;
+            double d0[3] = {x0[i][0] - x0[j][0], x0[i][1] - x0[j][1], x0[i][2] - x0[j][2]};
+            if (periodic) BBPDCompat::minimum_image(domain, d0);
+            const double d =
+                short_range_distance(std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), lc);
+            if (std::sqrt(rsq) >= d + skin) continue;
+            sr_pairs.push_back(j);
+            sr_dist.push_back(d);
+          }
+        }
+  }
+  sr_first[nlocal] = (int) sr_pairs.size();
+}
