@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Which stress for compute bbpd/jintegral: Hooke's law of the displacement gradient, or the
 stress of the bond forces?
 
@@ -14,7 +15,7 @@ Usage: bench/jintegral_stress.py [--model plane/stress|plane/strain]
 Prints the errors of J, K_I, K_II in % for both stresses.
 """
 import argparse
-import sys
+import importlib.util
 import tempfile
 from pathlib import Path
 
@@ -22,10 +23,12 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "python"))
-sys.path.insert(0, str(ROOT / "tests" / "lammps"))
-from bbpd.runner import run_lammps  # noqa: E402
-import test_jintegral as scene  # noqa: E402
+from bbpd.runner import run_lammps
+# the scenes of the J-integral tests, loaded from their file (not an importable package)
+_spec = importlib.util.spec_from_file_location("jintegral_scenes",
+                                               ROOT / "tests" / "lammps" / "test_jintegral.py")
+scene = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(scene)
 
 ANNULI = ((6.0, 15.0), (10.0, 25.0), (15.0, 35.0))
 GRADIENT_RADIUS = 2.01    # the compute's default, in dx

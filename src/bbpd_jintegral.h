@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
    BBPD: the math of compute bbpd/jintegral, with no LAMMPS dependency.
 

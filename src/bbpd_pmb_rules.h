@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
    BBPD plugin: the rules of LAMMPS's pair style peri/pmb (src/PERI/pair_peri_pmb.cpp,
    fix_peri_neigh.cpp; Parks et al., Comput. Phys. Commun. 179 (2008) 777), used by

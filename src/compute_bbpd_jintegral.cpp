@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    BBPD plugin: compute bbpd/jintegral (see header and doc/compute_bbpd_jintegral.rst)
 ------------------------------------------------------------------------- */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
    BBPD plugin: compute bbpd/jintegral -- dynamic J-integral of a stationary
    crack and the stress intensity factors K_I, K_II from it, by the domain

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    BBPD plugin: state of the Silling-Askari bond loop (see fix_bbpd_alpha.h)
 ------------------------------------------------------------------------- */

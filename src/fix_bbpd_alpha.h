@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
    BBPD plugin: what the Silling-Askari bond loop (compat pmb, alpha) needs to evaluate
    a time step again, e.g. at the setup after read_restart or of a second 'run'.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    BBPD plugin: the rules of LAMMPS's peri/pmb in the bbpd pair styles.
 

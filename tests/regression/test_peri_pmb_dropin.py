@@ -3,7 +3,7 @@ run with peri/pmb and, ported, with 'bbpd/constant 3d compat pmb'
 (examples/peri-pmb-dropin): mean damage and the number of atoms with damage > 0.5 at
 steps 500 and 1000 agree within 2 %.
 
-Default suite: the cylinder at 0.8 of its size (1,773 atoms; ~10 s for both runs), where
+Default suite: the cylinder at 0.8 of its size (1,773 atoms), where
 the indenter cracks it partly (mean damage 0.30 at step 500, 0.68 at step 1000); the
 original size (3,487 atoms) is marked slow. The loop-time ratio is printed, not asserted.
 """

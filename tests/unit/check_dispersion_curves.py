@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Check the CSV files of bbpd-dispersion-curves against eq. 31 written out here.
 
 usage: check_dispersion_curves.py DIR M DELTA DT POINTS

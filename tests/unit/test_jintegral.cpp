@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* bbpd_jintegral.h: Williams fields against each other (displacement, gradient,
    Hooke, the printed stresses), the weight q, the least-squares gradient, and
    the domain integrals on a fine grid: J = (K_I^2 + K_II^2)/E' and both K from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* bbpd_pmb_rules.h: peri/pmb's volume ramp, short-range distance and the
    Silling-Askari critical stretch. */
 
