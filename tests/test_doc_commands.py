@@ -52,7 +52,7 @@ def shell_blocks():
                 yield pytest.param(body, id=f"{path.relative_to(ROOT)}:{line}")
 
 
-INLINE_COMMAND = re.compile(r"^(\w+=\S+ )*(tools/|bench/|/usr/bin/python3 |mpirun |cmake )")
+INLINE_COMMAND = re.compile(r"^(\w+=\S+ )*(tools/|perf/|/usr/bin/python3 |mpirun |cmake )")
 
 
 def inline_commands():

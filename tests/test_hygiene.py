@@ -9,9 +9,9 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 SPDX = "SPDX-License-Identifier: GPL-2.0-or-later"
-SPDX_DIRS = ("src", "tests/unit", "python", "tools", "bench", "examples/python")
+SPDX_DIRS = ("src", "tests/unit", "python", "tools", "perf", "examples/python")
 SOURCE = (".cpp", ".h", ".py", ".toml", ".txt", ".sh", "")    # "" = the scripts in tools/
-HYGIENE_DIRS = ("src", "tests", "python", "tools", "bench", "doc/conf.py", "doc/_ext",
+HYGIENE_DIRS = ("src", "tests", "python", "tools", "perf", "doc/conf.py", "doc/_ext",
                 "examples/python", "CMakeLists.txt")
 
 

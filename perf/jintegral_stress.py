@@ -11,7 +11,7 @@ this script evaluates the static domain integral and the interaction integral of
 bbpd_jintegral.h in NumPy, once with Hooke's law of the least-squares gradient (what the
 compute does; the numbers must match it) and once with the bond-force stress, on three annuli.
 
-Usage: bench/jintegral_stress.py [--model plane/stress|plane/strain]
+Usage: perf/jintegral_stress.py [--model plane/stress|plane/strain]
 Prints the errors of J, K_I, K_II in % for both stresses.
 """
 import argparse

@@ -7,7 +7,7 @@ Prints the pair time per step, the time per directed bond evaluation (should not
 or m), and the setup time (bond families + caches) per bond: all should stay flat if the
 cost is linear in the number of bonds.
 
-Usage (from the repository root): tools/python bench/scaling.py [--sizes 1e4,1e5,1e6] [--ms 3,5,8] [--steps 20]
+Usage (from the repository root): tools/python perf/scaling.py [--sizes 1e4,1e5,1e6] [--ms 3,5,8] [--steps 20]
 """
 import argparse
 import re

@@ -7,7 +7,7 @@ on the left layer, 200 steps. peri/pmb's family is |xi| <= delta_pmb = 5.001 mm;
 |xi| < delta + dx/2, so delta = 4.5011 mm gives the same bonds. peri/pmb's c is set to our
 constant-kernel c0 (same force law up to the partial-volume weights).
 
-Usage (from the repository root): tools/python bench/pair_vs_pmb.py [--steps 200] [--nprocs 1] [--scenes plate,block]
+Usage (from the repository root): tools/python perf/pair_vs_pmb.py [--steps 200] [--nprocs 1] [--scenes plate,block]
 Prints ms/step of the pair computation, undirected bond updates per second, bytes per
 bond of our bond storage, and the ratio pmb/ours.
 """
