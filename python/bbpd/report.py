@@ -182,6 +182,9 @@ def job_list(full=False):
         specs.append(make_spec("kw", k, dx, "bbpd.benchmarks.kalthoff_winkler:run",
                                {"kernel": k, "dx": dx, "nprocs": 1}, kw_in,
                                ESTIMATE_S.get(("kw", dx), 600.0)))
+    if full:    # the Kalthoff-Winkler loading study (about 1 h on 2 cores)
+        from bbpd.benchmarks import kalthoff_winkler_study
+        specs += kalthoff_winkler_study.jobs()
     return specs
 
 
@@ -686,6 +689,11 @@ def kw_section(specs, results, figdir, notes):
             "table": md_table(header, rows), "text": " ".join(text), "figures": figs}
 
 
+def kw_study_section(specs, results, figdir, notes):
+    from bbpd.benchmarks import kalthoff_winkler_study
+    return kalthoff_winkler_study.section(specs, results, figdir, notes)
+
+
 # --------------------------------------------------------------------------- provenance
 
 def lammps_build():
@@ -747,7 +755,7 @@ def write_report(out, specs, results, meta, start):
     notes = []
     sections = []
     builders = (("dispersion", dispersion_section), ("mode1", mode1_section),
-                ("mode2", mode2_section), ("kw", kw_section))
+                ("mode2", mode2_section), ("kw", kw_section), ("kwstudy", kw_study_section))
     for bench, build in builders:
         mine = [s for s in specs if s.bench == bench]
         try:

@@ -1,0 +1,162 @@
+"""Kalthoff-Winkler loading variables and study (examples/kalthoff-winkler, "Loading study").
+
+The input script's loading variables (v0, tramp, thold, layer) must leave the paper's setup
+unchanged bit for bit when left at their defaults, and each must move the loaded layer as
+documented.  The study's three angle definitions are checked on drawn cracks; one study case
+runs at dx = 2 mm in the default suite, one at 1 mm under -m slow.
+"""
+import math
+
+import numpy as np
+import pytest
+
+from bbpd.benchmarks import kalthoff_winkler as kw
+from bbpd.benchmarks import kalthoff_winkler_study as kws
+
+DX = 2.0e-3
+DT = 8.7e-8 * DX / 1.0e-3     # the script's default time step at 2 mm
+
+# The paper's loading as the script wrote it before it had loading variables: the layer is
+# delta thick, its velocity 32 m/s from t = 0 to the end, one run.
+PAPER_LOADING = [
+    ("region          impact block INF ${layer} ${ylo} ${yhi} INF INF units box",
+     "region          impact block INF ${delta} ${ylo} ${yhi} INF INF units box"),
+    ('if "${tramp} > 0.0" then &\n'
+     '   "fix             impact impact move variable v_xramp NULL NULL v_vramp NULL NULL '
+     'units box" &\nelse &\n'
+     '   "fix             impact impact move linear ${v0} NULL 0.0 units box"\n',
+     "fix             impact impact move linear 32.0 NULL 0.0 units box\n"),
+    ('if "${thold} < ${tend} && ${nhold} < ${nsteps}" then &\n'
+     '   "run             ${nhold}" &\n   "unfix           impact" &\n'
+     '   "fix             release impact nve" &\n   "run             ${nfree}" &\nelse &\n'
+     '   "run             ${nsteps}"\n',
+     "run             ${nsteps}\n"),
+]
+OUTPUTS = ("tips.dat", "damage.dump", "final.dump")
+
+
+def run(tmp_path, name, script=None, **variables):
+    from bbpd.runner import run_lammps
+    work = tmp_path / name
+    v = {"kernel": "gaussian", "dx": repr(DX), "tend": "20e-6"}
+    v.update({k: str(x) for k, x in variables.items()})
+    run_lammps(script if script is not None else str(kw.EXAMPLE), work, vars=v)
+    return work
+
+
+def final_state(work):
+    _, d = kw.read_dump(work / "final.dump")[-1]
+    return d
+
+
+def layer_displacement(d, x_column):
+    """x displacement of the atoms of one grid column between the notches."""
+    sel = (np.abs(d["f_ref[1]"] - x_column) < 1e-6) & (np.abs(d["f_ref[2]"] - 0.1) < 0.02)
+    assert sel.sum() > 5
+    return d["x"][sel] - d["f_ref[1]"][sel]
+
+
+def test_defaults_are_the_papers_loading_bit_for_bit(tmp_path):
+    """Default variables, and the same values given explicitly, give the bits of the script
+    with the paper's loading written out (fix move linear 32, layer delta, one run)."""
+    text = kw.EXAMPLE.read_text()
+    paper = text
+    for new, old in PAPER_LOADING:
+        assert new in paper, f"the input script no longer holds: {new!r}"
+        paper = paper.replace(new, old)
+    runs = [run(tmp_path, "paper", script=paper, tend="30e-6"),
+            run(tmp_path, "default", tend="30e-6"),
+            run(tmp_path, "explicit", tend="30e-6", v0=32, tramp=0, thold="30e-6",
+                layer=5 * DX)]
+    for name in OUTPUTS:
+        ref = (runs[0] / name).read_bytes()
+        assert len(ref) > 1000
+        for w in runs[1:]:
+            assert (w / name).read_bytes() == ref, (w.name, name)
+
+
+def test_loading_variables_move_the_layer_as_documented(tmp_path):
+    tend_steps = math.ceil(20e-6 / DT)
+    t_end = tend_steps * DT
+    x1, x2 = 0.5 * DX, 1.5 * DX                 # the first two columns
+    held = final_state(run(tmp_path, "held"))
+    assert layer_displacement(held, x2) == pytest.approx(32.0 * t_end, rel=1e-12)
+
+    v16 = final_state(run(tmp_path, "v16", v0=16))
+    assert layer_displacement(v16, x2) == pytest.approx(16.0 * t_end, rel=1e-12)
+
+    # linear rise over tramp: x - x0 = v0 (t - tramp/2) after the ramp
+    ramp = final_state(run(tmp_path, "ramp", tramp="4e-6"))
+    assert layer_displacement(ramp, x2) == pytest.approx(32.0 * (t_end - 2e-6), rel=1e-12)
+
+    # one column loaded: the second column is free and lags behind
+    thin = final_state(run(tmp_path, "thin", layer=DX))
+    assert layer_displacement(thin, x1) == pytest.approx(32.0 * t_end, rel=1e-12)
+    assert layer_displacement(thin, x2).max() < 0.99 * 32.0 * t_end
+
+    # released at thold: identical to the held run up to the release, then the layer is free
+    # (it runs on, slower than v0: the compressed plate pushes it back)
+    rel_dir = run(tmp_path, "release", thold="10e-6")
+    held_dir = tmp_path / "held"
+    nhold = round(10e-6 / DT)
+    t_rel, t_held = np.loadtxt(rel_dir / "tips.dat"), np.loadtxt(held_dir / "tips.dat")
+    assert t_rel.shape == t_held.shape and t_rel[-1, 0] == tend_steps
+    assert np.array_equal(t_rel[:nhold + 1], t_held[:nhold + 1])
+    ux = layer_displacement(final_state(rel_dir), x2)
+    assert (ux > 32.0 * nhold * DT).all()
+    assert (ux < 32.0 * t_end - 1e-6).all()
+
+
+@pytest.mark.parametrize("angle_deg", [55.0, 70.0])
+def test_three_angles_on_a_drawn_crack(angle_deg):
+    """A straight drawn crack: the initial, fit and chord angles all give the drawn angle."""
+    dx, L = 1.0e-3, 60.0e-3
+    g = dict(dx=dx, delta=5 * dx, a=0.050, ylo=0.075, yhi=0.125, Lx=0.100, Ly=0.200)
+    i, j = (m.ravel() for m in np.mgrid[0:100, 0:200])
+    x, y = (i + 0.5) * dx, (j + 0.5) * dx
+    phi = 0.0 * x
+    th = math.radians(angle_deg)
+    for yn, sign in ((g["ylo"], -1.0), (g["yhi"], 1.0)):
+        s = (x - g["a"]) * math.cos(th) + sign * (y - yn) * math.sin(th)
+        d = abs(-(x - g["a"]) * math.sin(th) + sign * (y - yn) * math.cos(th))
+        phi[((x < g["a"]) & (abs(y - yn) < dx)) | ((s > 0) & (s <= L) & (d < 0.75 * dx))] = 0.44
+    ang = kws.angles_of(x, y, phi, g)
+    for side in ("lo", "hi"):
+        for definition in kws.ANGLE_DEFS:
+            assert ang[side][definition] == pytest.approx(angle_deg, abs=1.5), definition
+        assert ang[side]["length_mm"] == pytest.approx(L * 1e3, abs=1.5)
+
+
+def test_three_angles_tell_a_kinked_crack():
+    """A crack that leaves the tip at 45 deg for 15 mm and then runs at 75 deg: the initial
+    angle sees the first leg, the chord lies between, the 10-50 mm fit near the second leg."""
+    dx = 0.5e-3
+    g = dict(dx=dx, delta=5 * dx, a=0.050, ylo=0.075, yhi=0.125, Lx=0.100, Ly=0.200)
+    i, j = (m.ravel() for m in np.mgrid[0:200, 0:400])
+    x, y = (i + 0.5) * dx, (j + 0.5) * dx
+    phi = 0.0 * x
+    legs = [(math.radians(45.0), 15e-3), (math.radians(75.0), 45e-3)]
+    for yn, sign in ((g["ylo"], -1.0), (g["yhi"], 1.0)):
+        phi[(x < g["a"]) & (abs(y - yn) < dx)] = 0.44
+        p0 = np.array([g["a"], yn])
+        for th, length in legs:
+            e = np.array([math.cos(th), sign * math.sin(th)])
+            s = (x - p0[0]) * e[0] + (y - p0[1]) * e[1]
+            d = abs(-(x - p0[0]) * e[1] + (y - p0[1]) * e[0])
+            phi[(s > 0) & (s <= length) & (d < 0.75 * dx)] = 0.44
+            p0 = p0 + length * e
+    ang = kws.angles_of(x, y, phi, g)
+    for side in ("lo", "hi"):
+        a = ang[side]
+        assert a["initial"] == pytest.approx(45.0, abs=2.0)
+        end = np.array(legs[0][1] * np.array([math.cos(legs[0][0]), math.sin(legs[0][0])])
+                       + legs[1][1] * np.array([math.cos(legs[1][0]), math.sin(legs[1][0])]))
+        assert a["chord"] == pytest.approx(math.degrees(math.atan2(end[1], end[0])), abs=1.0)
+        assert 45.0 + 5.0 < a["chord"] < a["fit"] < 75.0 + 1.0
+
+
+def test_peak_speed():
+    t = np.arange(0.0, 40.0, 1.0)                      # us
+    L = np.where(t < 20.0, 1000.0 * t, 20000.0 + 2000.0 * (t - 20.0)) * 1e-6   # m
+    assert kws.peak_speed(t, L) == pytest.approx(2000.0, rel=1e-9)
+    assert kws.C_R / kws.C_S == pytest.approx(0.9194, abs=1e-4)     # nu = 1/4
