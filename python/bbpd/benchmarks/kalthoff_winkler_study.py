@@ -9,7 +9,8 @@ the definitions below (examples/kalthoff-winkler/README.md, "Loading study").
 angles        all from the notch direction (+x) towards the outer side, evaluated on the
               damage snapshot at T_EVAL_US (the paper's Fig. 14) and at the end of the run:
   initial     principal axis of the crack atoms 3-15 mm from the notch tip (the direction in
-              which the crack leaves the tip, past the tip's own horizon)
+              which the crack leaves the tip, past the tip's own horizon), on the first
+              snapshot in which the crack is 15 mm long (the end snapshot if it never is)
   fit         principal axis of the crack atoms 10-50 mm from the tip (kalthoff_winkler.py)
   chord       direction of the line from the notch tip to the crack tip (the crack atom
               farthest from the notch tip): what a protractor on a photograph measures
@@ -58,6 +59,7 @@ SPEED_WINDOW_US = 5.0
 ANGLE_TARGET_DEG, ANGLE_TOL_DEG = 70.0, 2.0
 INIT_WINDOW_US = (20.0, 22.0)       # the paper's initiation times 20.0-21.7 us
 ANGLE_DEFS = ("initial", "fit", "chord")
+ARREST_GROWTH_DX, ARREST_US = 2.0, 10.0   # a crack that grows < 2 dx in the last 10 us stopped
 
 # The loadings: name -> (description, input-script variables).  "layer": "dx" means one column
 # of atoms (x < dx).  Every case runs to TEND.
@@ -170,8 +172,24 @@ def analyse(workdir):
             res[f"{d}_{name}_deg"] = mean_or_none([ang[sd][d] for sd in ("lo", "hi")])
         res[f"length_{name}_mm"] = mean_or_none([ang[sd]["length_mm"] for sd in ("lo", "hi")])
 
-    # when a crack tip first comes within delta of the plate boundary
+    # the initial angle on the first snapshot in which the crack reaches past INITIAL_RANGE
+    # (later damage, e.g. the far-edge crack joining the path, cannot change it)
     tr = res["trajectory"]
+    res["initial_deg"], res["t_initial_us"] = None, None
+    initial, when = {}, {}
+    for side, yn, sign in (("lo", g["ylo"], -1.0), ("hi", g["yhi"], 1.0)):
+        L = np.array(tr["L_" + side])
+        past = np.nonzero(L >= INITIAL_RANGE[1])[0]
+        k = int(past[0]) if len(past) else len(snaps) - 1
+        s = snaps[k][1]
+        cr = kw.notch_cracks(s["f_ref[1]"], s["f_ref[2]"], s["c_dmg"], g)
+        initial[side] = kw.crack_angle(s["f_ref[1]"], s["f_ref[2]"], cr[side], (g["a"], yn),
+                                       sign, fit_range=INITIAL_RANGE)
+        when[side] = times[k]
+    res["initial_deg"] = mean_or_none(list(initial.values()))
+    res["t_initial_us"] = min(when.values())
+
+    # when a crack tip first comes within delta of the plate boundary
     res["t_edge_us"] = None
     for t, plo, phi_ in zip(tr["t_us"], tr["lo"], tr["hi"]):
         near = [min(p[0], res["Lx"] - p[0], p[1], res["Ly"] - p[1]) < res["delta"]
@@ -180,6 +198,13 @@ def analyse(workdir):
             res["t_edge_us"] = t
             break
     Ls = 0.5 * (np.array(tr["L_lo"]) + np.array(tr["L_hi"]))
+    # arrest: the crack grew by less than ARREST_GROWTH over the last ARREST_US of the run
+    t_all = np.array(tr["t_us"])
+    near_end = np.nonzero((Ls >= Ls[-1] - ARREST_GROWTH_DX * res["dx"]) & (Ls > 0))[0]
+    t_stop = float(t_all[near_end[0]]) if len(near_end) else float(t_all[-1])
+    res["t_arrest_us"] = (t_stop if res["t_edge_us"] is None and Ls[-1] > 0
+                          and t_all[-1] - t_stop >= ARREST_US else None)
+    res["length_end_mm"] = float(Ls[-1] * 1e3)
     res["speed_peak"] = peak_speed(tr["t_us"], Ls)
     res["speed_over_cR"] = None if res["speed"] is None else res["speed"] / C_R
     res["speed_peak_over_cR"] = None if res["speed_peak"] is None else res["speed_peak"] / C_R
@@ -200,8 +225,13 @@ def analyse(workdir):
 
 # ---------------------------------------------------------------------------- verdicts
 
-def reaches_angle(res, definition, when="t70"):
-    a = res.get(f"{definition}_{when}_deg")
+def angle(res, definition):
+    """The angle of one definition as the verdicts use it: initial, or fit/chord at 70 us."""
+    return res.get("initial_deg") if definition == "initial" else res.get(f"{definition}_t70_deg")
+
+
+def reaches_angle(res, definition):
+    a = angle(res, definition)
     return a is not None and abs(a - ANGLE_TARGET_DEG) <= ANGLE_TOL_DEG
 
 
@@ -225,7 +255,7 @@ def conclusion(results):
 
     def name(h):
         return f"{h[0]} ({h[1]}, {h[2] * 1e3:g} mm)"
-    text.append(f"Angle 70 +- 2 deg at {T_EVAL_US:.0f} us: "
+    text.append(f"Angle 70 +- 2 deg (initial; fit and chord at {T_EVAL_US:.0f} us): "
                 + ("; ".join(f"{name(h)} by the {', '.join(h[3])} angle" for h in ang_only)
                    if ang_only else "no run, by any of the three definitions") + ".")
     text.append(f"Initiation in {INIT_WINDOW_US[0]:.0f}-{INIT_WINDOW_US[1]:.0f} us: "
@@ -240,8 +270,8 @@ def conclusion(results):
             continue
         parts = []
         for d in ANGLE_DEFS:
-            miss = {k: abs(r[f"{d}_t70_deg"] - ANGLE_TARGET_DEG) for k, r in same.items()
-                    if r.get(f"{d}_t70_deg") is not None}
+            miss = {k: abs(angle(r, d) - ANGLE_TARGET_DEG) for k, r in same.items()
+                    if angle(r, d) is not None}
             if miss:
                 best = min(miss.values())
                 close = [k for k in kw.KERNELS if k in miss and miss[k] < best + 0.05]
@@ -286,7 +316,7 @@ def f(v, spec):
 
 TABLE_HEADER = ["loading", "kernel", "dx (mm)", "first bond (us)", "damage band (us)",
                 "initial (deg)", "fit 10-50 mm (deg)", "chord (deg)", "fit at end (deg)",
-                "chord at end (deg)", "length at 70 us (mm)", "crack at edge (us)",
+                "chord at end (deg)", "length at 70 us (mm)", "crack stops (us)",
                 "speed / c_R (mean, peak)", "far-edge crack (us; y mm)", "tip mismatch (mm)",
                 "run time (s)"]
 
@@ -299,13 +329,22 @@ def table_rows(results):
             y = r.get("far_edge_y_mm")
             far = f(r["t_far_edge_us"], ".0f") + (f"; {y[0]:.0f}-{y[1]:.0f}" if y else "")
         rows.append([case, k, f"{dx * 1e3:g}", f(r["t_init_us"], ".1f"), f(r["t_band_us"], ".1f"),
-                     f(r.get("initial_t70_deg"), ".1f"), f(r.get("fit_t70_deg"), ".1f"),
+                     f(r.get("initial_deg"), ".1f"), f(r.get("fit_t70_deg"), ".1f"),
                      f(r.get("chord_t70_deg"), ".1f"), f(r.get("fit_end_deg"), ".1f"),
                      f(r.get("chord_end_deg"), ".1f"), f(r.get("length_t70_mm"), ".0f"),
-                     f(r.get("t_edge_us"), ".0f"),
+                     stops(r),
                      f"{f(r.get('speed_over_cR'), '.2f')}, {f(r.get('speed_peak_over_cR'), '.2f')}",
                      far, f"{r['symmetry_tip_mm']:.2g}", f(r.get("wall_s"), ".0f")])
     return rows
+
+
+def stops(r):
+    """How the crack ends: at the plate edge (time), arrested (time, length), or running."""
+    if r.get("t_edge_us") is not None:
+        return f"edge {r['t_edge_us']:.0f}"
+    if r.get("t_arrest_us") is not None:
+        return f"arrest {r['t_arrest_us']:.0f} ({r['length_end_mm']:.0f} mm)"
+    return f"running ({r.get('length_end_mm', 0.0):.0f} mm)"
 
 
 def md_table(rows, header=TABLE_HEADER):
@@ -498,7 +537,7 @@ def main_study(work, figdir, workers=1, log=print, reuse_only=False):
     return done
 
 
-SUMMARY_KEYS = ("t_init_us", "t_band_us", "initial_t70_deg", "fit_t70_deg", "chord_t70_deg",
-                "initial_end_deg", "fit_end_deg", "chord_end_deg", "length_t70_mm", "t_edge_us",
+SUMMARY_KEYS = ("t_init_us", "t_band_us", "initial_deg", "t_initial_us", "fit_t70_deg", "chord_t70_deg",
+                "fit_end_deg", "chord_end_deg", "length_t70_mm", "length_end_mm", "t_edge_us", "t_arrest_us",
                 "speed", "speed_peak", "speed_over_cR", "speed_peak_over_cR", "t_far_edge_us",
                 "far_edge_y_mm", "far_damage_other", "symmetry_tip_mm", "symmetry_phi", "wall_s")
