@@ -190,6 +190,18 @@ def test_released_loading_dx2mm(tmp_path):
     assert res["chord_t70_deg"] == pytest.approx(51.9, abs=3.0)
     assert res["far_damage_other"] == 0, res["far_damage"]
 
+    # the table, the conclusion and the figures are made from the results alone
+    done = {("v32release", "gaussian", DX): res}
+    (row,) = kws.table_rows(done)
+    assert row[:5] == ["v32release", "gaussian", "2", f"{res['t_init_us']:.1f}",
+                       f"{res['t_band_us']:.1f}"]
+    assert row[11].startswith("arrest")
+    text = " ".join(kws.conclusion(done))
+    assert "Both at once: no run" in text
+    names = kws.figures(done, tmp_path)
+    assert names == ["study_paths_v32release.png"]
+    assert (tmp_path / names[0]).stat().st_size > 10000
+
 
 @pytest.mark.slow
 def test_contact_velocity_dx1mm(tmp_path):

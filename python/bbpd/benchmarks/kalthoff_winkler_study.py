@@ -427,7 +427,7 @@ def plot_damage_cases(results, kernel, dx, path):
         fig.colorbar(sc, ax=list(axes[0]), label="damage", shrink=0.8)
         fig.suptitle(f"{kernel}, dx = {dx * 1e3:g} mm, t = "
                      f"{runs[0][1]['nsteps'] * runs[0][1]['dt'] * 1e6:.0f} us", fontsize=9)
-        fig.savefig(path, dpi=130)
+        fig.savefig(path, dpi=130, bbox_inches="tight")
     finally:
         plt.close(fig)
     return path
