@@ -202,6 +202,19 @@ def test_released_loading_dx2mm(tmp_path):
     assert names == ["study_paths_v32release.png"]
     assert (tmp_path / names[0]).stat().st_size > 10000
 
+    # the report's section: this run as a study spec, and one spec whose run is missing
+    from bbpd import report
+    specs = []
+    for case in ("v32release", "thin"):
+        label = f"Kalthoff-Winkler study {case} gaussian dx = {DX * 1e3:g} mm"
+        job = report.Job(label=label, func="bbpd.report:run_job",
+                         kwargs={"target": "", "args": {"case": case}, "label": label})
+        specs.append(report.Spec("kwstudy", "gaussian", DX, job))
+    sec = kws.section(specs, {specs[0].job.label: res}, tmp_path, [])
+    assert "| v32release | gaussian | 2 |" in sec["table"]
+    assert "Not measured (failed or not run): " + specs[1].job.label in sec["text"]
+    assert kws.section([], {}, tmp_path, [])["table"] == ""
+
 
 @pytest.mark.slow
 def test_contact_velocity_dx1mm(tmp_path):
