@@ -182,7 +182,7 @@ def job_list(full=False):
         specs.append(make_spec("kw", k, dx, "bbpd.benchmarks.kalthoff_winkler:run",
                                {"kernel": k, "dx": dx, "nprocs": 1}, kw_in,
                                ESTIMATE_S.get(("kw", dx), 600.0)))
-    if full:    # the Kalthoff-Winkler loading study (28 runs, about 1 h of single-core run time)
+    if full:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
         from bbpd.benchmarks import kalthoff_winkler_study
         specs += kalthoff_winkler_study.jobs()
     return specs
@@ -836,7 +836,7 @@ def main(argv=None):
     ap.add_argument("--full", action="store_true",
                     help="finer grids as well: Mode II 0.25 mm, Kalthoff-Winkler Gaussian "
                          "0.5 mm (about 3 more minutes on 2 cores), and the Kalthoff-Winkler "
-                         "loading study (28 runs, about 1 h of single-core run time)")
+                         "loading study (32 runs, about 1 h of single-core run time)")
     ap.add_argument("--out", default=str(ROOT / "report"), help="report folder (default report/)")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1,
                     help="runs at a time (default: all cores)")

@@ -68,6 +68,7 @@ ARREST_GROWTH_DX, ARREST_US = 2.0, 10.0   # a crack that grows < 2 dx in the las
 CASES = {
     "paper": ("paper: 32 m/s held, layer delta", {}),
     "v24": ("24 m/s held", {"v0": 24.0}),
+    "v20": ("20 m/s held", {"v0": 20.0}),
     "v16": ("16 m/s held (contact velocity v0/2)", {"v0": 16.0}),
     "v16ramp": ("16 m/s, 1 us ramp, held", {"v0": 16.0, "tramp": 1.0e-6}),
     "v32release": (f"32 m/s released at t_c = {T_CONTACT * 1e6:.1f} us",
@@ -524,7 +525,7 @@ def section(specs, results, figdir, notes):
     """The study's section of report/REPORT.md (bbpd.report.write_report)."""
     title = "Kalthoff-Winkler loading study (what reproduces 70 deg and 20-22 us)"
     if not specs:
-        return {"title": title, "setup": "Not run by default (28 runs, about 1 h of single-core run time): "
+        return {"title": title, "setup": "Not run by default (32 runs, about 1 h of single-core run time): "
                 "`tools/reproduce --full` runs it; the last measured table is in "
                 "examples/kalthoff-winkler/README.md, 'Loading study'.",
                 "table": "", "text": "", "figures": []}
