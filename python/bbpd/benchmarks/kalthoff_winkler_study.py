@@ -29,6 +29,8 @@ Command line (from the repository root; the runs are cached in --work):
 
 import json
 import math
+import re
+import time
 from pathlib import Path
 
 import numpy as np
@@ -92,7 +94,6 @@ def case_vars(case, kernel, dx, tend=TEND):
 
 def run_case(workdir, kernel, dx, case, nprocs=1, tend=TEND):
     """Run one loading case in workdir and measure it (the job of the study and the report)."""
-    import time
     workdir = Path(workdir)
     start = time.perf_counter()
     run_lammps(str(kw.EXAMPLE), workdir, nprocs=nprocs, vars=case_vars(case, kernel, dx, tend))
@@ -156,7 +157,6 @@ def analyse(workdir):
     res = kw.analyse(workdir)
     g = {k: res[k] for k in ("dx", "delta", "a", "ylo", "yhi", "Lx", "Ly", "dt")}
     log = (workdir / "log.lammps").read_text()
-    import re
     m = re.search(r"^KW loading: v0 (\S+) tramp (\S+) thold (\S+) layer (\S+)", log, re.M)
     if m:
         res.update(v0=float(m[1]), tramp=float(m[2]), thold=float(m[3]), layer=float(m[4]))
@@ -359,7 +359,8 @@ def f(v, spec):
 TABLE_HEADER = ["loading", "kernel", "dx (mm)", "first bond (us)", "damage band (us)",
                 "initial (deg)", "fit 10-50 mm (deg)", "chord (deg)", "fit at end (deg)",
                 "chord at end (deg)", "length at 70 us (mm)", "crack stops (us)",
-                "speed / c_R (mean, peak)", "far-edge crack (us; abs(y - 100) mm)", "tip mismatch (mm)",
+                "speed / c_R (mean, peak)", "far-edge crack (us; abs(y - 100) mm)",
+                "tip mismatch (mm)",
                 "run time (s)"]
 
 
@@ -525,7 +526,8 @@ def section(specs, results, figdir, notes):
     """The study's section of report/REPORT.md (bbpd.report.write_report)."""
     title = "Kalthoff-Winkler loading study (what reproduces 70 deg and 20-22 us)"
     if not specs:
-        return {"title": title, "setup": "Not run by default (32 runs, about 1 h of single-core run time): "
+        return {"title": title,
+                "setup": "Not run by default (32 runs, about 1 h of single-core run time): "
                 "`tools/reproduce --full` runs it; the last measured table is in "
                 "examples/kalthoff-winkler/README.md, 'Loading study'.",
                 "table": "", "text": "", "figures": []}
@@ -579,7 +581,8 @@ def main_study(work, figdir, workers=1, log=print, reuse_only=False):
     return done
 
 
-SUMMARY_KEYS = ("t_init_us", "t_band_us", "initial_deg", "t_initial_us", "fit_t70_deg", "chord_t70_deg",
-                "fit_end_deg", "chord_end_deg", "length_t70_mm", "length_end_mm", "t_edge_us", "t_arrest_us",
+SUMMARY_KEYS = ("t_init_us", "t_band_us", "initial_deg", "t_initial_us", "fit_t70_deg",
+                "chord_t70_deg", "fit_end_deg", "chord_end_deg", "length_t70_mm", "length_end_mm",
+                "t_edge_us", "t_arrest_us",
                 "speed", "speed_peak", "speed_over_cR", "speed_peak_over_cR", "far_edge_own_us",
                 "far_edge_y_mm", "far_damage_other", "symmetry_tip_mm", "symmetry_phi", "wall_s")
