@@ -183,6 +183,9 @@ def job_list(full=False):
         specs.append(make_spec("kw", k, dx, "bbpd.benchmarks.kalthoff_winkler:run",
                                {"kernel": k, "dx": dx, "nprocs": 1}, kw_in,
                                ESTIMATE_S.get(("kw", dx), 600.0)))
+    if full:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
+        from bbpd.benchmarks import kalthoff_winkler_study
+        specs += kalthoff_winkler_study.jobs()
     return specs
 
 
@@ -750,6 +753,11 @@ def kw_section(specs, results, figdir, notes):
             "table": md_table(header, rows), "text": " ".join(text), "figures": figs}
 
 
+def kw_study_section(specs, results, figdir, notes):
+    from bbpd.benchmarks import kalthoff_winkler_study
+    return kalthoff_winkler_study.section(specs, results, figdir, notes)
+
+
 # --------------------------------------------------------------------------- provenance
 
 def lammps_build():
@@ -811,7 +819,7 @@ def write_report(out, specs, results, meta, start):
     notes = []
     sections = []
     builders = (("dispersion", dispersion_section), ("mode1", mode1_section),
-                ("mode2", mode2_section), ("kw", kw_section))
+                ("mode2", mode2_section), ("kw", kw_section), ("kwstudy", kw_study_section))
     for bench, build in builders:
         mine = [s for s in specs if s.bench == bench]
         try:
@@ -891,7 +899,8 @@ def main(argv=None):
     ap = argparse.ArgumentParser(prog="tools/reproduce", description=__doc__.split("\n")[0])
     ap.add_argument("--full", action="store_true",
                     help="finer grids as well: Mode II 0.25 mm, Kalthoff-Winkler Gaussian "
-                         "0.5 mm (about 3 more minutes on 2 cores)")
+                         "0.5 mm (about 3 more minutes on 2 cores), and the Kalthoff-Winkler "
+                         "loading study (32 runs, about 1 h of single-core run time)")
     ap.add_argument("--out", default=str(ROOT / "report"), help="report folder (default report/)")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1,
                     help="runs at a time (default: all cores)")
