@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Kalthoff-Winkler loading study: which loading and which angle measure reproduce the experiment.
 
 The paper's setup (32 m/s held on a delta-thick layer) gives cracks at about 61 deg and a first
