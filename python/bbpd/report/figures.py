@@ -1,0 +1,151 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The report's figures (PNG beside REPORT.md): K(t) against the references, and the
+benchmark modules' own plots; a figure that fails is noted in the report, not fatal."""
+import math
+from pathlib import Path
+
+import numpy as np
+
+from bbpd.kernels import COLORS, KERNELS
+
+from .runs import MODE1_TABLE3_DX
+
+RESOLUTION_COLORS = ("tab:purple", "tab:red", "tab:green", "tab:blue", "tab:brown")
+
+
+def _figure(make, path, notes):
+    """Make one figure; a failure is noted in the report instead of stopping it."""
+    try:
+        make()
+        return Path(path).name
+    except Exception as exc:  # the report must still be written
+        notes.append(f"figure {Path(path).name} not made: {type(exc).__name__}: {exc}")
+        return None
+
+
+def plot_k(path, series, refs, window, title, xlabel, ylabel):
+    """K(t) figure: measured series (solid, colour), references (black/grey, dashed), and the
+    validity window of the comparison (dotted lines).
+    series: [(label, t, K, colour)]; refs: [(label, t, K, linestyle, colour)];
+    window: (start, end) in the units of t."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7.0, 4.4))
+    try:
+        for label, t, k, color in series:
+            ax.plot(t, k, "-", color=color, linewidth=1.4, label=label)
+        for label, t, k, style, color in refs:
+            ax.plot(t, k, linestyle=style, color=color, linewidth=1.6, label=label)
+        for n, x in enumerate(x for x in window if x > 0):
+            ax.axvline(x, color="grey", linestyle=":", linewidth=1.0,
+                       label="window of the comparison" if n == 0 else None)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
+        ax.set_title(title, fontsize=10)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8, loc="upper left")
+        fig.tight_layout()
+        fig.savefig(path, dpi=150)
+    finally:
+        plt.close(fig)
+    return path
+
+
+def dispersion_figures(runs, paper, cv, figdir, notes):
+    """Figs. 4-6 (dispersion.plot_figures): measured points on the analytic curves."""
+    from bbpd.benchmarks import dispersion as disp
+    try:
+        return [p.name for p in disp.plot_figures(runs, paper, cv, figdir)]
+    except Exception as exc:  # the report must still be written
+        notes.append(f"dispersion figures not made: {type(exc).__name__}: {exc}")
+        return []
+
+
+def mode1_figures(rows2_ok, rows3_ok, figdir, notes):
+    """Fig. 9 (Gaussian, every dx) and Fig. 10 (three kernels): K_I(t) against eq. 42."""
+    from bbpd.benchmarks import mode1
+    figs = []
+    norm = mode1.SIGMA0 * math.sqrt(mode1.H)
+    exact, t_c = mode1.reference("consistent")
+    exact_p, _ = mode1.reference("paper")
+    tt = np.linspace(0.0, mode1.T_END, 600)
+    refs = [("eq. 42, BBPD constants (consistent)", tt * 1e3, exact(tt) / norm, "--", "black"),
+            ("eq. 42, paper's constants (nu = 0.3)", tt * 1e3, exact_p(tt) / norm, "-.", "grey")]
+    window = (0.0, 3.0 * t_c * 1e3)
+    ylabel = r"$K_I/(\sigma_0\sqrt{H})$"
+    if rows2_ok:
+        path = figdir / "fig9_resolutions.png"
+        series = [(f"dx = {dx:g} m (consistent L2 {r['consistent']['l2']:.2f} %)", r["t"] * 1e3,
+                   r["k_consistent"] / norm, RESOLUTION_COLORS[n % len(RESOLUTION_COLORS)])
+                  for n, (dx, r) in enumerate(sorted(rows2_ok.items(), reverse=True))]
+        name = _figure(lambda: plot_k(path, series, refs, window, "Fig. 9: Mode-I K_I(t), "
+                                      "Gaussian kernel, m = 5, three grids", "t (ms)", ylabel),
+                       path, notes)
+        figs += [name] if name else []
+    if rows3_ok:
+        path = figdir / "fig10_kernels.png"
+        series = [(f"{k} (consistent L2 {r['consistent']['l2']:.2f} %)", r["t"] * 1e3,
+                   r["k_consistent"] / norm, COLORS[k]) for k, r in rows3_ok.items()]
+        name = _figure(lambda: plot_k(path, series, refs, window, "Fig. 10: Mode-I K_I(t), "
+                                      f"dx = {MODE1_TABLE3_DX:g} m, m = 5, three kernels",
+                                      "t (ms)", ylabel), path, notes)
+        figs += [name] if name else []
+    return figs
+
+
+def mode2_figures(ok, figdir, notes):
+    """Fig. 12 per dx: K_II(t) of the three kernels, from the extrapolation and from J."""
+    from bbpd.benchmarks import mode2
+    figs = []
+    win = mode2.window()
+    tt = np.linspace(0.0, mode2.T_END, 600)
+    refs = [("semi-infinite crack loaded by 2 tau", tt * 1e6,
+             mode2.normalise(mode2.reference()(tt)), "--", "black")]
+    for dx in sorted({dx for _, dx in ok}, reverse=True):
+        series = [(f"{k} (L2 {r['l2']:.1f} %)", r["t"] * 1e6, mode2.normalise(r["k_ii"]),
+                   COLORS[k]) for (k, d), r in ok.items() if d == dx]
+        path = figdir / f"fig12_kernels_dx{dx * 1e3:g}mm.png"
+        name = _figure(lambda: plot_k(path, series, refs,
+                                      (win.t_start * 1e6, win.t_end_ignoring_corners * 1e6),
+                                      f"Fig. 12: Mode-II K_II(t), dx = {dx * 1e3:g} mm, m = 5, "
+                                      "three kernels", "t (us)",
+                                      r"$K_{II}/(\tau\sqrt{\pi a})$"), path, notes)
+        figs += [name] if name else []
+        jseries = [(f"{k} from J (peak {r['jintegral']['peak']:.1f} %)", r["t"] * 1e6,
+                    mode2.normalise(r["k_ii_j"]), COLORS[k])
+                   for (k, d), r in ok.items() if d == dx and "k_ii_j" in r]
+        if jseries:
+            jpath = figdir / f"fig12_jintegral_dx{dx * 1e3:g}mm.png"
+            name = _figure(lambda: plot_k(jpath, jseries, refs,
+                                          (win.t_start * 1e6, win.t_end_ignoring_corners * 1e6),
+                                          f"Mode-II K_II(t) from the J-integral, dx = "
+                                          f"{dx * 1e3:g} mm, three kernels", "t (us)",
+                                          r"$K_{II}/(\tau\sqrt{\pi a})$"), jpath, notes)
+            figs += [name] if name else []
+    return figs
+
+
+def kw_figures(ok, figdir, notes):
+    """Damage maps of every run, crack paths per dx and the Gaussian's paths over dx."""
+    from bbpd.benchmarks import kalthoff_winkler as kw
+    gauss = sorted(((d, r) for (k, d), r in ok.items() if k == "gaussian"), reverse=True)
+    figs = []
+    for (k, dx), r in sorted(ok.items(), key=lambda x: (-x[0][1], KERNELS.index(x[0][0]))):
+        path = figdir / f"damage_{k}_dx{dx * 1e3:g}mm.png"
+        name = _figure(lambda: kw.plot_damage_map(r, path), path, notes)
+        if name:
+            figs.append(name)
+    for dx in sorted({dx for _, dx in ok}, reverse=True):
+        same = [ok[(k, dx)] for k in KERNELS if (k, dx) in ok]
+        if len(same) > 1:
+            path = figdir / f"paths_dx{dx * 1e3:g}mm.png"
+            name = _figure(lambda: kw.plot_paths(same, path), path, notes)
+            if name:
+                figs.append(name)
+    if len(gauss) > 1:
+        path = figdir / "paths_gaussian_convergence.png"
+        name = _figure(lambda: kw.plot_paths([r for _, r in gauss], path), path, notes)
+        if name:
+            figs.append(name)
+    return figs

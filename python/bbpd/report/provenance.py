@@ -1,0 +1,55 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""What produced the report: the LAMMPS build, the plugin version, the source revision and the
+machine (CPU, cores, OS)."""
+import os
+import platform
+import re
+import subprocess
+from pathlib import Path
+
+from bbpd.jobs import ROOT
+
+
+def lammps_build():
+    """First line of `tools/lmp -h` (the LAMMPS version) and its MPI line."""
+    try:
+        out = subprocess.run([str(ROOT / "tools" / "lmp"), "-h"], capture_output=True,
+                             text=True, timeout=60).stdout
+    except (OSError, subprocess.SubprocessError) as exc:
+        return f"unknown ({exc})"
+    version = re.search(r"Simulator - (.+)", out)
+    mpi = re.search(r"^MPI v\S+: (Open MPI v[^,]+|[^,\n]+)", out, re.M)
+    return ", ".join(x for x in ((version[1].strip() if version else None),
+                                 (mpi[1].strip() if mpi else None)) if x) or "unknown"
+
+
+def plugin_version():
+    m = re.search(r"project\(\s*bbpd\s+VERSION\s+(\S+)", (ROOT / "CMakeLists.txt").read_text())
+    return m[1] if m else "unknown"
+
+
+def git_revision():
+    try:
+        out = subprocess.run(["git", "-C", str(ROOT), "describe", "--always", "--dirty"],
+                             capture_output=True, text=True, timeout=30)
+        return out.stdout.strip() or "unknown"
+    except (OSError, subprocess.SubprocessError):
+        return "unknown"
+
+
+def machine():
+    cpu = "unknown CPU"
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    osname = platform.platform()
+    try:
+        rel = dict(re.findall(r'^(\w+)="?([^"\n]*)"?', Path("/etc/os-release").read_text(), re.M))
+        osname = f"{rel.get('PRETTY_NAME', osname)}, Linux {platform.release()}"
+    except OSError:
+        pass
+    return f"{cpu}, {os.cpu_count()} cores, {osname}"

@@ -1,0 +1,163 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Which runs the report makes, as jobs of bbpd.jobs, and what every job runs in its worker.
+
+Job functions are named "bbpd.report:run_job" and "bbpd.report:dispersion_run" (the package
+re-exports them): the names are part of each run's cache key, so finished runs stay reusable.
+"""
+import importlib
+import json
+import os
+import threading
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from bbpd import jobs as jobmod
+from bbpd import readers
+from bbpd.jobs import ROOT, Job
+from bbpd.kernels import KERNELS
+
+BENCH = ROOT / "python" / "bbpd" / "benchmarks"
+FREUND_PY = ROOT / "python" / "bbpd" / "freund.py"
+METRICS_PY = ROOT / "python" / "bbpd" / "metrics.py"
+
+HEARTBEAT_S = 30.0            # a running job says so this often
+ESTIMATES_ENV = "BBPD_REPORT_ESTIMATES"   # label -> expected seconds, for the heartbeat
+
+# Resolutions.  Default: the whole set of LAMMPS runs stays within minutes on 2 cores (the
+# README has the measured time); --full adds finer grids.
+MODE1_TABLE2_DX = (0.1, 0.05, 0.025)        # m, Gaussian (paper Table 2)
+MODE1_TABLE3_DX = 0.05                      # m, three kernels (paper Table 3)
+MODE2_DX = (1.0e-3, 0.5e-3)                 # m, three kernels (Fig. 12; the paper gives no dx)
+MODE2_DX_FULL = (1.0e-3, 0.5e-3, 0.25e-3)
+KW_DX = (2.0e-3, 1.0e-3)                    # m, three kernels (1 mm: the paper's, Figs. 14-15)
+KW_GAUSSIAN_DX_FULL = (0.5e-3,)             # m, Gaussian only
+
+# Expected wall time of each single-rank run here, 2 at a time on 2 shared cores (s); only
+# the time-left estimate and the job order (longest first) use them.
+ESTIMATE_S = {
+    "dispersion": 6.0,
+    ("mode1", 0.1): 2.0, ("mode1", 0.05): 6.0, ("mode1", 0.025): 60.0,
+    ("mode2", 1.0e-3): 2.0, ("mode2", 0.5e-3): 8.0, ("mode2", 0.25e-3): 30.0,
+    ("kw", 2.0e-3): 8.0, ("kw", 1.0e-3): 75.0, ("kw", 0.5e-3): 200.0,
+}
+
+
+@dataclass
+class Spec:
+    bench: str       # dispersion | mode1 | mode2 | kw
+    kernel: str
+    dx: float        # m (dispersion: the example's fixed grid, 0.2 mm)
+    job: Job
+
+
+def run_job(workdir, target, args, label):
+    """What every job runs (in a worker process): target(workdir=..., **args), announced when
+    it starts and, while it runs, every HEARTBEAT_S; adds the LAMMPS and plugin versions its
+    log reports, so that reused results say which build made them."""
+    module, name = target.split(":")
+    fn = getattr(importlib.import_module(module), name)
+    expected = json.loads(os.environ.get(ESTIMATES_ENV, "{}")).get(label)
+    print(f"  start  {label}" + (f" (about {jobmod._fmt(expected)})" if expected else ""),
+          flush=True)
+    start = time.perf_counter()
+    stop = threading.Event()
+
+    def heartbeat():
+        while not stop.wait(HEARTBEAT_S):
+            print(f"  ...    {label}: running for {jobmod._fmt(time.perf_counter() - start)}"
+                  + (f" of about {jobmod._fmt(expected)}" if expected else ""), flush=True)
+
+    threading.Thread(target=heartbeat, daemon=True).start()
+    try:
+        res = dict(fn(workdir=workdir, **args))
+    except Exception as exc:
+        # re-raised as a plain RuntimeError: runner.LammpsError cannot be unpickled in the
+        # parent (its __init__ needs two arguments), which would break the whole process pool
+        raise RuntimeError(f"{type(exc).__name__}: {exc}") from None
+    finally:
+        stop.set()
+    res["job_s"] = time.perf_counter() - start
+    res.update(build_of_run(workdir))
+    return res
+
+
+def build_of_run(workdir):
+    """LAMMPS version and plugin version from the first log.lammps under workdir."""
+    for log in sorted(Path(workdir).rglob("log.lammps")):
+        return readers.build_versions(log.read_text(errors="replace"))
+    return {}
+
+
+def dispersion_run(workdir, kernel):
+    """One kernel of the dispersion benchmark: run, FFT ridge, deviations (dispersion.measure)."""
+    from bbpd.benchmarks import dispersion
+    start = time.perf_counter()
+    res = dispersion.measure((kernel,), work=workdir)[kernel]
+    res["wall_time"] = time.perf_counter() - start
+    return res
+
+
+def _tools():
+    """The dispersion tools, part of the dispersion jobs' inputs when built."""
+    from bbpd.benchmarks import dispersion
+    out = []
+    for name in ("bbpd-measure-dispersion", "bbpd-dispersion-curves"):
+        try:
+            out.append(str(dispersion.find_tool(name)))
+        except FileNotFoundError:
+            pass
+    return tuple(out)
+
+
+def make_spec(bench, kernel, dx, target, args, inputs, estimate):
+    """One run of the report: target(workdir, **args) as a cached job whose key covers the
+    files in inputs (input script, analysis code)."""
+    label = {"dispersion": f"dispersion {kernel}",
+             "mode1": f"Mode I {kernel} dx = {dx:g} m",
+             "mode2": f"Mode II {kernel} dx = {dx * 1e3:g} mm",
+             "kw": f"Kalthoff-Winkler {kernel} dx = {dx * 1e3:g} mm"}[bench]
+    job = Job(label=label, func="bbpd.report:run_job",
+              kwargs={"target": target, "args": args, "label": label},
+              inputs=tuple(str(p) for p in inputs), estimate_s=estimate)
+    return Spec(bench, kernel, dx, job)
+
+
+def job_list(full=False):
+    """The runs of the report: default resolutions, or the paper's full ones with full=True."""
+    specs = []
+    disp_in = (ROOT / "examples" / "dispersion-1d" / "in.dispersion", BENCH / "dispersion.py")
+    for k in KERNELS:
+        specs.append(make_spec("dispersion", k, 0.2e-3, "bbpd.report:dispersion_run",
+                               {"kernel": k}, disp_in + _tools(), ESTIMATE_S["dispersion"]))
+
+    m1_in = (ROOT / "examples" / "mode1-semi-infinite" / "in.mode1", BENCH / "mode1.py",
+             FREUND_PY, METRICS_PY)
+    mode1 = [("gaussian", dx) for dx in MODE1_TABLE2_DX]
+    mode1 += [(k, MODE1_TABLE3_DX) for k in KERNELS if (k, MODE1_TABLE3_DX) not in mode1]
+    for k, dx in mode1:
+        specs.append(make_spec("mode1", k, dx, "bbpd.benchmarks.mode1:run",
+                               {"kernel": k, "dx": dx, "nprocs": 1}, m1_in,
+                               ESTIMATE_S.get(("mode1", dx), 60.0)))
+
+    m2_in = (ROOT / "examples" / "mode2-central-crack" / "in.mode2", BENCH / "mode2.py",
+             FREUND_PY, METRICS_PY)
+    for dx in (MODE2_DX_FULL if full else MODE2_DX):
+        for k in KERNELS:
+            specs.append(make_spec("mode2", k, dx, "bbpd.benchmarks.mode2:run",
+                                   {"kernel": k, "dx": dx, "nprocs": 1}, m2_in,
+                                   ESTIMATE_S.get(("mode2", dx), 60.0)))
+
+    kw_in = (ROOT / "examples" / "kalthoff-winkler" / "in.kalthoff_winkler",
+             BENCH / "kalthoff_winkler.py", ROOT / "potentials" / "kalthoff_winkler_steel.bbpd")
+    kw = [(k, dx) for dx in KW_DX for k in KERNELS]
+    if full:
+        kw += [("gaussian", dx) for dx in KW_GAUSSIAN_DX_FULL]
+    for k, dx in kw:
+        specs.append(make_spec("kw", k, dx, "bbpd.benchmarks.kalthoff_winkler:run",
+                               {"kernel": k, "dx": dx, "nprocs": 1}, kw_in,
+                               ESTIMATE_S.get(("kw", dx), 600.0)))
+    if full:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
+        from bbpd.benchmarks import kalthoff_winkler_study
+        specs += kalthoff_winkler_study.jobs()
+    return specs
