@@ -22,6 +22,18 @@ def loop_time(output):
     return (float(loop[1]), int(loop[2])) if loop else (None, None)
 
 
+def pair_setup(output):
+    """What the pair style's setup report prints (None where the log lacks it): the critical
+    stretch s0, the velocity-Verlet limit of the time step (s) and the time step's fraction
+    of it."""
+    s0 = re.search(r"critical_stretch s0 = (\S+)", output)
+    bound = re.search(r"velocity-Verlet limit (\S+);", output)
+    fraction = re.search(r"timestep = \S+ \(([0-9.eE+-]+) of the limit\)", output)
+    return {"critical_stretch": float(s0[1]) if s0 else None,
+            "dt_bound": float(bound[1]) if bound else None,
+            "dt_fraction": float(fraction[1]) if fraction else None}
+
+
 def thermo_tables(output):
     """Every thermo table of a LAMMPS log: list (one per run) of {column: array}."""
     tables, cols, rows = [], None, []

@@ -10,6 +10,7 @@ import math
 import numpy as np
 import pytest
 
+from bbpd import readers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as kws
 
@@ -45,7 +46,7 @@ def run(tmp_path, name, script=None, **variables):
 
 
 def final_state(work):
-    _, d = kw.read_dump(work / "final.dump")[-1]
+    _, d = readers.dump_snapshots(work / "final.dump")[-1]
     return d
 
 

@@ -1,4 +1,4 @@
-"""The report machinery of tools/reproduce (python/bbpd/report.py) on a few tiny runs.
+"""The report machinery of tools/reproduce (the bbpd.report package) on a few tiny runs.
 
 Coarse grids (seconds in all), one run that must fail, and two calls: the tables of
 REPORT.md must hold the runs' own numbers beside the paper's, the failed run must show as

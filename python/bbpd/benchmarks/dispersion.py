@@ -32,7 +32,9 @@ from pathlib import Path
 
 import numpy as np
 
+from bbpd import readers
 from bbpd.kernels import COLORS, KERNELS
+from bbpd.readers import read_csv
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -76,14 +78,6 @@ def run_tool(name, args, cwd):
     if proc.returncode != 0:
         raise RuntimeError(f"{' '.join(cmd)} failed:\n{proc.stdout}{proc.stderr}")
     return proc.stdout
-
-
-def read_csv(path):
-    """CSV with '#' comment lines and a header row -> dict of column -> array."""
-    lines = [ln for ln in Path(path).read_text().splitlines() if ln and not ln.startswith("#")]
-    names = lines[0].split(",")
-    data = np.array([[float(v) for v in ln.split(",")] for ln in lines[1:]])
-    return {n: data[:, i] for i, n in enumerate(names)}
 
 
 # --------------------------------------------------------------------------- analytic
@@ -170,8 +164,7 @@ def read_run_info(output):
     info = {key: conv(pairs[key]) for key, conv in RUN_KEYS.items()}
     builds = re.search(r"^Neighbor list builds = (\d+)", output, re.M)
     info["neighbor_builds"] = int(builds[1]) if builds else None
-    loop = re.search(r"Loop time of (\S+) on (\d+) procs", output)
-    info["loop_s"] = float(loop[1]) if loop else None
+    info["loop_s"], _ = readers.loop_time(output)
     return info
 
 

@@ -47,6 +47,7 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
+from bbpd import readers
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 
@@ -68,26 +69,6 @@ FIT_RANGE = (10.0e-3, 50.0e-3)   # crack length range for the angle and speed fi
 
 # --------------------------------------------------------------------------- reading outputs
 
-def read_dump(path):
-    """Snapshots of a LAMMPS text dump: list of (step, {column: array})."""
-    snaps = []
-    with open(path) as f:
-        lines = f.read().splitlines()
-    i = 0
-    while i < len(lines):
-        if not lines[i].startswith("ITEM: TIMESTEP"):
-            i += 1
-            continue
-        step = int(lines[i + 1])
-        n = int(lines[i + 3])
-        cols = lines[i + 8].split()[2:]
-        body = " ".join(lines[i + 9:i + 9 + n])
-        data = np.fromstring(body, sep=" ").reshape(n, len(cols)) if n else np.zeros((0, len(cols)))
-        snaps.append((step, {c: data[:, k] for k, c in enumerate(cols)}))
-        i += 9 + n
-    return snaps
-
-
 def read_log(path):
     """Run parameters printed by the input script and the pair style."""
     text = Path(path).read_text()
@@ -97,21 +78,11 @@ def read_log(path):
         raise RuntimeError(f"{path}: no 'KW:' line; was it written by in.kalthoff_winkler?")
     info = dict(kernel=m[1], dx=float(m[2]), delta=float(m[3]), dt=float(m[4]), nsteps=int(m[5]),
                 Lx=float(m[6]), Ly=float(m[7]), ylo=float(m[8]), yhi=float(m[9]), a=float(m[10]))
-    s0 = re.search(r"critical_stretch s0 = (\S+)", text)
-    info["critical_stretch"] = float(s0[1]) if s0 else None
-    bound = re.search(r"velocity-Verlet limit (\S+);", text)
-    info["dt_bound"] = float(bound[1]) if bound else None
-    loop = re.search(r"Loop time of (\S+) on (\d+) procs", text)
-    info["loop_s"] = float(loop[1]) if loop else None
-    info["nprocs"] = int(loop[2]) if loop else None
+    setup = readers.pair_setup(text)
+    info["critical_stretch"] = setup["critical_stretch"]
+    info["dt_bound"] = setup["dt_bound"]
+    info["loop_s"], info["nprocs"] = readers.loop_time(text)
     return info
-
-
-def read_tips(path):
-    """tips.dat: step, damage sums near the lower tip, the upper tip and over the plate, and
-    the largest damage in the outer quarter of each tip disk ahead of the tip (lower, upper)."""
-    d = np.loadtxt(path, comments="#")
-    return d[:, 0].astype(int), d[:, 1], d[:, 2], d[:, 3], d[:, 4], d[:, 5]
 
 
 # --------------------------------------------------------------------------- measurements
@@ -220,7 +191,7 @@ def analyse(workdir):
     res = dict(g)
 
     # initiation from the per-step monitor
-    steps, dlo, dhi, dall, qlo, qhi = read_tips(workdir / "tips.dat")
+    steps, dlo, dhi, dall, qlo, qhi = readers.tips(workdir / "tips.dat")
     for side, series, quad in (("lo", dlo, qlo), ("hi", dhi, qhi)):
         s = first_rise(steps, series)
         res[f"t_init_{side}_us"] = None if s is None else s * dt * 1e6
@@ -239,7 +210,7 @@ def analyse(workdir):
     traj = {"t_us": [], "lo": [], "hi": [], "L_lo": [], "L_hi": []}
     sym = 0.0
     res["t_far_edge_us"] = None
-    snaps = read_dump(workdir / "damage.dump")
+    snaps = readers.dump_snapshots(workdir / "damage.dump")
     initial = {int(i): p for i, p in zip(snaps[0][1]["id"], snaps[0][1]["c_dmg"])}
     for step, s in snaps:
         x, y, phi = s["f_ref[1]"], s["f_ref[2]"], s["c_dmg"]
@@ -264,7 +235,7 @@ def analyse(workdir):
         res[f"length_{side}_mm"] = float(L[-1] * 1e3)
 
     # the end state: angle, mirror mismatch, damage far from the cracks
-    snaps = read_dump(workdir / "final.dump")
+    snaps = readers.dump_snapshots(workdir / "final.dump")
     (_, s0), (_, s1) = snaps[0], snaps[-1]
     x, y, phi = s1["f_ref[1]"], s1["f_ref[2]"], s1["c_dmg"]
     cr = notch_cracks(x, y, phi, g)

@@ -37,6 +37,7 @@ from pathlib import Path
 import numpy as np
 from scipy.spatial import cKDTree
 
+from bbpd import readers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.runner import run_lammps
 
@@ -161,7 +162,7 @@ def analyse(workdir):
     m = re.search(r"^KW loading: v0 (\S+) tramp (\S+) thold (\S+) layer (\S+)", log, re.M)
     if m:
         res.update(v0=float(m[1]), tramp=float(m[2]), thold=float(m[3]), layer=float(m[4]))
-    snaps = kw.read_dump(workdir / "damage.dump")
+    snaps = readers.dump_snapshots(workdir / "damage.dump")
     times = [step * g["dt"] * 1e6 for step, _ in snaps]
     # the snapshot at T_EVAL_US: the last one at or before it (snapshots are ~1 us apart)
     k70 = max([i for i, t in enumerate(times) if t <= T_EVAL_US + 1e-6], default=None)
@@ -497,7 +498,7 @@ def jobs(nprocs=1):
     """The study's runs as bbpd.report specs (the report's --full and the --study command)."""
     from bbpd import report
     inputs = (kw.EXAMPLE, Path(kw.__file__), Path(__file__),
-              kw.ROOT / "potentials" / "kalthoff_winkler_steel.bbpd")
+              kw.ROOT / "potentials" / "kalthoff_winkler_steel.bbpd", Path(readers.__file__))
     specs = []
     for case in CASES:
         for k, dx in STUDY_KERNEL_DX:

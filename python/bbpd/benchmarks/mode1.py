@@ -22,13 +22,12 @@ Command line (from the repository root):
 """
 
 import argparse
-import re
 import time
 from pathlib import Path
 
 import numpy as np
 
-from bbpd import freund, metrics
+from bbpd import freund, metrics, readers
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 
@@ -81,18 +80,6 @@ def reference(convention, model="plane/stress", E=E, rho=RHO, H=H, sigma0=SIGMA0
     return exact, freund.crack_arrival_time(H, c_d)
 
 
-def read_k(path, dt):
-    """k.dat of in.mode1 -> t, K_I (paper constants), K_I (consistent), K_II (consistent)."""
-    d = np.loadtxt(path, comments="#", ndmin=2)
-    return d[:, 0] * dt, d[:, 1], d[:, 2], d[:, 3]
-
-
-def read_j(path):
-    """J columns of k.dat (compute bbpd/jintegral): J, K_I, K_II; None if the run had none."""
-    d = np.loadtxt(path, comments="#", ndmin=2)
-    return None if d.shape[1] < 7 else (d[:, 4], d[:, 5], d[:, 6])
-
-
 def errors(t, k_paper, k_consistent, model="plane/stress", **material):
     """Eqs. 44-45 (in %) over 0 <= t <= 3 t_c for both conventions."""
     out = {}
@@ -103,11 +90,6 @@ def errors(t, k_paper, k_consistent, model="plane/stress", **material):
                      "l2": 100.0 * metrics.l2_relative_error(t, k, exact, window),
                      "t_c": t_c}
     return out
-
-
-def _timestep_fraction(output):
-    m = re.search(r"timestep = \S+ \(([0-9.eE+-]+) of the limit\)", output)
-    return float(m.group(1)) if m else None
 
 
 def run(workdir, kernel="gaussian", dx=0.05, model="plane/stress", dt=None, nprocs=1,
@@ -121,15 +103,16 @@ def run(workdir, kernel="gaussian", dx=0.05, model="plane/stress", dt=None, npro
     start = time.perf_counter()
     proc = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_)
     wall = time.perf_counter() - start
-    loop = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs", proc.output)
-    t, k_paper, k_cons, k_ii = read_k(workdir / "k.dat", dt)
+    loop_s, _ = readers.loop_time(proc.output)
+    # k.dat: K_I (paper constants), K_I (consistent), K_II (consistent)
+    t, k_paper, k_cons, k_ii = readers.k_history(workdir / "k.dat", dt)
     res = {"kernel": kernel, "dx": dx, "model": model, "dt": dt, "nprocs": nprocs,
-           "wall_time": wall, "loop_time": float(loop.group(1)) if loop else None,
-           "dt_fraction_of_limit": _timestep_fraction(proc.output),
+           "wall_time": wall, "loop_time": loop_s,
+           "dt_fraction_of_limit": readers.pair_setup(proc.output)["dt_fraction"],
            "atoms": int(round(10.0 / dx)) * int(round(2 * H / dx)),
            "t": t, "k_paper": k_paper, "k_consistent": k_cons, "k_ii": k_ii}
     res.update(errors(t, k_paper, k_cons, model))
-    jcols = read_j(workdir / "k.dat")
+    jcols = readers.j_history(workdir / "k.dat")
     if jcols is not None:    # K_I from the J-integral (interaction integral), both conventions
         res["j"], res["k_j"], res["kii_j"] = jcols
         res["jintegral"] = errors(t, res["k_j"], res["k_j"], model)

@@ -22,13 +22,12 @@ Command line (from the repository root):
 """
 
 import argparse
-import re
 import time
 from pathlib import Path
 
 import numpy as np
 
-from bbpd import freund, metrics
+from bbpd import freund, metrics, readers
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 
@@ -78,18 +77,6 @@ def normalise(k):
     return freund.normalised_mode2(k, TAU, A)
 
 
-def read_k(path, dt):
-    """k.dat of in.mode2 -> t, K_II right tip, K_I right tip, K_II left tip."""
-    d = np.loadtxt(path, comments="#", ndmin=2)
-    return d[:, 0] * dt, d[:, 1], d[:, 2], d[:, 3]
-
-
-def read_j(path):
-    """J columns of k.dat (compute bbpd/jintegral, right tip): J, K_I, K_II; None if absent."""
-    d = np.loadtxt(path, comments="#", ndmin=2)
-    return None if d.shape[1] < 7 else (d[:, 4], d[:, 5], d[:, 6])
-
-
 def errors(t, k_ii, model="plane/strain", td=0.0):
     """Eqs. 44-45 (in %) against the reference over its validity window."""
     w = window(model)
@@ -110,10 +97,11 @@ def run(workdir, kernel="gaussian", dx=0.5e-3, model="plane/strain", td=0.0, dt=
     start = time.perf_counter()
     proc = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_)
     wall = time.perf_counter() - start
-    loop = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs", proc.output)
-    t, k_ii, k_i, k_ii_left = read_k(workdir / "k.dat", dt)
+    loop_s, _ = readers.loop_time(proc.output)
+    # k.dat: K_II right tip, K_I right tip, K_II left tip; J columns at the right tip
+    t, k_ii, k_i, k_ii_left = readers.k_history(workdir / "k.dat", dt)
     res = {"kernel": kernel, "dx": dx, "model": model, "td": td, "dt": dt, "nprocs": nprocs,
-           "wall_time": wall, "loop_time": float(loop.group(1)) if loop else None,
+           "wall_time": wall, "loop_time": loop_s,
            "t": t, "k_ii": k_ii, "k_i": k_i, "k_ii_left": k_ii_left}
     res.update(errors(t, k_ii, model, td))
     w = (t >= res["window"][0]) & (t <= res["window"][1])
@@ -122,7 +110,7 @@ def run(workdir, kernel="gaussian", dx=0.5e-3, model="plane/strain", td=0.0, dt=
     res["ki_over_kii"] = float(np.max(np.abs(k_i[w])) / scale)
     res["k_end"] = float(normalise(k_ii[w][-1]))
     res["k_end_exact"] = float(normalise(reference(model, td)(t[w][-1])))
-    jcols = read_j(workdir / "k.dat")
+    jcols = readers.j_history(workdir / "k.dat")
     if jcols is not None:    # K_II from the J-integral (interaction integral)
         res["j"], res["k_i_j"], res["k_ii_j"] = jcols
         res["jintegral"] = errors(t, res["k_ii_j"], model, td)

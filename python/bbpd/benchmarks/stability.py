@@ -44,6 +44,7 @@ from pathlib import Path
 
 import numpy as np
 
+from bbpd import readers
 from bbpd import reference as ref
 from bbpd.kernels import KERNELS
 from bbpd.runner import LammpsError, run_lammps
@@ -203,7 +204,7 @@ def run_point(workdir, kernel, m, ratio, steps=STEPS, side=None, periodic=True, 
             raise    # a bad input or a crash is not a point of the stability map
         return {"stable": False, "growth": math.inf, "steps_done": None, "bound": None,
                 "error": e.message}
-    table = ref.thermo_tables(out)[-1]
+    table = readers.thermo_tables(out)[-1]
     energy = table["TotEng"]
     done = int(table["Step"][-1] - table["Step"][0])
     half = table["Step"] - table["Step"][0] <= 0.5 * steps
@@ -273,7 +274,7 @@ def drift_script(kernel, steps=DRIFT_STEPS, ratio=DRIFT_RATIO, side=DRIFT_SIDE, 
 def energy_drift(output):
     """(drift, fluctuation) of the total energy in the last thermo table: the least-squares
     linear trend over the whole run divided by the initial energy, and std/mean."""
-    table = ref.thermo_tables(output)[-1]
+    table = readers.thermo_tables(output)[-1]
     step, energy = table["Step"], table["TotEng"]
     slope = np.polyfit(step - step[0], energy / energy[0], 1)[0]
     return float(slope * (step[-1] - step[0])), float(energy.std() / energy.mean())

@@ -20,6 +20,7 @@ from bbpd.kernels import KERNELS
 BENCH = ROOT / "python" / "bbpd" / "benchmarks"
 FREUND_PY = ROOT / "python" / "bbpd" / "freund.py"
 METRICS_PY = ROOT / "python" / "bbpd" / "metrics.py"
+READERS_PY = ROOT / "python" / "bbpd" / "readers.py"    # the benchmarks read their outputs with it
 
 HEARTBEAT_S = 30.0            # a running job says so this often
 ESTIMATES_ENV = "BBPD_REPORT_ESTIMATES"   # label -> expected seconds, for the heartbeat
@@ -126,13 +127,14 @@ def make_spec(bench, kernel, dx, target, args, inputs, estimate):
 def job_list(full=False):
     """The runs of the report: default resolutions, or the paper's full ones with full=True."""
     specs = []
-    disp_in = (ROOT / "examples" / "dispersion-1d" / "in.dispersion", BENCH / "dispersion.py")
+    disp_in = (ROOT / "examples" / "dispersion-1d" / "in.dispersion", BENCH / "dispersion.py",
+               READERS_PY)
     for k in KERNELS:
         specs.append(make_spec("dispersion", k, 0.2e-3, "bbpd.report:dispersion_run",
                                {"kernel": k}, disp_in + _tools(), ESTIMATE_S["dispersion"]))
 
     m1_in = (ROOT / "examples" / "mode1-semi-infinite" / "in.mode1", BENCH / "mode1.py",
-             FREUND_PY, METRICS_PY)
+             FREUND_PY, METRICS_PY, READERS_PY)
     mode1 = [("gaussian", dx) for dx in MODE1_TABLE2_DX]
     mode1 += [(k, MODE1_TABLE3_DX) for k in KERNELS if (k, MODE1_TABLE3_DX) not in mode1]
     for k, dx in mode1:
@@ -141,7 +143,7 @@ def job_list(full=False):
                                ESTIMATE_S.get(("mode1", dx), 60.0)))
 
     m2_in = (ROOT / "examples" / "mode2-central-crack" / "in.mode2", BENCH / "mode2.py",
-             FREUND_PY, METRICS_PY)
+             FREUND_PY, METRICS_PY, READERS_PY)
     for dx in (MODE2_DX_FULL if full else MODE2_DX):
         for k in KERNELS:
             specs.append(make_spec("mode2", k, dx, "bbpd.benchmarks.mode2:run",
@@ -149,7 +151,8 @@ def job_list(full=False):
                                    ESTIMATE_S.get(("mode2", dx), 60.0)))
 
     kw_in = (ROOT / "examples" / "kalthoff-winkler" / "in.kalthoff_winkler",
-             BENCH / "kalthoff_winkler.py", ROOT / "potentials" / "kalthoff_winkler_steel.bbpd")
+             BENCH / "kalthoff_winkler.py", ROOT / "potentials" / "kalthoff_winkler_steel.bbpd",
+             READERS_PY)
     kw = [(k, dx) for dx in KW_DX for k in KERNELS]
     if full:
         kw += [("gaussian", dx) for dx in KW_GAUSSIAN_DX_FULL]
