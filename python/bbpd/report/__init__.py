@@ -32,7 +32,7 @@ from .provenance import git_revision, lammps_build, machine, plugin_version
 from .runs import (BENCH, ESTIMATE_S, ESTIMATES_ENV, FREUND_PY, HEARTBEAT_S, KW_DX,
                    KW_GAUSSIAN_DX_FULL, METRICS_PY, MODE1_TABLE2_DX, MODE1_TABLE3_DX, MODE2_DX,
                    MODE2_DX_FULL, READERS_PY, Spec, _tools, build_of_run, dispersion_run, job_list,
-                   make_spec, run_job)
+                   make_spec, run_job, bench_inputs)
 from .sections import (dispersion_section, kw_section, kw_study_section, mode1_section,
                        mode2_section)
 from .tables import (DISP_KDX, _arrays, _plain, f, failed, failed_row, failure_text, md_table,
@@ -45,7 +45,7 @@ __all__ = ["ROOT", "Job", "COLORS", "KERNELS", "FIGURE_LIST", "write_report",
            "FREUND_PY", "HEARTBEAT_S", "KW_DX", "KW_GAUSSIAN_DX_FULL", "METRICS_PY",
            "READERS_PY",
            "MODE1_TABLE2_DX", "MODE1_TABLE3_DX", "MODE2_DX", "MODE2_DX_FULL", "Spec", "_tools",
-           "build_of_run", "dispersion_run", "job_list", "make_spec", "run_job",
+           "build_of_run", "bench_inputs", "dispersion_run", "job_list", "make_spec", "run_job",
            "dispersion_section", "kw_section", "kw_study_section", "mode1_section",
            "mode2_section", "DISP_KDX", "_arrays", "_plain", "f", "failed", "failed_row",
            "failure_text", "md_table", "run_time"]

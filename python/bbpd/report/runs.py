@@ -111,6 +111,21 @@ def _tools():
     return tuple(out)
 
 
+def bench_inputs(bench):
+    """The files a run of bench depends on (input script, analysis code, potential file): part
+    of its cache key, so that editing one reruns exactly the runs that read it."""
+    if bench == "dispersion":
+        return (ROOT / "examples" / "dispersion-1d" / "in.dispersion", BENCH / "dispersion.py",
+                READERS_PY) + _tools()
+    return {"mode1": (ROOT / "examples" / "mode1-semi-infinite" / "in.mode1", BENCH / "mode1.py",
+                      FREUND_PY, METRICS_PY, READERS_PY),
+            "mode2": (ROOT / "examples" / "mode2-central-crack" / "in.mode2", BENCH / "mode2.py",
+                      FREUND_PY, METRICS_PY, READERS_PY),
+            "kw": (ROOT / "examples" / "kalthoff-winkler" / "in.kalthoff_winkler",
+                   BENCH / "kalthoff_winkler.py",
+                   ROOT / "potentials" / "kalthoff_winkler_steel.bbpd", READERS_PY)}[bench]
+
+
 def make_spec(bench, kernel, dx, target, args, inputs, estimate):
     """One run of the report: target(workdir, **args) as a cached job whose key covers the
     files in inputs (input script, analysis code)."""
@@ -127,14 +142,12 @@ def make_spec(bench, kernel, dx, target, args, inputs, estimate):
 def job_list(full=False):
     """The runs of the report: default resolutions, or the paper's full ones with full=True."""
     specs = []
-    disp_in = (ROOT / "examples" / "dispersion-1d" / "in.dispersion", BENCH / "dispersion.py",
-               READERS_PY)
+    disp_in = bench_inputs("dispersion")
     for k in KERNELS:
         specs.append(make_spec("dispersion", k, 0.2e-3, "bbpd.report:dispersion_run",
-                               {"kernel": k}, disp_in + _tools(), ESTIMATE_S["dispersion"]))
+                               {"kernel": k}, disp_in, ESTIMATE_S["dispersion"]))
 
-    m1_in = (ROOT / "examples" / "mode1-semi-infinite" / "in.mode1", BENCH / "mode1.py",
-             FREUND_PY, METRICS_PY, READERS_PY)
+    m1_in = bench_inputs("mode1")
     mode1 = [("gaussian", dx) for dx in MODE1_TABLE2_DX]
     mode1 += [(k, MODE1_TABLE3_DX) for k in KERNELS if (k, MODE1_TABLE3_DX) not in mode1]
     for k, dx in mode1:
@@ -142,17 +155,14 @@ def job_list(full=False):
                                {"kernel": k, "dx": dx, "nprocs": 1}, m1_in,
                                ESTIMATE_S.get(("mode1", dx), 60.0)))
 
-    m2_in = (ROOT / "examples" / "mode2-central-crack" / "in.mode2", BENCH / "mode2.py",
-             FREUND_PY, METRICS_PY, READERS_PY)
+    m2_in = bench_inputs("mode2")
     for dx in (MODE2_DX_FULL if full else MODE2_DX):
         for k in KERNELS:
             specs.append(make_spec("mode2", k, dx, "bbpd.benchmarks.mode2:run",
                                    {"kernel": k, "dx": dx, "nprocs": 1}, m2_in,
                                    ESTIMATE_S.get(("mode2", dx), 60.0)))
 
-    kw_in = (ROOT / "examples" / "kalthoff-winkler" / "in.kalthoff_winkler",
-             BENCH / "kalthoff_winkler.py", ROOT / "potentials" / "kalthoff_winkler_steel.bbpd",
-             READERS_PY)
+    kw_in = bench_inputs("kw")
     kw = [(k, dx) for dx in KW_DX for k in KERNELS]
     if full:
         kw += [("gaussian", dx) for dx in KW_GAUSSIAN_DX_FULL]
