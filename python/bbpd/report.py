@@ -183,7 +183,8 @@ def job_list(full=False):
         specs.append(make_spec("kw", k, dx, "bbpd.benchmarks.kalthoff_winkler:run",
                                {"kernel": k, "dx": dx, "nprocs": 1}, kw_in,
                                ESTIMATE_S.get(("kw", dx), 600.0)))
-    return specs
+    from bbpd import work_precision    # its runs and timing repeats (work-precision diagrams)
+    return specs + work_precision.extra_specs(specs, work_precision.plan(full))
 
 
 # --------------------------------------------------------------------------- helpers
@@ -820,6 +821,11 @@ def write_report(out, specs, results, meta, start):
             sections.append({"title": bench, "setup": "", "table": "",
                              "text": f"FAILED to build this section: {type(exc).__name__}: {exc}",
                              "figures": []})
+    from bbpd import work_precision
+    try:
+        sections.append(work_precision.section(specs, results, figdir, notes))
+    except Exception as exc:  # one broken section must not cost the others
+        notes.append(f"work-precision section not made: {type(exc).__name__}: {exc}")
 
     n_failed = sum(failed(results.get(s.job.label)) for s in specs)
     wall = time.perf_counter() - start
