@@ -406,7 +406,7 @@ def _plain_log_ticks(ax, which):
 
     def sparse(v, _):    # minor ticks: 2, 3 and 5 times a power of ten only
         mantissa = round(v / 10.0 ** math.floor(math.log10(v) + 1e-9), 6) if v > 0 else 0
-        return f"{v:g}" if mantissa in MINOR_LABELS else ""
+        return f"{v:g}" if mantissa in MINOR_LABELS or hi / lo < LABEL_ALL_SPAN else ""
     axis.set_major_formatter(plain)
     axis.set_minor_formatter(FuncFormatter(sparse) if hi / lo < PLAIN_TICKS_SPAN
                              else NullFormatter())
@@ -414,6 +414,7 @@ def _plain_log_ticks(ax, which):
 
 PLAIN_TICKS_SPAN = 30.0    # label the minor ticks of log axes spanning less than this factor
 MINOR_LABELS = (2.0, 3.0, 5.0)
+LABEL_ALL_SPAN = 3.0       # ... and every minor tick of those spanning less than this factor
 
 
 def plot(path, table, benchmark):
@@ -462,7 +463,7 @@ def plot(path, table, benchmark):
             ax.set_xlabel("run time: LAMMPS loop, 1 rank (s)")
             ax.grid(True, which="both", alpha=0.3)
         fig.suptitle(TITLES[benchmark], fontsize=10)
-        fig.legend(list(handles.values()), list(handles), loc="lower center", fontsize=8,
+        fig.legend(list(handles.values()), list(handles), loc="lower center", fontsize=7.5,
                    ncol=3, frameon=False)
         rows_of_legend = (len(handles) + 2) // 3
         fig.tight_layout(rect=(0.0, 0.04 + 0.045 * rows_of_legend, 1.0, 1.0))
