@@ -271,9 +271,11 @@ def points_of(bench, res, kernel):
     return out
 
 
-def rows(runs):
+def rows(runs, notes=None):
     """CSV rows from runs: [(benchmark, kernel, dx, result, wall_s)] of finished runs.
-    Adds the Kalthoff-Winkler angle against each kernel's finest run (not for that run)."""
+    Adds the Kalthoff-Winkler angle against each kernel's finest run (not for that run).
+    A run that cannot be measured (e.g. a ring without the wavelength) is left out and named
+    in notes."""
     out = []
     finest = {}
     for bench, kernel, dx, res, wall in runs:
@@ -281,7 +283,13 @@ def rows(runs):
             if kernel not in finest or dx < finest[kernel][0]:
                 finest[kernel] = (dx, res["angle_deg"])
     for bench, kernel, dx, res, wall in runs:
-        for method, metric, err in points_of(bench, res, kernel):
+        try:
+            points = points_of(bench, res, kernel)
+        except ValueError as exc:
+            if notes is not None:
+                notes.append(f"work-precision: {bench} {kernel} dx = {dx:g} m left out: {exc}")
+            continue
+        for method, metric, err in points:
             out.append(dict(benchmark=bench, kernel=kernel, method=method, resolution=dx,
                             error_metric=metric, error=float(err), wall_s=wall))
         if (bench == "kalthoff_winkler" and kernel in finest and dx > finest[kernel][0]
@@ -508,7 +516,7 @@ def section(specs, results, figdir, notes):
     from bbpd import report
     figdir = Path(figdir)
     runs, samples = collect(specs, results)
-    table = rows(runs)
+    table = rows(runs, notes)
     csv_path = write_csv(figdir / "csv" / CSV_NAME, table)
     figs, text = [], []
     for bench in BENCHMARKS:

@@ -110,3 +110,13 @@ def test_dispersion_error_is_read_at_the_wavelength():
     assert wp.dispersion_error(res, "gaussian") == pytest.approx(1e-4 * kw / k.max())
     with pytest.raises(ValueError, match="misses"):
         wp.dispersion_error(res, "gaussian", wavelength=wp.WAVELENGTH * 1.01)
+
+
+def test_a_run_without_the_wavelength_is_left_out_and_named():
+    k = 2 * math.pi * np.arange(1, 501) / 0.21          # a ring 0.21 m long
+    res = {"measured": {"k": k, "omega": 5000.0 * k},
+           "analytic": {"constant": {"k": k, "omega_continuous": 5000.0 * k}}}
+    notes = []
+    table = wp.rows([("dispersion", "constant", 2e-4, res, 1.0)] + synthetic_runs()[:1], notes)
+    assert [r["benchmark"] for r in table] == ["mode1"] * 4
+    assert len(notes) == 1 and "dispersion constant" in notes[0] and "misses" in notes[0]
