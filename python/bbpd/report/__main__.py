@@ -12,8 +12,9 @@ def main(argv=None):
     ap = argparse.ArgumentParser(prog="tools/reproduce",
                                  description=report.__doc__.split("\n")[0])
     ap.add_argument("--full", action="store_true",
-                    help="finer grids as well: Mode II 0.25 mm, Kalthoff-Winkler Gaussian "
-                         "0.5 mm (about 3 more minutes on 2 cores), and the Kalthoff-Winkler "
+                    help="finer grids as well: Mode II 0.25 mm, Kalthoff-Winkler 0.5 mm, and "
+                         "for the work-precision diagrams Mode I 0.0125 m and dispersion m = 20 "
+                         "(about 12 more minutes on 2 cores), and the Kalthoff-Winkler "
                          "loading study (32 runs, about 1 h of single-core run time)")
     ap.add_argument("--out", default=str(ROOT / "report"), help="report folder (default report/)")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1,

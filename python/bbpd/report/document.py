@@ -28,6 +28,11 @@ def write_report(out, specs, results, meta, start):
             sections.append({"title": bench, "setup": "", "table": "",
                              "text": f"FAILED to build this section: {type(exc).__name__}: {exc}",
                              "figures": []})
+    from bbpd import work_precision
+    try:
+        sections.append(work_precision.section(specs, results, figdir, notes))
+    except Exception as exc:  # one broken section must not cost the others
+        notes.append(f"work-precision section not made: {type(exc).__name__}: {exc}")
 
     n_failed = sum(failed(results.get(s.job.label)) for s in specs)
     wall = time.perf_counter() - start

@@ -173,4 +173,5 @@ def job_list(full=False):
     if full:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
         from bbpd.benchmarks import kalthoff_winkler_study
         specs += kalthoff_winkler_study.jobs()
-    return specs
+    from bbpd import work_precision    # its runs and timing repeats (work-precision diagrams)
+    return specs + work_precision.extra_specs(specs, work_precision.plan(full))

@@ -1,0 +1,576 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Work-precision diagrams: error against run time for every benchmark of tools/reproduce.
+
+One line per kernel through its resolutions (Mode I and II: one per K extraction method as
+well), on log-log axes, so that a reader sees which kernel reaches an accuracy for the least
+compute:
+
+mode1             L2 and peak error (%) of K_I against Freund's eq. 42 in the consistent
+                  convention, dx = MODE1_DX (MODE1_DX_FULL with --full); K_I by displacement
+                  extrapolation (compute bbpd/dsif) and by the J-integral (compute
+                  bbpd/jintegral), both computed in the same run.
+mode2             L2 error (%) of K_II against the FE-checked early-time reference.
+dispersion        |c/c_29 - 1|: measured phase velocity against the continuum relation (eq. 29)
+                  at the fixed wavelength WAVELENGTH, on a ring of fixed length RING_LENGTH and
+                  fixed horizon, as m = delta/dx grows (DISPERSION_M).
+kalthoff_winkler  crack angle: |angle - angle of the kernel's finest run| and |angle - 70 deg|;
+                  and the initiation time (damage band leaves the tip), all against run time.
+
+Run time is the LAMMPS loop time ("Loop time of X on 1 procs", the time-stepping loop of the
+single-rank run, without start-up and setup).  Runs expected under REPEAT_BELOW_S are timed
+TIMING_REPEATS times (the report's run and repeats of the same run in separate jobs) and the
+median is used.
+
+The runs are jobs of bbpd.jobs like the report's own: extra_specs() adds only the runs the
+report does not make already, and the timing repeats; section() turns the results into
+report/csv/work_precision.csv, report/work_precision_<benchmark>.png and a report section.
+"""
+
+import csv
+import importlib
+import math
+import shutil
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from bbpd.kernels import COLORS, KERNELS
+
+BENCHMARKS = ("mode1", "mode2", "dispersion", "kalthoff_winkler")
+CSV_COLUMNS = ("benchmark", "kernel", "method", "resolution", "error_metric", "error", "wall_s")
+CSV_NAME = "work_precision.csv"
+
+# report.py's benchmark names -> ours; "wp-*" are the runs added here
+BENCH_OF_SPEC = {"mode1": "mode1", "wp-mode1": "mode1", "mode2": "mode2", "wp-mode2": "mode2",
+                 "dispersion": "dispersion", "wp-dispersion": "dispersion",
+                 "kw": "kalthoff_winkler", "wp-kw": "kalthoff_winkler"}
+TIMING_BENCH = "wp-timing"
+
+# resolutions (m): one line per kernel through them
+MODE1_DX = (0.1, 0.05, 0.025)
+MODE1_DX_FULL = MODE1_DX + (0.0125,)
+MODE2_DX = (1.0e-3, 0.5e-3)
+MODE2_DX_FULL = MODE2_DX + (0.25e-3,)
+KW_DX = (2.0e-3, 1.0e-3)
+KW_DX_FULL = KW_DX + (0.5e-3,)
+
+# dispersion: the example's ring (1000 atoms at dx = delta/5 = 0.2 mm) kept at its physical
+# length and run time while m = delta/dx grows at the paper's delta = 1 mm
+DISPERSION_M = (3, 5, 10)
+DISPERSION_M_FULL = DISPERSION_M + (20,)
+DISPERSION_DELTA = 1.0e-3          # m, paper Figs. 4-6
+RING_LENGTH = 0.2                  # m: in.dispersion's default 1000 atoms x 0.2 mm
+RING_STEPS_PER_M = 400             # in.dispersion's default 2000 steps at m = 5, dt = dx/v
+RING_SAMPLES = 1000                # samples of u(x, t): in.dispersion's 2000 steps / every 2
+WAVELENGTH_MODE = 64               # the fixed wave: 64 wavelengths on the ring (k delta = 2.01)
+WAVELENGTH = RING_LENGTH / WAVELENGTH_MODE
+K_MATCH_RTOL = 1.0e-9              # the ring's k grid holds 2 pi/WAVELENGTH to round-off
+
+EXPERIMENT_ANGLE_DEG = 70.0        # Kalthoff-Winkler experiment (kalthoff_winkler module)
+
+TIMING_REPEATS = 3                 # runs timed this often (median) when expected short
+REPEAT_BELOW_S = 10.0              # "short": expected loop time below this
+
+# expected wall time of the added runs (s) where report.ESTIMATE_S has none: job order and
+# the choice of which runs are repeated for timing only
+DISPERSION_ESTIMATE_S = {3: 2.0, 5: 3.0, 10: 6.0, 20: 9.0}
+MODE1_ESTIMATE_S = {0.0125: 300.0}
+KW_ESTIMATE_S = {0.5e-3: 200.0}
+
+# the error that the sentences ask each kernel's cost for
+TARGETS = {("mode1", "L2 (%)"): 3.0,        # the paper's Gaussian L2 at dx = 0.05 m: 2.86 %
+           ("mode1", "peak (%)"): 1.0,
+           ("mode2", "L2 (%)"): 10.0,
+           ("dispersion", "|c/c_29 - 1|"): 5.0e-3,
+           ("kalthoff_winkler", "|angle - finest| (deg)"): 3.0,
+           ("kalthoff_winkler", "|angle - 70 deg| (deg)"): 10.0}
+
+METHOD_LABEL = {"dsif": "displacement extrapolation", "jintegral": "J-integral",
+                "ridge": "FFT ridge", "damage": "damage map"}
+METHOD_STYLE = {"dsif": "-", "jintegral": "--", "ridge": "-", "damage": "-"}
+MARKERS = ("o", "s", "^", "D", "v")
+
+
+@dataclass(frozen=True)
+class Plan:
+    """Resolutions of the work-precision study (dx in m; dispersion: m)."""
+    mode1_dx: tuple = MODE1_DX
+    mode2_dx: tuple = MODE2_DX
+    kw_dx: tuple = KW_DX
+    dispersion_m: tuple = DISPERSION_M
+    kernels: tuple = KERNELS
+    repeats: int = TIMING_REPEATS
+
+
+def plan(full=False):
+    if full:
+        return Plan(MODE1_DX_FULL, MODE2_DX_FULL, KW_DX_FULL, DISPERSION_M_FULL)
+    return Plan()
+
+
+# --------------------------------------------------------------------------- jobs
+
+def dispersion_vars(m):
+    """in.dispersion variables of the ring at m = delta/dx: fixed length, duration, samples."""
+    natoms = int(round(RING_LENGTH * m / DISPERSION_DELTA))
+    nsteps = int(round(RING_STEPS_PER_M * m))
+    return {"m": m, "delta": DISPERSION_DELTA, "natoms": natoms, "nsteps": nsteps,
+            "every": max(1, int(round(nsteps / RING_SAMPLES)))}
+
+
+def dispersion_run(workdir, kernel, m):
+    """One kernel of the dispersion ring at m = delta/dx (dispersion.measure)."""
+    from bbpd.benchmarks import dispersion
+    res = dispersion.measure((kernel,), work=workdir, **dispersion_vars(m))[kernel]
+    res["analytic"] = {kernel: res["analytic"][kernel]}    # the other kernels' are not needed
+    return res
+
+
+def loop_time(res):
+    """The LAMMPS loop time (s) a benchmark result reports, or None."""
+    for value in (res.get("loop_time"), res.get("loop_s"), (res.get("info") or {}).get("loop_s")):
+        if value is not None:
+            return float(value)
+    return None
+
+
+def repeat_run(workdir, target, args, repeats, of=None):
+    """Time target(**args) again, up to `repeats` times, while its loop time stays short:
+    returns the loop times (s).  Only the times are kept; the outputs are deleted.
+    of: the label of the report's run of the same arguments (only names it)."""
+    module, name = target.split(":")
+    fn = getattr(importlib.import_module(module), name)
+    times = []
+    for n in range(repeats):
+        sub = Path(workdir) / f"repeat{n}"
+        try:
+            t = loop_time(dict(fn(workdir=str(sub), **args)))
+        finally:
+            shutil.rmtree(sub, ignore_errors=True)
+        if t is None:
+            raise RuntimeError(f"{target}: the run reports no loop time")
+        times.append(t)
+        if t >= REPEAT_BELOW_S:
+            break
+    return {"loop_times": times}
+
+
+def _timing_spec(report, spec, repeats):
+    from bbpd.jobs import Job
+    label = f"timing of {spec.job.label}"
+    kw = spec.job.kwargs
+    job = Job(label=label, func="bbpd.work_precision:repeat_run",
+              kwargs={"target": kw["target"], "args": kw["args"], "repeats": repeats,
+                      "of": spec.job.label},
+              inputs=spec.job.inputs, estimate_s=spec.job.estimate_s * repeats)
+    return report.Spec(TIMING_BENCH, spec.kernel, spec.dx, job)
+
+
+def extra_specs(specs, the_plan):
+    """The runs of the_plan that specs (report.job_list) lacks, and timing repeats of the
+    short ones (estimate below REPEAT_BELOW_S): a list of report.Spec."""
+    from bbpd import report
+    from bbpd.jobs import Job
+    have = {(BENCH_OF_SPEC.get(s.bench), s.kernel, round(s.dx, 12)): s for s in specs
+            if s.bench != TIMING_BENCH}
+    out, runs = [], []
+
+    def want(bench, kernel, dx, make):
+        key = (bench, kernel, round(dx, 12))
+        if key not in have:
+            have[key] = make()
+            out.append(have[key])
+        runs.append(have[key])
+
+    est = report.ESTIMATE_S
+    # the same files as the report's own runs of each benchmark (report.bench_inputs)
+    m1_in, m2_in, kw_in = (report.bench_inputs(b) for b in ("mode1", "mode2", "kw"))
+
+    def renamed(spec, bench):
+        return report.Spec(bench, spec.kernel, spec.dx, spec.job)
+
+    for k in the_plan.kernels:
+        for m in the_plan.dispersion_m:
+            dx = DISPERSION_DELTA / m
+            label = f"dispersion {k} m = {m:g}"
+            want("dispersion", k, dx, lambda: report.Spec(
+                "wp-dispersion", k, dx,
+                Job(label=label, func="bbpd.report:run_job",
+                    kwargs={"target": "bbpd.work_precision:dispersion_run",
+                            "args": {"kernel": k, "m": m}, "label": label},
+                    inputs=tuple(str(p) for p in report.bench_inputs("dispersion")),
+                    estimate_s=DISPERSION_ESTIMATE_S.get(m, 60.0))))
+        for dx in the_plan.mode1_dx:
+            want("mode1", k, dx, lambda: renamed(report.make_spec(
+                "mode1", k, dx, "bbpd.benchmarks.mode1:run", {"kernel": k, "dx": dx, "nprocs": 1},
+                m1_in, est.get(("mode1", dx), MODE1_ESTIMATE_S.get(dx, 60.0))), "wp-mode1"))
+        for dx in the_plan.mode2_dx:
+            want("mode2", k, dx, lambda: renamed(report.make_spec(
+                "mode2", k, dx, "bbpd.benchmarks.mode2:run", {"kernel": k, "dx": dx, "nprocs": 1},
+                m2_in, est.get(("mode2", dx), 60.0)), "wp-mode2"))
+        for dx in the_plan.kw_dx:
+            want("kalthoff_winkler", k, dx, lambda: renamed(report.make_spec(
+                "kw", k, dx, "bbpd.benchmarks.kalthoff_winkler:run",
+                {"kernel": k, "dx": dx, "nprocs": 1}, kw_in,
+                est.get(("kw", dx), KW_ESTIMATE_S.get(dx, 600.0))), "wp-kw"))
+    if the_plan.repeats > 1:
+        out += [_timing_spec(report, s, the_plan.repeats - 1) for s in runs
+                if s.job.estimate_s < REPEAT_BELOW_S]
+    return out
+
+
+# --------------------------------------------------------------------------- measurements
+
+def dispersion_error(res, kernel, wavelength=WAVELENGTH):
+    """|c_measured/c_29 - 1| at the wave number 2 pi/wavelength (a point of the ring's grid)."""
+    meas, ana = res["measured"], res["analytic"][kernel]
+    k = np.asarray(meas["k"], dtype=float)
+    target = 2.0 * math.pi / wavelength
+    i = int(np.argmin(np.abs(k - target)))
+    if abs(k[i] / target - 1.0) > K_MATCH_RTOL:
+        raise ValueError(f"the ring's k grid misses k = {target:.6g} 1/m (nearest {k[i]:.6g}): "
+                         "its length must be a multiple of the wavelength")
+    if abs(float(ana["k"][i]) / k[i] - 1.0) > K_MATCH_RTOL:
+        raise ValueError("measured and analytic k grids differ")
+    phase = float(meas["omega"][i]) / k[i]
+    continuum = float(ana["omega_continuous"][i]) / float(ana["k"][i])
+    return abs(phase / continuum - 1.0)
+
+
+def points_of(bench, res, kernel):
+    """[(method, error_metric, error)] of one finished run (the KW angle against the finest run
+    is added later, in rows())."""
+    if bench == "mode1":
+        out = [("dsif", "L2 (%)", res["consistent"]["l2"]),
+               ("dsif", "peak (%)", res["consistent"]["peak"])]
+        j = (res.get("jintegral") or {}).get("consistent")
+        if j:
+            out += [("jintegral", "L2 (%)", j["l2"]), ("jintegral", "peak (%)", j["peak"])]
+        return out
+    if bench == "mode2":
+        out = [("dsif", "L2 (%)", res["l2"])]
+        if res.get("jintegral"):
+            out.append(("jintegral", "L2 (%)", res["jintegral"]["l2"]))
+        return out
+    if bench == "dispersion":
+        return [("ridge", "|c/c_29 - 1|", dispersion_error(res, kernel))]
+    out = []
+    if res.get("angle_deg") is not None:
+        out.append(("damage", "|angle - 70 deg| (deg)",
+                    abs(res["angle_deg"] - EXPERIMENT_ANGLE_DEG)))
+    if res.get("t_band_us") is not None:
+        out.append(("damage", "initiation time (us)", res["t_band_us"]))
+    return out
+
+
+def rows(runs, notes=None):
+    """CSV rows from runs: [(benchmark, kernel, dx, result, wall_s)] of finished runs.
+    Adds the Kalthoff-Winkler angle against each kernel's finest run (not for that run).
+    A run that cannot be measured (e.g. a ring without the wavelength) is left out and named
+    in notes."""
+    out = []
+    finest = {}
+    for bench, kernel, dx, res, wall in runs:
+        if bench == "kalthoff_winkler" and res.get("angle_deg") is not None:
+            if kernel not in finest or dx < finest[kernel][0]:
+                finest[kernel] = (dx, res["angle_deg"])
+    for bench, kernel, dx, res, wall in runs:
+        try:
+            points = points_of(bench, res, kernel)
+        except ValueError as exc:
+            if notes is not None:
+                notes.append(f"work-precision: {bench} {kernel} dx = {dx:g} m left out: {exc}")
+            continue
+        for method, metric, err in points:
+            out.append(dict(benchmark=bench, kernel=kernel, method=method, resolution=dx,
+                            error_metric=metric, error=float(err), wall_s=wall))
+        if (bench == "kalthoff_winkler" and kernel in finest and dx > finest[kernel][0]
+                and res.get("angle_deg") is not None):
+            out.append(dict(benchmark=bench, kernel=kernel, method="damage", resolution=dx,
+                            error_metric="|angle - finest| (deg)",
+                            error=abs(res["angle_deg"] - finest[kernel][1]), wall_s=wall))
+    order = {b: n for n, b in enumerate(BENCHMARKS)}
+    out.sort(key=lambda r: (order[r["benchmark"]], r["error_metric"], r["method"],
+                            KERNELS.index(r["kernel"]) if r["kernel"] in KERNELS else 99,
+                            -r["resolution"]))
+    return out
+
+
+def write_csv(path, table):
+    """table: rows() dicts -> CSV with CSV_COLUMNS (resolution: dx in m)."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with path.open("w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(CSV_COLUMNS)
+        for r in table:
+            w.writerow([r["benchmark"], r["kernel"], r["method"], f"{r['resolution']:.10g}",
+                        r["error_metric"], f"{r['error']:.6g}", f"{r['wall_s']:.4g}"])
+    return path
+
+
+def read_csv(path):
+    with Path(path).open(newline="") as fh:
+        out = []
+        for r in csv.DictReader(fh):
+            for key in ("resolution", "error", "wall_s"):
+                r[key] = float(r[key])
+            out.append(r)
+        return out
+
+
+# --------------------------------------------------------------------------- sentences
+
+def cost_to_reach(table, benchmark, metric, target):
+    """(kernel, method) -> (wall_s, resolution) of the cheapest run with error <= target, or
+    None with the best error instead: {(kernel, method): ("reached", wall, dx) | ("missed",
+    best error, wall, dx)}."""
+    out = {}
+    for r in table:
+        if r["benchmark"] != benchmark or r["error_metric"] != metric:
+            continue
+        key = (r["kernel"], r["method"])
+        if r["error"] <= target:
+            cur = out.get(key)
+            if cur is None or cur[0] == "missed" or r["wall_s"] < cur[1]:
+                out[key] = ("reached", r["wall_s"], r["resolution"])
+        else:
+            cur = out.get(key)
+            if cur is None or (cur[0] == "missed" and r["error"] < cur[1]):
+                out[key] = ("missed", r["error"], r["wall_s"], r["resolution"])
+    return out
+
+
+def _fmt_s(seconds):
+    return f"{seconds:.2g} s" if seconds < 10 else f"{seconds:.0f} s"
+
+
+def _fmt_dx(benchmark, dx):
+    if benchmark == "dispersion":
+        return f"m = {DISPERSION_DELTA / dx:.3g}"
+    if benchmark == "mode1":
+        return f"dx = {dx:g} m"
+    return f"dx = {dx * 1e3:g} mm"
+
+
+def _fmt_err(metric, value):
+    if metric.startswith("|c/"):
+        return f"{100 * value:.2g} %"
+    unit = " %" if "(%)" in metric else " deg" if "(deg)" in metric else ""
+    return f"{value:.3g}{unit}"
+
+
+def sentence(table, benchmark, metric, target):
+    """'for L2 <= 3 % the gaussian kernel needs 4.1 s (dx = 0.05 m), ...' per method, or ''."""
+    reach = cost_to_reach(table, benchmark, metric, target)
+    if not reach:
+        return ""
+    short = metric.split(" (")[0]
+    parts = []
+    for method in sorted({m for _, m in reach}, key=list(METHOD_LABEL).index):
+        mine = {k: v for (k, m), v in reach.items() if m == method}
+        got = sorted((v[1], k, v[2]) for k, v in mine.items() if v[0] == "reached")
+        miss = [(k, v) for k, v in mine.items() if v[0] == "missed"]
+        bits = [f"the {k} kernel needs {_fmt_s(w)} ({_fmt_dx(benchmark, dx)})"
+                for w, k, dx in got]
+        bits += [f"the {k} kernel does not reach it (best {_fmt_err(metric, v[1])} at "
+                 f"{_fmt_s(v[2])}, {_fmt_dx(benchmark, v[3])})"
+                 for k, v in sorted(miss, key=lambda x: KERNELS.index(x[0])
+                                    if x[0] in KERNELS else 99)]
+        lead = "" if len({m for _, m in reach}) == 1 else f"with the {METHOD_LABEL[method]}, "
+        parts.append(lead + ", ".join(bits))
+    return (f"For {short} <= {_fmt_err(metric, target)}: " + "; ".join(parts) + ".")
+
+
+# --------------------------------------------------------------------------- figures
+
+PANELS = {"mode1": ("L2 (%)", "peak (%)"), "mode2": ("L2 (%)",),
+          "dispersion": ("|c/c_29 - 1|",),
+          "kalthoff_winkler": ("|angle - finest| (deg)", "|angle - 70 deg| (deg)",
+                               "initiation time (us)")}
+TITLES = {"mode1": "Mode I: K_I against Freund (consistent constants)",
+          "mode2": "Mode II: K_II against the FE-checked reference",
+          "dispersion": f"1D dispersion: phase velocity against eq. 29,\nwavelength "
+                        f"{WAVELENGTH * 1e3:g} mm, delta = {DISPERSION_DELTA * 1e3:g} mm",
+          "kalthoff_winkler": "Kalthoff-Winkler: crack angle and initiation"}
+PAPER_INITIATION_US = {"constant": 20.0, "triangular": 20.8, "gaussian": 21.7}
+
+
+def _plain_log_ticks(ax, which):
+    """Plain numbers (0.3, 2, 20) on a log axis that spans little more than a decade, where
+    matplotlib would print mantissa x 10^e labels or none at all."""
+    from matplotlib.ticker import FuncFormatter, NullFormatter
+    lo, hi = ax.get_xlim() if which == "x" else ax.get_ylim()
+    axis = ax.xaxis if which == "x" else ax.yaxis
+    plain = FuncFormatter(lambda v, _: f"{v:g}")
+
+    def sparse(v, _):    # minor ticks: 2, 3 and 5 times a power of ten only
+        mantissa = round(v / 10.0 ** math.floor(math.log10(v) + 1e-9), 6) if v > 0 else 0
+        return f"{v:g}" if mantissa in MINOR_LABELS or hi / lo < LABEL_ALL_SPAN else ""
+    axis.set_major_formatter(plain)
+    axis.set_minor_formatter(FuncFormatter(sparse) if hi / lo < PLAIN_TICKS_SPAN
+                             else NullFormatter())
+
+
+PLAIN_TICKS_SPAN = 30.0    # label the minor ticks of log axes spanning less than this factor
+MINOR_LABELS = (2.0, 3.0, 5.0)
+LABEL_ALL_SPAN = 3.0       # ... and every minor tick of those spanning less than this factor
+
+
+def plot(path, table, benchmark):
+    """One log-log panel per metric: error against run time, one line per kernel and method
+    through its resolutions (each point labelled with its resolution)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    panels = PANELS[benchmark]
+    width = max(8.0, 5.0 * len(panels))
+    fig, axes = plt.subplots(1, len(panels), figsize=(width, 5.0), squeeze=False)
+    handles = {}
+    try:
+        for ax, metric in zip(axes[0], panels):
+            mine = [r for r in table if r["benchmark"] == benchmark and r["error_metric"] == metric]
+            lines = sorted({(r["kernel"], r["method"]) for r in mine},
+                           key=lambda x: (KERNELS.index(x[0]) if x[0] in KERNELS else 99, x[1]))
+            for kernel, method in lines:
+                pts = sorted((r["wall_s"], r["error"], r["resolution"]) for r in mine
+                             if r["kernel"] == kernel and r["method"] == method)
+                t, e, dx = zip(*pts)
+                y = [100 * v for v in e] if metric.startswith("|c/") else e
+                label = kernel + ("" if method in ("ridge", "damage")
+                                  else f", {METHOD_LABEL[method]}")
+                (h,) = ax.plot(t, y, METHOD_STYLE.get(method, "-"),
+                               color=COLORS.get(kernel, "black"),
+                               marker="o" if method != "jintegral" else "s", markersize=4,
+                               label=label)
+                handles.setdefault(label, h)
+                for ti, yi, di in zip(t, y, dx):
+                    ax.annotate(_fmt_dx(benchmark, di).replace("dx = ", ""), (ti, yi),
+                                fontsize=6, textcoords="offset points", xytext=(3, 3),
+                                color="dimgrey")
+            ax.set_xscale("log")
+            if metric == "initiation time (us)":
+                for kernel, t0 in PAPER_INITIATION_US.items():
+                    ax.axhline(t0, color=COLORS[kernel], linestyle=":", linewidth=0.9)
+                ax.set_ylabel("initiation time (us); dotted: the paper's")
+            else:
+                if any(r["error"] > 0 for r in mine):
+                    ax.set_yscale("log")
+                    _plain_log_ticks(ax, "y")
+                ax.set_ylabel("|c/c_29 - 1| (%)" if metric.startswith("|c/") else metric)
+            if mine:
+                _plain_log_ticks(ax, "x")
+            ax.set_xlabel("run time: LAMMPS loop, 1 rank (s)")
+            ax.grid(True, which="both", alpha=0.3)
+        fig.suptitle(TITLES[benchmark], fontsize=10)
+        fig.legend(list(handles.values()), list(handles), loc="lower center", fontsize=7.5,
+                   ncol=3, frameon=False)
+        rows_of_legend = (len(handles) + 2) // 3
+        fig.tight_layout(rect=(0.0, 0.04 + 0.045 * rows_of_legend, 1.0, 1.0))
+        fig.savefig(path, dpi=150)
+    finally:
+        plt.close(fig)
+    return path
+
+
+# --------------------------------------------------------------------------- report section
+
+def collect(specs, results):
+    """Finished runs and their run times: ([(benchmark, kernel, dx, result, wall_s)],
+    {label: number of timings}, [failed labels])."""
+    from bbpd import report
+    repeats = {}
+    for s in specs:
+        if s.bench == TIMING_BENCH:
+            res = results.get(s.job.label)
+            if not report.failed(res):
+                repeats[s.job.kwargs["of"]] = list(res["loop_times"])
+    runs, samples, seen = [], {}, set()
+    for s in specs:
+        bench = BENCH_OF_SPEC.get(s.bench)
+        if bench is None:
+            continue
+        key = (bench, s.kernel, round(s.dx, 12))
+        res = results.get(s.job.label)
+        if key in seen or report.failed(res):
+            continue
+        seen.add(key)
+        times = [t for t in [loop_time(res)] + repeats.get(s.job.label, []) if t is not None]
+        if not times:
+            continue
+        samples[s.job.label] = len(times)
+        runs.append((bench, s.kernel, s.dx, res, float(np.median(times))))
+    return runs, samples
+
+
+def section(specs, results, figdir, notes):
+    """The report section: CSV, one figure per benchmark, sentences computed from the numbers."""
+    from bbpd import report
+    figdir = Path(figdir)
+    runs, samples = collect(specs, results)
+    table = rows(runs, notes)
+    csv_path = write_csv(figdir / "csv" / CSV_NAME, table)
+    figs, text = [], []
+    for bench in BENCHMARKS:
+        if not any(r["benchmark"] == bench for r in table):
+            continue
+        path = figdir / f"work_precision_{bench}.png"
+        name = report._figure(lambda: plot(path, table, bench), path, notes)
+        figs += [name] if name else []
+        said = [sentence(table, bench, metric, target)
+                for (b, metric), target in TARGETS.items() if b == bench]
+        text.append(f"**{bench}**: " + " ".join(s for s in said if s)
+                    + (" " + kw_initiation_text(table) if bench == "kalthoff_winkler" else ""))
+    counts = sorted(set(samples.values()))
+    setup = ("Error against run time for every benchmark, one line per kernel through its "
+             "resolutions (Mode I and II: per K extraction method; both methods come from the "
+             "same run, so they share its time). Run time: the LAMMPS loop time of the "
+             "single-rank run (\"Loop time of X on 1 procs\": the time steps, without start-up "
+             f"and setup), the median of {TIMING_REPEATS} timings for runs expected under "
+             f"{REPEAT_BELOW_S:g} s (timings per run: {', '.join(map(str, counts)) or '-'}); "
+             "the runs share the cores with each other and with anything else on the machine. "
+             "Dispersion: a ring of fixed length "
+             f"{RING_LENGTH:g} m and fixed horizon {DISPERSION_DELTA * 1e3:g} mm at m = "
+             "delta/dx = " + ", ".join(f"{m:g}" for m in sorted(
+                 {round(DISPERSION_DELTA / r[2]) for r in runs if r[0] == 'dispersion'}))
+             + f", error |c/c_29 - 1| at the wavelength {WAVELENGTH * 1e3:g} mm (k delta = "
+             f"{2 * math.pi * DISPERSION_DELTA / WAVELENGTH:.2f}). Kalthoff-Winkler: "
+             "initiation = the damage band leaves the tip. Machine: " + report.machine()
+             + f". All points: {csv_path.parent.name}/{csv_path.name}.")
+    return {"title": "Error against run time (work-precision diagrams)", "setup": setup,
+            "table": summary_table(table), "text": " ".join(text), "figures": figs}
+
+
+def kw_initiation_text(table):
+    """How the initiation time moves from the coarsest to the finest run of each kernel."""
+    bits = []
+    for k in KERNELS:
+        pts = sorted(((r["resolution"], r["error"], r["wall_s"]) for r in table
+                      if r["benchmark"] == "kalthoff_winkler" and r["kernel"] == k
+                      and r["error_metric"] == "initiation time (us)"), reverse=True)
+        if len(pts) > 1:
+            bits.append(f"{k} " + " -> ".join(f"{e:.1f}" for _, e, _ in pts) + " us at "
+                        + " -> ".join(_fmt_s(w) for _, _, w in pts))
+    return ("Initiation time with refinement: " + "; ".join(bits) + ".") if bits else ""
+
+
+def summary_table(table):
+    """Markdown: one row per benchmark, kernel, method and metric: error (run time) per
+    resolution, coarsest first."""
+    from bbpd.report import md_table
+    keys = []
+    for r in table:
+        key = (r["benchmark"], r["kernel"], r["method"], r["error_metric"])
+        if key not in keys:
+            keys.append(key)
+    body = []
+    for bench, kernel, method, metric in keys:
+        pts = sorted(((r["resolution"], r["error"], r["wall_s"]) for r in table
+                      if (r["benchmark"], r["kernel"], r["method"], r["error_metric"])
+                      == (bench, kernel, method, metric)), reverse=True)
+        body.append([bench, kernel, METHOD_LABEL[method], metric,
+                     "; ".join(f"{_fmt_dx(bench, dx)}: {_fmt_err(metric, e)} ({_fmt_s(w)})"
+                               for dx, e, w in pts)])
+    return md_table(["benchmark", "kernel", "method", "metric",
+                     "error (run time) per resolution"], body)
