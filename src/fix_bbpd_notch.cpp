@@ -13,17 +13,19 @@
 #include "error.h"
 #include "fix_bbpd_bonds.h"
 #include "force.h"
+#include "modify.h"
 
 #include <cmath>
 #include <cstring>
 
 using namespace LAMMPS_NS;
+using namespace FixConst;
 
 // a bond through a notch's end point counts as cut: without this tolerance round-off decides,
 // and mirror-image notches would cut different bonds (relative to the notch's edge lengths)
 static constexpr double NOTCH_END_TOLERANCE = 1.0e-12;
 
-FixBBPDNotch::FixBBPDNotch(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), ncut(0)
+FixBBPDNotch::FixBBPDNotch(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), bonds(nullptr)
 {
   const int dim = domain->dimension;
   const char *usage = dim == 2 ? "segment x1 y1 x2 y2" : "rectangle cx cy cz ax ay az bx by bz";
@@ -70,11 +72,21 @@ FixBBPDNotch::FixBBPDNotch(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
   }
 }
 
+/* PRE_FORCE only for its setup hook: pre_force() itself does nothing */
+int FixBBPDNotch::setmask()
+{
+  return PRE_FORCE | MIN_PRE_FORCE;
+}
+
 void FixBBPDNotch::init()
 {
   if (!atom->peri_flag) error->all(FLERR, "Fix bbpd/notch requires atom_style peri");
   if (!force->pair_match("^bbpd/", 0))
     error->all(FLERR, "Fix bbpd/notch requires a bbpd/* pair style (it cuts their bonds)");
+  // the pair style has created its bond fix in its init_style(), which runs before this
+  auto fixes = modify->get_fix_by_style("^bbpd/bonds$");
+  bonds = fixes.empty() ? nullptr : dynamic_cast<FixBBPDBonds *>(fixes.front());
+  if (!bonds) error->all(FLERR, "Fix bbpd/notch found no bond families of a bbpd/* pair style");
 }
 
 /* does the bond xa-xb cross the notch? points on the notch plane count as its positive side */
@@ -120,8 +132,9 @@ bool FixBBPDNotch::crosses(const Cut &c, const double *xa, const double *xb, int
 }
 
 /* break every intact bond crossing a notch; idempotent, so it is safe on every run setup */
-void FixBBPDNotch::cut_bonds(FixBBPDBonds *bonds)
+void FixBBPDNotch::setup_pre_force(int)
 {
+  if (!bonds->families_built()) return;
   double **x0 = atom->x0;
   int *mask = atom->mask;
   const tagint *tag = atom->tag;

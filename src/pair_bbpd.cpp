@@ -54,9 +54,9 @@ static constexpr double BREAK_MARGIN_ULPS = 16.0;
 
 PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k) :
     Pair(lmp), kernel(k), model(BBPD::Model::Solid3D), geom(1.0), spacing(0.0),
-    dt_safety(DT_SAFETY_DEFAULT), contact(0), compact_storage(0), contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
+    dt_safety(DT_SAFETY_DEFAULT), contact(0), contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
     fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
-    s0_user(nullptr), bonds(nullptr), dt_bound_paper(0.0), dt_bound(0.0), multi_s0(0),
+    s0_user(nullptr), bonds(nullptr), report_due(0), dt_bound_paper(0.0), dt_bound(0.0), multi_s0(0),
     s0_single(0.0), s0_seen(0), break_margin(0.0),
     compat_pmb(0), lattice_constant(0.0), alpha(nullptr), alpha_any(0),
     nmax_smin(0), smin_new(nullptr), alpha_state(nullptr)
@@ -138,7 +138,7 @@ void PairBBPD::settings(int narg, char **arg)
   dt_safety = DT_SAFETY_DEFAULT;
   contact = 0;
   contact_factor = CONTACT_FACTOR_DEFAULT;
-  compact_storage = 0;
+  storage = BBPD::BondStorage::FAST;
   compat_pmb = 0;
   while (iarg < narg) {
     const std::string key = arg[iarg];
@@ -164,7 +164,7 @@ void PairBBPD::settings(int narg, char **arg)
       if (v != "fast" && v != "compact")
         error->all(FLERR, "Pair style {}: bond/storage must be 'fast' (48 bytes per bond) or "
                    "'compact' (16 bytes per bond, slower)", style);
-      compact_storage = v == "compact";
+      storage = v == "compact" ? BBPD::BondStorage::COMPACT : BBPD::BondStorage::FAST;
       iarg += 2;
       continue;
     }
@@ -326,7 +326,7 @@ void PairBBPD::init_style()
   if (BBPD::family_dimension(model) == 2 && domain->dimension != 2)
     error->all(FLERR, "Pair style {} model {} requires 'dimension 2' (use model 3d for a 3D body)",
                style, BBPD::model_name(model));
-  if (compact_storage && (domain->xperiodic || domain->yperiodic || (domain->zperiodic && domain->dimension == 3)))
+  if (!storage.caches_geometry() && (domain->xperiodic || domain->yperiodic || (domain->zperiodic && domain->dimension == 3)))
     error->all(FLERR, "Pair style {}: bond/storage compact does not support periodic boundaries "
                "(reference lengths are recomputed from x0, which is not unwrapped): use "
                "bond/storage fast", style);
@@ -361,6 +361,7 @@ void PairBBPD::init_style()
     bonds = dynamic_cast<FixBBPDBonds *>(
         modify->add_fix(std::string(BONDS_FIX_ID) + " all bbpd/bonds"));
   if (!bonds) error->all(FLERR, "Pair style {} could not create its bond-family fix", style);
+  bonds->set_rules(this, storage);
   // a neighbour list only when contact is asked for: bonds need none
   if (contact) neighbor->add_request(this, NeighConst::REQ_FULL)->set_cutoff(contact_factor * spacing);
   init_pmb();
@@ -424,6 +425,10 @@ void PairBBPD::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (!bonds || !bonds->families_built()) return;
+  if (report_due) {
+    report_due = 0;
+    report();
+  }
   break_margin = 0.0;
   if (fracture_any && bonds->raw_positions()) {
     // the local and the canonical bond length differ by the round-off of one periodic shift
@@ -629,7 +634,7 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
   const double *xx = atom->x[0];
   const int beg = bonds->bond_start[i], n = bonds->nbond[i];
   const int *bj = bonds->bj + beg;
-  const bool compact = compact_storage;
+  const bool compact = !storage.caches_geometry();
   const double *bxi0 = compact ? nullptr : bonds->bxi0 + beg;
   const double *bcoef = compact ? nullptr : bonds->bcoef + beg;
   double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
@@ -703,8 +708,16 @@ void PairBBPD::tally_lanes(int i, const RowTally &lanes, double *acc)
    setup report, printed once bond families exist: per type pair and global
 ------------------------------------------------------------------------- */
 
-void PairBBPD::report(FixBBPDBonds *fb)
+/* armed at every setup; printed by the setup's force evaluation, after fix bbpd/notch has cut
+   its bonds in setup_pre_force, so that the bounds and counts include the notches */
+void PairBBPD::setup()
 {
+  report_due = 1;
+}
+
+void PairBBPD::report()
+{
+  const FixBBPDBonds *fb = bonds;
   // stable time step from the actual bonds: sum_j C_v V_j c/xi = sum of coef (eq. 26)
   // with contact on, one contact's stiffness is added (crack faces pressed together)
   double dtmin = std::numeric_limits<double>::infinity();
@@ -802,13 +815,14 @@ void PairBBPD::write_restart_settings(FILE *fp)
   fwrite(&dt_safety, sizeof(double), 1, fp);
   fwrite(&contact, sizeof(int), 1, fp);
   fwrite(&contact_factor, sizeof(double), 1, fp);
-  fwrite(&compact_storage, sizeof(int), 1, fp);
+  const int storage_code = storage.code();
+  fwrite(&storage_code, sizeof(int), 1, fp);
   fwrite(&compat_pmb, sizeof(int), 1, fp);
 }
 
 void PairBBPD::read_restart_settings(FILE *fp)
 {
-  int m = 0;
+  int m = 0, storage_code = 0;
   if (comm->me == 0) {
     utils::sfread(FLERR, &m, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &geom, sizeof(double), 1, fp, nullptr, error);
@@ -817,7 +831,7 @@ void PairBBPD::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &dt_safety, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &contact, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &contact_factor, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &compact_storage, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &storage_code, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &compat_pmb, sizeof(int), 1, fp, nullptr, error);
   }
   MPI_Bcast(&m, 1, MPI_INT, 0, world);
@@ -827,7 +841,8 @@ void PairBBPD::read_restart_settings(FILE *fp)
   MPI_Bcast(&dt_safety, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&contact, 1, MPI_INT, 0, world);
   MPI_Bcast(&contact_factor, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&compact_storage, 1, MPI_INT, 0, world);
+  MPI_Bcast(&storage_code, 1, MPI_INT, 0, world);
+  storage = BBPD::BondStorage::from_code(storage_code);
   MPI_Bcast(&compat_pmb, 1, MPI_INT, 0, world);
   model = static_cast<BBPD::Model>(m);
 }

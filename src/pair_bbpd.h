@@ -8,6 +8,7 @@
 #ifndef LMP_PAIR_BBPD_H
 #define LMP_PAIR_BBPD_H
 
+#include "bbpd_bond_rules.h"
 #include "bbpd_kernel.h"
 #include "pair.h"
 
@@ -17,7 +18,7 @@ namespace LAMMPS_NS {
 
 struct RowTally;    // pair_bbpd_row.h
 
-class PairBBPD : public Pair {
+class PairBBPD : public Pair, public BBPD::BondRules {
  public:
   PairBBPD(class LAMMPS *, BBPD::KernelInfo);
   ~PairBBPD() override;
@@ -34,15 +35,18 @@ class PairBBPD : public Pair {
   double memory_usage() override;
   void *extract(const char *, int &) override;
 
-  // bond parameters for the bond-family fix
-  double family_cutoff(int itype, int jtype) const { return compat_pmb ? horizon[itype][jtype] : horizon[itype][jtype] + 0.5 * spacing; }
-  bool in_family(int itype, int jtype, double rsq) const;
-  double bond_coef(int itype, int jtype, double xi0, double vj) const;
-  double bond_volume(int itype, int jtype, double xi0, double vj) const;
-  double grid_spacing_of(double vfrac) const;
-  const double *extract_bound() const { return &dt_bound; }
-  bool fracture_on() const { return fracture_any; }
-  void report(class FixBBPDBonds *);
+  void setup() override;
+
+  // the bond rules the bond-family fix builds and caches with (bbpd_bond_rules.h)
+  bool in_family(int itype, int jtype, double rsq) const override;
+  double bond_coef(int itype, int jtype, double xi0, double vj) const override;
+  double bond_volume(int itype, int jtype, double xi0, double vj) const override;
+  int family_dimension() const override { return BBPD::family_dimension(model); }
+  double grid_spacing_of(double vfrac) const override;
+  bool breaks_bonds() const override { return fracture_any; }
+  double grid_spacing() const override { return spacing; }
+  double stable_timestep() const override { return dt_bound; }
+  double timestep_safety() const override { return dt_safety; }
 
   const BBPD::KernelInfo kernel;
   BBPD::Model model;
@@ -50,7 +54,7 @@ class PairBBPD : public Pair {
   double spacing;    // grid spacing used in the partial-volume correction (eq. 19)
   double dt_safety;  // warn when timestep > dt_safety * stable bound
   int contact;       // short-range repulsion between non-bonded close atoms
-  int compact_storage;    // cache only partner indices (16 B/bond), recompute the rest
+  BBPD::BondStorage storage;    // what the bond cache keeps per bond (bond/storage keyword)
   double contact_factor;    // contact distance = contact_factor * spacing
 
  protected:
@@ -61,6 +65,12 @@ class PairBBPD : public Pair {
   class FixBBPDBonds *bonds;
   double dt_bound_paper, dt_bound;    // eq. 25 and with the factor 2 (velocity Verlet limit)
 
+  int report_due;    // setup() was called: report once the setup's notches are cut
+  void report();
+  double family_cutoff(int itype, int jtype) const
+  {
+    return compat_pmb ? horizon[itype][jtype] : horizon[itype][jtype] + 0.5 * spacing;
+  }
   void allocate();
   void compute_contact();
   [[noreturn]] void nonfinite_error(int i);

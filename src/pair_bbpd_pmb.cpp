@@ -147,7 +147,8 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
   }
   const bool pmb = compat_pmb;
   const bool clamp = !pmb;
-  const double *bxi0 = bonds->bxi0;    // null with bond/storage compact
+  const bool cached = bonds->storage().caches_geometry();
+  const double *bxi0 = bonds->bxi0;
   // one s00 and alpha for every type pair: no per-bond lookups
   bool multi = false;
   const double s00_one = critical_stretch[1][1], alpha_one = alpha[1][1];
@@ -178,7 +179,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
       auto stretch_of = [&](int k) {
         const int j = bj[k];
         const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
-        const double xi0 = bxi0 ? bxi0[k] : bonds->xi0_of(i, k);
+        const double xi0 = cached ? bxi0[k] : bonds->xi0_of(i, k);
         double elong = std::sqrt(dx * dx + dy * dy + dz * dz) - xi0;
         if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
         return elong / xi0;
@@ -198,7 +199,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         bool broken = false;
         const int n = bonds->nbond[i];
 #ifdef BBPD_AVX512
-        if (!multi && bxi0) {
+        if (!multi && cached) {
           double ax[LANES], ay[LANES], az[LANES];
           RowTally tally;
           broken = pmb ? row_force_stretch_avx512<EVFLAG, true, false>(
@@ -214,7 +215,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
           }
         } else
 #endif
-        if (!multi && bxi0) {
+        if (!multi && cached) {
           broken = pmb ? row_stretch<true, false>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew)
                        : row_stretch<false, true>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew);
         } else {
