@@ -43,7 +43,7 @@ FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxpartner(1), npartner(nullptr), partner(nullptr), vinit(nullptr),
     bond_start(nullptr), nbond(nullptr), bj(nullptr), bxi0(nullptr), bcoef(nullptr),
     vintact(nullptr), first(1),
-    nlocal_cache(0), nbond_cache(0), list(nullptr), rules(nullptr), extent0(0.0), need_raw(0),
+    nlocal_cache(0), nbond_cache(0), list(nullptr), have_rules(false), extent0(0.0), need_raw(0),
     nmax_raw(0), xraw(nullptr)
 {
   if (narg != 3) error->all(FLERR, "Fix bbpd/bonds takes no arguments (it is created by the pair style)");
@@ -87,7 +87,7 @@ int FixBBPDBonds::setmask()
 
 void FixBBPDBonds::init()
 {
-  if (!rules) error->all(FLERR, "Fix bbpd/bonds requires a bbpd/* pair style");
+  if (!have_rules) error->all(FLERR, "Fix bbpd/bonds requires a bbpd/* pair style");
   // the occasional full list is only needed to build the families once
   if (first) {
     neighbor->add_request(this, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
@@ -98,7 +98,7 @@ void FixBBPDBonds::init()
   // (a 2D body has no image in z)
   const bool periodic = domain->xperiodic || domain->yperiodic ||
       (domain->zperiodic && domain->dimension == 3);
-  need_raw = periodic && rules->breaks_bonds();
+  need_raw = periodic && limits.breaks_bonds;
   comm_forward = need_raw ? 3 : 0;
 }
 
@@ -114,8 +114,8 @@ void FixBBPDBonds::size_family_neighbor_list()
     if (atom->vfrac[i] > 0.0) vmin = MIN(vmin, atom->vfrac[i]);
   MPI_Allreduce(&vmin, &gvmin, 1, MPI_DOUBLE, MPI_MIN, world);
   if (gvmin >= 1e300) return;
-  const int d = rules->family_dimension();
-  const double dmin = rules->grid_spacing_of(gvmin);
+  const int d = BBPD::family_dimension(law.model);
+  const double dmin = law.spacing_of_volume(gvmin);
   const double r = (force->pair->cutforce + neighbor->skin) / dmin + 0.5 * std::sqrt((double) d);
   const double ball = d == 1 ? 2.0 * r : d == 2 ? MY_PI * r * r : 4.0 / 3.0 * MY_PI * r * r * r;
   if (!(ball < (double) MAXSMALLINT / PAGE_PER_ONE))
@@ -221,15 +221,15 @@ void FixBBPDBonds::pre_exchange()
   MPI_Allreduce(&vmax, &gvmax, 1, MPI_DOUBLE, MPI_MAX, world);
   const double e = local_extent();
   const double step = std::sqrt(gvmax) * update->dt;
-  const double spacing = rules->grid_spacing();
+  const double spacing = limits.grid_spacing;
   const bool too_fast = !(step <= spacing * MAX_STEP_SPACINGS);
   if (!too_fast && (extent0 <= 0.0 || e <= MAX_EXTENT_GROWTH * extent0)) return;
-  const double bound = rules->stable_timestep();
+  const double bound = limits.stable_timestep;
   const std::string what = fmt::format(
       "BBPD: the run is unstable at step {} (an atom moves {:.3g} grid spacings per step, the "
       "bonded body spans {:.3g} x its size)", update->ntimestep, step / spacing,
       extent0 > 0.0 ? e / extent0 : 0.0);
-  if (!(update->dt <= rules->timestep_safety() * bound))
+  if (!(update->dt <= limits.timestep_safety * bound))
     error->all(FLERR, "{}: the timestep {:.6g} ({:.3g} of the stable bound {:.6g} printed at "
                "setup) must stay below that bound", what, update->dt, update->dt / bound, bound);
   // below the stable bound the timestep is not the cause: atoms were set moving faster than
@@ -256,7 +256,7 @@ void FixBBPDBonds::build_families()
 
   auto in_family = [&](int i, int j) {
     const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
-    return rules->in_family(type[i], type[j], dx * dx + dy * dy + dz * dz);
+    return law.bonded(type[i], type[j], dx * dx + dy * dy + dz * dz);
   };
 
   int mymax = 0;
@@ -371,7 +371,7 @@ void FixBBPDBonds::refresh_cache()
                    "step {}: either the run is unstable (timestep {:.6g}, stable bound {:.6g}) "
                    "or an intact bond stretched beyond the ghost cutoff: then increase it with "
                    "'comm_modify cutoff' (at least horizon + maximum bond elongation)", t, tag[i],
-                   update->ntimestep, update->dt, rules->stable_timestep());
+                   update->ntimestep, update->dt, limits.stable_timestep);
       if (periodic) j = domain->closest_image(x[i], j);
       double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
       if (periodic) BBPDCompat::minimum_image(domain, d);
@@ -382,7 +382,7 @@ void FixBBPDBonds::refresh_cache()
       bj[m] = j;
       if (!compact) {
         bxi0[m] = xi;
-        bcoef[m] = rules->bond_coef(type[i], type[j], xi, vfrac[j]);
+        bcoef[m] = law.coefficient(type[i], type[j], xi, vfrac[j]);
       }
       m++;
     }
@@ -396,7 +396,7 @@ double FixBBPDBonds::intact_volume(int i) const
 {
   double v = 0.0;
   for (int k = bond_start[i]; k < bond_start[i] + nbond[i]; k++)
-    v += rules->bond_volume(atom->type[i], atom->type[bj[k]], xi0_of(i, k), atom->vfrac[bj[k]]);
+    v += law.partner_volume(atom->type[i], atom->type[bj[k]], xi0_of(i, k), atom->vfrac[bj[k]]);
   return v;
 }
 
@@ -437,7 +437,7 @@ double FixBBPDBonds::coef_of(int i, int k, double xi0) const
 {
   if (policy.caches_geometry()) return bcoef[k];
   const int j = bj[k];
-  return rules->bond_coef(atom->type[i], atom->type[j], xi0, atom->vfrac[j]);
+  return law.coefficient(atom->type[i], atom->type[j], xi0, atom->vfrac[j]);
 }
 
 double FixBBPDBonds::bytes_per_bond() const

@@ -19,20 +19,22 @@
      vintact[i]              sum of C_v V_j over the intact bonds (damage, eq. 17)
    A bond that breaks is removed from its row at once (the row shifts), so the
    force loop has no per-bond branch. With the COMPACT storage policy
-   (bbpd_bond_rules.h, 'bond/storage compact' of the pair style) only bj is
+   (bbpd_bond_storage.h, 'bond/storage compact' of the pair style) only bj is
    cached; bxi0 and bcoef are recomputed from x0 when needed (same operations,
    so the same bits), for 16 instead of 48 bytes per bond.
 
    The fix owns storage only. What a bond is and what it costs come from the
-   BBPD::BondRules the pair style passes with set_rules() at every init; the
-   fix includes no pair-style header.
+   BBPD::BondLaw (bbpd_bond_law.h, no LAMMPS dependency) the pair style passes
+   with set_rules() at every init, with the storage policy and the run limits;
+   the fix includes no pair-style header.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_BBPD_BONDS_H
 #define LMP_FIX_BBPD_BONDS_H
 
 #include "atom.h"
-#include "bbpd_bond_rules.h"
+#include "bbpd_bond_law.h"
+#include "bbpd_bond_storage.h"
 #include "fix.h"
 
 namespace LAMMPS_NS {
@@ -67,8 +69,15 @@ class FixBBPDBonds : public Fix {
   int size_restart(int) override;
   int maxsize_restart() override;
 
-  // the pair style, at every init before the fix's own: the bond rules and the storage policy
-  void set_rules(const BBPD::BondRules *r, BBPD::BondStorage s) { rules = r; policy = s; }
+  // the pair style, at every init before the fix's own: the bond law, the storage policy and
+  // the run limits (again whenever a limit changes)
+  void set_rules(const BBPD::BondLaw &l, BBPD::BondStorage s)
+  {
+    law = l;
+    policy = s;
+    have_rules = true;
+  }
+  void set_limits(const BBPD::RunLimits &r) { limits = r; }
   BBPD::BondStorage storage() const { return policy; }
 
   // used by the pair style, the computes and fix bbpd/notch
@@ -95,8 +104,10 @@ class FixBBPDBonds : public Fix {
   int first;    // 1 until bond families exist
   int nlocal_cache, nbond_cache;    // allocated sizes of the per-atom and per-bond cache
   class NeighList *list;
-  const BBPD::BondRules *rules;
+  BBPD::BondLaw law;
+  bool have_rules;
   BBPD::BondStorage policy;
+  BBPD::RunLimits limits;
   BBPD::BondStorage cache_policy;    // the policy the per-bond cache was allocated for
   double extent0;    // size of the body when the families were built
   double local_extent();

@@ -28,8 +28,7 @@ static constexpr double NOTCH_END_TOLERANCE = 1.0e-12;
 FixBBPDNotch::FixBBPDNotch(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), bonds(nullptr)
 {
   const int dim = domain->dimension;
-  const char *usage = dim == 2 ? "segment x1 y1 x2 y2" : "rectangle cx cy cz ax ay az bx by bz";
-  if (narg < 4) error->all(FLERR, "Illegal fix bbpd/notch command: expected one or more '{}'", usage);
+  if (narg < 4) utils::missing_cmd_args(FLERR, "fix bbpd/notch", error);
   int iarg = 3;
   while (iarg < narg) {
     Cut c = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
@@ -65,7 +64,7 @@ FixBBPDNotch::FixBBPDNotch(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
         error->all(FLERR, "Fix bbpd/notch: rectangle edges are parallel or zero: it has no area");
       iarg += 10;
     } else {
-      error->all(FLERR, "Fix bbpd/notch: unknown keyword '{}' (expected {})", arg[iarg],
+      error->all(FLERR, "Unknown fix bbpd/notch keyword: {} (expected {})", arg[iarg],
                  dim == 2 ? "segment" : "rectangle");
     }
     cuts.push_back(c);

@@ -11,7 +11,7 @@
 ------------------------------------------------------------------------- */
 
 #include "pair_bbpd.h"
-#include "pair_bbpd_row.h"
+#include "bbpd_row.h"
 #include "bbpd_compat.h"
 #include "bbpd_pmb_rules.h"
 
@@ -39,6 +39,10 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
+using BBPD::LANES;
+using BBPD::RowTally;
+using BBPD::lane_sum;
+using BBPD::lane_total;
 
 static constexpr double DT_SAFETY_DEFAULT = 0.8;    // fraction of the stable bound before a warning
 static constexpr const char *BONDS_FIX_ID = "BBPD_BONDS";
@@ -142,7 +146,7 @@ void PairBBPD::settings(int narg, char **arg)
   compat_pmb = 0;
   while (iarg < narg) {
     const std::string key = arg[iarg];
-    if (iarg + 1 >= narg) error->all(FLERR, "Pair style {}: keyword {} needs a value", style, key);
+    if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style " + style + " " + key, error);
     if (key == "compat") {
       if (strcmp(arg[iarg + 1], "pmb") != 0)
         error->all(FLERR, "Pair style {}: compat must be 'pmb' (the rules of pair style peri/pmb)",
@@ -191,7 +195,8 @@ void PairBBPD::settings(int narg, char **arg)
         error->all(FLERR, "Pair style {}: dt/safety must be in (0,1]", style);
       dt_safety = value;
     } else {
-      error->all(FLERR, "Pair style {}: unknown keyword '{}'", style, key);
+      error->all(FLERR, "Unknown pair_style {} keyword: {} (expected thickness, area, spacing, "
+                 "dt/safety, contact, contact/distance, bond/storage or compat)", style, key);
     }
     iarg += 2;
   }
@@ -248,8 +253,8 @@ void PairBBPD::coeff(int narg, char **arg)
         error->all(FLERR, "Pair coeff for {}: alpha must be >= 0 (Silling-Askari: 0.25 is "
                    "typical, 0 turns the rule off)", style);
     } else {
-      error->all(FLERR, "Pair coeff for {}: unknown keyword '{}' (expected critical_stretch or "
-                 "alpha)", style, arg[iarg]);
+      error->all(FLERR, "Unknown pair_coeff {} keyword: {} (expected critical_stretch or alpha)",
+                 style, arg[iarg]);
     }
   }
   if (E <= 0.0) error->all(FLERR, "Pair coeff for {}: Young's modulus E must be > 0", style);
@@ -307,15 +312,6 @@ void PairBBPD::coeff_from_file(const char *file, const char *material, double &E
 
 /* ---------------------------------------------------------------------- */
 
-double PairBBPD::grid_spacing_of(double vfrac) const
-{
-  switch (BBPD::family_dimension(model)) {
-    case 1: return vfrac / geom;
-    case 2: return std::sqrt(vfrac / geom);
-    default: return std::cbrt(vfrac);
-  }
-}
-
 void PairBBPD::init_style()
 {
   const std::string style = std::string("bbpd/") + kernel.name;
@@ -337,7 +333,7 @@ void PairBBPD::init_style()
   // grid spacing for eq. 19: the largest spacing implied by any atom's volume
   if (!spacing_user) {
     double local = 0.0;
-    for (int i = 0; i < atom->nlocal; i++) local = MAX(local, grid_spacing_of(atom->vfrac[i]));
+    for (int i = 0; i < atom->nlocal; i++) local = MAX(local, BBPD::grid_spacing_of(model, geom, atom->vfrac[i]));
     MPI_Allreduce(&local, &spacing, 1, MPI_DOUBLE, MPI_MAX, world);
     if (spacing <= 0.0)
       error->all(FLERR, "Pair style {}: atoms have no volume; set it with 'set ... volume'", style);
@@ -361,10 +357,21 @@ void PairBBPD::init_style()
     bonds = dynamic_cast<FixBBPDBonds *>(
         modify->add_fix(std::string(BONDS_FIX_ID) + " all bbpd/bonds"));
   if (!bonds) error->all(FLERR, "Pair style {} could not create its bond-family fix", style);
-  bonds->set_rules(this, storage);
   // a neighbour list only when contact is asked for: bonds need none
   if (contact) neighbor->add_request(this, NeighConst::REQ_FULL)->set_cutoff(contact_factor * spacing);
   init_pmb();
+
+  // the bond fix builds and caches with the bond law; the tables it points to are calibrated
+  // by init_one(), which also hands the fix the limits it depends on
+  law.kernel = kernel;
+  law.model = model;
+  law.geom = geom;
+  law.spacing = spacing;
+  law.pmb = compat_pmb;
+  law.lattice_constant = lattice_constant;
+  law.micromodulus = micromodulus;
+  law.horizon = horizon;
+  bonds->set_rules(law, storage);
 }
 
 double PairBBPD::init_one(int i, int j)
@@ -392,31 +399,8 @@ double PairBBPD::init_one(int i, int j)
   critical_stretch[j][i] = critical_stretch[i][j];
   s0_user[j][i] = s0_user[i][j];
   alpha[j][i] = alpha[i][j];
-  return family_cutoff(i, j);
-}
-
-/* force density per unit elongation of one bond: c(xi0) C_v V_j / xi0 (eqs. 9, 19, 21) */
-double PairBBPD::bond_coef(int itype, int jtype, double xi, double vj) const
-{
-  const double delta = horizon[itype][jtype];
-  if (compat_pmb)    // peri/pmb: c V_j times its volume ramp near the horizon
-    return micromodulus[itype][jtype] * vj * BBPD::PMB::volume_scale(xi, delta, lattice_constant) / xi;
-  return micromodulus[itype][jtype] * kernel.shape(xi / delta) * bond_volume(itype, jtype, xi, vj) / xi;
-}
-
-/* partner volume inside the horizon, C_v V_j (eq. 19) */
-double PairBBPD::bond_volume(int itype, int jtype, double xi, double vj) const
-{
-  if (compat_pmb) return vj;    // peri/pmb's damage counts whole volumes
-  return BBPD::partial_volume(xi, horizon[itype][jtype], spacing) * vj;
-}
-
-/* is a pair at squared reference distance rsq in a family? */
-bool PairBBPD::in_family(int itype, int jtype, double rsq) const
-{
-  if (compat_pmb) return BBPD::PMB::in_family(rsq, horizon[itype][jtype]);
-  const double rc = family_cutoff(itype, jtype);
-  return rsq < rc * rc;
+  bonds->set_limits(run_limits());
+  return law.family_cutoff(i, j);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -652,38 +636,14 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
 #endif
 
   const int *type = atom->type;
-  const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
-  const double s0 = s0_single;
-  int broken = 0;
   RowTally lanes = {};    // energy and virial in the same lanes as the SIMD kernels
+  auto xi0_of = [&](int k) { return compact ? bonds->xi0_of(i, beg + k) : bxi0[k]; };
+  auto coef_of = [&](int k, double xi0) { return compact ? bonds->coef_of(i, beg + k, xi0) : bcoef[k]; };
+  auto s0_of = [&](int j) { return MULTI ? s0row[type[j]] : s0_single; };
+  const bool broken = BBPD::row_force_portable<FRACTURE, EVFLAG>(xx, i, bj, n, xi0_of, coef_of, s0_of,
+                                                                 break_margin, ax, ay, az, &lanes);
 
-  auto bond = [&](int k, int l) {
-    const int j = bj[k];
-    const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
-    const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
-    const double xi0 = compact ? bonds->xi0_of(i, beg + k) : bxi0[k];
-    const double coef = compact ? bonds->coef_of(i, beg + k, xi0) : bcoef[k];
-    const double elong = r - xi0;
-    if (FRACTURE) broken |= elong + break_margin > (MULTI ? s0row[type[j]] : s0) * xi0;
-    const double fbond = coef * elong / r;
-    ax[l] += fbond * dx;
-    ay[l] += fbond * dy;
-    az[l] += fbond * dz;
-    if (EVFLAG) {
-      // half of the bond's micropotential (eq. 6) and of its virial (x_i - x_j) (x) f_i, with
-      // f_i = fbond (x_j - x_i): the other end tallies the rest
-      lanes.eng[l] += 0.25 * coef * elong * elong;
-      lanes.vir[0][l] -= 0.5 * fbond * dx * dx;
-      lanes.vir[1][l] -= 0.5 * fbond * dy * dy;
-      lanes.vir[2][l] -= 0.5 * fbond * dz * dz;
-      lanes.vir[3][l] -= 0.5 * fbond * dx * dy;
-      lanes.vir[4][l] -= 0.5 * fbond * dx * dz;
-      lanes.vir[5][l] -= 0.5 * fbond * dy * dz;
-    }
-  };
-  for (int k = 0; k < n; k++) bond(k, k % LANES);
-
-  if (FRACTURE && broken) return true;
+  if (broken) return true;
   lane_sum(ax, ay, az, fi);
   if (EVFLAG) tally_lanes(i, lanes, acc);
   return false;
@@ -705,7 +665,8 @@ void PairBBPD::tally_lanes(int i, const RowTally &lanes, double *acc)
 }
 
 /* ----------------------------------------------------------------------
-   setup report, printed once bond families exist: per type pair and global
+   setup report, per type pair and global: armed by setup(), printed by the setup's force
+   evaluation (after fix bbpd/notch has cut its bonds)
 ------------------------------------------------------------------------- */
 
 /* armed at every setup; printed by the setup's force evaluation, after fix bbpd/notch has cut
@@ -743,6 +704,7 @@ void PairBBPD::report()
   // compute pair sums pvector over the ranks: only rank 0 contributes
   pvector[0] = comm->me == 0 ? dt_bound : 0.0;
   pvector[1] = comm->me == 0 ? dt_bound_paper : 0.0;
+  bonds->set_limits(run_limits());
 
   int nmin = INT_MAX, nmax = 0;
   bigint nsum = 0;

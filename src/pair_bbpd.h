@@ -3,22 +3,31 @@
    BBPD plugin: kernel-weighted bond-based peridynamics pair styles
    bbpd/constant, bbpd/triangular, bbpd/gaussian (one class, the kernel is a
    constructor parameter). Bouaraquia & Mabssout (2026), eqs. 6-9, 19, 21-22.
+
+   The pair style creates its bond storage (fix bbpd/bonds) and hands it the
+   bond law and storage policy in init_style() and the run limits in
+   init_one(); calibration (c0, s0) is done in init_one(). It evaluates the
+   forces over the storage's rows and breaks bonds through remove_bond(); the
+   storage never calls back (doc/architecture.rst).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_BBPD_H
 #define LMP_PAIR_BBPD_H
 
-#include "bbpd_bond_rules.h"
+#include "bbpd_bond_law.h"
+#include "bbpd_bond_storage.h"
 #include "bbpd_kernel.h"
 #include "pair.h"
 
 #include <vector>
 
+namespace BBPD {
+struct RowTally;    // bbpd_row.h
+}
+
 namespace LAMMPS_NS {
 
-struct RowTally;    // pair_bbpd_row.h
-
-class PairBBPD : public Pair, public BBPD::BondRules {
+class PairBBPD : public Pair {
  public:
   PairBBPD(class LAMMPS *, BBPD::KernelInfo);
   ~PairBBPD() override;
@@ -36,17 +45,6 @@ class PairBBPD : public Pair, public BBPD::BondRules {
   void *extract(const char *, int &) override;
 
   void setup() override;
-
-  // the bond rules the bond-family fix builds and caches with (bbpd_bond_rules.h)
-  bool in_family(int itype, int jtype, double rsq) const override;
-  double bond_coef(int itype, int jtype, double xi0, double vj) const override;
-  double bond_volume(int itype, int jtype, double xi0, double vj) const override;
-  int family_dimension() const override { return BBPD::family_dimension(model); }
-  double grid_spacing_of(double vfrac) const override;
-  bool breaks_bonds() const override { return fracture_any; }
-  double grid_spacing() const override { return spacing; }
-  double stable_timestep() const override { return dt_bound; }
-  double timestep_safety() const override { return dt_safety; }
 
   const BBPD::KernelInfo kernel;
   BBPD::Model model;
@@ -67,14 +65,15 @@ class PairBBPD : public Pair, public BBPD::BondRules {
 
   int report_due;    // setup() was called: report once the setup's notches are cut
   void report();
-  double family_cutoff(int itype, int jtype) const
+  BBPD::BondLaw law;    // what the bond fix builds and caches with, filled in init_style()
+  BBPD::RunLimits run_limits() const
   {
-    return compat_pmb ? horizon[itype][jtype] : horizon[itype][jtype] + 0.5 * spacing;
+    return {fracture_any != 0, spacing, dt_bound, dt_safety};
   }
   void allocate();
   void compute_contact();
   [[noreturn]] void nonfinite_error(int i);
-  void tally_lanes(int i, const RowTally &lanes, double *acc);
+  void tally_lanes(int i, const BBPD::RowTally &lanes, double *acc);
   bool bonded(int i, tagint jtag) const;
   int multi_s0;           // critical stretch differs between type pairs
   double s0_single;       // the critical stretch when it does not

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    BBPD plugin: the rules of LAMMPS's peri/pmb in the bbpd pair styles.
 
@@ -17,7 +18,7 @@
 #include "pair_bbpd.h"
 #include "bbpd_compat.h"
 #include "bbpd_pmb_rules.h"
-#include "pair_bbpd_pmb_row.h"
+#include "bbpd_pmb_row.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -40,6 +41,9 @@
 
 using namespace LAMMPS_NS;
 using namespace BBPD::PMB;
+using BBPD::LANES;
+using BBPD::RowTally;
+using BBPD::lane_sum;
 
 /* ----------------------------------------------------------------------
    compat pmb: pair_coeff I J c delta s00 alpha (peri/pmb's four numbers)
@@ -202,10 +206,10 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         if (!multi && cached) {
           double ax[LANES], ay[LANES], az[LANES];
           RowTally tally;
-          broken = pmb ? row_force_stretch_avx512<EVFLAG, true, false>(
+          broken = pmb ? BBPD::row_force_stretch_avx512<EVFLAG, true, false>(
                              xx, i, bj + beg, bxi0 + beg, bonds->bcoef + beg, n, smin, s00_one,
                              alpha_one, &snew, ax, ay, az, &tally)
-                       : row_force_stretch_avx512<EVFLAG, false, true>(
+                       : BBPD::row_force_stretch_avx512<EVFLAG, false, true>(
                              xx, i, bj + beg, bxi0 + beg, bonds->bcoef + beg, n, smin, s00_one,
                              alpha_one, &snew, ax, ay, az, &tally);
           if (!broken) {
@@ -216,8 +220,8 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         } else
 #endif
         if (!multi && cached) {
-          broken = pmb ? row_stretch<true, false>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew)
-                       : row_stretch<false, true>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew);
+          broken = pmb ? BBPD::row_stretch<true, false>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew)
+                       : BBPD::row_stretch<false, true>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew);
         } else {
           for (int k = beg; k < beg + n; k++) {
             const double s = stretch_of(k);
