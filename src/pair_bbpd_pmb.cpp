@@ -54,7 +54,6 @@ void PairBBPD::coeff_pmb(int narg, char **arg)
   if (narg != 6)
     error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: expected 'I J c delta s00 alpha' "
                "(the numbers of pair_coeff peri/pmb), got {} arguments", narg);
-  if (!allocated) allocate();
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
