@@ -11,13 +11,12 @@
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
-#include "pair_bbpd.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
 
 ComputeBBPDDamageAtom::ComputeBBPDDamageAtom(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), nmax(0), damage(nullptr), bonds(nullptr), pair(nullptr)
+    Compute(lmp, narg, arg), nmax(0), damage(nullptr), bonds(nullptr)
 {
   if (narg != 3) error->all(FLERR, "Illegal compute bbpd/damage/atom command: it takes no arguments");
   peratom_flag = 1;
@@ -32,8 +31,7 @@ ComputeBBPDDamageAtom::~ComputeBBPDDamageAtom()
 void ComputeBBPDDamageAtom::init()
 {
   bonds = dynamic_cast<FixBBPDBonds *>(modify->get_fix_by_id("BBPD_BONDS"));
-  pair = dynamic_cast<PairBBPD *>(force->pair_match("^bbpd/", 0));
-  if (!bonds || !pair) error->all(FLERR, "Compute bbpd/damage/atom requires a bbpd/* pair style");
+  if (!bonds || !force->pair_match("^bbpd/", 0)) error->all(FLERR, "Compute bbpd/damage/atom requires a bbpd/* pair style");
 }
 
 void ComputeBBPDDamageAtom::compute_peratom()

@@ -23,7 +23,6 @@ class ComputeBBPDDamageAtom : public Compute {
   int nmax;
   double *damage;
   class FixBBPDBonds *bonds;
-  class PairBBPD *pair;
 };
 
 }    // namespace LAMMPS_NS

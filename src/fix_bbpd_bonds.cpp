@@ -10,13 +10,11 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "fix_bbpd_notch.h"
 #include "force.h"
 #include "memory.h"
-#include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
-#include "pair_bbpd.h"
+#include "pair.h"
 #include "math_const.h"
 #include "update.h"
 
@@ -45,7 +43,7 @@ FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxpartner(1), npartner(nullptr), partner(nullptr), vinit(nullptr),
     bond_start(nullptr), nbond(nullptr), bj(nullptr), bxi0(nullptr), bcoef(nullptr),
     vintact(nullptr), first(1),
-    nlocal_cache(0), nbond_cache(0), list(nullptr), pair(nullptr), extent0(0.0), need_raw(0),
+    nlocal_cache(0), nbond_cache(0), list(nullptr), have_rules(false), extent0(0.0), need_raw(0),
     nmax_raw(0), xraw(nullptr)
 {
   if (narg != 3) error->all(FLERR, "Fix bbpd/bonds takes no arguments (it is created by the pair style)");
@@ -89,8 +87,7 @@ int FixBBPDBonds::setmask()
 
 void FixBBPDBonds::init()
 {
-  pair = dynamic_cast<PairBBPD *>(force->pair_match("^bbpd/", 0));
-  if (!pair) error->all(FLERR, "Fix bbpd/bonds requires a bbpd/* pair style");
+  if (!have_rules) error->all(FLERR, "Fix bbpd/bonds requires a bbpd/* pair style");
   // the occasional full list is only needed to build the families once
   if (first) {
     neighbor->add_request(this, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
@@ -101,7 +98,7 @@ void FixBBPDBonds::init()
   // (a 2D body has no image in z)
   const bool periodic = domain->xperiodic || domain->yperiodic ||
       (domain->zperiodic && domain->dimension == 3);
-  need_raw = periodic && pair->fracture_on();
+  need_raw = periodic && limits.breaks_bonds;
   comm_forward = need_raw ? 3 : 0;
 }
 
@@ -117,9 +114,9 @@ void FixBBPDBonds::size_family_neighbor_list()
     if (atom->vfrac[i] > 0.0) vmin = MIN(vmin, atom->vfrac[i]);
   MPI_Allreduce(&vmin, &gvmin, 1, MPI_DOUBLE, MPI_MIN, world);
   if (gvmin >= 1e300) return;
-  const int d = BBPD::family_dimension(pair->model);
-  const double dmin = pair->grid_spacing_of(gvmin);
-  const double r = (pair->cutforce + neighbor->skin) / dmin + 0.5 * std::sqrt((double) d);
+  const int d = BBPD::family_dimension(law.model);
+  const double dmin = law.spacing_of_volume(gvmin);
+  const double r = (force->pair->cutforce + neighbor->skin) / dmin + 0.5 * std::sqrt((double) d);
   const double ball = d == 1 ? 2.0 * r : d == 2 ? MY_PI * r * r : 4.0 / 3.0 * MY_PI * r * r * r;
   if (!(ball < (double) MAXSMALLINT / PAGE_PER_ONE))
     error->all(FLERR, "BBPD: bond families of up to {:.3g} partners per atom cannot be listed: "
@@ -181,13 +178,12 @@ void FixBBPDBonds::init_list(int, NeighList *ptr)
 }
 
 /* families are built at the first setup (from the reference positions of that
-   moment), then only the local-index cache is refreshed */
+   moment), then only the local-index cache is refreshed. Notches are cut by fix
+   bbpd/notch and the setup report is printed by the pair style, from their own hooks. */
 void FixBBPDBonds::setup_post_neighbor()
 {
   if (first) build_families();
   refresh_cache();
-  apply_notches();
-  pair->report(this);
 }
 
 void FixBBPDBonds::post_neighbor()
@@ -225,14 +221,15 @@ void FixBBPDBonds::pre_exchange()
   MPI_Allreduce(&vmax, &gvmax, 1, MPI_DOUBLE, MPI_MAX, world);
   const double e = local_extent();
   const double step = std::sqrt(gvmax) * update->dt;
-  const bool too_fast = !(step <= pair->spacing * MAX_STEP_SPACINGS);
+  const double spacing = limits.grid_spacing;
+  const bool too_fast = !(step <= spacing * MAX_STEP_SPACINGS);
   if (!too_fast && (extent0 <= 0.0 || e <= MAX_EXTENT_GROWTH * extent0)) return;
-  const double bound = *pair->extract_bound();
+  const double bound = limits.stable_timestep;
   const std::string what = fmt::format(
       "BBPD: the run is unstable at step {} (an atom moves {:.3g} grid spacings per step, the "
-      "bonded body spans {:.3g} x its size)", update->ntimestep, step / pair->spacing,
+      "bonded body spans {:.3g} x its size)", update->ntimestep, step / spacing,
       extent0 > 0.0 ? e / extent0 : 0.0);
-  if (!(update->dt <= pair->dt_safety * bound))
+  if (!(update->dt <= limits.timestep_safety * bound))
     error->all(FLERR, "{}: the timestep {:.6g} ({:.3g} of the stable bound {:.6g} printed at "
                "setup) must stay below that bound", what, update->dt, update->dt / bound, bound);
   // below the stable bound the timestep is not the cause: atoms were set moving faster than
@@ -243,7 +240,7 @@ void FixBBPDBonds::pre_exchange()
              "timestep {:.6g} is only {:.3g} of the stable bound. Reduce the imposed velocities "
              "(velocity, fix move, boundary conditions) or use a stiffer material, so that atoms "
              "move well below one grid spacing per step", what, std::sqrt(gvmax),
-             pair->spacing / bound, update->dt, update->dt / bound);
+             spacing / bound, update->dt, update->dt / bound);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -259,7 +256,7 @@ void FixBBPDBonds::build_families()
 
   auto in_family = [&](int i, int j) {
     const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
-    return pair->in_family(type[i], type[j], dx * dx + dy * dy + dz * dz);
+    return law.bonded(type[i], type[j], dx * dx + dy * dy + dz * dz);
   };
 
   int mymax = 0;
@@ -340,8 +337,8 @@ void FixBBPDBonds::refresh_cache()
     for (int k = 0; k < npartner[i]; k++) n += partner[i][k] > 0;
   }
   bond_start[nlocal] = n;
-  const bool compact = pair->compact_storage;
-  if (nbond_cache < n || compact != (bxi0 == nullptr)) {
+  const bool compact = !policy.caches_geometry();
+  if (nbond_cache < n || policy != cache_policy) {
     // headroom: migration changes the count a little
     nbond_cache = static_cast<int>(MIN((bigint) n + n / 8, (bigint) MAXSMALLINT));
     memory->destroy(bj);
@@ -353,6 +350,7 @@ void FixBBPDBonds::refresh_cache()
       memory->create(bxi0, nbond_cache, "bbpd/bonds:bxi0");
       memory->create(bcoef, nbond_cache, "bbpd/bonds:bcoef");
     }
+    cache_policy = policy;
   }
 
   double **x0 = atom->x0;
@@ -373,7 +371,7 @@ void FixBBPDBonds::refresh_cache()
                    "step {}: either the run is unstable (timestep {:.6g}, stable bound {:.6g}) "
                    "or an intact bond stretched beyond the ghost cutoff: then increase it with "
                    "'comm_modify cutoff' (at least horizon + maximum bond elongation)", t, tag[i],
-                   update->ntimestep, update->dt, *pair->extract_bound());
+                   update->ntimestep, update->dt, limits.stable_timestep);
       if (periodic) j = domain->closest_image(x[i], j);
       double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
       if (periodic) BBPDCompat::minimum_image(domain, d);
@@ -384,7 +382,7 @@ void FixBBPDBonds::refresh_cache()
       bj[m] = j;
       if (!compact) {
         bxi0[m] = xi;
-        bcoef[m] = pair->bond_coef(type[i], type[j], xi, vfrac[j]);
+        bcoef[m] = law.coefficient(type[i], type[j], xi, vfrac[j]);
       }
       m++;
     }
@@ -398,7 +396,7 @@ double FixBBPDBonds::intact_volume(int i) const
 {
   double v = 0.0;
   for (int k = bond_start[i]; k < bond_start[i] + nbond[i]; k++)
-    v += pair->bond_volume(atom->type[i], atom->type[bj[k]], xi0_of(i, k), atom->vfrac[bj[k]]);
+    v += law.partner_volume(atom->type[i], atom->type[bj[k]], xi0_of(i, k), atom->vfrac[bj[k]]);
   return v;
 }
 
@@ -415,7 +413,7 @@ void FixBBPDBonds::remove_bond(int i, int k)
     }
   const int last = bond_start[i] + nbond[i] - 1;
   for (int m = k; m < last; m++) bj[m] = bj[m + 1];
-  if (bxi0)
+  if (policy.caches_geometry())
     for (int m = k; m < last; m++) {
       bxi0[m] = bxi0[m + 1];
       bcoef[m] = bcoef[m + 1];
@@ -428,7 +426,7 @@ void FixBBPDBonds::remove_bond(int i, int k)
 /* the same operations as refresh_cache(), so compact storage gives the same bits */
 double FixBBPDBonds::xi0_of(int i, int k) const
 {
-  if (bxi0) return bxi0[k];
+  if (policy.caches_geometry()) return bxi0[k];
   double **x0 = atom->x0;
   const int j = bj[k];
   double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
@@ -437,22 +435,15 @@ double FixBBPDBonds::xi0_of(int i, int k) const
 
 double FixBBPDBonds::coef_of(int i, int k, double xi0) const
 {
-  if (bcoef) return bcoef[k];
+  if (policy.caches_geometry()) return bcoef[k];
   const int j = bj[k];
-  return pair->bond_coef(atom->type[i], atom->type[j], xi0, atom->vfrac[j]);
+  return law.coefficient(atom->type[i], atom->type[j], xi0, atom->vfrac[j]);
 }
 
 double FixBBPDBonds::bytes_per_bond() const
 {
   // per bond end: partner tag (persistent) + bj [+ bxi0 + bcoef] (cache); two ends per bond
-  const double cached = pair->compact_storage ? 0.0 : 2.0 * sizeof(double);
-  return 2.0 * (sizeof(tagint) + sizeof(int) + cached);
-}
-
-void FixBBPDBonds::apply_notches()
-{
-  for (auto *fix : modify->get_fix_by_style("^bbpd/notch"))
-    dynamic_cast<FixBBPDNotch *>(fix)->cut_bonds(this);
+  return 2.0 * (sizeof(tagint) + sizeof(int) + policy.cached_bytes());
 }
 
 bigint FixBBPDBonds::count_broken() const
@@ -473,7 +464,7 @@ double FixBBPDBonds::memory_usage()
   double bytes = nmax * (sizeof(int) + sizeof(double));
   bytes += nmax * maxpartner * sizeof(tagint);
   bytes += nlocal_cache * (2.0 * sizeof(int) + sizeof(double));
-  bytes += (double) nbond_cache * (sizeof(int) + (bxi0 ? 2.0 * sizeof(double) : 0.0));
+  bytes += (double) nbond_cache * (sizeof(int) + cache_policy.cached_bytes());
   bytes += 3.0 * nmax_raw * sizeof(double);
   return bytes;
 }

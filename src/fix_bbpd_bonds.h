@@ -18,20 +18,26 @@
      bcoef[k]                c(xi0) C_v V_j / xi0: force density per unit elongation
      vintact[i]              sum of C_v V_j over the intact bonds (damage, eq. 17)
    A bond that breaks is removed from its row at once (the row shifts), so the
-   force loop has no per-bond branch. With 'bond/storage compact' (pair style)
-   only bj is cached; bxi0 and bcoef are recomputed from x0 when needed (same
-   operations, so the same bits), for 16 instead of 48 bytes per bond.
+   force loop has no per-bond branch. With the COMPACT storage policy
+   (bbpd_bond_storage.h, 'bond/storage compact' of the pair style) only bj is
+   cached; bxi0 and bcoef are recomputed from x0 when needed (same operations,
+   so the same bits), for 16 instead of 48 bytes per bond.
+
+   The fix owns storage only. What a bond is and what it costs come from the
+   BBPD::BondLaw (bbpd_bond_law.h, no LAMMPS dependency) the pair style passes
+   with set_rules() at every init, with the storage policy and the run limits;
+   the fix includes no pair-style header.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_BBPD_BONDS_H
 #define LMP_FIX_BBPD_BONDS_H
 
 #include "atom.h"
+#include "bbpd_bond_law.h"
+#include "bbpd_bond_storage.h"
 #include "fix.h"
 
 namespace LAMMPS_NS {
-
-class PairBBPD;
 
 class FixBBPDBonds : public Fix {
  public:
@@ -63,6 +69,17 @@ class FixBBPDBonds : public Fix {
   int size_restart(int) override;
   int maxsize_restart() override;
 
+  // the pair style, at every init before the fix's own: the bond law, the storage policy and
+  // the run limits (again whenever a limit changes)
+  void set_rules(const BBPD::BondLaw &l, BBPD::BondStorage s)
+  {
+    law = l;
+    policy = s;
+    have_rules = true;
+  }
+  void set_limits(const BBPD::RunLimits &r) { limits = r; }
+  BBPD::BondStorage storage() const { return policy; }
+
   // used by the pair style, the computes and fix bbpd/notch
   bool families_built() const { return !first; }
   int maxpartner;
@@ -87,7 +104,11 @@ class FixBBPDBonds : public Fix {
   int first;    // 1 until bond families exist
   int nlocal_cache, nbond_cache;    // allocated sizes of the per-atom and per-bond cache
   class NeighList *list;
-  PairBBPD *pair;
+  BBPD::BondLaw law;
+  bool have_rules;
+  BBPD::BondStorage policy;
+  BBPD::RunLimits limits;
+  BBPD::BondStorage cache_policy;    // the policy the per-bond cache was allocated for
   double extent0;    // size of the body when the families were built
   double local_extent();
   int need_raw;       // periodic box with fracture: ghosts carry their owner's position
@@ -99,7 +120,6 @@ class FixBBPDBonds : public Fix {
 
   void build_families();
   void refresh_cache();
-  void apply_notches();
   double intact_volume(int i) const;
 };
 

@@ -13,21 +13,22 @@
 #include "error.h"
 #include "fix_bbpd_bonds.h"
 #include "force.h"
+#include "modify.h"
 
 #include <cmath>
 #include <cstring>
 
 using namespace LAMMPS_NS;
+using namespace FixConst;
 
 // a bond through a notch's end point counts as cut: without this tolerance round-off decides,
 // and mirror-image notches would cut different bonds (relative to the notch's edge lengths)
 static constexpr double NOTCH_END_TOLERANCE = 1.0e-12;
 
-FixBBPDNotch::FixBBPDNotch(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), ncut(0)
+FixBBPDNotch::FixBBPDNotch(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), bonds(nullptr)
 {
   const int dim = domain->dimension;
-  const char *usage = dim == 2 ? "segment x1 y1 x2 y2" : "rectangle cx cy cz ax ay az bx by bz";
-  if (narg < 4) error->all(FLERR, "Illegal fix bbpd/notch command: expected one or more '{}'", usage);
+  if (narg < 4) utils::missing_cmd_args(FLERR, "fix bbpd/notch", error);
   int iarg = 3;
   while (iarg < narg) {
     Cut c = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
@@ -63,11 +64,17 @@ FixBBPDNotch::FixBBPDNotch(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
         error->all(FLERR, "Fix bbpd/notch: rectangle edges are parallel or zero: it has no area");
       iarg += 10;
     } else {
-      error->all(FLERR, "Fix bbpd/notch: unknown keyword '{}' (expected {})", arg[iarg],
+      error->all(FLERR, "Unknown fix bbpd/notch keyword: {} (expected {})", arg[iarg],
                  dim == 2 ? "segment" : "rectangle");
     }
     cuts.push_back(c);
   }
+}
+
+/* PRE_FORCE only for its setup hook: pre_force() itself does nothing */
+int FixBBPDNotch::setmask()
+{
+  return PRE_FORCE | MIN_PRE_FORCE;
 }
 
 void FixBBPDNotch::init()
@@ -75,6 +82,10 @@ void FixBBPDNotch::init()
   if (!atom->peri_flag) error->all(FLERR, "Fix bbpd/notch requires atom_style peri");
   if (!force->pair_match("^bbpd/", 0))
     error->all(FLERR, "Fix bbpd/notch requires a bbpd/* pair style (it cuts their bonds)");
+  // the pair style has created its bond fix in its init_style(), which runs before this
+  auto fixes = modify->get_fix_by_style("^bbpd/bonds$");
+  bonds = fixes.empty() ? nullptr : dynamic_cast<FixBBPDBonds *>(fixes.front());
+  if (!bonds) error->all(FLERR, "Fix bbpd/notch found no bond families of a bbpd/* pair style");
 }
 
 /* does the bond xa-xb cross the notch? points on the notch plane count as its positive side */
@@ -120,8 +131,9 @@ bool FixBBPDNotch::crosses(const Cut &c, const double *xa, const double *xb, int
 }
 
 /* break every intact bond crossing a notch; idempotent, so it is safe on every run setup */
-void FixBBPDNotch::cut_bonds(FixBBPDBonds *bonds)
+void FixBBPDNotch::setup_pre_force(int)
 {
+  if (!bonds->families_built()) return;
   double **x0 = atom->x0;
   int *mask = atom->mask;
   const tagint *tag = atom->tag;

@@ -9,6 +9,10 @@
    starts broken (paper sec. 4.2.3). An endpoint lying exactly on the notch
    counts as being on its positive side, so a notch through a row of atoms
    cuts that row from the negative side instead of leaking.
+
+   The cut is made at every run setup (setup_pre_force: the families exist and
+   their cache is fresh), through the interface of fix bbpd/bonds (remove_bond);
+   cutting is idempotent.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_BBPD_NOTCH_H
@@ -23,9 +27,9 @@ namespace LAMMPS_NS {
 class FixBBPDNotch : public Fix {
  public:
   FixBBPDNotch(class LAMMPS *, int, char **);
-  int setmask() override { return 0; }
+  int setmask() override;
   void init() override;
-  void cut_bonds(class FixBBPDBonds *);
+  void setup_pre_force(int) override;
 
   // pure geometry, public for unit tests
   struct Cut {
@@ -35,7 +39,7 @@ class FixBBPDNotch : public Fix {
 
  private:
   std::vector<Cut> cuts;
-  bigint ncut;
+  class FixBBPDBonds *bonds;
 };
 
 }    // namespace LAMMPS_NS

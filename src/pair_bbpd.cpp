@@ -11,7 +11,7 @@
 ------------------------------------------------------------------------- */
 
 #include "pair_bbpd.h"
-#include "pair_bbpd_row.h"
+#include "bbpd_row.h"
 #include "bbpd_compat.h"
 #include "bbpd_pmb_rules.h"
 
@@ -39,6 +39,10 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
+using BBPD::LANES;
+using BBPD::RowTally;
+using BBPD::lane_sum;
+using BBPD::lane_total;
 
 static constexpr double DT_SAFETY_DEFAULT = 0.8;    // fraction of the stable bound before a warning
 static constexpr const char *BONDS_FIX_ID = "BBPD_BONDS";
@@ -54,9 +58,9 @@ static constexpr double BREAK_MARGIN_ULPS = 16.0;
 
 PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k) :
     Pair(lmp), kernel(k), model(BBPD::Model::Solid3D), geom(1.0), spacing(0.0),
-    dt_safety(DT_SAFETY_DEFAULT), contact(0), compact_storage(0), contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
+    dt_safety(DT_SAFETY_DEFAULT), contact(0), contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
     fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
-    s0_user(nullptr), bonds(nullptr), dt_bound_paper(0.0), dt_bound(0.0), multi_s0(0),
+    s0_user(nullptr), bonds(nullptr), report_due(0), dt_bound_paper(0.0), dt_bound(0.0), multi_s0(0),
     s0_single(0.0), s0_seen(0), break_margin(0.0),
     compat_pmb(0), lattice_constant(0.0), alpha(nullptr), alpha_any(0),
     nmax_smin(0), smin_new(nullptr), alpha_state(nullptr)
@@ -138,11 +142,11 @@ void PairBBPD::settings(int narg, char **arg)
   dt_safety = DT_SAFETY_DEFAULT;
   contact = 0;
   contact_factor = CONTACT_FACTOR_DEFAULT;
-  compact_storage = 0;
+  storage = BBPD::BondStorage::FAST;
   compat_pmb = 0;
   while (iarg < narg) {
     const std::string key = arg[iarg];
-    if (iarg + 1 >= narg) error->all(FLERR, "Pair style {}: keyword {} needs a value", style, key);
+    if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style " + style + " " + key, error);
     if (key == "compat") {
       if (strcmp(arg[iarg + 1], "pmb") != 0)
         error->all(FLERR, "Pair style {}: compat must be 'pmb' (the rules of pair style peri/pmb)",
@@ -164,7 +168,7 @@ void PairBBPD::settings(int narg, char **arg)
       if (v != "fast" && v != "compact")
         error->all(FLERR, "Pair style {}: bond/storage must be 'fast' (48 bytes per bond) or "
                    "'compact' (16 bytes per bond, slower)", style);
-      compact_storage = v == "compact";
+      storage = v == "compact" ? BBPD::BondStorage::COMPACT : BBPD::BondStorage::FAST;
       iarg += 2;
       continue;
     }
@@ -191,7 +195,8 @@ void PairBBPD::settings(int narg, char **arg)
         error->all(FLERR, "Pair style {}: dt/safety must be in (0,1]", style);
       dt_safety = value;
     } else {
-      error->all(FLERR, "Pair style {}: unknown keyword '{}'", style, key);
+      error->all(FLERR, "Unknown pair_style {} keyword: {} (expected thickness, area, spacing, "
+                 "dt/safety, contact, contact/distance, bond/storage or compat)", style, key);
     }
     iarg += 2;
   }
@@ -211,6 +216,7 @@ void PairBBPD::settings(int narg, char **arg)
 void PairBBPD::coeff(int narg, char **arg)
 {
   const std::string style = std::string("bbpd/") + kernel.name;
+  if (!allocated) allocate();
   if (compat_pmb) {
     coeff_pmb(narg, arg);
     return;
@@ -219,7 +225,6 @@ void PairBBPD::coeff(int narg, char **arg)
     error->all(FLERR, "Pair coeff for {}: expected 'I J E Gc delta [critical_stretch s0] [alpha A]' "
                "or 'I J file material delta [critical_stretch s0] [alpha A]', got {} arguments",
                style, narg);
-  if (!allocated) allocate();
 
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
@@ -248,8 +253,8 @@ void PairBBPD::coeff(int narg, char **arg)
         error->all(FLERR, "Pair coeff for {}: alpha must be >= 0 (Silling-Askari: 0.25 is "
                    "typical, 0 turns the rule off)", style);
     } else {
-      error->all(FLERR, "Pair coeff for {}: unknown keyword '{}' (expected critical_stretch or "
-                 "alpha)", style, arg[iarg]);
+      error->all(FLERR, "Unknown pair_coeff {} keyword: {} (expected critical_stretch or alpha)",
+                 style, arg[iarg]);
     }
   }
   if (E <= 0.0) error->all(FLERR, "Pair coeff for {}: Young's modulus E must be > 0", style);
@@ -307,15 +312,6 @@ void PairBBPD::coeff_from_file(const char *file, const char *material, double &E
 
 /* ---------------------------------------------------------------------- */
 
-double PairBBPD::grid_spacing_of(double vfrac) const
-{
-  switch (BBPD::family_dimension(model)) {
-    case 1: return vfrac / geom;
-    case 2: return std::sqrt(vfrac / geom);
-    default: return std::cbrt(vfrac);
-  }
-}
-
 void PairBBPD::init_style()
 {
   const std::string style = std::string("bbpd/") + kernel.name;
@@ -326,7 +322,7 @@ void PairBBPD::init_style()
   if (BBPD::family_dimension(model) == 2 && domain->dimension != 2)
     error->all(FLERR, "Pair style {} model {} requires 'dimension 2' (use model 3d for a 3D body)",
                style, BBPD::model_name(model));
-  if (compact_storage && (domain->xperiodic || domain->yperiodic || (domain->zperiodic && domain->dimension == 3)))
+  if (!storage.caches_geometry() && (domain->xperiodic || domain->yperiodic || (domain->zperiodic && domain->dimension == 3)))
     error->all(FLERR, "Pair style {}: bond/storage compact does not support periodic boundaries "
                "(reference lengths are recomputed from x0, which is not unwrapped): use "
                "bond/storage fast", style);
@@ -337,7 +333,7 @@ void PairBBPD::init_style()
   // grid spacing for eq. 19: the largest spacing implied by any atom's volume
   if (!spacing_user) {
     double local = 0.0;
-    for (int i = 0; i < atom->nlocal; i++) local = MAX(local, grid_spacing_of(atom->vfrac[i]));
+    for (int i = 0; i < atom->nlocal; i++) local = MAX(local, BBPD::grid_spacing_of(model, geom, atom->vfrac[i]));
     MPI_Allreduce(&local, &spacing, 1, MPI_DOUBLE, MPI_MAX, world);
     if (spacing <= 0.0)
       error->all(FLERR, "Pair style {}: atoms have no volume; set it with 'set ... volume'", style);
@@ -364,6 +360,18 @@ void PairBBPD::init_style()
   // a neighbour list only when contact is asked for: bonds need none
   if (contact) neighbor->add_request(this, NeighConst::REQ_FULL)->set_cutoff(contact_factor * spacing);
   init_pmb();
+
+  // the bond fix builds and caches with the bond law; the tables it points to are calibrated
+  // by init_one(), which also hands the fix the limits it depends on
+  law.kernel = kernel;
+  law.model = model;
+  law.geom = geom;
+  law.spacing = spacing;
+  law.pmb = compat_pmb;
+  law.lattice_constant = lattice_constant;
+  law.micromodulus = micromodulus;
+  law.horizon = horizon;
+  bonds->set_rules(law, storage);
 }
 
 double PairBBPD::init_one(int i, int j)
@@ -391,31 +399,8 @@ double PairBBPD::init_one(int i, int j)
   critical_stretch[j][i] = critical_stretch[i][j];
   s0_user[j][i] = s0_user[i][j];
   alpha[j][i] = alpha[i][j];
-  return family_cutoff(i, j);
-}
-
-/* force density per unit elongation of one bond: c(xi0) C_v V_j / xi0 (eqs. 9, 19, 21) */
-double PairBBPD::bond_coef(int itype, int jtype, double xi, double vj) const
-{
-  const double delta = horizon[itype][jtype];
-  if (compat_pmb)    // peri/pmb: c V_j times its volume ramp near the horizon
-    return micromodulus[itype][jtype] * vj * BBPD::PMB::volume_scale(xi, delta, lattice_constant) / xi;
-  return micromodulus[itype][jtype] * kernel.shape(xi / delta) * bond_volume(itype, jtype, xi, vj) / xi;
-}
-
-/* partner volume inside the horizon, C_v V_j (eq. 19) */
-double PairBBPD::bond_volume(int itype, int jtype, double xi, double vj) const
-{
-  if (compat_pmb) return vj;    // peri/pmb's damage counts whole volumes
-  return BBPD::partial_volume(xi, horizon[itype][jtype], spacing) * vj;
-}
-
-/* is a pair at squared reference distance rsq in a family? */
-bool PairBBPD::in_family(int itype, int jtype, double rsq) const
-{
-  if (compat_pmb) return BBPD::PMB::in_family(rsq, horizon[itype][jtype]);
-  const double rc = family_cutoff(itype, jtype);
-  return rsq < rc * rc;
+  bonds->set_limits(run_limits());
+  return law.family_cutoff(i, j);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -424,6 +409,10 @@ void PairBBPD::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (!bonds || !bonds->families_built()) return;
+  if (report_due) {
+    report_due = 0;
+    report();
+  }
   break_margin = 0.0;
   if (fracture_any && bonds->raw_positions()) {
     // the local and the canonical bond length differ by the round-off of one periodic shift
@@ -590,121 +579,21 @@ bool PairBBPD::past_critical(int i, int j, double xi0, double s0) const
   return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - xi0 > s0 * xi0;
 }
 
-/* explain a non-finite force on atom i and stop */
-void PairBBPD::nonfinite_error(int i)
-{
-  const double *xx = atom->x[0];
-  const tagint *tag = atom->tag;
-  const std::string cause = fmt::format(
-      "timestep {:.6g} vs stable bound {:.6g}: reduce the timestep, or check the input for "
-      "atoms placed on top of each other", update->dt, dt_bound);
-  for (int m = 0; m < 3; m++)
-    if (!std::isfinite(xx[3 * i + m]))
-      error->one(FLERR, "Atom {} has a non-finite position at step {} (the run became unstable; {})",
-                 tag[i], update->ntimestep, cause);
-  for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + bonds->nbond[i]; k++) {
-    const int j = bonds->bj[k];
-    const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
-                 dz = xx[3 * j + 2] - xx[3 * i + 2];
-    const double rsq = dx * dx + dy * dy + dz * dz;
-    if (!std::isfinite(rsq))
-      error->one(FLERR, "Bond partner {} of atom {} has a non-finite position at step {} (the run "
-                 "became unstable; {})", tag[j], tag[i], update->ntimestep, cause);
-    if (rsq == 0.0)
-      error->one(FLERR, "Atoms {} and {} coincide at step {}: a bond of zero length has no "
-                 "direction ({})", tag[i], tag[j], update->ntimestep, cause);
-  }
-  error->one(FLERR, "Non-finite force on atom {} at step {} ({})", tag[i], update->ntimestep, cause);
-}
-
-/* Force density on atom i from its intact bonds (eq. 21). The sum runs in
-   LANES fixed partial sums (bond k goes to lane k % LANES) combined in a fixed
-   order, in the SIMD (AVX-512, AVX2) and portable paths alike: the result depends
-   only on the row, never on the domain decomposition or on whether energy is
-   tallied. With FRACTURE it returns true, and tallies nothing, if a bond of the
-   row is past its critical stretch. */
-template <int EVFLAG, int FRACTURE, int MULTI>
-bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
-{
-  const double *xx = atom->x[0];
-  const int beg = bonds->bond_start[i], n = bonds->nbond[i];
-  const int *bj = bonds->bj + beg;
-  const bool compact = compact_storage;
-  const double *bxi0 = compact ? nullptr : bonds->bxi0 + beg;
-  const double *bcoef = compact ? nullptr : bonds->bcoef + beg;
-  double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
-
-#ifdef BBPD_SIMD
-  if (!MULTI && !compact) {
-    RowTally tally;
-    if (row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, bxi0, bcoef, n, s0_single, break_margin, ax,
-                                         ay, az, &tally))
-      return true;
-    lane_sum(ax, ay, az, fi);
-    if (EVFLAG) tally_lanes(i, tally, acc);
-    return false;
-  }
-#endif
-
-  const int *type = atom->type;
-  const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
-  const double s0 = s0_single;
-  int broken = 0;
-  RowTally lanes = {};    // energy and virial in the same lanes as the SIMD kernels
-
-  auto bond = [&](int k, int l) {
-    const int j = bj[k];
-    const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
-    const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
-    const double xi0 = compact ? bonds->xi0_of(i, beg + k) : bxi0[k];
-    const double coef = compact ? bonds->coef_of(i, beg + k, xi0) : bcoef[k];
-    const double elong = r - xi0;
-    if (FRACTURE) broken |= elong + break_margin > (MULTI ? s0row[type[j]] : s0) * xi0;
-    const double fbond = coef * elong / r;
-    ax[l] += fbond * dx;
-    ay[l] += fbond * dy;
-    az[l] += fbond * dz;
-    if (EVFLAG) {
-      // half of the bond's micropotential (eq. 6) and of its virial (x_i - x_j) (x) f_i, with
-      // f_i = fbond (x_j - x_i): the other end tallies the rest
-      lanes.eng[l] += 0.25 * coef * elong * elong;
-      lanes.vir[0][l] -= 0.5 * fbond * dx * dx;
-      lanes.vir[1][l] -= 0.5 * fbond * dy * dy;
-      lanes.vir[2][l] -= 0.5 * fbond * dz * dz;
-      lanes.vir[3][l] -= 0.5 * fbond * dx * dy;
-      lanes.vir[4][l] -= 0.5 * fbond * dx * dz;
-      lanes.vir[5][l] -= 0.5 * fbond * dy * dz;
-    }
-  };
-  for (int k = 0; k < n; k++) bond(k, k % LANES);
-
-  if (FRACTURE && broken) return true;
-  lane_sum(ax, ay, az, fi);
-  if (EVFLAG) tally_lanes(i, lanes, acc);
-  return false;
-}
-
-/* energy and virial of the row of atom i: per atom where LAMMPS asked for them, and the
-   global totals into acc (energy, then the six virial components) */
-void PairBBPD::tally_lanes(int i, const RowTally &lanes, double *acc)
-{
-  const double eng = lane_total(lanes.eng);
-  double vir[6];
-  for (int c = 0; c < 6; c++) vir[c] = lane_total(lanes.vir[c]);
-  acc[0] += eng;
-  if (eflag_atom) eatom[i] += eng;
-  for (int m = 0; m < 6; m++) {
-    acc[1 + m] += vir[m];
-    if (vflag_atom) vatom[i][m] += vir[m];
-  }
-}
-
 /* ----------------------------------------------------------------------
-   setup report, printed once bond families exist: per type pair and global
+   setup report, per type pair and global: armed by setup(), printed by the setup's force
+   evaluation (after fix bbpd/notch has cut its bonds)
 ------------------------------------------------------------------------- */
 
-void PairBBPD::report(FixBBPDBonds *fb)
+/* armed at every setup; printed by the setup's force evaluation, after fix bbpd/notch has cut
+   its bonds in setup_pre_force, so that the bounds and counts include the notches */
+void PairBBPD::setup()
 {
+  report_due = 1;
+}
+
+void PairBBPD::report()
+{
+  const FixBBPDBonds *fb = bonds;
   // stable time step from the actual bonds: sum_j C_v V_j c/xi = sum of coef (eq. 26)
   // with contact on, one contact's stiffness is added (crack faces pressed together)
   double dtmin = std::numeric_limits<double>::infinity();
@@ -730,6 +619,7 @@ void PairBBPD::report(FixBBPDBonds *fb)
   // compute pair sums pvector over the ranks: only rank 0 contributes
   pvector[0] = comm->me == 0 ? dt_bound : 0.0;
   pvector[1] = comm->me == 0 ? dt_bound_paper : 0.0;
+  bonds->set_limits(run_limits());
 
   int nmin = INT_MAX, nmax = 0;
   bigint nsum = 0;
@@ -802,13 +692,14 @@ void PairBBPD::write_restart_settings(FILE *fp)
   fwrite(&dt_safety, sizeof(double), 1, fp);
   fwrite(&contact, sizeof(int), 1, fp);
   fwrite(&contact_factor, sizeof(double), 1, fp);
-  fwrite(&compact_storage, sizeof(int), 1, fp);
+  const int storage_code = storage.code();
+  fwrite(&storage_code, sizeof(int), 1, fp);
   fwrite(&compat_pmb, sizeof(int), 1, fp);
 }
 
 void PairBBPD::read_restart_settings(FILE *fp)
 {
-  int m = 0;
+  int m = 0, storage_code = 0;
   if (comm->me == 0) {
     utils::sfread(FLERR, &m, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &geom, sizeof(double), 1, fp, nullptr, error);
@@ -817,7 +708,7 @@ void PairBBPD::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &dt_safety, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &contact, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &contact_factor, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &compact_storage, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &storage_code, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &compat_pmb, sizeof(int), 1, fp, nullptr, error);
   }
   MPI_Bcast(&m, 1, MPI_INT, 0, world);
@@ -827,7 +718,8 @@ void PairBBPD::read_restart_settings(FILE *fp)
   MPI_Bcast(&dt_safety, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&contact, 1, MPI_INT, 0, world);
   MPI_Bcast(&contact_factor, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&compact_storage, 1, MPI_INT, 0, world);
+  MPI_Bcast(&storage_code, 1, MPI_INT, 0, world);
+  storage = BBPD::BondStorage::from_code(storage_code);
   MPI_Bcast(&compat_pmb, 1, MPI_INT, 0, world);
   model = static_cast<BBPD::Model>(m);
 }
@@ -895,7 +787,3 @@ void *PairBBPD::extract(const char *name, int &dim)
   if (strcmp(name, "horizon") == 0) return (void *) horizon;
   return nullptr;
 }
-
-// the bond loop of the Silling-Askari path (pair_bbpd_pmb.cpp) sums rows with these
-template bool PairBBPD::row_force<0, 0, 0>(int, double *, const double *, double *);
-template bool PairBBPD::row_force<1, 0, 0>(int, double *, const double *, double *);

@@ -3,19 +3,29 @@
    BBPD plugin: kernel-weighted bond-based peridynamics pair styles
    bbpd/constant, bbpd/triangular, bbpd/gaussian (one class, the kernel is a
    constructor parameter). Bouaraquia & Mabssout (2026), eqs. 6-9, 19, 21-22.
+
+   The pair style creates its bond storage (fix bbpd/bonds) and hands it the
+   bond law and storage policy in init_style() and the run limits in
+   init_one(); calibration (c0, s0) is done in init_one(). It evaluates the
+   forces over the storage's rows and breaks bonds through remove_bond(); the
+   storage never calls back (doc/architecture.rst).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_BBPD_H
 #define LMP_PAIR_BBPD_H
 
+#include "bbpd_bond_law.h"
+#include "bbpd_bond_storage.h"
 #include "bbpd_kernel.h"
 #include "pair.h"
 
 #include <vector>
 
-namespace LAMMPS_NS {
+namespace BBPD {
+struct RowTally;    // bbpd_row.h
+}
 
-struct RowTally;    // pair_bbpd_row.h
+namespace LAMMPS_NS {
 
 class PairBBPD : public Pair {
  public:
@@ -34,15 +44,7 @@ class PairBBPD : public Pair {
   double memory_usage() override;
   void *extract(const char *, int &) override;
 
-  // bond parameters for the bond-family fix
-  double family_cutoff(int itype, int jtype) const { return compat_pmb ? horizon[itype][jtype] : horizon[itype][jtype] + 0.5 * spacing; }
-  bool in_family(int itype, int jtype, double rsq) const;
-  double bond_coef(int itype, int jtype, double xi0, double vj) const;
-  double bond_volume(int itype, int jtype, double xi0, double vj) const;
-  double grid_spacing_of(double vfrac) const;
-  const double *extract_bound() const { return &dt_bound; }
-  bool fracture_on() const { return fracture_any; }
-  void report(class FixBBPDBonds *);
+  void setup() override;
 
   const BBPD::KernelInfo kernel;
   BBPD::Model model;
@@ -50,7 +52,7 @@ class PairBBPD : public Pair {
   double spacing;    // grid spacing used in the partial-volume correction (eq. 19)
   double dt_safety;  // warn when timestep > dt_safety * stable bound
   int contact;       // short-range repulsion between non-bonded close atoms
-  int compact_storage;    // cache only partner indices (16 B/bond), recompute the rest
+  BBPD::BondStorage storage;    // what the bond cache keeps per bond (bond/storage keyword)
   double contact_factor;    // contact distance = contact_factor * spacing
 
  protected:
@@ -61,10 +63,17 @@ class PairBBPD : public Pair {
   class FixBBPDBonds *bonds;
   double dt_bound_paper, dt_bound;    // eq. 25 and with the factor 2 (velocity Verlet limit)
 
+  int report_due;    // setup() was called: report once the setup's notches are cut
+  void report();
+  BBPD::BondLaw law;    // what the bond fix builds and caches with, filled in init_style()
+  BBPD::RunLimits run_limits() const
+  {
+    return {fracture_any != 0, spacing, dt_bound, dt_safety};
+  }
   void allocate();
   void compute_contact();
   [[noreturn]] void nonfinite_error(int i);
-  void tally_lanes(int i, const RowTally &lanes, double *acc);
+  void tally_lanes(int i, const BBPD::RowTally &lanes, double *acc);
   bool bonded(int i, tagint jtag) const;
   int multi_s0;           // critical stretch differs between type pairs
   double s0_single;       // the critical stretch when it does not

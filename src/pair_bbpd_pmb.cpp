@@ -18,7 +18,7 @@
 #include "pair_bbpd.h"
 #include "bbpd_compat.h"
 #include "bbpd_pmb_rules.h"
-#include "pair_bbpd_pmb_row.h"
+#include "bbpd_pmb_row.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -41,6 +41,9 @@
 
 using namespace LAMMPS_NS;
 using namespace BBPD::PMB;
+using BBPD::LANES;
+using BBPD::RowTally;
+using BBPD::lane_sum;
 
 /* ----------------------------------------------------------------------
    compat pmb: pair_coeff I J c delta s00 alpha (peri/pmb's four numbers)
@@ -51,7 +54,6 @@ void PairBBPD::coeff_pmb(int narg, char **arg)
   if (narg != 6)
     error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: expected 'I J c delta s00 alpha' "
                "(the numbers of pair_coeff peri/pmb), got {} arguments", narg);
-  if (!allocated) allocate();
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
@@ -148,7 +150,8 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
   }
   const bool pmb = compat_pmb;
   const bool clamp = !pmb;
-  const double *bxi0 = bonds->bxi0;    // null with bond/storage compact
+  const bool cached = bonds->storage().caches_geometry();
+  const double *bxi0 = bonds->bxi0;
   // one s00 and alpha for every type pair: no per-bond lookups
   bool multi = false;
   const double s00_one = critical_stretch[1][1], alpha_one = alpha[1][1];
@@ -179,7 +182,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
       auto stretch_of = [&](int k) {
         const int j = bj[k];
         const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
-        const double xi0 = bxi0 ? bxi0[k] : bonds->xi0_of(i, k);
+        const double xi0 = cached ? bxi0[k] : bonds->xi0_of(i, k);
         double elong = std::sqrt(dx * dx + dy * dy + dz * dz) - xi0;
         if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
         return elong / xi0;
@@ -199,13 +202,13 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         bool broken = false;
         const int n = bonds->nbond[i];
 #ifdef BBPD_AVX512
-        if (!multi && bxi0) {
+        if (!multi && cached) {
           double ax[LANES], ay[LANES], az[LANES];
           RowTally tally;
-          broken = pmb ? row_force_stretch_avx512<EVFLAG, true, false>(
+          broken = pmb ? BBPD::row_force_stretch_avx512<EVFLAG, true, false>(
                              xx, i, bj + beg, bxi0 + beg, bonds->bcoef + beg, n, smin, s00_one,
                              alpha_one, &snew, ax, ay, az, &tally)
-                       : row_force_stretch_avx512<EVFLAG, false, true>(
+                       : BBPD::row_force_stretch_avx512<EVFLAG, false, true>(
                              xx, i, bj + beg, bxi0 + beg, bonds->bcoef + beg, n, smin, s00_one,
                              alpha_one, &snew, ax, ay, az, &tally);
           if (!broken) {
@@ -215,9 +218,9 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
           }
         } else
 #endif
-        if (!multi && bxi0) {
-          broken = pmb ? row_stretch<true, false>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew)
-                       : row_stretch<false, true>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew);
+        if (!multi && cached) {
+          broken = pmb ? BBPD::row_stretch<true, false>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew)
+                       : BBPD::row_stretch<false, true>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew);
         } else {
           for (int k = beg; k < beg + n; k++) {
             const double s = stretch_of(k);

@@ -60,9 +60,9 @@ CASES = {
                             "unknown model 'plane'"),
     "style-unknown-keyword": (script(pair_style="pair_style bbpd/gaussian plane/strain "
                                      "thickness 0.001 horizon 0.003"),
-                              "unknown keyword 'horizon'"),
+                              "Unknown pair_style bbpd/gaussian keyword: horizon"),
     "style-keyword-no-value": (script(pair_style="pair_style bbpd/gaussian plane/strain thickness"),
-                               "keyword thickness needs a value"),
+                               "Illegal pair_style bbpd/gaussian thickness command: missing argument"),
     "style-non-numeric": (script(pair_style="pair_style bbpd/gaussian plane/strain thickness 1mm"),
                           "Expected floating point parameter instead of '1mm'"),
     "style-thickness-zero": (script(pair_style="pair_style bbpd/gaussian plane/strain thickness 0"),
@@ -95,7 +95,7 @@ CASES = {
                                          "thickness 0.001 contact maybe"),
                                   "Expected boolean parameter instead of 'maybe'"),
     "style-contact-no-value": (script(pair_style="pair_style bbpd/gaussian plane/strain "
-                                      "thickness 0.001 contact"), "keyword contact needs a value"),
+                                      "thickness 0.001 contact"), "Illegal pair_style bbpd/gaussian contact command: missing argument"),
     "style-contact-distance-zero": (script(pair_style="pair_style bbpd/gaussian plane/strain "
                                            "thickness 0.001 contact yes contact/distance 0"),
                                     "contact/distance must be in (0,1]"),
@@ -132,7 +132,7 @@ CASES = {
                                                   "critical_stretch big"),
                                            "Expected floating point parameter instead of 'big'"),
     "coeff-unknown-keyword": (script(pair_coeff="pair_coeff * * 190.0e9 6.9e4 0.003015 s0 0.01"),
-                              "unknown keyword 's0'"),
+                              "Unknown pair_coeff bbpd/triangular keyword: s0"),
     "coeff-alpha-negative": (script(pair_coeff="pair_coeff * * 190.0e9 6.9e4 0.003015 alpha -0.25"),
                              "alpha must be >= 0"),
     "coeff-alpha-missing-value": (script(pair_coeff="pair_coeff * * 190.0e9 6.9e4 0.003015 "
@@ -199,16 +199,17 @@ CASES = {
     "init-3d-in-2d": (script(pair_style="pair_style bbpd/gaussian 3d"), "requires 'dimension 3'"),
     "init-no-atom-map": (script(map=""), "requires an atom map"),
     # ---- fix ID group bbpd/notch segment x1 y1 x2 y2 ... | rectangle cx cy cz ax ay az bx by bz
-    "notch-no-args": (script(extra="fix n all bbpd/notch"), "expected one or more 'segment"),
+    "notch-no-args": (script(extra="fix n all bbpd/notch"),
+                      "Illegal fix bbpd/notch command: missing argument"),
     "notch-segment-3-numbers": (script(extra="fix n all bbpd/notch segment 0 0.005 0.004"),
                                 "segment needs 4 numbers"),
     "notch-segment-zero-length": (script(extra="fix n all bbpd/notch segment 0.004 0.005 "
                                          "0.004 0.005"),
                                   "has zero length"),
     "notch-unknown-keyword": (script(extra="fix n all bbpd/notch line 0 0.005 0.004 0.005"),
-                              "unknown keyword 'line'"),
+                              "Unknown fix bbpd/notch keyword: line"),
     "notch-extra-number": (script(extra="fix n all bbpd/notch segment 0 0.005 0.004 0.005 0.006"),
-                           "unknown keyword '0.006'"),
+                           "Unknown fix bbpd/notch keyword: 0.006"),
     "notch-rectangle-in-2d": (script(extra="fix n all bbpd/notch rectangle 0 0.005 0 0.004 0 0 "
                                      "0 0 0.001"), "'rectangle' is for dimension 3"),
     "notch-segment-in-3d": (script(BASE_3D, extra=NOTCH_2D),

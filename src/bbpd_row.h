@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
-   BBPD plugin: the innermost bond loop of the bbpd/* pair styles.
+   BBPD: the innermost bond loop of the bbpd pair styles, with no LAMMPS
+   dependency (the unit test tests/unit/test_row.cpp runs it on plain arrays).
 
    Bond k of a row goes to lane k % LANES; lanes are summed in one fixed order
    (lane_sum). The AVX-512 and AVX2 kernels compute each bond with the same
-   operations in the same order as the portable loop in pair_bbpd.cpp (no FMA
+   operations in the same order as the portable loop (row_force_portable; no FMA
    contraction), so all three give identical bits.
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_PAIR_BBPD_ROW_H
-#define LMP_PAIR_BBPD_ROW_H
+#ifndef BBPD_ROW_H
+#define BBPD_ROW_H
 
 #if defined(__AVX512F__) && defined(__AVX512VL__)
 #define BBPD_AVX512
@@ -21,7 +22,9 @@
 #include <immintrin.h>
 #endif
 
-namespace LAMMPS_NS {
+#include <cmath>
+
+namespace BBPD {
 
 constexpr int LANES = 8;    // one AVX-512 register of doubles
 
@@ -41,6 +44,46 @@ inline void lane_sum(const double *ax, const double *ay, const double *az, doubl
   f[0] = ((ax[0] + ax[1]) + (ax[2] + ax[3])) + ((ax[4] + ax[5]) + (ax[6] + ax[7]));
   f[1] = ((ay[0] + ay[1]) + (ay[2] + ay[3])) + ((ay[4] + ay[5]) + (ay[6] + ay[7]));
   f[2] = ((az[0] + az[1]) + (az[2] + az[3])) + ((az[4] + az[5]) + (az[6] + az[7]));
+}
+
+/* lanes of the force density on atom i (positions xx, 3 per atom) from its n bonds to the
+   partners bj[k], in the portable loop: reference length xi0_of(k), coefficient
+   coef_of(k, xi0) and the partner's critical stretch s0_of(j) come from callables (cached
+   or recomputed, one s0 or per type). With FRACTURE it returns true if a bond is past s0 or
+   within margin of it, and the lanes are then incomplete. */
+template <int FRACTURE, int EV, class Xi0, class Coef, class S0>
+inline bool row_force_portable(const double *xx, int i, const int *bj, int n, Xi0 xi0_of,
+                               Coef coef_of, S0 s0_of, double margin, double *ax, double *ay,
+                               double *az, RowTally *tally)
+{
+  const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
+  int broken = 0;
+  for (int k = 0; k < n; k++) {
+    const int l = k % LANES;
+    const int j = bj[k];
+    const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
+    const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const double xi0 = xi0_of(k);
+    const double coef = coef_of(k, xi0);
+    const double elong = r - xi0;
+    if (FRACTURE) broken |= elong + margin > s0_of(j) * xi0;
+    const double fbond = coef * elong / r;
+    ax[l] += fbond * dx;
+    ay[l] += fbond * dy;
+    az[l] += fbond * dz;
+    if (EV) {
+      // half of the bond's micropotential (eq. 6) and of its virial (x_i - x_j) (x) f_i, with
+      // f_i = fbond (x_j - x_i): the other end tallies the rest
+      tally->eng[l] += 0.25 * coef * elong * elong;
+      tally->vir[0][l] -= 0.5 * fbond * dx * dx;
+      tally->vir[1][l] -= 0.5 * fbond * dy * dy;
+      tally->vir[2][l] -= 0.5 * fbond * dz * dz;
+      tally->vir[3][l] -= 0.5 * fbond * dx * dy;
+      tally->vir[4][l] -= 0.5 * fbond * dx * dz;
+      tally->vir[5][l] -= 0.5 * fbond * dy * dz;
+    }
+  }
+  return FRACTURE && broken;
 }
 
 #ifdef BBPD_AVX512
@@ -101,7 +144,7 @@ inline bool row_force_avx512(const double *xx, int i, const int *bj, const doubl
   }
   return false;
 }
-#define row_force_simd row_force_avx512
+#define row_force_simd BBPD::row_force_avx512
 #endif
 
 #ifdef BBPD_AVX2
@@ -167,9 +210,9 @@ inline bool row_force_avx2(const double *xx, int i, const int *bj, const double 
   }
   return false;
 }
-#define row_force_simd row_force_avx2
+#define row_force_simd BBPD::row_force_avx2
 #endif
 
-}    // namespace LAMMPS_NS
+}    // namespace BBPD
 
 #endif

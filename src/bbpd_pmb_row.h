@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
-   BBPD plugin: the stretch pass of the Silling-Askari bond loop over one row.
+   BBPD: the stretch pass of the Silling-Askari bond loop over one row.
 
    For the bonds of atom i it returns the smallest stretch and whether a bond is past
    its critical stretch s00 - alpha max(smin_i, smin_j) (with 'clamp': only compression
@@ -8,16 +8,16 @@
    compares) as the portable loop, so both give identical bits.
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_PAIR_BBPD_PMB_ROW_H
-#define LMP_PAIR_BBPD_PMB_ROW_H
+#ifndef BBPD_PMB_ROW_H
+#define BBPD_PMB_ROW_H
 
 #include "bbpd_pmb_rules.h"
-#include "pair_bbpd_row.h"
+#include "bbpd_row.h"
 
 #include <cmath>
 #include <limits>
 
-namespace LAMMPS_NS {
+namespace BBPD {
 
 template <bool PMB, bool CLAMP>
 inline bool row_stretch_portable(const double *xx, int i, const int *bj, const double *bxi0, int n,
@@ -78,7 +78,7 @@ inline bool row_stretch_avx512(const double *xx, int i, const int *bj, const dou
   return broken != 0;
 }
 
-/* row_force_avx512 (pair_bbpd_row.h) and row_stretch_avx512 in one pass over the row: the
+/* row_force_avx512 (bbpd_row.h) and row_stretch_avx512 in one pass over the row: the
    force lanes and tallies are those of row_force_avx512, bit for bit (same operations in
    the same order), the smallest stretch and the breaking flag those of row_stretch */
 template <int EV, bool PMB, bool CLAMP>
@@ -161,6 +161,6 @@ inline bool row_stretch(const double *xx, int i, const int *bj, const double *bx
 #endif
 }
 
-}    // namespace LAMMPS_NS
+}    // namespace BBPD
 
 #endif

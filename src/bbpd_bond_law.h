@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* -*- c++ -*- ----------------------------------------------------------
+   BBPD: the bond law of the bbpd pair styles, with no LAMMPS dependency.
+
+   Which pairs of atoms are bonded (the family), and per bond the partner
+   volume C_v V_j (eq. 19) and the force density per unit elongation
+   c(xi0) C_v V_j / xi0 (eqs. 9, 19, 21); with 'compat pmb' the rules of
+   LAMMPS's peri/pmb (bbpd_pmb_rules.h). The pair style fills one BondLaw from
+   its calibrated per-type tables and hands a copy to the bond storage (fix
+   bbpd/bonds), which builds and caches with it without knowing the pair.
+------------------------------------------------------------------------- */
+
+#ifndef BBPD_BOND_LAW_H
+#define BBPD_BOND_LAW_H
+
+#include "bbpd_kernel.h"
+#include "bbpd_pmb_rules.h"
+
+#include <cmath>
+
+namespace BBPD {
+
+// grid spacing implied by an atom volume: vfrac / A (1D), sqrt(vfrac / h) (2D), cbrt(vfrac) (3D)
+inline double grid_spacing_of(Model m, double geom, double vfrac)
+{
+  switch (family_dimension(m)) {
+    case 1: return vfrac / geom;
+    case 2: return std::sqrt(vfrac / geom);
+    default: return std::cbrt(vfrac);
+  }
+}
+
+struct BondLaw {
+  KernelInfo kernel = kernel_info<ConstantKernel>();
+  Model model = Model::Solid3D;
+  double geom = 1.0;                 // cross-section A (1D), thickness h (2D), 1 in 3D
+  double spacing = 0.0;              // grid spacing of the partial-volume correction (eq. 19)
+  bool pmb = false;                  // peri/pmb's families, volumes and volume ramp
+  double lattice_constant = 0.0;     // pmb: the ramp's width
+  // per type pair [itype][jtype], owned by the pair style
+  const double *const *micromodulus = nullptr;
+  const double *const *horizon = nullptr;
+
+  // reference distance below which a pair is in a family (pmb: up to and including delta)
+  double family_cutoff(int itype, int jtype) const
+  {
+    return pmb ? horizon[itype][jtype] : horizon[itype][jtype] + 0.5 * spacing;
+  }
+  // is a pair at squared reference distance rsq in a family?
+  bool bonded(int itype, int jtype, double rsq) const
+  {
+    if (pmb) return PMB::in_family(rsq, horizon[itype][jtype]);
+    const double rc = family_cutoff(itype, jtype);
+    return rsq < rc * rc;
+  }
+  // partner volume inside the horizon, C_v V_j (eq. 19); pmb counts whole volumes
+  double partner_volume(int itype, int jtype, double xi0, double vj) const
+  {
+    if (pmb) return vj;
+    return partial_volume(xi0, horizon[itype][jtype], spacing) * vj;
+  }
+  // force density per unit elongation: c(xi0) C_v V_j / xi0; pmb: c V_j times its ramp / xi0
+  double coefficient(int itype, int jtype, double xi0, double vj) const
+  {
+    const double delta = horizon[itype][jtype];
+    if (pmb) return micromodulus[itype][jtype] * vj * PMB::volume_scale(xi0, delta, lattice_constant) / xi0;
+    return micromodulus[itype][jtype] * kernel.shape(xi0 / delta) *
+        partner_volume(itype, jtype, xi0, vj) / xi0;
+  }
+  double spacing_of_volume(double vfrac) const { return grid_spacing_of(model, geom, vfrac); }
+};
+
+}    // namespace BBPD
+
+#endif

@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* ----------------------------------------------------------------------
+   BBPD plugin: the bond loop of one row of the bbpd/* pair styles, shared by
+   the plain loop (pair_bbpd.cpp) and the Silling-Askari loop
+   (pair_bbpd_pmb.cpp): dispatch to the SIMD or portable kernel of
+   bbpd_row.h over the rows of fix bbpd/bonds, the energy and virial tallies,
+   and the diagnosis of a non-finite force.
+------------------------------------------------------------------------- */
+
+#include "pair_bbpd.h"
+#include "bbpd_row.h"
+
+#include "atom.h"
+#include "error.h"
+#include "fix_bbpd_bonds.h"
+#include "update.h"
+
+#include <cmath>
+
+using namespace LAMMPS_NS;
+using BBPD::LANES;
+using BBPD::RowTally;
+using BBPD::lane_sum;
+using BBPD::lane_total;
+
+/* explain a non-finite force on atom i and stop */
+void PairBBPD::nonfinite_error(int i)
+{
+  const double *xx = atom->x[0];
+  const tagint *tag = atom->tag;
+  const std::string cause = fmt::format(
+      "timestep {:.6g} vs stable bound {:.6g}: reduce the timestep, or check the input for "
+      "atoms placed on top of each other", update->dt, dt_bound);
+  for (int m = 0; m < 3; m++)
+    if (!std::isfinite(xx[3 * i + m]))
+      error->one(FLERR, "Atom {} has a non-finite position at step {} (the run became unstable; {})",
+                 tag[i], update->ntimestep, cause);
+  for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + bonds->nbond[i]; k++) {
+    const int j = bonds->bj[k];
+    const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
+                 dz = xx[3 * j + 2] - xx[3 * i + 2];
+    const double rsq = dx * dx + dy * dy + dz * dz;
+    if (!std::isfinite(rsq))
+      error->one(FLERR, "Bond partner {} of atom {} has a non-finite position at step {} (the run "
+                 "became unstable; {})", tag[j], tag[i], update->ntimestep, cause);
+    if (rsq == 0.0)
+      error->one(FLERR, "Atoms {} and {} coincide at step {}: a bond of zero length has no "
+                 "direction ({})", tag[i], tag[j], update->ntimestep, cause);
+  }
+  error->one(FLERR, "Non-finite force on atom {} at step {} ({})", tag[i], update->ntimestep, cause);
+}
+
+/* Force density on atom i from its intact bonds (eq. 21). The sum runs in
+   LANES fixed partial sums (bond k goes to lane k % LANES) combined in a fixed
+   order, in the SIMD (AVX-512, AVX2) and portable paths alike: the result depends
+   only on the row, never on the domain decomposition or on whether energy is
+   tallied. With FRACTURE it returns true, and tallies nothing, if a bond of the
+   row is past its critical stretch. */
+template <int EVFLAG, int FRACTURE, int MULTI>
+bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
+{
+  const double *xx = atom->x[0];
+  const int beg = bonds->bond_start[i], n = bonds->nbond[i];
+  const int *bj = bonds->bj + beg;
+  const bool compact = !storage.caches_geometry();
+  const double *bxi0 = compact ? nullptr : bonds->bxi0 + beg;
+  const double *bcoef = compact ? nullptr : bonds->bcoef + beg;
+  double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
+
+#ifdef BBPD_SIMD
+  if (!MULTI && !compact) {
+    RowTally tally;
+    if (row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, bxi0, bcoef, n, s0_single, break_margin, ax,
+                                         ay, az, &tally))
+      return true;
+    lane_sum(ax, ay, az, fi);
+    if (EVFLAG) tally_lanes(i, tally, acc);
+    return false;
+  }
+#endif
+
+  const int *type = atom->type;
+  RowTally lanes = {};    // energy and virial in the same lanes as the SIMD kernels
+  auto xi0_of = [&](int k) { return compact ? bonds->xi0_of(i, beg + k) : bxi0[k]; };
+  auto coef_of = [&](int k, double xi0) { return compact ? bonds->coef_of(i, beg + k, xi0) : bcoef[k]; };
+  auto s0_of = [&](int j) { return MULTI ? s0row[type[j]] : s0_single; };
+  const bool broken = BBPD::row_force_portable<FRACTURE, EVFLAG>(xx, i, bj, n, xi0_of, coef_of, s0_of,
+                                                                 break_margin, ax, ay, az, &lanes);
+
+  if (broken) return true;
+  lane_sum(ax, ay, az, fi);
+  if (EVFLAG) tally_lanes(i, lanes, acc);
+  return false;
+}
+
+/* energy and virial of the row of atom i: per atom where LAMMPS asked for them, and the
+   global totals into acc (energy, then the six virial components) */
+void PairBBPD::tally_lanes(int i, const RowTally &lanes, double *acc)
+{
+  const double eng = lane_total(lanes.eng);
+  double vir[6];
+  for (int c = 0; c < 6; c++) vir[c] = lane_total(lanes.vir[c]);
+  acc[0] += eng;
+  if (eflag_atom) eatom[i] += eng;
+  for (int m = 0; m < 6; m++) {
+    acc[1 + m] += vir[m];
+    if (vflag_atom) vatom[i][m] += vir[m];
+  }
+}
+
+// the plain loop (eval) and the Silling-Askari loop (eval_alpha) sum rows with these
+template bool PairBBPD::row_force<0, 0, 0>(int, double *, const double *, double *);
+template bool PairBBPD::row_force<1, 0, 0>(int, double *, const double *, double *);
+template bool PairBBPD::row_force<0, 1, 0>(int, double *, const double *, double *);
+template bool PairBBPD::row_force<1, 1, 0>(int, double *, const double *, double *);
+template bool PairBBPD::row_force<0, 0, 1>(int, double *, const double *, double *);
+template bool PairBBPD::row_force<1, 0, 1>(int, double *, const double *, double *);
+template bool PairBBPD::row_force<0, 1, 1>(int, double *, const double *, double *);
+template bool PairBBPD::row_force<1, 1, 1>(int, double *, const double *, double *);
