@@ -220,7 +220,7 @@ void ComputeBBPDJIntegral::build_cache(const double *tip)
                id, rout, tip[0], tip[1], glo[0], ghi[0], glo[1], ghi[1], room);
 
   // gather in rank order, then sort: the same list on every rank
-  const int nmine = static_cast<int>(mine.size());
+  int nmine = static_cast<int>(mine.size());    // not const: the serial MPI stubs take void *
   std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
   MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
   std::partial_sum(counts.begin(), counts.end() - 1, displs.begin() + 1);
