@@ -43,7 +43,8 @@ static constexpr int PAGE_PER_ONE = 10;
 
 FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxpartner(1), npartner(nullptr), partner(nullptr), vinit(nullptr),
-    bond_start(nullptr), nbond(nullptr), bj(nullptr), bxi0(nullptr), bcoef(nullptr),
+    bond_start(nullptr), nbond(nullptr), bj(nullptr), bclass(nullptr), bxi0(nullptr),
+    bcoef(nullptr),
     vintact(nullptr), first(1),
     nlocal_cache(0), nbond_cache(0), list(nullptr), pair(nullptr), extent0(0.0), need_raw(0),
     nmax_raw(0), xraw(nullptr)
@@ -76,6 +77,7 @@ FixBBPDBonds::~FixBBPDBonds()
   memory->destroy(bond_start);
   memory->destroy(nbond);
   memory->destroy(bj);
+  memory->destroy(bclass);
   memory->destroy(bxi0);
   memory->destroy(bcoef);
   memory->destroy(vintact);
@@ -341,19 +343,20 @@ void FixBBPDBonds::refresh_cache()
   }
   bond_start[nlocal] = n;
   const bool compact = pair->compact_storage;
-  if (nbond_cache < n || compact != (bxi0 == nullptr)) {
+  if (nbond_cache < n) {
     // headroom: migration changes the count a little
     nbond_cache = static_cast<int>(MIN((bigint) n + n / 8, (bigint) MAXSMALLINT));
     memory->destroy(bj);
-    memory->destroy(bxi0);
-    memory->destroy(bcoef);
-    bxi0 = bcoef = nullptr;
     memory->create(bj, nbond_cache, "bbpd/bonds:bj");
-    if (!compact) {
-      memory->create(bxi0, nbond_cache, "bbpd/bonds:bxi0");
-      memory->create(bcoef, nbond_cache, "bbpd/bonds:bcoef");
-    }
+    free_bond_values();
   }
+  if (compact) free_bond_values();
+  else if (!bclass && !bxi0) {
+    // the SIMD kernels read the classes of a row in whole vectors: LANES more, never used
+    memory->create(bclass, nbond_cache + LANES_PAD, "bbpd/bonds:bclass");
+    for (int m = nbond_cache; m < nbond_cache + LANES_PAD; m++) bclass[m] = 0;
+  }
+  classes.clear();
 
   double **x0 = atom->x0;
   double **x = atom->x;
@@ -382,15 +385,41 @@ void FixBBPDBonds::refresh_cache()
         error->one(FLERR, "Atoms {} and {} share a reference position: bonds need distinct atoms",
                    tag[i], t);
       bj[m] = j;
-      if (!compact) {
-        bxi0[m] = xi;
-        bcoef[m] = pair->bond_coef(type[i], type[j], xi, vfrac[j]);
-      }
+      if (!compact) store_bond_values(m, xi, pair->bond_coef(type[i], type[j], xi, vfrac[j]));
       m++;
     }
     nbond[i] = m - bond_start[i];
     vintact[i] = intact_volume(i);
   }
+}
+
+void FixBBPDBonds::free_bond_values()
+{
+  memory->destroy(bclass);
+  memory->destroy(bxi0);
+  memory->destroy(bcoef);
+  bclass = nullptr;
+  bxi0 = bcoef = nullptr;
+}
+
+/* reference length and coefficient of cache entry m: its class, or per bond once the table
+   is full (the entries before m then move from the table to per-bond storage) */
+void FixBBPDBonds::store_bond_values(int m, double xi, double coef)
+{
+  if (bclass) {
+    if (classes.add(xi, coef, bclass[m])) return;
+    memory->create(bxi0, nbond_cache, "bbpd/bonds:bxi0");
+    memory->create(bcoef, nbond_cache, "bbpd/bonds:bcoef");
+    for (int e = 0; e < m; e++) {
+      bxi0[e] = classes.xi0[bclass[e]];
+      bcoef[e] = classes.coef[bclass[e]];
+    }
+    memory->destroy(bclass);
+    bclass = nullptr;
+    classes.clear();
+  }
+  bxi0[m] = xi;
+  bcoef[m] = coef;
 }
 
 /* sum of C_v V_j over the intact bonds of atom i, in row order */
@@ -415,6 +444,8 @@ void FixBBPDBonds::remove_bond(int i, int k)
     }
   const int last = bond_start[i] + nbond[i] - 1;
   for (int m = k; m < last; m++) bj[m] = bj[m + 1];
+  if (bclass)
+    for (int m = k; m < last; m++) bclass[m] = bclass[m + 1];
   if (bxi0)
     for (int m = k; m < last; m++) {
       bxi0[m] = bxi0[m + 1];
@@ -428,6 +459,7 @@ void FixBBPDBonds::remove_bond(int i, int k)
 /* the same operations as refresh_cache(), so compact storage gives the same bits */
 double FixBBPDBonds::xi0_of(int i, int k) const
 {
+  if (bclass) return classes.xi0[bclass[k]];
   if (bxi0) return bxi0[k];
   double **x0 = atom->x0;
   const int j = bj[k];
@@ -437,6 +469,7 @@ double FixBBPDBonds::xi0_of(int i, int k) const
 
 double FixBBPDBonds::coef_of(int i, int k, double xi0) const
 {
+  if (bclass) return classes.coef[bclass[k]];
   if (bcoef) return bcoef[k];
   const int j = bj[k];
   return pair->bond_coef(atom->type[i], atom->type[j], xi0, atom->vfrac[j]);
@@ -444,8 +477,9 @@ double FixBBPDBonds::coef_of(int i, int k, double xi0) const
 
 double FixBBPDBonds::bytes_per_bond() const
 {
-  // per bond end: partner tag (persistent) + bj [+ bxi0 + bcoef] (cache); two ends per bond
-  const double cached = pair->compact_storage ? 0.0 : 2.0 * sizeof(double);
+  // per bond end: partner tag (persistent) + bj [+ bclass | bxi0 + bcoef] (cache); two ends
+  // per bond (the class table itself is a few kB per rank, not counted)
+  const double cached = bclass ? sizeof(BBPD::BondClass) : bxi0 ? 2.0 * sizeof(double) : 0.0;
   return 2.0 * (sizeof(tagint) + sizeof(int) + cached);
 }
 
@@ -474,6 +508,7 @@ double FixBBPDBonds::memory_usage()
   bytes += nmax * maxpartner * sizeof(tagint);
   bytes += nlocal_cache * (2.0 * sizeof(int) + sizeof(double));
   bytes += (double) nbond_cache * (sizeof(int) + (bxi0 ? 2.0 * sizeof(double) : 0.0));
+  if (bclass) bytes += (nbond_cache + LANES_PAD) * sizeof(BBPD::BondClass) + 2.0 * sizeof(double) * classes.size();
   bytes += 3.0 * nmax_raw * sizeof(double);
   return bytes;
 }

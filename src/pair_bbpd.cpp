@@ -629,17 +629,24 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
   const double *xx = atom->x[0];
   const int beg = bonds->bond_start[i], n = bonds->nbond[i];
   const int *bj = bonds->bj + beg;
-  const bool compact = compact_storage;
-  const double *bxi0 = compact ? nullptr : bonds->bxi0 + beg;
-  const double *bcoef = compact ? nullptr : bonds->bcoef + beg;
+  // reference lengths and coefficients: by class (the default), per bond, or recomputed (compact)
+  const ClassValues by_class = {bonds->bclass ? bonds->bclass + beg : nullptr,
+                                bonds->classes.xi0.data(), bonds->classes.coef.data()};
+  const PerBondValues per_bond = {bonds->bxi0 ? bonds->bxi0 + beg : nullptr,
+                                  bonds->bcoef ? bonds->bcoef + beg : nullptr};
+  const bool classed = by_class.cls != nullptr;
+  const bool compact = !classed && per_bond.xi0 == nullptr;
   double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
 
 #ifdef BBPD_SIMD
   if (!MULTI && !compact) {
     RowTally tally;
-    if (row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, bxi0, bcoef, n, s0_single, break_margin, ax,
-                                         ay, az, &tally))
-      return true;
+    const bool broken = classed
+        ? row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, by_class, n, s0_single, break_margin, ax,
+                                           ay, az, &tally)
+        : row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, per_bond, n, s0_single, break_margin, ax,
+                                           ay, az, &tally);
+    if (broken) return true;
     lane_sum(ax, ay, az, fi);
     if (EVFLAG) tally_lanes(i, tally, acc);
     return false;
@@ -656,8 +663,12 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
     const int j = bj[k];
     const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
     const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
-    const double xi0 = compact ? bonds->xi0_of(i, beg + k) : bxi0[k];
-    const double coef = compact ? bonds->coef_of(i, beg + k, xi0) : bcoef[k];
+    const double xi0 = classed ? by_class.xi0_of(k)
+        : compact          ? bonds->xi0_of(i, beg + k)
+                           : per_bond.xi0_of(k);
+    const double coef = classed ? by_class.coef_of(k)
+        : compact           ? bonds->coef_of(i, beg + k, xi0)
+                            : per_bond.coef_of(k);
     const double elong = r - xi0;
     if (FRACTURE) broken |= elong + break_margin > (MULTI ? s0row[type[j]] : s0) * xi0;
     const double fbond = coef * elong / r;
@@ -744,6 +755,9 @@ void PairBBPD::report(FixBBPDBonds *fb)
   MPI_Allreduce(&nmax, &gmax, 1, MPI_INT, MPI_MAX, world);
   MPI_Allreduce(&nsum, &gsum, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   const bigint nbroken = fb->count_broken();
+  // distinct (reference length, coefficient) pairs the bonds point into, largest over the ranks
+  int nclass = fb->bclass ? (int) fb->classes.size() : 0, gclass = 0;
+  MPI_Allreduce(&nclass, &gclass, 1, MPI_INT, MPI_MAX, world);
 
   if (comm->me == 0) {
     std::string mesg = fmt::format("BBPD pair style bbpd/{} model {}{}:\n", kernel.name,
@@ -777,8 +791,10 @@ void PairBBPD::report(FixBBPDBonds *fb)
     mesg += fmt::format("  fracture: {}\n", fracture_any ? "on" : "off (elastic, no bond-failure checks)");
     mesg += contact ? fmt::format("  contact: on, distance {:.6g}\n", contact_factor * spacing)
                     : std::string("  contact: off (no neighbour list)\n");
-    mesg += fmt::format("  bond storage: {:.1f} bytes per bond ({:.1f} per bond end)\n",
-                        fb->bytes_per_bond(), 0.5 * fb->bytes_per_bond());
+    mesg += fmt::format("  bond storage: {:.1f} bytes per bond ({:.1f} per bond end){}\n",
+                        fb->bytes_per_bond(), 0.5 * fb->bytes_per_bond(),
+                        gclass ? fmt::format("; table of {} distinct (reference length, "
+                                             "coefficient) pairs", gclass) : std::string());
     mesg += fmt::format("  stable timestep: eq. 25 {:.6g}, velocity-Verlet limit {:.6g}; "
                         "timestep = {:.6g} ({:.3g} of the limit)\n",
                         dt_bound_paper, dt_bound, update->dt, update->dt / dt_bound);

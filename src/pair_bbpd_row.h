@@ -11,6 +11,8 @@
 #ifndef LMP_PAIR_BBPD_ROW_H
 #define LMP_PAIR_BBPD_ROW_H
 
+#include "bbpd_bond_table.h"
+
 #if defined(__AVX512F__) && defined(__AVX512VL__)
 #define BBPD_AVX512
 #define BBPD_SIMD
@@ -31,6 +33,20 @@ struct RowTally {
   double vir[6][LANES];    // xx yy zz xy xz yz
 };
 
+/* where a row finds the reference length and coefficient of its bond k: per bond, or through
+   the bond's class in the rank's table (the same doubles either way) */
+struct PerBondValues {
+  const double *xi0, *coef;
+  double xi0_of(int k) const { return xi0[k]; }
+  double coef_of(int k) const { return coef[k]; }
+};
+struct ClassValues {
+  const BBPD::BondClass *cls;    // readable LANES entries past the row's end
+  const double *xi0, *coef;      // per class
+  double xi0_of(int k) const { return xi0[cls[k]]; }
+  double coef_of(int k) const { return coef[cls[k]]; }
+};
+
 inline double lane_total(const double *a)
 {
   return ((a[0] + a[1]) + (a[2] + a[3])) + ((a[4] + a[5]) + (a[6] + a[7]));
@@ -44,13 +60,26 @@ inline void lane_sum(const double *ax, const double *ay, const double *az, doubl
 }
 
 #ifdef BBPD_AVX512
-/* lanes of the force density on atom i from n bonds (partner bj, reference length
-   bxi0, coefficient bcoef); with FRACTURE returns true if a bond is past s0 or within
+// reference lengths and coefficients of bonds k..k+7 (lanes off in m: zero)
+inline void load_values(const PerBondValues &v, __mmask8 m, int k, __m512d &xi0, __m512d &coef)
+{
+  xi0 = _mm512_maskz_loadu_pd(m, v.xi0 + k);
+  coef = _mm512_maskz_loadu_pd(m, v.coef + k);
+}
+inline void load_values(const ClassValues &v, __mmask8 m, int k, __m512d &xi0, __m512d &coef)
+{
+  const __m256i c = _mm256_cvtepu16_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i *>(v.cls + k)));
+  xi0 = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c, v.xi0, 8);
+  coef = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c, v.coef, 8);
+}
+
+/* lanes of the force density on atom i from n bonds (partner bj, reference length and
+   coefficient from vals); with FRACTURE returns true if a bond is past s0 or within
    margin of it (elong + margin > s0 xi0; margin is 0 except in periodic boxes) */
-template <int FRACTURE, int EV>
-inline bool row_force_avx512(const double *xx, int i, const int *bj, const double *bxi0,
-                             const double *bcoef, int n, double s0, double margin, double *ax,
-                             double *ay, double *az, RowTally *tally)
+template <int FRACTURE, int EV, class Values>
+inline bool row_force_avx512(const double *xx, int i, const int *bj, const Values &vals, int n,
+                             double s0, double margin, double *ax, double *ay, double *az,
+                             RowTally *tally)
 {
   const __m512d quarter = _mm512_set1_pd(0.25), half = _mm512_set1_pd(0.5);
   __m512d eacc = _mm512_setzero_pd(), vacc[6];
@@ -70,17 +99,17 @@ inline bool row_force_avx512(const double *xx, int i, const int *bj, const doubl
     const __m512d rsq =
         _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
     const __m512d r = _mm512_sqrt_pd(rsq);
-    const __m512d xi0 = _mm512_maskz_loadu_pd(m, bxi0 + k);
+    __m512d xi0, coef;
+    load_values(vals, m, k, xi0, coef);
     const __m512d elong = _mm512_sub_pd(r, xi0);
     if (FRACTURE)
       broken |= _mm512_mask_cmp_pd_mask(m, _mm512_add_pd(elong, vmargin), _mm512_mul_pd(vs0, xi0),
                                         _CMP_GT_OQ);
-    const __m512d fbond = _mm512_maskz_div_pd(m, _mm512_mul_pd(_mm512_maskz_loadu_pd(m, bcoef + k), elong), r);
+    const __m512d fbond = _mm512_maskz_div_pd(m, _mm512_mul_pd(coef, elong), r);
     fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fbond, dx));
     fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fbond, dy));
     fz = _mm512_mask_add_pd(fz, m, fz, _mm512_mul_pd(fbond, dz));
     if (EV) {
-      const __m512d coef = _mm512_maskz_loadu_pd(m, bcoef + k);
       eacc = _mm512_mask_add_pd(eacc, m, eacc,
                                 _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(quarter, coef), elong), elong));
       const __m512d hf = _mm512_mul_pd(half, fbond);
@@ -105,11 +134,24 @@ inline bool row_force_avx512(const double *xx, int i, const int *bj, const doubl
 #endif
 
 #ifdef BBPD_AVX2
+// reference lengths and coefficients of bonds k..k+3 (lanes off in m: zero)
+inline void load_values(const PerBondValues &v, __m256d m, int k, __m256d &xi0, __m256d &coef)
+{
+  xi0 = _mm256_maskload_pd(v.xi0 + k, _mm256_castpd_si256(m));
+  coef = _mm256_maskload_pd(v.coef + k, _mm256_castpd_si256(m));
+}
+inline void load_values(const ClassValues &v, __m256d m, int k, __m256d &xi0, __m256d &coef)
+{
+  const __m128i c = _mm_cvtepu16_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i *>(v.cls + k)));
+  xi0 = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), v.xi0, c, m, 8);
+  coef = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), v.coef, c, m, 8);
+}
+
 /* the same as row_force_avx512 with two 4-wide halves: lanes 0-3 and 4-7 */
-template <int FRACTURE, int EV>
-inline bool row_force_avx2(const double *xx, int i, const int *bj, const double *bxi0,
-                           const double *bcoef, int n, double s0, double margin, double *ax,
-                           double *ay, double *az, RowTally *tally)
+template <int FRACTURE, int EV, class Values>
+inline bool row_force_avx2(const double *xx, int i, const int *bj, const Values &vals, int n,
+                           double s0, double margin, double *ax, double *ay, double *az,
+                           RowTally *tally)
 {
   const __m256d quarter = _mm256_set1_pd(0.25), half = _mm256_set1_pd(0.5);
   __m256d eacc[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()}, vacc[6][2];
@@ -132,18 +174,17 @@ inline bool row_force_avx2(const double *xx, int i, const int *bj, const double 
     const __m256d rsq =
         _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
     const __m256d r = _mm256_sqrt_pd(rsq);
-    const __m256d xi0 = _mm256_maskload_pd(bxi0 + k, _mm256_castpd_si256(m));
+    __m256d xi0, coef;
+    load_values(vals, m, k, xi0, coef);
     const __m256d elong = _mm256_sub_pd(r, xi0);
     if (FRACTURE)
       broken = _mm256_or_pd(broken, _mm256_and_pd(m, _mm256_cmp_pd(_mm256_add_pd(elong, vmargin),
                                                                    _mm256_mul_pd(vs0, xi0), _CMP_GT_OQ)));
-    const __m256d fbond = _mm256_div_pd(
-        _mm256_mul_pd(_mm256_maskload_pd(bcoef + k, _mm256_castpd_si256(m)), elong), r);
+    const __m256d fbond = _mm256_div_pd(_mm256_mul_pd(coef, elong), r);
     fx[h] = _mm256_blendv_pd(fx[h], _mm256_add_pd(fx[h], _mm256_mul_pd(fbond, dx)), m);
     fy[h] = _mm256_blendv_pd(fy[h], _mm256_add_pd(fy[h], _mm256_mul_pd(fbond, dy)), m);
     fz[h] = _mm256_blendv_pd(fz[h], _mm256_add_pd(fz[h], _mm256_mul_pd(fbond, dz)), m);
     if (EV) {
-      const __m256d coef = _mm256_maskload_pd(bcoef + k, _mm256_castpd_si256(m));
       const __m256d e = _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(quarter, coef), elong), elong);
       eacc[h] = _mm256_blendv_pd(eacc[h], _mm256_add_pd(eacc[h], e), m);
       const __m256d hf = _mm256_mul_pd(half, fbond);
