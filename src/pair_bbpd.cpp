@@ -31,6 +31,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
@@ -50,6 +51,9 @@ static constexpr double CONTACT_STIFFNESS_FACTOR = 15.0;
 // the round-off of x + L and of the minimum image (2 ulps each) per component in periodic boxes,
 // and the few ulps of the row kernels' 1/sqrt (bbpd_inv_sqrt.h)
 static constexpr double BREAK_MARGIN_ULPS = 16.0;
+// settings generations of all bbpd pair styles: a thread's coefficient memo (bond/storage
+// compact) belongs to one
+static std::atomic<unsigned> memo_epochs{0};
 
 /* ---------------------------------------------------------------------- */
 
@@ -352,6 +356,8 @@ void PairBBPD::init_style()
                    spacing_user ? "given by the spacing keyword"
                                 : "derived from the atom volumes: check 'set ... volume' and thickness/area");
 
+  // coefficients memoised with the settings before this init are stale
+  memo_epoch = ++memo_epochs;
   // set by init_one() (called for every type pair after init_style)
   fracture_any = 0;
   multi_s0 = 0;
@@ -640,6 +646,15 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
   const bool classed = by_class.cls != nullptr;
   const bool compact = !classed && per_bond.xi0 == nullptr;
   double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
+  // compact: a cache per thread of the coefficients (pair_bbpd_row.h)
+  static thread_local CoefCache cache;
+  const int *type = atom->type;
+  auto coef_fn = [this, type, i](int jtype, double xi0, double vj) {
+    return bond_coef(type[i], jtype, xi0, vj);
+  };
+  const RecomputedValues<decltype(coef_fn)> recomputed = {atom->x0 ? atom->x0[0] : nullptr, i,
+                                                          atom->vfrac, type, &cache, coef_fn};
+  if (compact) cache.start(memo_epoch);
 
 #ifdef BBPD_SIMD
   if (!MULTI && !compact) {
@@ -655,8 +670,18 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
     return false;
   }
 #endif
+#ifdef BBPD_AVX512
+  if (!MULTI && compact) {
+    RowTally tally;
+    const bool broken = row_force_avx512<FRACTURE, EVFLAG>(xx, i, bj, recomputed, n, s0_single,
+                                                           break_margin, ax, ay, az, &tally);
+    if (broken) return true;
+    lane_sum(ax, ay, az, fi);
+    if (EVFLAG) tally_lanes(i, tally, acc);
+    return false;
+  }
+#endif
 
-  const int *type = atom->type;
   const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
   const double s0 = s0_single;
   int broken = 0;
@@ -669,10 +694,10 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
     const double w = BBPD::inv_sqrt(rsq);
     const double r = BBPD::sqrt_from_inv(rsq, w);
     const double xi0 = classed ? by_class.xi0_of(k)
-        : compact          ? bonds->xi0_of(i, beg + k)
+        : compact          ? recomputed.xi0_of(j)
                            : per_bond.xi0_of(k);
     const double coef = classed ? by_class.coef_of(k)
-        : compact           ? bonds->coef_of(i, beg + k, xi0)
+        : compact           ? recomputed.coef_of(type[j], xi0, atom->vfrac[j])
                             : per_bond.coef_of(k);
     const double elong = r - xi0;
     if (FRACTURE) broken |= elong + break_margin > (MULTI ? s0row[type[j]] : s0) * xi0;

@@ -51,6 +51,7 @@ class PairBBPD : public Pair {
   double dt_safety;  // warn when timestep > dt_safety * stable bound
   int contact;       // short-range repulsion between non-bonded close atoms
   int compact_storage;    // cache only partner indices (16 B/bond), recompute the rest
+  unsigned memo_epoch = 0;    // settings generation of the compact-storage coefficient memo
   double contact_factor;    // contact distance = contact_factor * spacing
 
  protected:

@@ -15,7 +15,12 @@
 #include "bbpd_bond_table.h"
 #include "bbpd_inv_sqrt.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+#include <vector>
 
 #if defined(__AVX512F__) && defined(__AVX512VL__)
 #define BBPD_AVX512
@@ -49,6 +54,66 @@ struct ClassValues {
   const double *xi0, *coef;      // per class
   double xi0_of(int k) const { return xi0[cls[k]]; }
   double coef_of(int k) const { return coef[cls[k]]; }
+};
+
+/* bond/storage compact: the reference length recomputed from x0 with the operations of
+   FixBBPDBonds::xi0_of(), the coefficient from a per-thread cache keyed by everything it
+   depends on (the two types, the reference length and the partner volume, compared exactly):
+   a grid has a few hundred distinct keys, so the cache nearly always holds the coefficient,
+   and gives the same bits as computing it. */
+struct CoefCache {
+  static constexpr int SIZE = 2048;    // entries, a power of 2: a few times the keys of a grid
+  std::vector<double> xi0, vj, coef;    // per entry; xi0 NaN: empty
+  std::vector<int> types;               // itype * TYPE_STRIDE + jtype
+  unsigned epoch = 0;                   // of the pair settings the coefficients were computed with
+  static constexpr int TYPE_STRIDE = 1 << 15;
+  void start(unsigned e)
+  {
+    if (xi0.empty() || e != epoch) {
+      xi0.assign(SIZE, std::numeric_limits<double>::quiet_NaN());
+      vj.assign(SIZE, 0.0);
+      coef.assign(SIZE, 0.0);
+      types.assign(SIZE, -1);
+      epoch = e;
+    }
+  }
+  static std::uint64_t slot(std::uint64_t xb, std::uint64_t vb, std::uint64_t t)
+  {
+    // grid lengths differ in the high mantissa bits, round-off variants in the low ones
+    const std::uint64_t h = xb ^ (vb >> 7) ^ (t << 45);
+    return (h ^ (h >> 17) ^ (h >> 31)) & (SIZE - 1);
+  }
+};
+
+template <class CoefFn> struct RecomputedValues {
+  const double *x0;       // reference positions, 3 per atom
+  int i;
+  const double *vfrac;
+  const int *type;
+  CoefCache *cache;
+  CoefFn coef_fn;          // coefficient of (partner type, reference length, partner volume)
+  double xi0_of(int j) const
+  {
+    const double d[3] = {x0[3 * j] - x0[3 * i], x0[3 * j + 1] - x0[3 * i + 1],
+                         x0[3 * j + 2] - x0[3 * i + 2]};
+    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  }
+  double coef_of(int jtype, double xi0, double v) const
+  {
+    CoefCache &c = *cache;
+    std::uint64_t xb, vb;
+    std::memcpy(&xb, &xi0, sizeof xb);
+    std::memcpy(&vb, &v, sizeof vb);
+    const int t = type[i] * CoefCache::TYPE_STRIDE + jtype;
+    const std::uint64_t s = CoefCache::slot(xb, vb, t);
+    if (!(c.xi0[s] == xi0 && c.vj[s] == v && c.types[s] == t)) {
+      c.xi0[s] = xi0;
+      c.vj[s] = v;
+      c.types[s] = t;
+      c.coef[s] = coef_fn(jtype, xi0, v);
+    }
+    return c.coef[s];
+  }
 };
 
 inline double lane_total(const double *a)
@@ -97,6 +162,48 @@ inline void load_values(const ClassValues &v, __mmask8 m, int k, __m256i, __m512
   const __m256i c = _mm256_cvtepu16_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i *>(v.cls + k)));
   xi0 = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c, v.xi0, 8);
   coef = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c, v.coef, 8);
+}
+
+template <class CoefFn>
+inline void load_values(const RecomputedValues<CoefFn> &v, __mmask8 m, int, __m256i j,
+                        __m512d &xi0, __m512d &coef)
+{
+  const __m256i j3 = _mm256_mullo_epi32(j, _mm256_set1_epi32(3));
+  const double *xi = v.x0 + 3 * v.i;
+  const __m512d x = _mm512_set1_pd(xi[0]), y = _mm512_set1_pd(xi[1]), z = _mm512_set1_pd(xi[2]);
+  const __m512d dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(x, m, j3, v.x0, 8), x);
+  const __m512d dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(y, m, j3, v.x0 + 1, 8), y);
+  const __m512d dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(z, m, j3, v.x0 + 2, 8), z);
+  xi0 = _mm512_sqrt_pd(
+      _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz)));
+  const __m512d vj = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, j, v.vfrac, 8);
+  const __m256i tj = _mm256_add_epi32(
+      _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), m, j, v.type, 4),
+      _mm256_set1_epi32(v.type[v.i] * CoefCache::TYPE_STRIDE));
+  // the cache slots, as CoefCache::slot
+  const __m512i xb = _mm512_castpd_si512(xi0), vb = _mm512_castpd_si512(vj);
+  const __m512i h = _mm512_xor_si512(_mm512_xor_si512(xb, _mm512_srli_epi64(vb, 7)),
+                                     _mm512_slli_epi64(_mm512_cvtepu32_epi64(tj), 45));
+  const __m512i slot = _mm512_and_si512(
+      _mm512_xor_si512(_mm512_xor_si512(h, _mm512_srli_epi64(h, 17)), _mm512_srli_epi64(h, 31)),
+      _mm512_set1_epi64(CoefCache::SIZE - 1));
+  CoefCache &c = *v.cache;
+  const __mmask8 hit =
+      _mm512_mask_cmp_pd_mask(m, xi0, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.xi0.data(), 8), _CMP_EQ_OQ) &
+      _mm512_mask_cmp_pd_mask(m, vj, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.vj.data(), 8), _CMP_EQ_OQ) &
+      _mm256_mask_cmpeq_epi32_mask(m, tj, _mm512_mask_i64gather_epi32(_mm256_setzero_si256(), m, slot, c.types.data(), 4));
+  coef = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), hit, slot, c.coef.data(), 8);
+  if (hit != m) {
+    // computed lane by lane (two lanes of this vector may share a slot)
+    alignas(64) double lx[LANES], lv[LANES], lc[LANES];
+    alignas(32) int lt[LANES];
+    _mm512_store_pd(lx, xi0);
+    _mm512_store_pd(lv, vj);
+    _mm256_store_si256(reinterpret_cast<__m256i *>(lt), _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), m, j, v.type, 4));
+    for (int l = 0; l < LANES; l++)
+      lc[l] = ((m & ~hit) & (1u << l)) ? v.coef_of(lt[l], lx[l], lv[l]) : 0.0;
+    coef = _mm512_mask_blend_pd(m & ~hit, coef, _mm512_load_pd(lc));
+  }
 }
 
 /* lanes of the force density on atom i from n bonds (partner bj, reference length and

@@ -128,3 +128,15 @@ def test_openmp_threads_give_the_same_trajectory(lmp, tmp_path):
         assert final > notch + 100
         dumps[threads] = (tmp_path / "final.dump").read_text()
     assert dumps[1] == dumps[2]
+
+
+def test_compact_storage_follows_new_coefficients(lmp, tmp_path):
+    """Compact storage caches coefficients per thread: a pair_coeff issued between runs (a
+    stiffer material) must reach them, as it reaches the default storage."""
+    dumps = {}
+    for storage in ("fast", "compact"):
+        script = SCENE.format(kernel="gaussian", storage=storage).replace(
+            "run 300\n", "run 100\npair_coeff 1 1 380e9 6.9e3 0.005\nrun 100\n")
+        lmp(script)
+        dumps[storage] = (tmp_path / "final.dump").read_text()
+    assert dumps["fast"] == dumps["compact"]
