@@ -47,9 +47,8 @@ static constexpr const char *BONDS_FIX_ID = "BBPD_BONDS";
 // Phys. Commun. 179 (2008) 777) and stiffness 15 c0 (Silling, EMU theory manual, 2005, p. 18)
 static constexpr double CONTACT_FACTOR_DEFAULT = 0.9;
 static constexpr double CONTACT_STIFFNESS_FACTOR = 15.0;
-// margin of the quick bond-failure test, in units of DBL_EPSILON x the largest coordinate: covers
-// the round-off of x + L and of the minimum image (2 ulps each) per component in periodic boxes,
-// and the few ulps of the row kernels' 1/sqrt (bbpd_inv_sqrt.h)
+// margin of the quick bond-failure test in periodic boxes, in units of DBL_EPSILON x the largest
+// coordinate: covers the round-off of x + L and of the minimum image (2 ulps each) per component
 static constexpr double BREAK_MARGIN_ULPS = 16.0;
 // settings generations of all bbpd pair styles: a thread's coefficient memo (bond/storage
 // compact) belongs to one
@@ -167,8 +166,8 @@ void PairBBPD::settings(int narg, char **arg)
     if (key == "bond/storage") {
       const std::string v = arg[iarg + 1];
       if (v != "fast" && v != "compact")
-        error->all(FLERR, "Pair style {}: bond/storage must be 'fast' (48 bytes per bond) or "
-                   "'compact' (16 bytes per bond, slower)", style);
+        error->all(FLERR, "Pair style {}: bond/storage must be 'fast' (20 bytes per bond on a "
+                   "grid, 48 on irregular ones) or 'compact' (16 bytes per bond, slower)", style);
       compact_storage = v == "compact";
       iarg += 2;
       continue;
@@ -432,11 +431,9 @@ void PairBBPD::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   if (!bonds || !bonds->families_built()) return;
   break_margin = 0.0;
-  if (fracture_any) {
-    // the row kernels' bond length (1/sqrt from Newton steps) is a few ulps of itself off the
-    // correctly rounded one that past_critical() decides with; in a periodic box the local and
-    // the canonical bond length also differ by the round-off of one periodic shift per
-    // component: a few ulps of the largest coordinate (box corner + ghost cutoff, and the
+  if (fracture_any && bonds->raw_positions()) {
+    // the local and the canonical bond length differ by the round-off of one periodic shift
+    // per component: a few ulps of the largest coordinate (box corner + ghost cutoff, and the
     // tilts of a triclinic box, whose ghost cutoff is in box fractions)
     const double cut = MAX(comm->cutghost[0], MAX(comm->cutghost[1], comm->cutghost[2]));
     double big = 0.0;
@@ -690,9 +687,7 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
   auto bond = [&](int k, int l) {
     const int j = bj[k];
     const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
-    const double rsq = dx * dx + dy * dy + dz * dz;
-    const double w = BBPD::inv_sqrt(rsq);
-    const double r = BBPD::sqrt_from_inv(rsq, w);
+    const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
     const double xi0 = classed ? by_class.xi0_of(k)
         : compact          ? recomputed.xi0_of(j)
                            : per_bond.xi0_of(k);
@@ -701,7 +696,7 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
                             : per_bond.coef_of(k);
     const double elong = r - xi0;
     if (FRACTURE) broken |= elong + break_margin > (MULTI ? s0row[type[j]] : s0) * xi0;
-    const double fbond = coef * elong * w;
+    const double fbond = coef * elong / r;
     ax[l] += fbond * dx;
     ay[l] += fbond * dy;
     az[l] += fbond * dz;

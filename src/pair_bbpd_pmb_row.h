@@ -108,18 +108,18 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const int *bj, con
     const __m512d dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(zi, m, j3, xx + 2, 8), zi);
     const __m512d rsq =
         _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
+    const __m512d r = _mm512_sqrt_pd(rsq);
     const __m512d xi0 = _mm512_maskz_loadu_pd(m, bxi0 + k);
+    const __m512d elong = _mm512_sub_pd(r, xi0);
     // force: as row_force_avx512
-    const __m512d w = inv_sqrt_avx512(rsq);
-    const __m512d felong = _mm512_sub_pd(sqrt_from_inv_avx512(rsq, w), xi0);
-    const __m512d fbond = _mm512_maskz_mul_pd(m, _mm512_mul_pd(_mm512_maskz_loadu_pd(m, bcoef + k), felong), w);
+    const __m512d fbond = _mm512_maskz_div_pd(m, _mm512_mul_pd(_mm512_maskz_loadu_pd(m, bcoef + k), elong), r);
     fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fbond, dx));
     fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fbond, dy));
     fz = _mm512_mask_add_pd(fz, m, fz, _mm512_mul_pd(fbond, dz));
     if (EV) {
       const __m512d coef = _mm512_maskz_loadu_pd(m, bcoef + k);
       eacc = _mm512_mask_add_pd(eacc, m, eacc,
-                                _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(quarter, coef), felong), felong));
+                                _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(quarter, coef), elong), elong));
       const __m512d hf = _mm512_mul_pd(half, fbond);
       const __m512d d[3] = {dx, dy, dz};
       const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
@@ -127,8 +127,8 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const int *bj, con
         vacc[c] = _mm512_mask_sub_pd(vacc[c], m, vacc[c],
                                      _mm512_mul_pd(_mm512_mul_pd(hf, d[pa[c]]), d[pb[c]]));
     }
-    // stretch: as row_stretch_avx512 (from the correctly rounded length, as the breaking test)
-    __m512d es = _mm512_sub_pd(_mm512_sqrt_pd(rsq), xi0);
+    // stretch: as row_stretch_avx512
+    __m512d es = elong;
     if (PMB) es = _mm512_mask_mov_pd(es, _mm512_cmp_pd_mask(_mm512_abs_pd(es), near_zero, _CMP_LT_OQ), zero);
     const __m512d s = _mm512_div_pd(es, _mm512_mask_mov_pd(one, m, xi0));
     vmin = _mm512_mask_min_pd(vmin, m, s, vmin);

@@ -5,15 +5,13 @@
    Bond k of a row goes to lane k % LANES; lanes are summed in one fixed order
    (lane_sum). The AVX-512 and AVX2 kernels compute each bond with the same
    operations in the same order as the portable loop in pair_bbpd.cpp (no FMA
-   contraction, 1/|y| from bbpd_inv_sqrt.h), so all three give identical bits:
-     w = 1/sqrt(rsq), r = sqrt_from_inv(rsq, w), elong = r - xi0, fbond = coef elong w
+   contraction), so all three give identical bits.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_BBPD_ROW_H
 #define LMP_PAIR_BBPD_ROW_H
 
 #include "bbpd_bond_table.h"
-#include "bbpd_inv_sqrt.h"
 
 #include <algorithm>
 #include <cmath>
@@ -129,26 +127,6 @@ inline void lane_sum(const double *ax, const double *ay, const double *az, doubl
 }
 
 #ifdef BBPD_AVX512
-// BBPD::inv_sqrt of each lane
-inline __m512d inv_sqrt_avx512(__m512d x)
-{
-  const __m512i magic = _mm512_set1_epi64((long long) BBPD::INV_SQRT_MAGIC);
-  __m512d y = _mm512_castsi512_pd(_mm512_sub_epi64(magic, _mm512_srli_epi64(_mm512_castpd_si512(x), 1)));
-  const __m512d h = _mm512_mul_pd(_mm512_set1_pd(0.5), x), th = _mm512_set1_pd(1.5);
-  for (int n = 0; n < BBPD::INV_SQRT_NEWTON_STEPS; n++)
-    y = _mm512_mul_pd(y, _mm512_sub_pd(th, _mm512_mul_pd(_mm512_mul_pd(h, y), y)));
-  return _mm512_mask_blend_pd(_mm512_cmp_pd_mask(x, _mm512_setzero_pd(), _CMP_EQ_OQ), y,
-                              _mm512_set1_pd(std::numeric_limits<double>::infinity()));
-}
-
-// BBPD::sqrt_from_inv of each lane
-inline __m512d sqrt_from_inv_avx512(__m512d x, __m512d w)
-{
-  const __m512d r = _mm512_mul_pd(x, w);
-  return _mm512_add_pd(r, _mm512_mul_pd(_mm512_sub_pd(x, _mm512_mul_pd(r, r)),
-                                        _mm512_mul_pd(_mm512_set1_pd(0.5), w)));
-}
-
 // reference lengths and coefficients of bonds k..k+7 (lanes off in m: zero)
 inline void load_values(const PerBondValues &v, __mmask8 m, int k, __m256i, __m512d &xi0,
                         __m512d &coef)
@@ -232,15 +210,14 @@ inline bool row_force_avx512(const double *xx, int i, const int *bj, const Value
     const __m512d dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(zi, m, j3, xx + 2, 8), zi);
     const __m512d rsq =
         _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
-    const __m512d w = inv_sqrt_avx512(rsq);
-    const __m512d r = sqrt_from_inv_avx512(rsq, w);
+    const __m512d r = _mm512_sqrt_pd(rsq);
     __m512d xi0, coef;
     load_values(vals, m, k, j1, xi0, coef);
     const __m512d elong = _mm512_sub_pd(r, xi0);
     if (FRACTURE)
       broken |= _mm512_mask_cmp_pd_mask(m, _mm512_add_pd(elong, vmargin), _mm512_mul_pd(vs0, xi0),
                                         _CMP_GT_OQ);
-    const __m512d fbond = _mm512_maskz_mul_pd(m, _mm512_mul_pd(coef, elong), w);
+    const __m512d fbond = _mm512_maskz_div_pd(m, _mm512_mul_pd(coef, elong), r);
     fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fbond, dx));
     fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fbond, dy));
     fz = _mm512_mask_add_pd(fz, m, fz, _mm512_mul_pd(fbond, dz));
@@ -269,26 +246,6 @@ inline bool row_force_avx512(const double *xx, int i, const int *bj, const Value
 #endif
 
 #ifdef BBPD_AVX2
-// BBPD::inv_sqrt of each lane
-inline __m256d inv_sqrt_avx2(__m256d x)
-{
-  const __m256i magic = _mm256_set1_epi64x((long long) BBPD::INV_SQRT_MAGIC);
-  __m256d y = _mm256_castsi256_pd(_mm256_sub_epi64(magic, _mm256_srli_epi64(_mm256_castpd_si256(x), 1)));
-  const __m256d h = _mm256_mul_pd(_mm256_set1_pd(0.5), x), th = _mm256_set1_pd(1.5);
-  for (int n = 0; n < BBPD::INV_SQRT_NEWTON_STEPS; n++)
-    y = _mm256_mul_pd(y, _mm256_sub_pd(th, _mm256_mul_pd(_mm256_mul_pd(h, y), y)));
-  return _mm256_blendv_pd(y, _mm256_set1_pd(std::numeric_limits<double>::infinity()),
-                          _mm256_cmp_pd(x, _mm256_setzero_pd(), _CMP_EQ_OQ));
-}
-
-// BBPD::sqrt_from_inv of each lane
-inline __m256d sqrt_from_inv_avx2(__m256d x, __m256d w)
-{
-  const __m256d r = _mm256_mul_pd(x, w);
-  return _mm256_add_pd(r, _mm256_mul_pd(_mm256_sub_pd(x, _mm256_mul_pd(r, r)),
-                                        _mm256_mul_pd(_mm256_set1_pd(0.5), w)));
-}
-
 // reference lengths and coefficients of bonds k..k+3 (lanes off in m: zero)
 inline void load_values(const PerBondValues &v, __m256d m, int k, __m256d &xi0, __m256d &coef)
 {
@@ -328,15 +285,14 @@ inline bool row_force_avx2(const double *xx, int i, const int *bj, const Values 
     const __m256d dz = _mm256_sub_pd(_mm256_mask_i32gather_pd(zi, xx + 2, j3, m, 8), zi);
     const __m256d rsq =
         _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
-    const __m256d w = inv_sqrt_avx2(rsq);
-    const __m256d r = sqrt_from_inv_avx2(rsq, w);
+    const __m256d r = _mm256_sqrt_pd(rsq);
     __m256d xi0, coef;
     load_values(vals, m, k, xi0, coef);
     const __m256d elong = _mm256_sub_pd(r, xi0);
     if (FRACTURE)
       broken = _mm256_or_pd(broken, _mm256_and_pd(m, _mm256_cmp_pd(_mm256_add_pd(elong, vmargin),
                                                                    _mm256_mul_pd(vs0, xi0), _CMP_GT_OQ)));
-    const __m256d fbond = _mm256_mul_pd(_mm256_mul_pd(coef, elong), w);
+    const __m256d fbond = _mm256_div_pd(_mm256_mul_pd(coef, elong), r);
     fx[h] = _mm256_blendv_pd(fx[h], _mm256_add_pd(fx[h], _mm256_mul_pd(fbond, dx)), m);
     fy[h] = _mm256_blendv_pd(fy[h], _mm256_add_pd(fy[h], _mm256_mul_pd(fbond, dy)), m);
     fz[h] = _mm256_blendv_pd(fz[h], _mm256_add_pd(fz[h], _mm256_mul_pd(fbond, dz)), m);
