@@ -11,8 +11,10 @@
 namespace BBPD {
 
 /* What the per-bond cache holds besides the partner index: FAST also keeps the reference
-   length and the coefficient (48 bytes per bond); COMPACT recomputes both from x0 when needed,
-   with the same operations, so the same bits (16 bytes per bond). */
+   length and the coefficient, as a class into the rank's table of distinct pairs
+   (bbpd_bond_table.h, 20 bytes per bond) or per bond where a rank has too many distinct pairs
+   (48 bytes per bond); COMPACT recomputes both from x0 when needed, with the same operations,
+   so the same bits (16 bytes per bond). */
 class BondStorage {
  public:
   enum Kind { FAST, COMPACT };
@@ -23,8 +25,6 @@ class BondStorage {
   // restart files hold the policy as an int: 0 fast, 1 compact
   constexpr int code() const { return kind == FAST ? 0 : 1; }
   static constexpr BondStorage from_code(int c) { return c ? COMPACT : FAST; }
-  // bytes cached per bond end besides the partner index
-  constexpr double cached_bytes() const { return caches_geometry() ? 2.0 * sizeof(double) : 0.0; }
 
  private:
   Kind kind;

@@ -12,6 +12,15 @@
 #ifndef BBPD_ROW_H
 #define BBPD_ROW_H
 
+#include "bbpd_bond_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
+
 #if defined(__AVX512F__) && defined(__AVX512VL__)
 #define BBPD_AVX512
 #define BBPD_SIMD
@@ -22,8 +31,6 @@
 #include <immintrin.h>
 #endif
 
-#include <cmath>
-
 namespace BBPD {
 
 constexpr int LANES = 8;    // one AVX-512 register of doubles
@@ -32,6 +39,80 @@ constexpr int LANES = 8;    // one AVX-512 register of doubles
 struct RowTally {
   double eng[LANES];
   double vir[6][LANES];    // xx yy zz xy xz yz
+};
+
+/* where a row finds the reference length and coefficient of its bond k: per bond, or through
+   the bond's class in the rank's table (the same doubles either way) */
+struct PerBondValues {
+  const double *xi0, *coef;
+  double xi0_of(int k) const { return xi0[k]; }
+  double coef_of(int k) const { return coef[k]; }
+};
+struct ClassValues {
+  const BBPD::BondClass *cls;    // readable LANES entries past the row's end
+  const double *xi0, *coef;      // per class
+  double xi0_of(int k) const { return xi0[cls[k]]; }
+  double coef_of(int k) const { return coef[cls[k]]; }
+};
+
+/* bond/storage compact: the reference length recomputed from x0 with the operations of
+   FixBBPDBonds::xi0_of(), the coefficient from a per-thread cache keyed by everything it
+   depends on (the two types, the reference length and the partner volume, compared exactly):
+   a grid has a few hundred distinct keys, so the cache nearly always holds the coefficient,
+   and gives the same bits as computing it. */
+struct CoefCache {
+  static constexpr int SIZE = 2048;    // entries, a power of 2: a few times the keys of a grid
+  std::vector<double> xi0, vj, coef;    // per entry; xi0 NaN: empty
+  std::vector<int> types;               // itype * TYPE_STRIDE + jtype
+  unsigned epoch = 0;                   // of the pair settings the coefficients were computed with
+  static constexpr int TYPE_STRIDE = 1 << 15;
+  void start(unsigned e)
+  {
+    if (xi0.empty() || e != epoch) {
+      xi0.assign(SIZE, std::numeric_limits<double>::quiet_NaN());
+      vj.assign(SIZE, 0.0);
+      coef.assign(SIZE, 0.0);
+      types.assign(SIZE, -1);
+      epoch = e;
+    }
+  }
+  static std::uint64_t slot(std::uint64_t xb, std::uint64_t vb, std::uint64_t t)
+  {
+    // grid lengths differ in the high mantissa bits, round-off variants in the low ones
+    const std::uint64_t h = xb ^ (vb >> 7) ^ (t << 45);
+    return (h ^ (h >> 17) ^ (h >> 31)) & (SIZE - 1);
+  }
+};
+
+template <class CoefFn> struct RecomputedValues {
+  const double *x0;       // reference positions, 3 per atom
+  int i;
+  const double *vfrac;
+  const int *type;
+  CoefCache *cache;
+  CoefFn coef_fn;          // coefficient of (partner type, reference length, partner volume)
+  double xi0_of(int j) const
+  {
+    const double d[3] = {x0[3 * j] - x0[3 * i], x0[3 * j + 1] - x0[3 * i + 1],
+                         x0[3 * j + 2] - x0[3 * i + 2]};
+    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  }
+  double coef_of(int jtype, double xi0, double v) const
+  {
+    CoefCache &c = *cache;
+    std::uint64_t xb, vb;
+    std::memcpy(&xb, &xi0, sizeof xb);
+    std::memcpy(&vb, &v, sizeof vb);
+    const int t = type[i] * CoefCache::TYPE_STRIDE + jtype;
+    const std::uint64_t s = CoefCache::slot(xb, vb, t);
+    if (!(c.xi0[s] == xi0 && c.vj[s] == v && c.types[s] == t)) {
+      c.xi0[s] = xi0;
+      c.vj[s] = v;
+      c.types[s] = t;
+      c.coef[s] = coef_fn(jtype, xi0, v);
+    }
+    return c.coef[s];
+  }
 };
 
 inline double lane_total(const double *a)
@@ -87,13 +168,70 @@ inline bool row_force_portable(const double *xx, int i, const int *bj, int n, Xi
 }
 
 #ifdef BBPD_AVX512
-/* lanes of the force density on atom i from n bonds (partner bj, reference length
-   bxi0, coefficient bcoef); with FRACTURE returns true if a bond is past s0 or within
+// reference lengths and coefficients of bonds k..k+7 (lanes off in m: zero)
+inline void load_values(const PerBondValues &v, __mmask8 m, int k, __m256i, __m512d &xi0,
+                        __m512d &coef)
+{
+  xi0 = _mm512_maskz_loadu_pd(m, v.xi0 + k);
+  coef = _mm512_maskz_loadu_pd(m, v.coef + k);
+}
+inline void load_values(const ClassValues &v, __mmask8 m, int k, __m256i, __m512d &xi0,
+                        __m512d &coef)
+{
+  const __m256i c = _mm256_cvtepu16_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i *>(v.cls + k)));
+  xi0 = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c, v.xi0, 8);
+  coef = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c, v.coef, 8);
+}
+
+template <class CoefFn>
+inline void load_values(const RecomputedValues<CoefFn> &v, __mmask8 m, int, __m256i j,
+                        __m512d &xi0, __m512d &coef)
+{
+  const __m256i j3 = _mm256_mullo_epi32(j, _mm256_set1_epi32(3));
+  const double *xi = v.x0 + 3 * v.i;
+  const __m512d x = _mm512_set1_pd(xi[0]), y = _mm512_set1_pd(xi[1]), z = _mm512_set1_pd(xi[2]);
+  const __m512d dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(x, m, j3, v.x0, 8), x);
+  const __m512d dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(y, m, j3, v.x0 + 1, 8), y);
+  const __m512d dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(z, m, j3, v.x0 + 2, 8), z);
+  xi0 = _mm512_sqrt_pd(
+      _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz)));
+  const __m512d vj = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, j, v.vfrac, 8);
+  const __m256i tj = _mm256_add_epi32(
+      _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), m, j, v.type, 4),
+      _mm256_set1_epi32(v.type[v.i] * CoefCache::TYPE_STRIDE));
+  // the cache slots, as CoefCache::slot
+  const __m512i xb = _mm512_castpd_si512(xi0), vb = _mm512_castpd_si512(vj);
+  const __m512i h = _mm512_xor_si512(_mm512_xor_si512(xb, _mm512_srli_epi64(vb, 7)),
+                                     _mm512_slli_epi64(_mm512_cvtepu32_epi64(tj), 45));
+  const __m512i slot = _mm512_and_si512(
+      _mm512_xor_si512(_mm512_xor_si512(h, _mm512_srli_epi64(h, 17)), _mm512_srli_epi64(h, 31)),
+      _mm512_set1_epi64(CoefCache::SIZE - 1));
+  CoefCache &c = *v.cache;
+  const __mmask8 hit =
+      _mm512_mask_cmp_pd_mask(m, xi0, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.xi0.data(), 8), _CMP_EQ_OQ) &
+      _mm512_mask_cmp_pd_mask(m, vj, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.vj.data(), 8), _CMP_EQ_OQ) &
+      _mm256_mask_cmpeq_epi32_mask(m, tj, _mm512_mask_i64gather_epi32(_mm256_setzero_si256(), m, slot, c.types.data(), 4));
+  coef = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), hit, slot, c.coef.data(), 8);
+  if (hit != m) {
+    // computed lane by lane (two lanes of this vector may share a slot)
+    alignas(64) double lx[LANES], lv[LANES], lc[LANES];
+    alignas(32) int lt[LANES];
+    _mm512_store_pd(lx, xi0);
+    _mm512_store_pd(lv, vj);
+    _mm256_store_si256(reinterpret_cast<__m256i *>(lt), _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), m, j, v.type, 4));
+    for (int l = 0; l < LANES; l++)
+      lc[l] = ((m & ~hit) & (1u << l)) ? v.coef_of(lt[l], lx[l], lv[l]) : 0.0;
+    coef = _mm512_mask_blend_pd(m & ~hit, coef, _mm512_load_pd(lc));
+  }
+}
+
+/* lanes of the force density on atom i from n bonds (partner bj, reference length and
+   coefficient from vals); with FRACTURE returns true if a bond is past s0 or within
    margin of it (elong + margin > s0 xi0; margin is 0 except in periodic boxes) */
-template <int FRACTURE, int EV>
-inline bool row_force_avx512(const double *xx, int i, const int *bj, const double *bxi0,
-                             const double *bcoef, int n, double s0, double margin, double *ax,
-                             double *ay, double *az, RowTally *tally)
+template <int FRACTURE, int EV, class Values>
+inline bool row_force_avx512(const double *xx, int i, const int *bj, const Values &vals, int n,
+                             double s0, double margin, double *ax, double *ay, double *az,
+                             RowTally *tally)
 {
   const __m512d quarter = _mm512_set1_pd(0.25), half = _mm512_set1_pd(0.5);
   __m512d eacc = _mm512_setzero_pd(), vacc[6];
@@ -106,24 +244,25 @@ inline bool row_force_avx512(const double *xx, int i, const int *bj, const doubl
   __mmask8 broken = 0;
   for (int k = 0; k < n; k += LANES) {
     const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
-    const __m256i j3 = _mm256_mullo_epi32(_mm256_maskz_loadu_epi32(m, bj + k), three);
+    const __m256i j1 = _mm256_maskz_loadu_epi32(m, bj + k);
+    const __m256i j3 = _mm256_mullo_epi32(j1, three);
     const __m512d dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(xi, m, j3, xx, 8), xi);
     const __m512d dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(yi, m, j3, xx + 1, 8), yi);
     const __m512d dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(zi, m, j3, xx + 2, 8), zi);
     const __m512d rsq =
         _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
     const __m512d r = _mm512_sqrt_pd(rsq);
-    const __m512d xi0 = _mm512_maskz_loadu_pd(m, bxi0 + k);
+    __m512d xi0, coef;
+    load_values(vals, m, k, j1, xi0, coef);
     const __m512d elong = _mm512_sub_pd(r, xi0);
     if (FRACTURE)
       broken |= _mm512_mask_cmp_pd_mask(m, _mm512_add_pd(elong, vmargin), _mm512_mul_pd(vs0, xi0),
                                         _CMP_GT_OQ);
-    const __m512d fbond = _mm512_maskz_div_pd(m, _mm512_mul_pd(_mm512_maskz_loadu_pd(m, bcoef + k), elong), r);
+    const __m512d fbond = _mm512_maskz_div_pd(m, _mm512_mul_pd(coef, elong), r);
     fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fbond, dx));
     fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fbond, dy));
     fz = _mm512_mask_add_pd(fz, m, fz, _mm512_mul_pd(fbond, dz));
     if (EV) {
-      const __m512d coef = _mm512_maskz_loadu_pd(m, bcoef + k);
       eacc = _mm512_mask_add_pd(eacc, m, eacc,
                                 _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(quarter, coef), elong), elong));
       const __m512d hf = _mm512_mul_pd(half, fbond);
@@ -148,11 +287,24 @@ inline bool row_force_avx512(const double *xx, int i, const int *bj, const doubl
 #endif
 
 #ifdef BBPD_AVX2
+// reference lengths and coefficients of bonds k..k+3 (lanes off in m: zero)
+inline void load_values(const PerBondValues &v, __m256d m, int k, __m256d &xi0, __m256d &coef)
+{
+  xi0 = _mm256_maskload_pd(v.xi0 + k, _mm256_castpd_si256(m));
+  coef = _mm256_maskload_pd(v.coef + k, _mm256_castpd_si256(m));
+}
+inline void load_values(const ClassValues &v, __m256d m, int k, __m256d &xi0, __m256d &coef)
+{
+  const __m128i c = _mm_cvtepu16_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i *>(v.cls + k)));
+  xi0 = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), v.xi0, c, m, 8);
+  coef = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), v.coef, c, m, 8);
+}
+
 /* the same as row_force_avx512 with two 4-wide halves: lanes 0-3 and 4-7 */
-template <int FRACTURE, int EV>
-inline bool row_force_avx2(const double *xx, int i, const int *bj, const double *bxi0,
-                           const double *bcoef, int n, double s0, double margin, double *ax,
-                           double *ay, double *az, RowTally *tally)
+template <int FRACTURE, int EV, class Values>
+inline bool row_force_avx2(const double *xx, int i, const int *bj, const Values &vals, int n,
+                           double s0, double margin, double *ax, double *ay, double *az,
+                           RowTally *tally)
 {
   const __m256d quarter = _mm256_set1_pd(0.25), half = _mm256_set1_pd(0.5);
   __m256d eacc[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()}, vacc[6][2];
@@ -175,18 +327,17 @@ inline bool row_force_avx2(const double *xx, int i, const int *bj, const double 
     const __m256d rsq =
         _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
     const __m256d r = _mm256_sqrt_pd(rsq);
-    const __m256d xi0 = _mm256_maskload_pd(bxi0 + k, _mm256_castpd_si256(m));
+    __m256d xi0, coef;
+    load_values(vals, m, k, xi0, coef);
     const __m256d elong = _mm256_sub_pd(r, xi0);
     if (FRACTURE)
       broken = _mm256_or_pd(broken, _mm256_and_pd(m, _mm256_cmp_pd(_mm256_add_pd(elong, vmargin),
                                                                    _mm256_mul_pd(vs0, xi0), _CMP_GT_OQ)));
-    const __m256d fbond = _mm256_div_pd(
-        _mm256_mul_pd(_mm256_maskload_pd(bcoef + k, _mm256_castpd_si256(m)), elong), r);
+    const __m256d fbond = _mm256_div_pd(_mm256_mul_pd(coef, elong), r);
     fx[h] = _mm256_blendv_pd(fx[h], _mm256_add_pd(fx[h], _mm256_mul_pd(fbond, dx)), m);
     fy[h] = _mm256_blendv_pd(fy[h], _mm256_add_pd(fy[h], _mm256_mul_pd(fbond, dy)), m);
     fz[h] = _mm256_blendv_pd(fz[h], _mm256_add_pd(fz[h], _mm256_mul_pd(fbond, dz)), m);
     if (EV) {
-      const __m256d coef = _mm256_maskload_pd(bcoef + k, _mm256_castpd_si256(m));
       const __m256d e = _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(quarter, coef), elong), elong);
       eacc[h] = _mm256_blendv_pd(eacc[h], _mm256_add_pd(eacc[h], e), m);
       const __m256d hf = _mm256_mul_pd(half, fbond);

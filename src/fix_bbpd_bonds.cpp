@@ -41,7 +41,8 @@ static constexpr int PAGE_PER_ONE = 10;
 
 FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxpartner(1), npartner(nullptr), partner(nullptr), vinit(nullptr),
-    bond_start(nullptr), nbond(nullptr), bj(nullptr), bxi0(nullptr), bcoef(nullptr),
+    bond_start(nullptr), nbond(nullptr), bj(nullptr), bclass(nullptr), bxi0(nullptr),
+    bcoef(nullptr),
     vintact(nullptr), first(1),
     nlocal_cache(0), nbond_cache(0), list(nullptr), have_rules(false), extent0(0.0), need_raw(0),
     nmax_raw(0), xraw(nullptr)
@@ -74,6 +75,7 @@ FixBBPDBonds::~FixBBPDBonds()
   memory->destroy(bond_start);
   memory->destroy(nbond);
   memory->destroy(bj);
+  memory->destroy(bclass);
   memory->destroy(bxi0);
   memory->destroy(bcoef);
   memory->destroy(vintact);
@@ -338,20 +340,20 @@ void FixBBPDBonds::refresh_cache()
   }
   bond_start[nlocal] = n;
   const bool compact = !policy.caches_geometry();
-  if (nbond_cache < n || policy != cache_policy) {
+  if (nbond_cache < n) {
     // headroom: migration changes the count a little
     nbond_cache = static_cast<int>(MIN((bigint) n + n / 8, (bigint) MAXSMALLINT));
     memory->destroy(bj);
-    memory->destroy(bxi0);
-    memory->destroy(bcoef);
-    bxi0 = bcoef = nullptr;
     memory->create(bj, nbond_cache, "bbpd/bonds:bj");
-    if (!compact) {
-      memory->create(bxi0, nbond_cache, "bbpd/bonds:bxi0");
-      memory->create(bcoef, nbond_cache, "bbpd/bonds:bcoef");
-    }
-    cache_policy = policy;
+    free_bond_values();
   }
+  if (compact) free_bond_values();
+  else if (!bclass && !bxi0) {
+    // the SIMD kernels read the classes of a row in whole vectors: LANES more, never used
+    memory->create(bclass, nbond_cache + LANES_PAD, "bbpd/bonds:bclass");
+    for (int m = nbond_cache; m < nbond_cache + LANES_PAD; m++) bclass[m] = 0;
+  }
+  classes.clear();
 
   double **x0 = atom->x0;
   double **x = atom->x;
@@ -380,15 +382,41 @@ void FixBBPDBonds::refresh_cache()
         error->one(FLERR, "Atoms {} and {} share a reference position: bonds need distinct atoms",
                    tag[i], t);
       bj[m] = j;
-      if (!compact) {
-        bxi0[m] = xi;
-        bcoef[m] = law.coefficient(type[i], type[j], xi, vfrac[j]);
-      }
+      if (!compact) store_bond_values(m, xi, law.coefficient(type[i], type[j], xi, vfrac[j]));
       m++;
     }
     nbond[i] = m - bond_start[i];
     vintact[i] = intact_volume(i);
   }
+}
+
+void FixBBPDBonds::free_bond_values()
+{
+  memory->destroy(bclass);
+  memory->destroy(bxi0);
+  memory->destroy(bcoef);
+  bclass = nullptr;
+  bxi0 = bcoef = nullptr;
+}
+
+/* reference length and coefficient of cache entry m: its class, or per bond once the table
+   is full (the entries before m then move from the table to per-bond storage) */
+void FixBBPDBonds::store_bond_values(int m, double xi, double coef)
+{
+  if (bclass) {
+    if (classes.add(xi, coef, bclass[m])) return;
+    memory->create(bxi0, nbond_cache, "bbpd/bonds:bxi0");
+    memory->create(bcoef, nbond_cache, "bbpd/bonds:bcoef");
+    for (int e = 0; e < m; e++) {
+      bxi0[e] = classes.xi0[bclass[e]];
+      bcoef[e] = classes.coef[bclass[e]];
+    }
+    memory->destroy(bclass);
+    bclass = nullptr;
+    classes.clear();
+  }
+  bxi0[m] = xi;
+  bcoef[m] = coef;
 }
 
 /* sum of C_v V_j over the intact bonds of atom i, in row order */
@@ -413,7 +441,9 @@ void FixBBPDBonds::remove_bond(int i, int k)
     }
   const int last = bond_start[i] + nbond[i] - 1;
   for (int m = k; m < last; m++) bj[m] = bj[m + 1];
-  if (policy.caches_geometry())
+  if (bclass)
+    for (int m = k; m < last; m++) bclass[m] = bclass[m + 1];
+  if (bxi0)
     for (int m = k; m < last; m++) {
       bxi0[m] = bxi0[m + 1];
       bcoef[m] = bcoef[m + 1];
@@ -426,7 +456,8 @@ void FixBBPDBonds::remove_bond(int i, int k)
 /* the same operations as refresh_cache(), so compact storage gives the same bits */
 double FixBBPDBonds::xi0_of(int i, int k) const
 {
-  if (policy.caches_geometry()) return bxi0[k];
+  if (bclass) return classes.xi0[bclass[k]];
+  if (bxi0) return bxi0[k];
   double **x0 = atom->x0;
   const int j = bj[k];
   double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
@@ -435,15 +466,18 @@ double FixBBPDBonds::xi0_of(int i, int k) const
 
 double FixBBPDBonds::coef_of(int i, int k, double xi0) const
 {
-  if (policy.caches_geometry()) return bcoef[k];
+  if (bclass) return classes.coef[bclass[k]];
+  if (bcoef) return bcoef[k];
   const int j = bj[k];
   return law.coefficient(atom->type[i], atom->type[j], xi0, atom->vfrac[j]);
 }
 
 double FixBBPDBonds::bytes_per_bond() const
 {
-  // per bond end: partner tag (persistent) + bj [+ bxi0 + bcoef] (cache); two ends per bond
-  return 2.0 * (sizeof(tagint) + sizeof(int) + policy.cached_bytes());
+  // per bond end: partner tag (persistent) + bj [+ bclass | bxi0 + bcoef] (cache); two ends
+  // per bond (the class table itself is a few kB per rank, not counted)
+  const double cached = bclass ? sizeof(BBPD::BondClass) : bxi0 ? 2.0 * sizeof(double) : 0.0;
+  return 2.0 * (sizeof(tagint) + sizeof(int) + cached);
 }
 
 bigint FixBBPDBonds::count_broken() const
@@ -464,7 +498,10 @@ double FixBBPDBonds::memory_usage()
   double bytes = nmax * (sizeof(int) + sizeof(double));
   bytes += nmax * maxpartner * sizeof(tagint);
   bytes += nlocal_cache * (2.0 * sizeof(int) + sizeof(double));
-  bytes += (double) nbond_cache * (sizeof(int) + cache_policy.cached_bytes());
+  bytes += (double) nbond_cache * (sizeof(int) + (bxi0 ? 2.0 * sizeof(double) : 0.0));
+  if (bclass)
+    bytes += (nbond_cache + LANES_PAD) * sizeof(BBPD::BondClass) +
+        2.0 * sizeof(double) * classes.size();
   bytes += 3.0 * nmax_raw * sizeof(double);
   return bytes;
 }

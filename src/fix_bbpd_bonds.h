@@ -14,14 +14,18 @@
    one flat structure-of-arrays row per local atom, partners in that order:
      bond_start[i], nbond[i]  first entry and number of intact bonds of atom i
      bj[k]                   local/ghost index of the partner
-     bxi0[k]                 reference bond length |x0_j - x0_i|
-     bcoef[k]                c(xi0) C_v V_j / xi0: force density per unit elongation
+     bclass[k]               class of the bond in the rank's table 'classes' of distinct
+                             (reference length, coefficient) pairs (bbpd_bond_table.h):
+       classes.xi0[c]        reference bond length |x0_j - x0_i|
+       classes.coef[c]       c(xi0) C_v V_j / xi0: force density per unit elongation
      vintact[i]              sum of C_v V_j over the intact bonds (damage, eq. 17)
    A bond that breaks is removed from its row at once (the row shifts), so the
-   force loop has no per-bond branch. With the COMPACT storage policy
-   (bbpd_bond_storage.h, 'bond/storage compact' of the pair style) only bj is
-   cached; bxi0 and bcoef are recomputed from x0 when needed (same operations,
-   so the same bits), for 16 instead of 48 bytes per bond.
+   force loop has no per-bond branch. 20 bytes per bond. Should a rank have more
+   distinct pairs than a class can address, the pairs are kept per bond instead
+   (bxi0[k], bcoef[k]; bclass null), 48 bytes per bond. With the COMPACT storage
+   policy (bbpd_bond_storage.h, 'bond/storage compact' of the pair style) only bj
+   is cached; reference length and coefficient are recomputed from x0 when needed
+   (same operations, so the same bits), for 16 bytes per bond.
 
    The fix owns storage only. What a bond is and what it costs come from the
    BBPD::BondLaw (bbpd_bond_law.h, no LAMMPS dependency) the pair style passes
@@ -35,6 +39,7 @@
 #include "atom.h"
 #include "bbpd_bond_law.h"
 #include "bbpd_bond_storage.h"
+#include "bbpd_bond_table.h"
 #include "fix.h"
 
 namespace LAMMPS_NS {
@@ -87,7 +92,9 @@ class FixBBPDBonds : public Fix {
   tagint **partner;
   double *vinit;
   int *bond_start, *nbond, *bj;
-  double *bxi0, *bcoef;
+  BBPD::BondClass *bclass;    // null unless the table holds the pairs
+  BBPD::BondClassTable classes;
+  double *bxi0, *bcoef;        // null unless the pairs are kept per bond
   double *vintact;
 
   void remove_bond(int i, int k);
@@ -108,7 +115,6 @@ class FixBBPDBonds : public Fix {
   bool have_rules;
   BBPD::BondStorage policy;
   BBPD::RunLimits limits;
-  BBPD::BondStorage cache_policy;    // the policy the per-bond cache was allocated for
   double extent0;    // size of the body when the families were built
   double local_extent();
   int need_raw;       // periodic box with fracture: ghosts carry their owner's position
@@ -117,6 +123,11 @@ class FixBBPDBonds : public Fix {
 
   void size_family_neighbor_list();
   void set_maxexchange() { maxexchange = maxpartner + 2; }
+
+  // entries past the last bond of bclass: a whole SIMD vector of classes may be read at a row end
+  static constexpr int LANES_PAD = 8;
+  void free_bond_values();
+  void store_bond_values(int m, double xi, double coef);
 
   void build_families();
   void refresh_cache();

@@ -31,6 +31,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
@@ -53,6 +54,9 @@ static constexpr double CONTACT_STIFFNESS_FACTOR = 15.0;
 // margin of the quick bond-failure test in periodic boxes, in units of DBL_EPSILON x the largest
 // coordinate: covers the round-off of x + L and of the minimum image (2 ulps each) per component
 static constexpr double BREAK_MARGIN_ULPS = 16.0;
+// settings generations of all bbpd pair styles: a thread's coefficient memo (bond/storage
+// compact) belongs to one
+static std::atomic<unsigned> memo_epochs{0};
 
 /* ---------------------------------------------------------------------- */
 
@@ -166,8 +170,8 @@ void PairBBPD::settings(int narg, char **arg)
     if (key == "bond/storage") {
       const std::string v = arg[iarg + 1];
       if (v != "fast" && v != "compact")
-        error->all(FLERR, "Pair style {}: bond/storage must be 'fast' (48 bytes per bond) or "
-                   "'compact' (16 bytes per bond, slower)", style);
+        error->all(FLERR, "Pair style {}: bond/storage must be 'fast' (20 bytes per bond on a "
+                   "grid, 48 on irregular ones) or 'compact' (16 bytes per bond, slower)", style);
       storage = v == "compact" ? BBPD::BondStorage::COMPACT : BBPD::BondStorage::FAST;
       iarg += 2;
       continue;
@@ -347,6 +351,8 @@ void PairBBPD::init_style()
                    spacing_user ? "given by the spacing keyword"
                                 : "derived from the atom volumes: check 'set ... volume' and thickness/area");
 
+  // coefficients memoised with the settings before this init are stale
+  memo_epoch = ++memo_epochs;
   // set by init_one() (called for every type pair after init_style)
   fracture_any = 0;
   multi_s0 = 0;
@@ -634,6 +640,9 @@ void PairBBPD::report()
   MPI_Allreduce(&nmax, &gmax, 1, MPI_INT, MPI_MAX, world);
   MPI_Allreduce(&nsum, &gsum, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   const bigint nbroken = fb->count_broken();
+  // distinct (reference length, coefficient) pairs the bonds point into, largest over the ranks
+  int nclass = fb->bclass ? (int) fb->classes.size() : 0, gclass = 0;
+  MPI_Allreduce(&nclass, &gclass, 1, MPI_INT, MPI_MAX, world);
 
   if (comm->me == 0) {
     std::string mesg = fmt::format("BBPD pair style bbpd/{} model {}{}:\n", kernel.name,
@@ -667,8 +676,10 @@ void PairBBPD::report()
     mesg += fmt::format("  fracture: {}\n", fracture_any ? "on" : "off (elastic, no bond-failure checks)");
     mesg += contact ? fmt::format("  contact: on, distance {:.6g}\n", contact_factor * spacing)
                     : std::string("  contact: off (no neighbour list)\n");
-    mesg += fmt::format("  bond storage: {:.1f} bytes per bond ({:.1f} per bond end)\n",
-                        fb->bytes_per_bond(), 0.5 * fb->bytes_per_bond());
+    mesg += fmt::format("  bond storage: {:.1f} bytes per bond ({:.1f} per bond end){}\n",
+                        fb->bytes_per_bond(), 0.5 * fb->bytes_per_bond(),
+                        gclass ? fmt::format("; table of {} distinct (reference length, "
+                                             "coefficient) pairs", gclass) : std::string());
     mesg += fmt::format("  stable timestep: eq. 25 {:.6g}, velocity-Verlet limit {:.6g}; "
                         "timestep = {:.6g} ({:.3g} of the limit)\n",
                         dt_bound_paper, dt_bound, update->dt, update->dt / dt_bound);

@@ -53,6 +53,7 @@ class PairBBPD : public Pair {
   double dt_safety;  // warn when timestep > dt_safety * stable bound
   int contact;       // short-range repulsion between non-bonded close atoms
   BBPD::BondStorage storage;    // what the bond cache keeps per bond (bond/storage keyword)
+  unsigned memo_epoch = 0;    // settings generation of the compact-storage coefficient memo
   double contact_factor;    // contact distance = contact_factor * spacing
 
  protected:

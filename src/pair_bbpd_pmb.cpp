@@ -150,8 +150,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
   }
   const bool pmb = compat_pmb;
   const bool clamp = !pmb;
-  const bool cached = bonds->storage().caches_geometry();
-  const double *bxi0 = bonds->bxi0;
+  const double *bxi0 = bonds->bxi0;    // null unless reference lengths are kept per bond
   // one s00 and alpha for every type pair: no per-bond lookups
   bool multi = false;
   const double s00_one = critical_stretch[1][1], alpha_one = alpha[1][1];
@@ -170,6 +169,12 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
 #endif
   {
     double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    // a row's reference lengths and coefficients, looked up from their classes
+    std::vector<double> class_xi0, class_coef;
+    if (bonds->bclass) {
+      class_xi0.resize(bonds->maxpartner);
+      class_coef.resize(bonds->maxpartner);
+    }
 #if defined(_OPENMP)
 #pragma omp for schedule(static, 512)
 #endif
@@ -177,12 +182,23 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
       const int itype = type[i];
       const int beg = bonds->bond_start[i];
       const int *bj = bonds->bj;
+      // reference lengths and coefficients of the row (null with bond/storage compact)
+      const double *row_xi0 = bxi0 ? bxi0 + beg : nullptr;
+      const double *row_coef = bxi0 ? bonds->bcoef + beg : nullptr;
+      if (bonds->bclass) {
+        for (int k = 0; k < bonds->nbond[i]; k++) {
+          class_xi0[k] = bonds->classes.xi0[bonds->bclass[beg + k]];
+          class_coef[k] = bonds->classes.coef[bonds->bclass[beg + k]];
+        }
+        row_xi0 = class_xi0.data();
+        row_coef = class_coef.data();
+      }
       const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
       const double smin_i = smin[i];
       auto stretch_of = [&](int k) {
         const int j = bj[k];
         const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
-        const double xi0 = cached ? bxi0[k] : bonds->xi0_of(i, k);
+        const double xi0 = bonds->xi0_of(i, k);
         double elong = std::sqrt(dx * dx + dy * dy + dz * dz) - xi0;
         if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
         return elong / xi0;
@@ -202,14 +218,14 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         bool broken = false;
         const int n = bonds->nbond[i];
 #ifdef BBPD_AVX512
-        if (!multi && cached) {
+        if (!multi && row_xi0) {
           double ax[LANES], ay[LANES], az[LANES];
           RowTally tally;
           broken = pmb ? BBPD::row_force_stretch_avx512<EVFLAG, true, false>(
-                             xx, i, bj + beg, bxi0 + beg, bonds->bcoef + beg, n, smin, s00_one,
+                             xx, i, bj + beg, row_xi0, row_coef, n, smin, s00_one,
                              alpha_one, &snew, ax, ay, az, &tally)
                        : BBPD::row_force_stretch_avx512<EVFLAG, false, true>(
-                             xx, i, bj + beg, bxi0 + beg, bonds->bcoef + beg, n, smin, s00_one,
+                             xx, i, bj + beg, row_xi0, row_coef, n, smin, s00_one,
                              alpha_one, &snew, ax, ay, az, &tally);
           if (!broken) {
             lane_sum(ax, ay, az, fi);
@@ -218,9 +234,9 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
           }
         } else
 #endif
-        if (!multi && cached) {
-          broken = pmb ? BBPD::row_stretch<true, false>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew)
-                       : BBPD::row_stretch<false, true>(xx, i, bj + beg, bxi0 + beg, n, smin, s00_one, alpha_one, &snew);
+        if (!multi && row_xi0) {
+          broken = pmb ? BBPD::row_stretch<true, false>(xx, i, bj + beg, row_xi0, n, smin, s00_one, alpha_one, &snew)
+                       : BBPD::row_stretch<false, true>(xx, i, bj + beg, row_xi0, n, smin, s00_one, alpha_one, &snew);
         } else {
           for (int k = beg; k < beg + n; k++) {
             const double s = stretch_of(k);

@@ -62,27 +62,60 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
   const double *xx = atom->x[0];
   const int beg = bonds->bond_start[i], n = bonds->nbond[i];
   const int *bj = bonds->bj + beg;
-  const bool compact = !storage.caches_geometry();
-  const double *bxi0 = compact ? nullptr : bonds->bxi0 + beg;
-  const double *bcoef = compact ? nullptr : bonds->bcoef + beg;
+  // reference lengths and coefficients: by class (the default), per bond (a rank with too many
+  // distinct pairs for the class table), or recomputed (bond/storage compact)
+  const BBPD::ClassValues by_class = {bonds->bclass ? bonds->bclass + beg : nullptr,
+                                      bonds->classes.xi0.data(), bonds->classes.coef.data()};
+  const BBPD::PerBondValues per_bond = {bonds->bxi0 ? bonds->bxi0 + beg : nullptr,
+                                        bonds->bcoef ? bonds->bcoef + beg : nullptr};
+  const bool classed = by_class.cls != nullptr;
+  const bool compact = !classed && per_bond.xi0 == nullptr;
   double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
+  // compact: a cache per thread of the coefficients (bbpd_row.h), from the bond law
+  static thread_local BBPD::CoefCache cache;
+  const int *type = atom->type;
+  auto coef_fn = [this, type, i](int jtype, double xi0, double vj) {
+    return law.coefficient(type[i], jtype, xi0, vj);
+  };
+  const BBPD::RecomputedValues<decltype(coef_fn)> recomputed = {
+      atom->x0 ? atom->x0[0] : nullptr, i, atom->vfrac, type, &cache, coef_fn};
+  if (compact) cache.start(memo_epoch);
 
 #ifdef BBPD_SIMD
   if (!MULTI && !compact) {
     RowTally tally;
-    if (row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, bxi0, bcoef, n, s0_single, break_margin, ax,
-                                         ay, az, &tally))
-      return true;
+    const bool broken = classed
+        ? row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, by_class, n, s0_single, break_margin, ax,
+                                           ay, az, &tally)
+        : row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, per_bond, n, s0_single, break_margin, ax,
+                                           ay, az, &tally);
+    if (broken) return true;
+    lane_sum(ax, ay, az, fi);
+    if (EVFLAG) tally_lanes(i, tally, acc);
+    return false;
+  }
+#endif
+#ifdef BBPD_AVX512
+  if (!MULTI && compact) {
+    RowTally tally;
+    const bool broken = BBPD::row_force_avx512<FRACTURE, EVFLAG>(
+        xx, i, bj, recomputed, n, s0_single, break_margin, ax, ay, az, &tally);
+    if (broken) return true;
     lane_sum(ax, ay, az, fi);
     if (EVFLAG) tally_lanes(i, tally, acc);
     return false;
   }
 #endif
 
-  const int *type = atom->type;
   RowTally lanes = {};    // energy and virial in the same lanes as the SIMD kernels
-  auto xi0_of = [&](int k) { return compact ? bonds->xi0_of(i, beg + k) : bxi0[k]; };
-  auto coef_of = [&](int k, double xi0) { return compact ? bonds->coef_of(i, beg + k, xi0) : bcoef[k]; };
+  auto xi0_of = [&](int k) {
+    return classed ? by_class.xi0_of(k) : compact ? recomputed.xi0_of(bj[k]) : per_bond.xi0_of(k);
+  };
+  auto coef_of = [&](int k, double xi0) {
+    return classed ? by_class.coef_of(k)
+        : compact  ? recomputed.coef_of(type[bj[k]], xi0, atom->vfrac[bj[k]])
+                   : per_bond.coef_of(k);
+  };
   auto s0_of = [&](int j) { return MULTI ? s0row[type[j]] : s0_single; };
   const bool broken = BBPD::row_force_portable<FRACTURE, EVFLAG>(xx, i, bj, n, xi0_of, coef_of, s0_of,
                                                                  break_margin, ax, ay, az, &lanes);

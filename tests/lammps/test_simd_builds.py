@@ -1,8 +1,8 @@
 """The three force kernels give the same bits: AVX-512, AVX2 and the portable loop.
 
-src/pair_bbpd_row.h picks the kernel at compile time from the target's macros: AVX-512
-(__AVX512F__ and __AVX512VL__) before AVX2 (__AVX2__), else the portable loop of
-pair_bbpd.cpp. The default build (-march=native) on an AVX-512 host therefore never runs the
+src/bbpd_row.h picks the kernel at compile time from the target's macros: AVX-512
+(__AVX512F__ and __AVX512VL__) before AVX2 (__AVX2__), else the portable loop
+(row_force_portable). The default build (-march=native) on an AVX-512 host therefore never runs the
 AVX2 kernel. This test builds the plugin again with -mno-avx512f (the AVX2 kernel; in the
 default suite) and without -march=native (the portable loop; slow), into build/, checks from
 the machine code which kernel each build holds (zmm registers for AVX-512, ymm for AVX2), and

@@ -1,5 +1,7 @@
 """Storage modes and code paths give the same bits: bond/storage compact (16 bytes per bond) vs
-the default, and the SIMD force kernel vs the portable loop that also tallies energy.
+the default (a class per bond into a table of distinct pairs, 20 bytes per bond) and its
+per-bond fallback (48 bytes per bond), and the SIMD force kernel vs the portable loop that also
+tallies energy.
 
 The scene is a small Kalthoff-Winkler plate with G_c / 10 (6.9e3 J/m^2): the notch cuts 1159
 bonds and a crack grows from its tip during the 300 steps (measured: 1479 broken at the end), so
@@ -58,11 +60,32 @@ def test_compact_storage_is_bit_identical(lmp, tmp_path, kernel):
         out = lmp(SCENE.format(kernel=kernel, storage=storage)).output
         dumps[storage] = (tmp_path / "final.dump").read_text()
         outs[storage] = out
-    assert "bond storage: 48.0 bytes per bond" in outs["fast"]
+    assert "bond storage: 20.0 bytes per bond" in outs["fast"]
     assert "bond storage: 16.0 bytes per bond" in outs["compact"]
     notch, final = broken_counts(outs["fast"])
     assert final > notch + 100    # a crack grew: bonds broke during the run
     assert broken_counts(outs["compact"]) == (notch, final)
+    assert dumps["fast"] == dumps["compact"]
+
+
+# atoms at random positions: every bond has its own reference length, more distinct pairs than
+# a 2-byte class addresses
+IRREGULAR = SCENE.replace("region box block 0 40 0 20", "region box block 0 40 0 40").replace(
+    "create_atoms 1 box", "create_atoms 1 random 1600 4711 box overlap 0.0006 maxtry 1000").replace(
+    "timestep 8.7e-8", "timestep 4e-8")
+
+
+def test_per_bond_fallback_is_bit_identical(lmp, tmp_path):
+    """A rank with more distinct (reference length, coefficient) pairs than classes keeps them
+    per bond: the same bits as compact storage."""
+    dumps, outs = {}, {}
+    for storage in ("fast", "compact"):
+        outs[storage] = lmp(IRREGULAR.format(kernel="gaussian", storage=storage)).output
+        dumps[storage] = (tmp_path / "final.dump").read_text()
+    assert "bond storage: 48.0 bytes per bond" in outs["fast"]
+    assert "bond storage: 16.0 bytes per bond" in outs["compact"]
+    broken = [int(b) for b in re.findall(r"total bonds \d+ \((\d+) broken\)", outs["fast"])]
+    assert broken[-1] > broken[0] + 100    # bonds broke during the run
     assert dumps["fast"] == dumps["compact"]
 
 
@@ -105,3 +128,15 @@ def test_openmp_threads_give_the_same_trajectory(lmp, tmp_path):
         assert final > notch + 100
         dumps[threads] = (tmp_path / "final.dump").read_text()
     assert dumps[1] == dumps[2]
+
+
+def test_compact_storage_follows_new_coefficients(lmp, tmp_path):
+    """Compact storage caches coefficients per thread: a pair_coeff issued between runs (a
+    stiffer material) must reach them, as it reaches the default storage."""
+    dumps = {}
+    for storage in ("fast", "compact"):
+        script = SCENE.format(kernel="gaussian", storage=storage).replace(
+            "run 300\n", "run 100\npair_coeff 1 1 380e9 6.9e3 0.005\nrun 100\n")
+        lmp(script)
+        dumps[storage] = (tmp_path / "final.dump").read_text()
+    assert dumps["fast"] == dumps["compact"]

@@ -92,19 +92,30 @@ TEST(Row, SimdKernelGivesTheSameBits)
 #else
   for (const double strain : {0.002, -0.003}) {
     const Row row = make_row(strain);
-    double f[3], fs[3], ax[LANES], ay[LANES], az[LANES];
-    RowTally tally, tally_simd;
+    const BBPD::PerBondValues per_bond = {row.xi0.data(), row.coef.data()};
+    // the same values through a class table (the kernels read LANES classes past the row end)
+    BBPD::BondClassTable table;
+    std::vector<BBPD::BondClass> cls(NB + LANES, 0);
+    for (int k = 0; k < NB; k++) ASSERT_TRUE(table.add(row.xi0[k], row.coef[k], cls[k]));
+    const BBPD::ClassValues by_class = {cls.data(), table.xi0.data(), table.coef.data()};
+    double f[3], fs[3], fc[3], ax[LANES], ay[LANES], az[LANES];
+    RowTally tally, tally_simd, tally_class;
     portable<0, 1>(row, 0.0, f, &tally);
-    EXPECT_FALSE((row_force_simd<0, 1>(row.x.data(), 0, row.bj.data(), row.xi0.data(),
-                                       row.coef.data(), NB, 0.0, 0.0, ax, ay, az, &tally_simd)));
+    EXPECT_FALSE((row_force_simd<0, 1>(row.x.data(), 0, row.bj.data(), per_bond, NB, 0.0, 0.0,
+                                       ax, ay, az, &tally_simd)));
     BBPD::lane_sum(ax, ay, az, fs);
     EXPECT_EQ(std::memcmp(f, fs, sizeof f), 0) << f[0] << " vs " << fs[0];
     EXPECT_EQ(std::memcmp(tally.eng, tally_simd.eng, sizeof tally.eng), 0);
     EXPECT_EQ(std::memcmp(tally.vir, tally_simd.vir, sizeof tally.vir), 0);
+    EXPECT_FALSE((row_force_simd<0, 1>(row.x.data(), 0, row.bj.data(), by_class, NB, 0.0, 0.0,
+                                       ax, ay, az, &tally_class)));
+    BBPD::lane_sum(ax, ay, az, fc);
+    EXPECT_EQ(std::memcmp(f, fc, sizeof f), 0) << f[0] << " vs " << fc[0];
+    EXPECT_EQ(std::memcmp(tally.eng, tally_class.eng, sizeof tally.eng), 0);
     // breaking: the same verdict at a critical stretch between the smallest and largest stretch
     EXPECT_EQ((portable<1, 0>(row, 1e-3, f, &tally)),
-              (row_force_simd<1, 0>(row.x.data(), 0, row.bj.data(), row.xi0.data(),
-                                    row.coef.data(), NB, 1e-3, 0.0, ax, ay, az, &tally_simd)));
+              (row_force_simd<1, 0>(row.x.data(), 0, row.bj.data(), per_bond, NB, 1e-3, 0.0, ax,
+                                    ay, az, &tally_simd)));
   }
 #endif
 }
