@@ -510,7 +510,6 @@ void PairBBPD::compute_contact()
 
 template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
 {
-  double **f = atom->f;
   const double *xx = atom->x[0];
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
@@ -547,16 +546,7 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
         }
         row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc);
       }
-      // three compares per atom turn the first NaN/inf into an ERROR that names its cause
-      if (!std::isfinite(fi[0]) || !std::isfinite(fi[1]) || !std::isfinite(fi[2])) {
-#if defined(_OPENMP)
-#pragma omp critical(bbpd_nonfinite)
-#endif
-        if (bad < 0 || i < bad) bad = i;
-      }
-      f[i][0] += fi[0];
-      f[i][1] += fi[1];
-      f[i][2] += fi[2];
+      add_row_force(i, fi, bad);
     }
     if (EVFLAG) {
 #if defined(_OPENMP)
@@ -565,8 +555,30 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
       for (int m = 0; m < 7; m++) totals[m] += acc[m];
     }
   }
+  finish_eval(bad, EVFLAG, totals);
+}
+
+/* a row's force into f; the lowest atom with a non-finite force is kept for finish_eval()
+   (three compares per atom turn the first NaN/inf into an ERROR that names its cause) */
+void PairBBPD::add_row_force(int i, const double *fi, int &bad)
+{
+  if (!std::isfinite(fi[0]) || !std::isfinite(fi[1]) || !std::isfinite(fi[2])) {
+#if defined(_OPENMP)
+#pragma omp critical(bbpd_nonfinite)
+#endif
+    if (bad < 0 || i < bad) bad = i;
+  }
+  double *fi_atom = atom->f[i];
+  fi_atom[0] += fi[0];
+  fi_atom[1] += fi[1];
+  fi_atom[2] += fi[2];
+}
+
+/* after the loop over rows: the ERROR of a non-finite force, then the global tallies */
+void PairBBPD::finish_eval(int bad, bool evflag_on, const double *totals)
+{
   if (bad >= 0) nonfinite_error(bad);
-  if (EVFLAG) {
+  if (evflag_on) {
     if (eflag_global) eng_vdwl += totals[0];
     if (vflag_global)
       for (int m = 0; m < 6; m++) virial[m] += totals[1 + m];

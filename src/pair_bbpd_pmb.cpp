@@ -138,7 +138,6 @@ void PairBBPD::init_pmb()
 
 template <int EVFLAG> void PairBBPD::eval_alpha()
 {
-  double **f = atom->f;
   const double *xx = atom->x[0];
   const int *type = atom->type;
   double *smin = atom->s0;    // smallest bond stretch at the previous step, ghosts included
@@ -264,15 +263,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
       if (!done) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc);
       if (pmb)
         for (int m = 0; m < 3; m++) fi[m] += fbroken[i][m];
-      if (!std::isfinite(fi[0]) || !std::isfinite(fi[1]) || !std::isfinite(fi[2])) {
-#if defined(_OPENMP)
-#pragma omp critical(bbpd_nonfinite)
-#endif
-        if (bad < 0 || i < bad) bad = i;
-      }
-      f[i][0] += fi[0];
-      f[i][1] += fi[1];
-      f[i][2] += fi[2];
+      add_row_force(i, fi, bad);
     }
     if (EVFLAG) {
 #if defined(_OPENMP)
@@ -281,15 +272,10 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
       for (int m = 0; m < 7; m++) totals[m] += acc[m];
     }
   }
-  if (bad >= 0) nonfinite_error(bad);
+  finish_eval(bad, EVFLAG, totals);
   // the new smin takes effect at the next step, once sent to the ghosts
   for (int i = 0; i < nlocal; i++) smin[i] = smin_new[i];
   alpha_state->last_step = update->ntimestep;
-  if (EVFLAG) {
-    if (eflag_global) eng_vdwl += totals[0];
-    if (vflag_global)
-      for (int m = 0; m < 6; m++) virial[m] += totals[1 + m];
-  }
 }
 
 /* add the force density of bond k of atom i (about to break) to fb, in the order the
