@@ -303,6 +303,21 @@ def plot_damage_map(res, path):
     return path
 
 
+def draw_plate_frame(ax, g):
+    """The plate in mm with the experiment's 70 deg lines from both notch tips (paths figures)."""
+    ang = math.radians(EXPERIMENT_ANGLE_DEG)
+    for y0, sign in ((g["ylo"], -1), (g["yhi"], 1)):
+        length = y0 / math.sin(ang) if sign < 0 else (g["Ly"] - y0) / math.sin(ang)
+        ax.plot([g["a"] * 1e3, (g["a"] + length * math.cos(ang)) * 1e3],
+                [y0 * 1e3, (y0 + sign * length * math.sin(ang)) * 1e3], "k--", linewidth=1.0,
+                label="70 deg (experiment)" if sign < 0 else None)
+    ax.set_aspect("equal")
+    ax.set_xlim(-5, g["Lx"] * 1e3 + 5)
+    ax.set_ylim(-5, g["Ly"] * 1e3 + 5)
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("y (mm)")
+
+
 def plot_paths(results, path):
     """Crack-tip trajectories of several runs, the notches and the 70-degree line (Fig. 15)."""
     import matplotlib
@@ -328,17 +343,7 @@ def plot_paths(results, path):
                 p = np.vstack([[res["a"], y0], p]) * 1e3
                 ax.plot(p[:, 0], p[:, 1], "-", color=color, linewidth=1.2,
                         label=f"{name} ({res['angle_deg']:.1f} deg)" if side == "lo" else None)
-        ang = math.radians(EXPERIMENT_ANGLE_DEG)
-        for y0, sign in ((g["ylo"], -1), (g["yhi"], 1)):
-            length = y0 / math.sin(ang) if sign < 0 else (g["Ly"] - y0) / math.sin(ang)
-            ax.plot([g["a"] * 1e3, (g["a"] + length * math.cos(ang)) * 1e3],
-                    [y0 * 1e3, (y0 + sign * length * math.sin(ang)) * 1e3], "k--", linewidth=1.0,
-                    label="70 deg (experiment)" if sign < 0 else None)
-        ax.set_aspect("equal")
-        ax.set_xlim(-5, g["Lx"] * 1e3 + 5)
-        ax.set_ylim(-5, g["Ly"] * 1e3 + 5)
-        ax.set_xlabel("x (mm)")
-        ax.set_ylabel("y (mm)")
+        draw_plate_frame(ax, g)
         ax.legend(fontsize=7, loc="center left")
         ax.set_title(f"crack-tip paths, {g['kernel']}" if by_dx
                      else f"crack-tip paths, dx = {g['dx'] * 1e3:g} mm", fontsize=9)

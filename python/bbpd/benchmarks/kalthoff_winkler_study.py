@@ -62,7 +62,7 @@ TEND = 100.0e-6          # s: every study run (cracks at 70 us have not all reac
 T_EVAL_US = 70.0         # paper Fig. 14
 INITIAL_RANGE = (3.0e-3, 15.0e-3)   # m from the notch tip: past the tip's horizon (5 mm at 1 mm)
 SPEED_WINDOW_US = 5.0
-ANGLE_TARGET_DEG, ANGLE_TOL_DEG = 70.0, 2.0
+ANGLE_TARGET_DEG, ANGLE_TOL_DEG = kw.EXPERIMENT_ANGLE_DEG, 2.0
 INIT_WINDOW_US = (20.0, 22.0)       # the paper's initiation times 20.0-21.7 us
 ANGLE_DEFS = ("initial", "fit", "chord")
 ARREST_GROWTH_DX, ARREST_US = 2.0, 10.0   # a crack that grows < 2 dx in the last 10 us stopped
@@ -431,17 +431,7 @@ def plot_paths_case(results, case, path):
                 ax.plot(p[:, 0], p[:, 1], style, color=palette[k], linewidth=1.2,
                         label=(f"{k} {dx * 1e3:g} mm ({f(r.get('fit_t70_deg'), '.1f')} deg)"
                                if side == "lo" else None))
-        ang = math.radians(ANGLE_TARGET_DEG)
-        for y0, sign in ((g["ylo"], -1), (g["yhi"], 1)):
-            length = (y0 if sign < 0 else g["Ly"] - y0) / math.sin(ang)
-            ax.plot([g["a"] * 1e3, (g["a"] + length * math.cos(ang)) * 1e3],
-                    [y0 * 1e3, (y0 + sign * length * math.sin(ang)) * 1e3], "k--", linewidth=1.0,
-                    label="70 deg (experiment)" if sign < 0 else None)
-        ax.set_aspect("equal")
-        ax.set_xlim(-5, g["Lx"] * 1e3 + 5)
-        ax.set_ylim(-5, g["Ly"] * 1e3 + 5)
-        ax.set_xlabel("x (mm)")
-        ax.set_ylabel("y (mm)")
+        kw.draw_plate_frame(ax, g)
         ax.legend(fontsize=6, loc="center left")
         ax.set_title(f"{CASES[case][0]}, to {g['nsteps'] * g['dt'] * 1e6:.0f} us", fontsize=7)
         fig.tight_layout()
