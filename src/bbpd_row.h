@@ -13,6 +13,7 @@
 #define BBPD_ROW_H
 
 #include "bbpd_bond_table.h"
+#include "bbpd_partner_index.h"
 
 #include <algorithm>
 #include <cmath>
@@ -128,12 +129,13 @@ inline void lane_sum(const double *ax, const double *ay, const double *az, doubl
 }
 
 /* lanes of the force density on atom i (positions xx, 3 per atom) from its n bonds to the
-   partners bj[k], in the portable loop: reference length xi0_of(k), coefficient
-   coef_of(k, xi0) and the partner's critical stretch s0_of(j) come from callables (cached
-   or recomputed, one s0 or per type). With FRACTURE it returns true if a bond is past s0 or
-   within margin of it, and the lanes are then incomplete. */
-template <int FRACTURE, int EV, class Xi0, class Coef, class S0>
-inline bool row_force_portable(const double *xx, int i, const int *bj, int n, Xi0 xi0_of,
+   partners bj[k] (local indices, or offsets from i: bbpd_partner_index.h), in the portable
+   loop: reference length xi0_of(k), coefficient coef_of(k, xi0) and the partner's critical
+   stretch s0_of(j) come from callables (cached or recomputed, one s0 or per type). With
+   FRACTURE it returns true if a bond is past s0 or within margin of it, and the lanes are then
+   incomplete. */
+template <int FRACTURE, int EV, class Idx, class Xi0, class Coef, class S0>
+inline bool row_force_portable(const double *xx, int i, const Idx *bj, int n, Xi0 xi0_of,
                                Coef coef_of, S0 s0_of, double margin, double *ax, double *ay,
                                double *az, RowTally *tally)
 {
@@ -141,7 +143,7 @@ inline bool row_force_portable(const double *xx, int i, const int *bj, int n, Xi
   int broken = 0;
   for (int k = 0; k < n; k++) {
     const int l = k % LANES;
-    const int j = bj[k];
+    const int j = partner_index(bj, i, k);
     const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
     const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
     const double xi0 = xi0_of(k);
@@ -225,11 +227,21 @@ inline void load_values(const RecomputedValues<CoefFn> &v, __mmask8 m, int, __m2
   }
 }
 
+// partner indices of bonds k..k+7 (lanes off in m: zero, or i)
+inline __m256i load_partners(const int *bj, __mmask8 m, int, int k)
+{
+  return _mm256_maskz_loadu_epi32(m, bj + k);
+}
+inline __m256i load_partners(const PartnerOffset *bj, __mmask8 m, int i, int k)
+{
+  return _mm256_add_epi32(_mm256_cvtepi16_epi32(_mm_maskz_loadu_epi16(m, bj + k)), _mm256_set1_epi32(i));
+}
+
 /* lanes of the force density on atom i from n bonds (partner bj, reference length and
    coefficient from vals); with FRACTURE returns true if a bond is past s0 or within
    margin of it (elong + margin > s0 xi0; margin is 0 except in periodic boxes) */
-template <int FRACTURE, int EV, class Values>
-inline bool row_force_avx512(const double *xx, int i, const int *bj, const Values &vals, int n,
+template <int FRACTURE, int EV, class Values, class Idx>
+inline bool row_force_avx512(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                              double s0, double margin, double *ax, double *ay, double *az,
                              RowTally *tally)
 {
@@ -244,7 +256,7 @@ inline bool row_force_avx512(const double *xx, int i, const int *bj, const Value
   __mmask8 broken = 0;
   for (int k = 0; k < n; k += LANES) {
     const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
-    const __m256i j1 = _mm256_maskz_loadu_epi32(m, bj + k);
+    const __m256i j1 = load_partners(bj, m, i, k);
     const __m256i j3 = _mm256_mullo_epi32(j1, three);
     const __m512d dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(xi, m, j3, xx, 8), xi);
     const __m512d dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(yi, m, j3, xx + 1, 8), yi);
@@ -300,9 +312,21 @@ inline void load_values(const ClassValues &v, __m256d m, int k, __m256d &xi0, __
   coef = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), v.coef, c, m, 8);
 }
 
+// partner indices of bonds k..k+3 (m32: the lanes in the row; offsets read 4 entries, which
+// the storage pads past a row's end)
+inline __m128i load_partners(const int *bj, __m128i m32, int, int k)
+{
+  return _mm_maskload_epi32(bj + k, m32);
+}
+inline __m128i load_partners(const PartnerOffset *bj, __m128i m32, int i, int k)
+{
+  const __m128i d = _mm_cvtepi16_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i *>(bj + k)));
+  return _mm_and_si128(_mm_add_epi32(d, _mm_set1_epi32(i)), m32);
+}
+
 /* the same as row_force_avx512 with two 4-wide halves: lanes 0-3 and 4-7 */
-template <int FRACTURE, int EV, class Values>
-inline bool row_force_avx2(const double *xx, int i, const int *bj, const Values &vals, int n,
+template <int FRACTURE, int EV, class Values, class Idx>
+inline bool row_force_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                            double s0, double margin, double *ax, double *ay, double *az,
                            RowTally *tally)
 {
@@ -320,7 +344,7 @@ inline bool row_force_avx2(const double *xx, int i, const int *bj, const Values 
     const int h = (k / 4) & 1;    // which half of the 8 lanes
     const __m128i m32 = _mm_cmpgt_epi32(_mm_set1_epi32(n - k), iota);
     const __m256d m = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(m32));
-    const __m128i j3 = _mm_mullo_epi32(_mm_maskload_epi32(bj + k, m32), three);
+    const __m128i j3 = _mm_mullo_epi32(load_partners(bj, m32, i, k), three);
     const __m256d dx = _mm256_sub_pd(_mm256_mask_i32gather_pd(xi, xx, j3, m, 8), xi);
     const __m256d dy = _mm256_sub_pd(_mm256_mask_i32gather_pd(yi, xx + 1, j3, m, 8), yi);
     const __m256d dz = _mm256_sub_pd(_mm256_mask_i32gather_pd(zi, xx + 2, j3, m, 8), zi);

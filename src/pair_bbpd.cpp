@@ -170,8 +170,8 @@ void PairBBPD::settings(int narg, char **arg)
     if (key == "bond/storage") {
       const std::string v = arg[iarg + 1];
       if (v != "fast" && v != "compact")
-        error->all(FLERR, "Pair style {}: bond/storage must be 'fast' (20 bytes per bond on a "
-                   "grid, 48 on irregular ones) or 'compact' (16 bytes per bond, slower)", style);
+        error->all(FLERR, "Pair style {}: bond/storage must be 'fast' (16 bytes per bond on a "
+                   "grid, 44 on irregular ones) or 'compact' (12 bytes per bond, slower)", style);
       storage = v == "compact" ? BBPD::BondStorage::COMPACT : BBPD::BondStorage::FAST;
       iarg += 2;
       continue;
@@ -377,7 +377,8 @@ void PairBBPD::init_style()
   law.lattice_constant = lattice_constant;
   law.micromodulus = micromodulus;
   law.horizon = horizon;
-  bonds->set_rules(law, storage);
+  // the Silling-Askari loop (pair_bbpd_pmb.cpp) reads partner indices, the others offsets too
+  bonds->set_rules(law, storage, !alpha_any);
 }
 
 double PairBBPD::init_one(int i, int j)
@@ -537,7 +538,7 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
         // (irreversibly, in row order), then sum the row again
         int k = bonds->bond_start[i];
         while (k < bonds->bond_start[i] + bonds->nbond[i]) {
-          const int j = bonds->bj[k];
+          const int j = bonds->partner_of(i, k);
           const double s0 = MULTI ? s0row[type[j]] : s0_single;
           if (past_critical(i, j, bonds->xi0_of(i, k), s0))
             bonds->remove_bond(i, k);
@@ -655,6 +656,9 @@ void PairBBPD::report()
   // distinct (reference length, coefficient) pairs the bonds point into, largest over the ranks
   int nclass = fb->bclass ? (int) fb->classes.size() : 0, gclass = 0;
   MPI_Allreduce(&nclass, &gclass, 1, MPI_INT, MPI_MAX, world);
+  // ranks choose partner offsets or indices on their own: the largest storage over the ranks
+  double bytes = fb->bytes_per_bond(), gbytes = 0.0;
+  MPI_Allreduce(&bytes, &gbytes, 1, MPI_DOUBLE, MPI_MAX, world);
 
   if (comm->me == 0) {
     std::string mesg = fmt::format("BBPD pair style bbpd/{} model {}{}:\n", kernel.name,
@@ -689,7 +693,7 @@ void PairBBPD::report()
     mesg += contact ? fmt::format("  contact: on, distance {:.6g}\n", contact_factor * spacing)
                     : std::string("  contact: off (no neighbour list)\n");
     mesg += fmt::format("  bond storage: {:.1f} bytes per bond ({:.1f} per bond end){}\n",
-                        fb->bytes_per_bond(), 0.5 * fb->bytes_per_bond(),
+                        gbytes, 0.5 * gbytes,
                         gclass ? fmt::format("; table of {} distinct (reference length, "
                                              "coefficient) pairs", gclass) : std::string());
     mesg += fmt::format("  stable timestep: eq. 25 {:.6g}, velocity-Verlet limit {:.6g}; "

@@ -86,6 +86,8 @@ class PairBBPD : public Pair {
   template <int EVFLAG, int FRACTURE, int MULTI> void eval();
   template <int EVFLAG, int FRACTURE, int MULTI>
   bool row_force(int i, double *fi, const double *s0row, double *acc);
+  template <int EVFLAG, int FRACTURE, int MULTI, class Idx>
+  bool row_force(int i, const Idx *bj, double *fi, const double *s0row, double *acc);
   void coeff_from_file(const char *file, const char *material, double &E, double &Gc);
 
   // peri/pmb's rules ('compat pmb') and the Silling-Askari critical stretch (pair_bbpd_pmb.cpp)

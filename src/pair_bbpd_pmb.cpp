@@ -180,7 +180,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
     for (int i = 0; i < nlocal; i++) {
       const int itype = type[i];
       const int beg = bonds->bond_start[i];
-      const int *bj = bonds->bj;
+      const int *bj = bonds->bj;    // indices, never offsets, in this loop (init_style)
       // reference lengths and coefficients of the row (null with bond/storage compact)
       const double *row_xi0 = bxi0 ? bxi0 + beg : nullptr;
       const double *row_coef = bxi0 ? bonds->bcoef + beg : nullptr;
@@ -283,7 +283,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
 template <int EVFLAG> void PairBBPD::broken_bond_force(int i, int k, double *fb, double *acc)
 {
   const double *xx = atom->x[0];
-  const int j = bonds->bj[k];
+  const int j = bonds->partner_of(i, k);
   const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
                dz = xx[3 * j + 2] - xx[3 * i + 2];
   const double r = std::sqrt(dx * dx + dy * dy + dz * dz);

@@ -36,7 +36,7 @@ void PairBBPD::nonfinite_error(int i)
       error->one(FLERR, "Atom {} has a non-finite position at step {} (the run became unstable; {})",
                  tag[i], update->ntimestep, cause);
   for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + bonds->nbond[i]; k++) {
-    const int j = bonds->bj[k];
+    const int j = bonds->partner_of(i, k);
     const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
                  dz = xx[3 * j + 2] - xx[3 * i + 2];
     const double rsq = dx * dx + dy * dy + dz * dz;
@@ -59,9 +59,17 @@ void PairBBPD::nonfinite_error(int i)
 template <int EVFLAG, int FRACTURE, int MULTI>
 bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
 {
+  const int beg = bonds->bond_start[i];
+  // partners as offsets from i or as indices (bbpd_partner_index.h): the same atoms
+  return bonds->bdelta ? row_force<EVFLAG, FRACTURE, MULTI>(i, bonds->bdelta + beg, fi, s0row, acc)
+                       : row_force<EVFLAG, FRACTURE, MULTI>(i, bonds->bj + beg, fi, s0row, acc);
+}
+
+template <int EVFLAG, int FRACTURE, int MULTI, class Idx>
+bool PairBBPD::row_force(int i, const Idx *bj, double *fi, const double *s0row, double *acc)
+{
   const double *xx = atom->x[0];
   const int beg = bonds->bond_start[i], n = bonds->nbond[i];
-  const int *bj = bonds->bj + beg;
   // reference lengths and coefficients: by class (the default), per bond (a rank with too many
   // distinct pairs for the class table), or recomputed (bond/storage compact)
   const BBPD::ClassValues by_class = {bonds->bclass ? bonds->bclass + beg : nullptr,
@@ -109,11 +117,14 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
 
   RowTally lanes = {};    // energy and virial in the same lanes as the SIMD kernels
   auto xi0_of = [&](int k) {
-    return classed ? by_class.xi0_of(k) : compact ? recomputed.xi0_of(bj[k]) : per_bond.xi0_of(k);
+    return classed ? by_class.xi0_of(k)
+        : compact  ? recomputed.xi0_of(BBPD::partner_index(bj, i, k))
+                   : per_bond.xi0_of(k);
   };
   auto coef_of = [&](int k, double xi0) {
     return classed ? by_class.coef_of(k)
-        : compact  ? recomputed.coef_of(type[bj[k]], xi0, atom->vfrac[bj[k]])
+        : compact  ? recomputed.coef_of(type[BBPD::partner_index(bj, i, k)], xi0,
+                                        atom->vfrac[BBPD::partner_index(bj, i, k)])
                    : per_bond.coef_of(k);
   };
   auto s0_of = [&](int j) { return MULTI ? s0row[type[j]] : s0_single; };
