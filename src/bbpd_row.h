@@ -62,7 +62,8 @@ struct ClassValues {
    a grid has a few hundred distinct keys, so the cache nearly always holds the coefficient,
    and gives the same bits as computing it. */
 struct CoefCache {
-  static constexpr int SIZE = 2048;    // entries, a power of 2: a few times the keys of a grid
+  static constexpr int SLOT_BITS = 11;
+  static constexpr int SIZE = 1 << SLOT_BITS;    // entries: a few times the keys of a grid
   std::vector<double> xi0, vj, coef;    // per entry; xi0 NaN: empty
   std::vector<int> types;               // itype * TYPE_STRIDE + jtype
   unsigned epoch = 0;                   // of the pair settings the coefficients were computed with
@@ -79,9 +80,12 @@ struct CoefCache {
   }
   static std::uint64_t slot(std::uint64_t xb, std::uint64_t vb, std::uint64_t t)
   {
-    // grid lengths differ in the high mantissa bits, round-off variants in the low ones
+    // every bit of the key folded into the slot: round-off variants of a length differ in the
+    // low mantissa bits, grid lengths in the high ones and in the exponent (xi and 2 xi)
     const std::uint64_t h = xb ^ (vb >> 7) ^ (t << 45);
-    return (h ^ (h >> 17) ^ (h >> 31)) & (SIZE - 1);
+    std::uint64_t s = 0;
+    for (int b = 0; b < 64; b += SLOT_BITS) s ^= h >> b;
+    return s & (SIZE - 1);
   }
 };
 
@@ -205,9 +209,10 @@ inline void load_values(const RecomputedValues<CoefFn> &v, __mmask8 m, int, __m2
   const __m512i xb = _mm512_castpd_si512(xi0), vb = _mm512_castpd_si512(vj);
   const __m512i h = _mm512_xor_si512(_mm512_xor_si512(xb, _mm512_srli_epi64(vb, 7)),
                                      _mm512_slli_epi64(_mm512_cvtepu32_epi64(tj), 45));
-  const __m512i slot = _mm512_and_si512(
-      _mm512_xor_si512(_mm512_xor_si512(h, _mm512_srli_epi64(h, 17)), _mm512_srli_epi64(h, 31)),
-      _mm512_set1_epi64(CoefCache::SIZE - 1));
+  __m512i fold = h;
+  for (int b = CoefCache::SLOT_BITS; b < 64; b += CoefCache::SLOT_BITS)
+    fold = _mm512_xor_si512(fold, _mm512_srli_epi64(h, b));
+  const __m512i slot = _mm512_and_si512(fold, _mm512_set1_epi64(CoefCache::SIZE - 1));
   CoefCache &c = *v.cache;
   const __mmask8 hit =
       _mm512_mask_cmp_pd_mask(m, xi0, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.xi0.data(), 8), _CMP_EQ_OQ) &
