@@ -56,33 +56,36 @@ struct ClassValues {
   double coef_of(int k) const { return coef[cls[k]]; }
 };
 
-/* bond/storage compact: the reference length recomputed from x0 with the operations of
-   FixBBPDBonds::xi0_of(), the coefficient from a per-thread cache keyed by everything it
-   depends on (the two types, the reference length and the partner volume, compared exactly):
-   a grid has a few hundred distinct keys, so the cache nearly always holds the coefficient,
-   and gives the same bits as computing it. */
+/* bond/storage compact: the reference length and the coefficient recomputed from x0 with the
+   operations of FixBBPDBonds::xi0_of() and coef_of(), through a per-thread cache keyed by
+   everything they depend on (the squared reference length, the partner volume and the two
+   types, compared exactly): a grid has a few hundred distinct keys, so the cache nearly always
+   holds the pair, and gives the same bits as computing it (a square root and a coefficient
+   saved per bond end). */
 struct CoefCache {
   static constexpr int SLOT_BITS = 11;
   static constexpr int SIZE = 1 << SLOT_BITS;    // entries: a few times the keys of a grid
-  std::vector<double> xi0, vj, coef;    // per entry; xi0 NaN: empty
-  std::vector<int> types;               // itype * TYPE_STRIDE + jtype
+  std::vector<double> rsq0, vj;         // per entry, key: squared reference length (NaN: empty), partner volume
+  std::vector<int> types;               // and itype * TYPE_STRIDE + jtype
+  std::vector<double> xi0, coef;        // per entry, value
   unsigned epoch = 0;                   // of the pair settings the coefficients were computed with
   static constexpr int TYPE_STRIDE = 1 << 15;
   void start(unsigned e)
   {
-    if (xi0.empty() || e != epoch) {
-      xi0.assign(SIZE, std::numeric_limits<double>::quiet_NaN());
+    if (rsq0.empty() || e != epoch) {
+      rsq0.assign(SIZE, std::numeric_limits<double>::quiet_NaN());
       vj.assign(SIZE, 0.0);
-      coef.assign(SIZE, 0.0);
       types.assign(SIZE, -1);
+      xi0.assign(SIZE, 0.0);
+      coef.assign(SIZE, 0.0);
       epoch = e;
     }
   }
-  static std::uint64_t slot(std::uint64_t xb, std::uint64_t vb, std::uint64_t t)
+  static std::uint64_t slot(std::uint64_t qb, std::uint64_t vb, std::uint64_t t)
   {
     // every bit of the key folded into the slot: round-off variants of a length differ in the
     // low mantissa bits, grid lengths in the high ones and in the exponent (xi and 2 xi)
-    const std::uint64_t h = xb ^ (vb >> 7) ^ (t << 45);
+    const std::uint64_t h = qb ^ (vb >> 7) ^ (t << 45);
     std::uint64_t s = 0;
     for (int b = 0; b < 64; b += SLOT_BITS) s ^= h >> b;
     return s & (SIZE - 1);
@@ -96,27 +99,37 @@ template <class CoefFn> struct RecomputedValues {
   const int *type;
   CoefCache *cache;
   CoefFn coef_fn;          // coefficient of (partner type, reference length, partner volume)
-  double xi0_of(int j) const
+  double rsq0_of(int j) const
   {
     const double d[3] = {x0[3 * j] - x0[3 * i], x0[3 * j + 1] - x0[3 * i + 1],
                          x0[3 * j + 2] - x0[3 * i + 2]};
-    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
   }
-  double coef_of(int jtype, double xi0, double v) const
+  double xi0_of(int j) const { return std::sqrt(rsq0_of(j)); }
+  // coefficient (and reference length) of a bond of squared reference length q to a partner of
+  // type jtype and volume v
+  double lookup(int jtype, double q, double v, double &xi0) const
   {
     CoefCache &c = *cache;
-    std::uint64_t xb, vb;
-    std::memcpy(&xb, &xi0, sizeof xb);
+    std::uint64_t qb, vb;
+    std::memcpy(&qb, &q, sizeof qb);
     std::memcpy(&vb, &v, sizeof vb);
     const int t = type[i] * CoefCache::TYPE_STRIDE + jtype;
-    const std::uint64_t s = CoefCache::slot(xb, vb, t);
-    if (!(c.xi0[s] == xi0 && c.vj[s] == v && c.types[s] == t)) {
-      c.xi0[s] = xi0;
+    const std::uint64_t s = CoefCache::slot(qb, vb, t);
+    if (!(c.rsq0[s] == q && c.vj[s] == v && c.types[s] == t)) {
+      c.rsq0[s] = q;
       c.vj[s] = v;
       c.types[s] = t;
-      c.coef[s] = coef_fn(jtype, xi0, v);
+      c.xi0[s] = std::sqrt(q);
+      c.coef[s] = coef_fn(jtype, c.xi0[s], v);
     }
+    xi0 = c.xi0[s];
     return c.coef[s];
+  }
+  double coef_of(int j) const
+  {
+    double xi0;
+    return lookup(type[j], rsq0_of(j), vfrac[j], xi0);
   }
 };
 
@@ -199,15 +212,15 @@ inline void load_values(const RecomputedValues<CoefFn> &v, __mmask8 m, int, __m2
   const __m512d dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(x, m, j3, v.x0, 8), x);
   const __m512d dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(y, m, j3, v.x0 + 1, 8), y);
   const __m512d dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(z, m, j3, v.x0 + 2, 8), z);
-  xi0 = _mm512_sqrt_pd(
-      _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz)));
+  const __m512d rsq0 =
+      _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
   const __m512d vj = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, j, v.vfrac, 8);
   const __m256i tj = _mm256_add_epi32(
       _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), m, j, v.type, 4),
       _mm256_set1_epi32(v.type[v.i] * CoefCache::TYPE_STRIDE));
   // the cache slots, as CoefCache::slot
-  const __m512i xb = _mm512_castpd_si512(xi0), vb = _mm512_castpd_si512(vj);
-  const __m512i h = _mm512_xor_si512(_mm512_xor_si512(xb, _mm512_srli_epi64(vb, 7)),
+  const __m512i qb = _mm512_castpd_si512(rsq0), vb = _mm512_castpd_si512(vj);
+  const __m512i h = _mm512_xor_si512(_mm512_xor_si512(qb, _mm512_srli_epi64(vb, 7)),
                                      _mm512_slli_epi64(_mm512_cvtepu32_epi64(tj), 45));
   __m512i fold = h;
   for (int b = CoefCache::SLOT_BITS; b < 64; b += CoefCache::SLOT_BITS)
@@ -215,19 +228,22 @@ inline void load_values(const RecomputedValues<CoefFn> &v, __mmask8 m, int, __m2
   const __m512i slot = _mm512_and_si512(fold, _mm512_set1_epi64(CoefCache::SIZE - 1));
   CoefCache &c = *v.cache;
   const __mmask8 hit =
-      _mm512_mask_cmp_pd_mask(m, xi0, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.xi0.data(), 8), _CMP_EQ_OQ) &
+      _mm512_mask_cmp_pd_mask(m, rsq0, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.rsq0.data(), 8), _CMP_EQ_OQ) &
       _mm512_mask_cmp_pd_mask(m, vj, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.vj.data(), 8), _CMP_EQ_OQ) &
       _mm256_mask_cmpeq_epi32_mask(m, tj, _mm512_mask_i64gather_epi32(_mm256_setzero_si256(), m, slot, c.types.data(), 4));
+  xi0 = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), hit, slot, c.xi0.data(), 8);
   coef = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), hit, slot, c.coef.data(), 8);
   if (hit != m) {
-    // computed lane by lane (two lanes of this vector may share a slot)
-    alignas(64) double lx[LANES], lv[LANES], lc[LANES];
+    // looked up lane by lane (two lanes of this vector may share a slot)
+    alignas(64) double lq[LANES], lv[LANES], lx[LANES], lc[LANES];
     alignas(32) int lt[LANES];
-    _mm512_store_pd(lx, xi0);
+    _mm512_store_pd(lq, rsq0);
     _mm512_store_pd(lv, vj);
+    _mm512_store_pd(lx, xi0);
     _mm256_store_si256(reinterpret_cast<__m256i *>(lt), _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), m, j, v.type, 4));
     for (int l = 0; l < LANES; l++)
-      lc[l] = ((m & ~hit) & (1u << l)) ? v.coef_of(lt[l], lx[l], lv[l]) : 0.0;
+      lc[l] = ((m & ~hit) & (1u << l)) ? v.lookup(lt[l], lq[l], lv[l], lx[l]) : 0.0;
+    xi0 = _mm512_mask_blend_pd(m & ~hit, xi0, _mm512_load_pd(lx));
     coef = _mm512_mask_blend_pd(m & ~hit, coef, _mm512_load_pd(lc));
   }
 }

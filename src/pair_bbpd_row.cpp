@@ -123,8 +123,7 @@ bool PairBBPD::row_force(int i, const Idx *bj, double *fi, const double *s0row, 
   };
   auto coef_of = [&](int k, double xi0) {
     return classed ? by_class.coef_of(k)
-        : compact  ? recomputed.coef_of(type[BBPD::partner_index(bj, i, k)], xi0,
-                                        atom->vfrac[BBPD::partner_index(bj, i, k)])
+        : compact  ? recomputed.coef_of(BBPD::partner_index(bj, i, k))
                    : per_bond.coef_of(k);
   };
   auto s0_of = [&](int j) { return MULTI ? s0row[type[j]] : s0_single; };

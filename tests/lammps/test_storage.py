@@ -68,6 +68,25 @@ def test_compact_storage_is_bit_identical(lmp, tmp_path, kernel):
     assert dumps["fast"] == dumps["compact"]
 
 
+def test_compact_storage_with_two_types_is_bit_identical(lmp, tmp_path):
+    """Two types with their own critical stretches take the portable loop, whose compact
+    storage looks coefficients up by the partner's type: the same bits as the default."""
+    dumps, outs = {}, {}
+    for storage in ("fast", "compact"):
+        script = SCENE.format(kernel="gaussian", storage=storage).replace(
+            "create_box 1 box", "create_box 2 box").replace(
+            "pair_coeff 1 1 190e9 6.9e3 0.005", "pair_coeff 1 1 190e9 6.9e3 0.005\n"
+            "pair_coeff 2 2 150e9 5e3 0.005\npair_coeff 1 2 170e9 6e3 0.005").replace(
+            "set group all volume 1e-9", "set group all volume 1e-9\n"
+            "region top block INF INF 10.5 INF INF INF\nset region top type 2")
+        outs[storage] = lmp(script).output
+        dumps[storage] = (tmp_path / "final.dump").read_text()
+    assert "bond storage: 12.0 bytes per bond" in outs["compact"]
+    notch, final = broken_counts(outs["fast"])
+    assert final > notch + 100
+    assert dumps["fast"] == dumps["compact"]
+
+
 # atoms at random positions: every bond has its own reference length, more distinct pairs than
 # a 2-byte class addresses
 IRREGULAR = SCENE.replace("region box block 0 40 0 20", "region box block 0 40 0 40").replace(
