@@ -70,6 +70,10 @@ struct CoefCache {
   std::vector<double> xi0, coef;        // per entry, value
   unsigned epoch = 0;                   // of the pair settings the coefficients were computed with
   static constexpr int TYPE_STRIDE = 1 << 15;
+  // the partner volume and types of every entry so far, unless mixed
+  bool filled = false, mixed = false;
+  double only_v = 0.0;
+  int only_t = -1;
   void start(unsigned e)
   {
     if (rsq0.empty() || e != epoch) {
@@ -78,9 +82,22 @@ struct CoefCache {
       types.assign(SIZE, -1);
       xi0.assign(SIZE, 0.0);
       coef.assign(SIZE, 0.0);
+      filled = mixed = false;
       epoch = e;
     }
   }
+  void note(double v, int t)
+  {
+    if (!filled) {
+      filled = true;
+      only_v = v;
+      only_t = t;
+    } else if (!(v == only_v && t == only_t)) {
+      mixed = true;
+    }
+  }
+  // does every entry have partner volume v and types t (then a key is its length alone)?
+  bool holds_only(double v, int t) const { return !mixed && (!filled || (v == only_v && t == only_t)); }
   static std::uint64_t slot(std::uint64_t qb, std::uint64_t vb, std::uint64_t t)
   {
     // every bit of the key folded into the slot: round-off variants of a length differ in the
@@ -92,13 +109,17 @@ struct CoefCache {
   }
 };
 
-template <class CoefFn> struct RecomputedValues {
+template <class CoefFn, bool UNIFORM = false> struct RecomputedValues {
   const double *x0;       // reference positions, 3 per atom
   int i;
   const double *vfrac;
   const int *type;
   CoefCache *cache;
   CoefFn coef_fn;          // coefficient of (partner type, reference length, partner volume)
+  // UNIFORM: every atom a bond of i can reach has type uniform_type and volume uniform_v, and
+  // so has every cache entry: the SIMD kernel then reads and compares lengths alone
+  int uniform_type;
+  double uniform_v;
   double rsq0_of(int j) const
   {
     const double d[3] = {x0[3 * j] - x0[3 * i], x0[3 * j + 1] - x0[3 * i + 1],
@@ -122,6 +143,7 @@ template <class CoefFn> struct RecomputedValues {
       c.types[s] = t;
       c.xi0[s] = std::sqrt(q);
       c.coef[s] = coef_fn(jtype, c.xi0[s], v);
+      c.note(v, t);
     }
     xi0 = c.xi0[s];
     return c.coef[s];
@@ -202,8 +224,8 @@ inline void load_values(const ClassValues &v, __mmask8 m, int k, __m256i, __m512
   coef = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c, v.coef, 8);
 }
 
-template <class CoefFn>
-inline void load_values(const RecomputedValues<CoefFn> &v, __mmask8 m, int, __m256i j,
+template <class CoefFn, bool UNIFORM>
+inline void load_values(const RecomputedValues<CoefFn, UNIFORM> &v, __mmask8 m, int, __m256i j,
                         __m512d &xi0, __m512d &coef)
 {
   const __m256i j3 = _mm256_mullo_epi32(j, _mm256_set1_epi32(3));
@@ -214,10 +236,11 @@ inline void load_values(const RecomputedValues<CoefFn> &v, __mmask8 m, int, __m2
   const __m512d dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(z, m, j3, v.x0 + 2, 8), z);
   const __m512d rsq0 =
       _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
-  const __m512d vj = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, j, v.vfrac, 8);
-  const __m256i tj = _mm256_add_epi32(
-      _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), m, j, v.type, 4),
-      _mm256_set1_epi32(v.type[v.i] * CoefCache::TYPE_STRIDE));
+  const __m512d vj = UNIFORM ? _mm512_set1_pd(v.uniform_v)
+                             : _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, j, v.vfrac, 8);
+  const __m256i jtype = UNIFORM ? _mm256_set1_epi32(v.uniform_type)
+                                : _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), m, j, v.type, 4);
+  const __m256i tj = _mm256_add_epi32(jtype, _mm256_set1_epi32(v.type[v.i] * CoefCache::TYPE_STRIDE));
   // the cache slots, as CoefCache::slot
   const __m512i qb = _mm512_castpd_si512(rsq0), vb = _mm512_castpd_si512(vj);
   const __m512i h = _mm512_xor_si512(_mm512_xor_si512(qb, _mm512_srli_epi64(vb, 7)),
@@ -227,10 +250,11 @@ inline void load_values(const RecomputedValues<CoefFn> &v, __mmask8 m, int, __m2
     fold = _mm512_xor_si512(fold, _mm512_srli_epi64(h, b));
   const __m512i slot = _mm512_and_si512(fold, _mm512_set1_epi64(CoefCache::SIZE - 1));
   CoefCache &c = *v.cache;
-  const __mmask8 hit =
-      _mm512_mask_cmp_pd_mask(m, rsq0, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.rsq0.data(), 8), _CMP_EQ_OQ) &
-      _mm512_mask_cmp_pd_mask(m, vj, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.vj.data(), 8), _CMP_EQ_OQ) &
-      _mm256_mask_cmpeq_epi32_mask(m, tj, _mm512_mask_i64gather_epi32(_mm256_setzero_si256(), m, slot, c.types.data(), 4));
+  __mmask8 hit =
+      _mm512_mask_cmp_pd_mask(m, rsq0, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.rsq0.data(), 8), _CMP_EQ_OQ);
+  if (!UNIFORM)
+    hit &= _mm512_mask_cmp_pd_mask(m, vj, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.vj.data(), 8), _CMP_EQ_OQ) &
+        _mm256_mask_cmpeq_epi32_mask(m, tj, _mm512_mask_i64gather_epi32(_mm256_setzero_si256(), m, slot, c.types.data(), 4));
   xi0 = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), hit, slot, c.xi0.data(), 8);
   coef = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), hit, slot, c.coef.data(), 8);
   if (hit != m) {
@@ -240,7 +264,7 @@ inline void load_values(const RecomputedValues<CoefFn> &v, __mmask8 m, int, __m2
     _mm512_store_pd(lq, rsq0);
     _mm512_store_pd(lv, vj);
     _mm512_store_pd(lx, xi0);
-    _mm256_store_si256(reinterpret_cast<__m256i *>(lt), _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), m, j, v.type, 4));
+    _mm256_store_si256(reinterpret_cast<__m256i *>(lt), jtype);
     for (int l = 0; l < LANES; l++)
       lc[l] = ((m & ~hit) & (1u << l)) ? v.lookup(lt[l], lq[l], lv[l], lx[l]) : 0.0;
     xi0 = _mm512_mask_blend_pd(m & ~hit, xi0, _mm512_load_pd(lx));

@@ -44,7 +44,7 @@ FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
     bond_start(nullptr), nbond(nullptr), bdelta(nullptr), bj(nullptr), bclass(nullptr),
     bxi0(nullptr),
     bcoef(nullptr),
-    vintact(nullptr), first(1),
+    vintact(nullptr), uniform_type(0), uniform_vfrac(0.0), first(1),
     nlocal_cache(0), nbond_cache(0), list(nullptr), have_rules(false), offsets_allowed(false),
     extent0(0.0), need_raw(0),
     nmax_raw(0), xraw(nullptr)
@@ -373,6 +373,16 @@ void FixBBPDBonds::refresh_cache()
   int *type = atom->type;
   tagint *tag = atom->tag;
   const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
+
+  uniform_type = 0;
+  const int nall = atom->nlocal + atom->nghost;
+  if (compact && nall > 0) {
+    uniform_type = type[0];
+    uniform_vfrac = vfrac[0];
+    for (int j = 1; j < nall && uniform_type; j++)
+      if (type[j] != uniform_type || std::memcmp(&vfrac[j], &uniform_vfrac, sizeof(double)) != 0)
+        uniform_type = 0;
+  }
 
   for (int i = 0; i < nlocal; i++) {
     int m = bond_start[i];

@@ -105,6 +105,10 @@ class FixBBPDBonds : public Fix {
   BBPD::BondClassTable classes;
   double *bxi0, *bcoef;        // null unless the pairs are kept per bond
   double *vintact;
+  // compact storage: the type and volume of every local and ghost atom if they have one
+  // (uniform_type 0 if not)
+  int uniform_type;
+  double uniform_vfrac;
 
   void remove_bond(int i, int k);
   double xi0_of(int i, int k) const;                // reference length of bond k of atom i

@@ -85,9 +85,13 @@ bool PairBBPD::row_force(int i, const Idx *bj, double *fi, const double *s0row, 
   auto coef_fn = [this, type, i](int jtype, double xi0, double vj) {
     return law.coefficient(type[i], jtype, xi0, vj);
   };
-  const BBPD::RecomputedValues<decltype(coef_fn)> recomputed = {
-      atom->x0 ? atom->x0[0] : nullptr, i, atom->vfrac, type, &cache, coef_fn};
   if (compact) cache.start(memo_epoch);
+  const int t_uniform = bonds->uniform_type * BBPD::CoefCache::TYPE_STRIDE + bonds->uniform_type;
+  const bool uniform = compact && bonds->uniform_type > 0 &&
+      cache.holds_only(bonds->uniform_vfrac, t_uniform);
+  const BBPD::RecomputedValues<decltype(coef_fn)> recomputed = {
+      atom->x0 ? atom->x0[0] : nullptr, i, atom->vfrac, type, &cache, coef_fn,
+      bonds->uniform_type, bonds->uniform_vfrac};
 
 #ifdef BBPD_SIMD
   if (!MULTI && !compact) {
@@ -106,8 +110,14 @@ bool PairBBPD::row_force(int i, const Idx *bj, double *fi, const double *s0row, 
 #ifdef BBPD_AVX512
   if (!MULTI && compact) {
     RowTally tally;
-    const bool broken = BBPD::row_force_avx512<FRACTURE, EVFLAG>(
-        xx, i, bj, recomputed, n, s0_single, break_margin, ax, ay, az, &tally);
+    const BBPD::RecomputedValues<decltype(coef_fn), true> recomputed_uniform = {
+        recomputed.x0, i, atom->vfrac, type, &cache, coef_fn, bonds->uniform_type,
+        bonds->uniform_vfrac};
+    const bool broken = uniform
+        ? BBPD::row_force_avx512<FRACTURE, EVFLAG>(xx, i, bj, recomputed_uniform, n, s0_single,
+                                                   break_margin, ax, ay, az, &tally)
+        : BBPD::row_force_avx512<FRACTURE, EVFLAG>(xx, i, bj, recomputed, n, s0_single,
+                                                   break_margin, ax, ay, az, &tally);
     if (broken) return true;
     lane_sum(ax, ay, az, fi);
     if (EVFLAG) tally_lanes(i, tally, acc);

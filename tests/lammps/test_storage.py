@@ -87,6 +87,22 @@ def test_compact_storage_with_two_types_is_bit_identical(lmp, tmp_path):
     assert dumps["fast"] == dumps["compact"]
 
 
+def test_compact_storage_with_two_volumes_is_bit_identical(lmp, tmp_path):
+    """Atoms of two volumes: compact storage keys its coefficients by the partner volume too (the
+    SIMD kernel compares lengths alone only where every atom has one type and one volume), and
+    gives the bits of the default."""
+    dumps = {}
+    for storage in ("fast", "compact"):
+        script = SCENE.format(kernel="gaussian", storage=storage).replace(
+            "set group all volume 1e-9", "set group all volume 1e-9\n"
+            "region top block INF INF 10.5 INF INF INF\nset region top volume 1.1e-9")
+        out = lmp(script).output
+        notch, final = broken_counts(out)
+        assert final > notch + 100
+        dumps[storage] = (tmp_path / "final.dump").read_text()
+    assert dumps["fast"] == dumps["compact"]
+
+
 # atoms at random positions: every bond has its own reference length, more distinct pairs than
 # a 2-byte class addresses
 IRREGULAR = SCENE.replace("region box block 0 40 0 20", "region box block 0 40 0 40").replace(
