@@ -523,6 +523,7 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
 #endif
   {
     double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    BBPD::CoefCache *cache = thread_coef_cache();
 #if defined(_OPENMP)
     // chunks of 512 atoms dealt out in turn: rows differ in length near surfaces and cracks
     // (plate, 2 threads: 1.92x speed-up; one half per thread: 1.65x)
@@ -532,8 +533,8 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
       const double *s0row = MULTI ? critical_stretch[type[i]] : nullptr;
       double fi[3];
       if (!FRACTURE) {
-        row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc);
-      } else if (row_force<EVFLAG, 1, MULTI>(i, fi, s0row, acc)) {
+        row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc, cache);
+      } else if (row_force<EVFLAG, 1, MULTI>(i, fi, s0row, acc, cache)) {
         // a bond of the row is (near) past its critical stretch: remove such bonds
         // (irreversibly, in row order), then sum the row again
         int k = bonds->bond_start[i];
@@ -545,7 +546,7 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
           else
             k++;
         }
-        row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc);
+        row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc, cache);
       }
       add_row_force(i, fi, bad);
     }

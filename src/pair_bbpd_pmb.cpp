@@ -168,6 +168,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
 #endif
   {
     double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    BBPD::CoefCache *cache = thread_coef_cache();
     // a row's reference lengths and coefficients, looked up from their classes
     std::vector<double> class_xi0, class_coef;
     if (bonds->bclass) {
@@ -260,7 +261,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         if (pmb)
           for (int m = 0; m < 3; m++) fbroken[i][m] = fb[m];
       }
-      if (!done) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc);
+      if (!done) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc, cache);
       if (pmb)
         for (int m = 0; m < 3; m++) fi[m] += fbroken[i][m];
       add_row_force(i, fi, bad);

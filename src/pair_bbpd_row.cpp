@@ -57,16 +57,27 @@ void PairBBPD::nonfinite_error(int i)
    tallied. With FRACTURE it returns true, and tallies nothing, if a bond of the
    row is past its critical stretch. */
 template <int EVFLAG, int FRACTURE, int MULTI>
-bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
+bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc,
+                         BBPD::CoefCache *cache)
 {
   const int beg = bonds->bond_start[i];
   // partners as offsets from i or as indices (bbpd_partner_index.h): the same atoms
-  return bonds->bdelta ? row_force<EVFLAG, FRACTURE, MULTI>(i, bonds->bdelta + beg, fi, s0row, acc)
-                       : row_force<EVFLAG, FRACTURE, MULTI>(i, bonds->bj + beg, fi, s0row, acc);
+  return bonds->bdelta
+      ? row_force<EVFLAG, FRACTURE, MULTI>(i, bonds->bdelta + beg, fi, s0row, acc, cache)
+      : row_force<EVFLAG, FRACTURE, MULTI>(i, bonds->bj + beg, fi, s0row, acc, cache);
+}
+
+/* compact storage: a cache per thread of the coefficients (bbpd_row.h), taken once per thread
+   and force evaluation (a thread-local variable of a plugin costs a call at every access) */
+BBPD::CoefCache *PairBBPD::thread_coef_cache()
+{
+  static thread_local BBPD::CoefCache cache;
+  return &cache;
 }
 
 template <int EVFLAG, int FRACTURE, int MULTI, class Idx>
-bool PairBBPD::row_force(int i, const Idx *bj, double *fi, const double *s0row, double *acc)
+bool PairBBPD::row_force(int i, const Idx *bj, double *fi, const double *s0row, double *acc,
+                         BBPD::CoefCache *cache_ptr)
 {
   const double *xx = atom->x[0];
   const int beg = bonds->bond_start[i], n = bonds->nbond[i];
@@ -79,8 +90,8 @@ bool PairBBPD::row_force(int i, const Idx *bj, double *fi, const double *s0row, 
   const bool classed = by_class.cls != nullptr;
   const bool compact = !classed && per_bond.xi0 == nullptr;
   double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
-  // compact: a cache per thread of the coefficients (bbpd_row.h), from the bond law
-  static thread_local BBPD::CoefCache cache;
+  // compact: the thread's cache of the coefficients, computed from the bond law
+  BBPD::CoefCache &cache = *cache_ptr;
   const int *type = atom->type;
   auto coef_fn = [this, type, i](int jtype, double xi0, double vj) {
     return law.coefficient(type[i], jtype, xi0, vj);
@@ -162,11 +173,19 @@ void PairBBPD::tally_lanes(int i, const RowTally &lanes, double *acc)
 }
 
 // the plain loop (eval) and the Silling-Askari loop (eval_alpha) sum rows with these
-template bool PairBBPD::row_force<0, 0, 0>(int, double *, const double *, double *);
-template bool PairBBPD::row_force<1, 0, 0>(int, double *, const double *, double *);
-template bool PairBBPD::row_force<0, 1, 0>(int, double *, const double *, double *);
-template bool PairBBPD::row_force<1, 1, 0>(int, double *, const double *, double *);
-template bool PairBBPD::row_force<0, 0, 1>(int, double *, const double *, double *);
-template bool PairBBPD::row_force<1, 0, 1>(int, double *, const double *, double *);
-template bool PairBBPD::row_force<0, 1, 1>(int, double *, const double *, double *);
-template bool PairBBPD::row_force<1, 1, 1>(int, double *, const double *, double *);
+template bool PairBBPD::row_force<0, 0, 0>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<1, 0, 0>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<0, 1, 0>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<1, 1, 0>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<0, 0, 1>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<1, 0, 1>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<0, 1, 1>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<1, 1, 1>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);

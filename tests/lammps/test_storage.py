@@ -214,12 +214,14 @@ def test_energy_steps_do_not_change_the_trajectory(lmp, tmp_path):
     assert dumps[1] == dumps[300]
 
 
-def test_openmp_threads_give_the_same_trajectory(lmp, tmp_path):
-    """Threads split the atoms of the force loop (each sums only its own bonds): 1 and 2
-    threads give the same bits, with bonds breaking and energy tallied every step."""
+@pytest.mark.parametrize("storage", ["fast", "compact"])
+def test_openmp_threads_give_the_same_trajectory(lmp, tmp_path, storage):
+    """Threads split the atoms of the force loop (each sums only its own bonds; with compact
+    storage each has its own coefficient cache): 1 and 2 threads give the same bits, with bonds
+    breaking and energy tallied every step."""
     dumps = {}
     for threads in (1, 2):
-        script = SCENE.format(kernel="gaussian", storage="fast").replace(
+        script = SCENE.format(kernel="gaussian", storage=storage).replace(
             "units si", f"package omp {threads}\nunits si").replace("thermo 50", "thermo 1")
         out = lmp(script).output
         assert f"1 MPI tasks x {threads} OpenMP threads" in out
