@@ -2,10 +2,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
    BBPD: the stretch pass of the Silling-Askari bond loop over one row.
 
-   For the bonds of atom i it returns the smallest stretch and whether a bond is past
-   its critical stretch s00 - alpha max(smin_i, smin_j) (with 'clamp': only compression
-   counts). The AVX-512 kernel does the same IEEE operations (sqrt, division, min, max,
-   compares) as the portable loop, so both give identical bits.
+   For the bonds of atom i it returns the smallest stretch and whether a bond is past (or,
+   in a periodic box, within 'margin' of) its critical stretch s00 - alpha max(smin_i, smin_j)
+   (with 'clamp': only compression counts). The AVX-512 kernel does the same IEEE operations
+   (sqrt, division, min, max, compares) as the portable loop, so both give identical bits.
 ------------------------------------------------------------------------- */
 
 #ifndef BBPD_PMB_ROW_H
@@ -21,7 +21,8 @@ namespace BBPD {
 
 template <bool PMB, bool CLAMP>
 inline bool row_stretch_portable(const double *xx, int i, const int *bj, const double *bxi0, int n,
-                                 const double *smin, double s00, double alpha, double *smin_row)
+                                 const double *smin, double s00, double alpha, double margin,
+                                 double *smin_row)
 {
   const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
   double snew = std::numeric_limits<double>::max();
@@ -33,58 +34,21 @@ inline bool row_stretch_portable(const double *xx, int i, const int *bj, const d
     if (PMB && std::fabs(elong) < BBPD::PMB::NEAR_ZERO) elong = 0.0;
     const double s = elong / bxi0[k];
     snew = std::min(snew, s);
-    broken |= s > BBPD::PMB::critical_stretch(s00, alpha, smin[i], smin[j], CLAMP);
+    broken |= s + margin > BBPD::PMB::critical_stretch(s00, alpha, smin[i], smin[j], CLAMP);
   }
   *smin_row = snew;
   return broken;
 }
 
 #ifdef BBPD_AVX512
-template <bool PMB, bool CLAMP>
-inline bool row_stretch_avx512(const double *xx, int i, const int *bj, const double *bxi0, int n,
-                               const double *smin, double s00, double alpha, double *smin_row)
-{
-  const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
-                zi = _mm512_set1_pd(xx[3 * i + 2]);
-  const __m512d vs00 = _mm512_set1_pd(s00), valpha = _mm512_set1_pd(alpha),
-                vsmin_i = _mm512_set1_pd(smin[i]), zero = _mm512_setzero_pd(),
-                near_zero = _mm512_set1_pd(BBPD::PMB::NEAR_ZERO);
-  const __m256i three = _mm256_set1_epi32(3);
-  __m512d vmin = _mm512_set1_pd(std::numeric_limits<double>::max());
-  __mmask8 broken = 0;
-  for (int k = 0; k < n; k += LANES) {
-    const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
-    const __m256i j1 = _mm256_maskz_loadu_epi32(m, bj + k);
-    const __m256i j3 = _mm256_mullo_epi32(j1, three);
-    const __m512d dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(xi, m, j3, xx, 8), xi);
-    const __m512d dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(yi, m, j3, xx + 1, 8), yi);
-    const __m512d dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(zi, m, j3, xx + 2, 8), zi);
-    const __m512d rsq =
-        _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
-    const __m512d xi0 = _mm512_mask_loadu_pd(_mm512_set1_pd(1.0), m, bxi0 + k);
-    __m512d elong = _mm512_sub_pd(_mm512_sqrt_pd(rsq), xi0);
-    if (PMB) {
-      const __mmask8 tiny = _mm512_cmp_pd_mask(_mm512_abs_pd(elong), near_zero, _CMP_LT_OQ);
-      elong = _mm512_mask_mov_pd(elong, tiny, zero);
-    }
-    const __m512d s = _mm512_div_pd(elong, xi0);
-    vmin = _mm512_mask_min_pd(vmin, m, s, vmin);    // min(s, vmin): vmin unless s < vmin
-    __m512d smax = _mm512_max_pd(_mm512_mask_i32gather_pd(vsmin_i, m, j1, smin, 8), vsmin_i);
-    if (CLAMP) smax = _mm512_min_pd(smax, zero);
-    const __m512d s0 = _mm512_sub_pd(vs00, _mm512_mul_pd(valpha, smax));
-    broken |= _mm512_mask_cmp_pd_mask(m, s, s0, _CMP_GT_OQ);
-  }
-  *smin_row = _mm512_reduce_min_pd(vmin);
-  return broken != 0;
-}
-
-/* row_force_avx512 (bbpd_row.h) and row_stretch_avx512 in one pass over the row: the
-   force lanes and tallies are those of row_force_avx512, bit for bit (same operations in
-   the same order), the smallest stretch and the breaking flag those of row_stretch */
-template <int EV, bool PMB, bool CLAMP>
-inline bool row_force_stretch_avx512(const double *xx, int i, const int *bj, const double *bxi0,
-                                     const double *bcoef, int n, const double *smin, double s00,
-                                     double alpha, double *smin_row, double *ax, double *ay,
+/* row_force_avx512 (bbpd_row.h) and row_stretch_portable in one pass over the row (reference
+   lengths and coefficients from vals, as row_force_avx512 takes them): the force lanes and
+   tallies are those of row_force_avx512, bit for bit (same operations in the same order), the
+   smallest stretch and the breaking flag those of row_stretch_portable */
+template <int EV, bool PMB, bool CLAMP, class Values>
+inline bool row_force_stretch_avx512(const double *xx, int i, const int *bj, const Values &vals,
+                                     int n, const double *smin, double s00, double alpha,
+                                     double margin, double *smin_row, double *ax, double *ay,
                                      double *az, RowTally *tally)
 {
   const __m512d quarter = _mm512_set1_pd(0.25), half = _mm512_set1_pd(0.5);
@@ -94,7 +58,8 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const int *bj, con
                 zi = _mm512_set1_pd(xx[3 * i + 2]);
   const __m512d vs00 = _mm512_set1_pd(s00), valpha = _mm512_set1_pd(alpha),
                 vsmin_i = _mm512_set1_pd(smin[i]), zero = _mm512_setzero_pd(),
-                near_zero = _mm512_set1_pd(BBPD::PMB::NEAR_ZERO), one = _mm512_set1_pd(1.0);
+                near_zero = _mm512_set1_pd(BBPD::PMB::NEAR_ZERO), one = _mm512_set1_pd(1.0),
+                vmargin = _mm512_set1_pd(margin);
   const __m256i three = _mm256_set1_epi32(3);
   __m512d fx = _mm512_setzero_pd(), fy = fx, fz = fx;
   __m512d vmin = _mm512_set1_pd(std::numeric_limits<double>::max());
@@ -109,15 +74,15 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const int *bj, con
     const __m512d rsq =
         _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
     const __m512d r = _mm512_sqrt_pd(rsq);
-    const __m512d xi0 = _mm512_maskz_loadu_pd(m, bxi0 + k);
+    __m512d xi0, coef;
+    load_values(vals, m, k, j1, xi0, coef);
     const __m512d elong = _mm512_sub_pd(r, xi0);
     // force: as row_force_avx512
-    const __m512d fbond = _mm512_maskz_div_pd(m, _mm512_mul_pd(_mm512_maskz_loadu_pd(m, bcoef + k), elong), r);
+    const __m512d fbond = _mm512_maskz_div_pd(m, _mm512_mul_pd(coef, elong), r);
     fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fbond, dx));
     fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fbond, dy));
     fz = _mm512_mask_add_pd(fz, m, fz, _mm512_mul_pd(fbond, dz));
     if (EV) {
-      const __m512d coef = _mm512_maskz_loadu_pd(m, bcoef + k);
       eacc = _mm512_mask_add_pd(eacc, m, eacc,
                                 _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(quarter, coef), elong), elong));
       const __m512d hf = _mm512_mul_pd(half, fbond);
@@ -127,7 +92,7 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const int *bj, con
         vacc[c] = _mm512_mask_sub_pd(vacc[c], m, vacc[c],
                                      _mm512_mul_pd(_mm512_mul_pd(hf, d[pa[c]]), d[pb[c]]));
     }
-    // stretch: as row_stretch_avx512
+    // stretch: as row_stretch_portable
     __m512d es = elong;
     if (PMB) es = _mm512_mask_mov_pd(es, _mm512_cmp_pd_mask(_mm512_abs_pd(es), near_zero, _CMP_LT_OQ), zero);
     const __m512d s = _mm512_div_pd(es, _mm512_mask_mov_pd(one, m, xi0));
@@ -135,7 +100,7 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const int *bj, con
     __m512d smax = _mm512_max_pd(_mm512_mask_i32gather_pd(vsmin_i, m, j1, smin, 8), vsmin_i);
     if (CLAMP) smax = _mm512_min_pd(smax, zero);
     const __m512d s0 = _mm512_sub_pd(vs00, _mm512_mul_pd(valpha, smax));
-    broken |= _mm512_mask_cmp_pd_mask(m, s, s0, _CMP_GT_OQ);
+    broken |= _mm512_mask_cmp_pd_mask(m, _mm512_add_pd(s, vmargin), s0, _CMP_GT_OQ);
   }
   *smin_row = _mm512_reduce_min_pd(vmin);
   _mm512_storeu_pd(ax, fx);
@@ -149,16 +114,14 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const int *bj, con
 }
 #endif
 
-/* the stretch pass; bxi0 = null (compact storage) is handled by the caller */
+/* the stretch pass without the force (the force then comes from row_force); bxi0 = null
+   (compact storage) is handled by the caller */
 template <bool PMB, bool CLAMP>
 inline bool row_stretch(const double *xx, int i, const int *bj, const double *bxi0, int n,
-                        const double *smin, double s00, double alpha, double *smin_row)
+                        const double *smin, double s00, double alpha, double margin,
+                        double *smin_row)
 {
-#ifdef BBPD_AVX512
-  return row_stretch_avx512<PMB, CLAMP>(xx, i, bj, bxi0, n, smin, s00, alpha, smin_row);
-#else
-  return row_stretch_portable<PMB, CLAMP>(xx, i, bj, bxi0, n, smin, s00, alpha, smin_row);
-#endif
+  return row_stretch_portable<PMB, CLAMP>(xx, i, bj, bxi0, n, smin, s00, alpha, margin, smin_row);
 }
 
 }    // namespace BBPD

@@ -22,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -46,8 +47,7 @@ FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
     bcoef(nullptr),
     vintact(nullptr), uniform_type(0), uniform_vfrac(0.0), first(1),
     nlocal_cache(0), nbond_cache(0), list(nullptr), have_rules(false), offsets_allowed(false),
-    extent0(0.0), need_raw(0),
-    nmax_raw(0), xraw(nullptr)
+    extent0(0.0), need_raw(0), nmax_raw(0), xraw(nullptr), generation(0), xi0_min(0.0)
 {
   if (narg != 3) error->all(FLERR, "Fix bbpd/bonds takes no arguments (it is created by the pair style)");
   restart_global = 1;
@@ -193,7 +193,21 @@ void FixBBPDBonds::setup_post_neighbor()
 
 void FixBBPDBonds::post_neighbor()
 {
+  if (same_atoms_at_same_indices()) return;
   refresh_cache();
+}
+
+/* A reneighboring that neither migrated, sorted nor re-imaged an atom leaves the same atom
+   at every local and ghost index: then every cached partner index, and every value derived
+   from the atoms' fixed reference data, is still exact. Only in a box without periodic
+   dimensions: there a ghost with the same tag could be another image of its owner. */
+bool FixBBPDBonds::same_atoms_at_same_indices()
+{
+  if (domain->xperiodic || domain->yperiodic || domain->zperiodic) return false;
+  const int nall = atom->nlocal + atom->nghost;
+  const tagint *tag = atom->tag;
+  return tags_cached.size() == (size_t) nall &&
+      std::equal(tags_cached.begin(), tags_cached.end(), tag);
 }
 
 /* largest extent of the atoms that still have bonds (free fragments may fly away) */
@@ -342,6 +356,8 @@ void FixBBPDBonds::refresh_cache()
     for (int k = 0; k < npartner[i]; k++) n += partner[i][k] > 0;
   }
   bond_start[nlocal] = n;
+  generation++;
+  tags_cached.assign(atom->tag, atom->tag + nlocal + atom->nghost);
   const bool compact = !policy.caches_geometry();
   if (nbond_cache < n) {
     // headroom: migration changes the count a little
@@ -373,6 +389,7 @@ void FixBBPDBonds::refresh_cache()
   int *type = atom->type;
   tagint *tag = atom->tag;
   const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
+  xi0_min = std::numeric_limits<double>::infinity();
 
   uniform_type = 0;
   const int nall = atom->nlocal + atom->nghost;
@@ -408,6 +425,7 @@ void FixBBPDBonds::refresh_cache()
         bdelta[m] = static_cast<BBPD::PartnerOffset>(j - i);
       else
         bj[m] = j;
+      xi0_min = std::min(xi0_min, xi);
       if (!compact) store_bond_values(m, xi, law.coefficient(type[i], type[j], xi, vfrac[j]));
       m++;
     }

@@ -46,6 +46,8 @@
 #include "bbpd_partner_index.h"
 #include "fix.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class FixBBPDBonds : public Fix {
@@ -119,6 +121,10 @@ class FixBBPDBonds : public Fix {
   const double *raw_x(int j) const { return j < atom->nlocal ? atom->x[j] : xraw[j]; }
   // (false if no force evaluation has sent them yet, e.g. a pair computed outside a run)
   bool raw_positions() const { return need_raw && nmax_raw >= atom->nlocal + atom->nghost; }
+  // shortest reference length of this rank's bonds at the last rebuild of the cache
+  double min_reference_length() const { return xi0_min; }
+  // counts the rebuilds of the cache: unchanged while every local index keeps its meaning
+  bigint cache_generation() const { return generation; }
 
  protected:
   int first;    // 1 until bond families exist
@@ -134,6 +140,10 @@ class FixBBPDBonds : public Fix {
   int need_raw;       // periodic box with fracture: ghosts carry their owner's position
   int nmax_raw;
   double **xraw;      // owner's (unshifted) position of each ghost
+  bigint generation;
+  double xi0_min;
+  std::vector<tagint> tags_cached;    // tag of every local and ghost index at the last rebuild
+  bool same_atoms_at_same_indices();
 
   void size_family_neighbor_list();
   void set_maxexchange() { maxexchange = maxpartner + 2; }

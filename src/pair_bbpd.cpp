@@ -587,16 +587,23 @@ void PairBBPD::finish_eval(int bad, bool evflag_on, const double *totals)
   }
 }
 
-/* is bond i-j past its critical stretch? Decided from the same minimum-image difference of the
-   owners' unshifted positions at both ends (in a periodic box the ghost image x +- L rounds
-   differently at the two ends, and one end could break a bond the other keeps) */
+/* is bond i-j past its critical stretch? Decided from breaking_length(), the same at both ends */
 bool PairBBPD::past_critical(int i, int j, double xi0, double s0) const
+{
+  return breaking_length(i, j) - xi0 > s0 * xi0;
+}
+
+/* the current length of bond i-j from which breaking is decided: in a periodic box from the
+   minimum-image difference of the owners' unshifted positions, identical at both ends (the
+   ghost image x +- L rounds differently at the two ends, and one end could break a bond the
+   other keeps) */
+double PairBBPD::breaking_length(int i, int j) const
 {
   const double *xi = atom->x[i];
   const double *xj = bonds->raw_positions() ? bonds->raw_x(j) : atom->x[j];
   double d[3] = {xj[0] - xi[0], xj[1] - xi[1], xj[2] - xi[2]};
   if (bonds->raw_positions()) BBPDCompat::minimum_image(domain, d);
-  return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - xi0 > s0 * xi0;
+  return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
 /* ----------------------------------------------------------------------

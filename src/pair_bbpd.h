@@ -84,6 +84,7 @@ class PairBBPD : public Pair {
   int s0_seen;            // init_one() has met a type pair (s0_single holds its s0)
   double break_margin;    // periodic box: bonds this close to s0 are re-checked canonically
   bool past_critical(int i, int j, double xi0, double s0) const;
+  double breaking_length(int i, int j) const;
   template <int EVFLAG, int FRACTURE, int MULTI> void eval();
   // the row force of atom i; cache: the calling thread's coefficient cache (compact storage)
   template <int EVFLAG, int FRACTURE, int MULTI>
@@ -113,6 +114,7 @@ class PairBBPD : public Pair {
   // candidate skin (atom i's partners: sr_pairs[sr_first[i] .. sr_first[i + 1]])
   std::vector<int> sr_first, sr_pairs;
   std::vector<double> sr_dist, sr_xhold;    // short-range distance of each candidate pair
+  bigint sr_generation = -1;    // of the bond cache the candidates' indices belong to
   void short_range_candidates(double skin);
 };
 

@@ -45,6 +45,16 @@ using BBPD::LANES;
 using BBPD::RowTally;
 using BBPD::lane_sum;
 
+// a bond's stretch seen through a periodic image and from the owners' positions differ by at
+// most break_margin / xi0, plus the rounding of the division: twice that bounds both
+static constexpr double STRETCH_MARGIN_FACTOR = 2.0;
+
+#ifdef BBPD_AVX512
+static constexpr bool FUSED_KERNEL = true;    // force and stretch of a row in one pass
+#else
+static constexpr bool FUSED_KERNEL = false;
+#endif
+
 /* ----------------------------------------------------------------------
    compat pmb: pair_coeff I J c delta s00 alpha (peri/pmb's four numbers)
 ------------------------------------------------------------------------- */
@@ -91,14 +101,6 @@ void PairBBPD::init_pmb()
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
       if (setflag[i][j] && alpha[i][j] > 0.0) alpha_any = 1;
-  // the alpha loop decides breaking from each end's own image of its partner: in a periodic
-  // box the two ends could disagree for a bond across the boundary
-  const bool periodic = domain->xperiodic || domain->yperiodic ||
-      (domain->zperiodic && domain->dimension == 3);
-  if (alpha_any && periodic)
-    error->all(FLERR, "Pair style bbpd/{}: {} is not supported in a periodic box yet (bonds across "
-               "the boundary could break at one end only): use boundary s or f, or drop alpha",
-               kernel.name, compat_pmb ? "compat pmb" : "alpha");
   if (alpha_any) {
     alpha_state = dynamic_cast<FixBBPDAlpha *>(modify->get_fix_by_id("BBPD_ALPHA"));
     if (!alpha_state)
@@ -160,6 +162,14 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
   // no new smallest stretches, and the bonds that broke then act again
   const bool replay = update->setupflag && update->ntimestep == alpha_state->last_step;
   double **fbroken = alpha_state->fbroken;
+  // in a periodic box the two ends of a bond see each other through images that round
+  // differently: a row with a bond within 'margin' (stretch) of breaking is decided again
+  // from breaking_length(), which both ends compute alike. The margin bounds the stretch
+  // difference of the two views (break_margin / shortest reference length), with a factor
+  // for the rounding of the stretch itself.
+  const bool canonical = bonds->raw_positions();
+  const double margin = canonical && break_margin > 0.0
+      ? STRETCH_MARGIN_FACTOR * break_margin / bonds->min_reference_length() : 0.0;
   double totals[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   int bad = -1;
 
@@ -169,9 +179,10 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
   {
     double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     BBPD::CoefCache *cache = thread_coef_cache();
-    // a row's reference lengths and coefficients, looked up from their classes
+    // a row's reference lengths and coefficients, looked up from their classes (the fused
+    // AVX-512 kernel gathers them itself)
     std::vector<double> class_xi0, class_coef;
-    if (bonds->bclass) {
+    if (bonds->bclass && (multi || !FUSED_KERNEL)) {
       class_xi0.resize(bonds->maxpartner);
       class_coef.resize(bonds->maxpartner);
     }
@@ -185,7 +196,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
       // reference lengths and coefficients of the row (null with bond/storage compact)
       const double *row_xi0 = bxi0 ? bxi0 + beg : nullptr;
       const double *row_coef = bxi0 ? bonds->bcoef + beg : nullptr;
-      if (bonds->bclass) {
+      if (bonds->bclass && (multi || !FUSED_KERNEL)) {
         for (int k = 0; k < bonds->nbond[i]; k++) {
           class_xi0[k] = bonds->classes.xi0[bonds->bclass[beg + k]];
           class_coef[k] = bonds->classes.coef[bonds->bclass[beg + k]];
@@ -200,6 +211,14 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
         const double xi0 = bonds->xi0_of(i, k);
         double elong = std::sqrt(dx * dx + dy * dy + dz * dz) - xi0;
+        if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
+        return elong / xi0;
+      };
+      // the stretch that decides breaking: the same at both ends of the bond
+      auto breaking_stretch = [&](int k) {
+        if (!canonical) return stretch_of(k);
+        const double xi0 = bonds->xi0_of(i, k);
+        double elong = breaking_length(i, bj[k]) - xi0;
         if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
         return elong / xi0;
       };
@@ -218,15 +237,27 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         bool broken = false;
         const int n = bonds->nbond[i];
 #ifdef BBPD_AVX512
-        if (!multi && row_xi0) {
+        if (!multi && (bonds->bclass || row_xi0)) {
           double ax[LANES], ay[LANES], az[LANES];
           RowTally tally;
-          broken = pmb ? BBPD::row_force_stretch_avx512<EVFLAG, true, false>(
-                             xx, i, bj + beg, row_xi0, row_coef, n, smin, s00_one,
-                             alpha_one, &snew, ax, ay, az, &tally)
-                       : BBPD::row_force_stretch_avx512<EVFLAG, false, true>(
-                             xx, i, bj + beg, row_xi0, row_coef, n, smin, s00_one,
-                             alpha_one, &snew, ax, ay, az, &tally);
+          if (bonds->bclass) {
+            const BBPD::ClassValues vals = {bonds->bclass + beg, bonds->classes.xi0.data(),
+                                            bonds->classes.coef.data()};
+            broken = pmb ? BBPD::row_force_stretch_avx512<EVFLAG, true, false>(
+                               xx, i, bj + beg, vals, n, smin, s00_one, alpha_one, margin, &snew, ax,
+                               ay, az, &tally)
+                         : BBPD::row_force_stretch_avx512<EVFLAG, false, true>(
+                               xx, i, bj + beg, vals, n, smin, s00_one, alpha_one, margin, &snew, ax,
+                               ay, az, &tally);
+          } else {
+            const BBPD::PerBondValues vals = {row_xi0, row_coef};
+            broken = pmb ? BBPD::row_force_stretch_avx512<EVFLAG, true, false>(
+                               xx, i, bj + beg, vals, n, smin, s00_one, alpha_one, margin, &snew, ax,
+                               ay, az, &tally)
+                         : BBPD::row_force_stretch_avx512<EVFLAG, false, true>(
+                               xx, i, bj + beg, vals, n, smin, s00_one, alpha_one, margin, &snew, ax,
+                               ay, az, &tally);
+          }
           if (!broken) {
             lane_sum(ax, ay, az, fi);
             if (EVFLAG) tally_lanes(i, tally, acc);
@@ -235,13 +266,13 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         } else
 #endif
         if (!multi && row_xi0) {
-          broken = pmb ? BBPD::row_stretch<true, false>(xx, i, bj + beg, row_xi0, n, smin, s00_one, alpha_one, &snew)
-                       : BBPD::row_stretch<false, true>(xx, i, bj + beg, row_xi0, n, smin, s00_one, alpha_one, &snew);
+          broken = pmb ? BBPD::row_stretch<true, false>(xx, i, bj + beg, row_xi0, n, smin, s00_one, alpha_one, margin, &snew)
+                       : BBPD::row_stretch<false, true>(xx, i, bj + beg, row_xi0, n, smin, s00_one, alpha_one, margin, &snew);
         } else {
           for (int k = beg; k < beg + n; k++) {
             const double s = stretch_of(k);
             snew = std::min(snew, s);
-            broken |= s > s0_of(k);
+            broken |= s + margin > s0_of(k);
           }
         }
         smin_new[i] = n > 0 ? snew : NO_BOND_STRETCH;
@@ -249,7 +280,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         if (broken) {
           int k = beg;
           while (k < beg + bonds->nbond[i]) {
-            if (!(stretch_of(k) > s0_of(k))) {
+            if (!(breaking_stretch(k) > s0_of(k))) {
               k++;
               continue;
             }
@@ -333,7 +364,9 @@ void PairBBPD::compute_short_range()
   // candidate pairs must stay within the horizon, which the ghost atoms cover
   const double skin = std::min(SHORT_RANGE_CANDIDATE_SKIN * lc, horizon_min - rmax);
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  bool rebuild = neighbor->ago == 0 || sr_xhold.size() != 3 * (size_t) nall ||
+  // the candidates hold local indices: rebuilt whenever the bond cache was (atoms moved to
+  // other indices), or when an atom has moved far enough to bring a new pair in range
+  bool rebuild = sr_generation != bonds->cache_generation() || sr_xhold.size() != 3 * (size_t) nall ||
       sr_first.size() != (size_t) nlocal + 1;
   for (int i = 0; !rebuild && i < nall; i++) {
     const double dx = xx[3 * i] - sr_xhold[3 * i], dy = xx[3 * i + 1] - sr_xhold[3 * i + 1],
@@ -396,6 +429,7 @@ void PairBBPD::short_range_candidates(double skin)
   const double reach = SHORT_RANGE_LATTICE_FACTOR * lc + skin;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   sr_xhold.assign(xx, xx + 3 * nall);
+  sr_generation = bonds->cache_generation();
   sr_first.assign(nlocal + 1, 0);
   sr_pairs.clear();
   sr_dist.clear();
@@ -431,30 +465,34 @@ void PairBBPD::short_range_candidates(double skin)
   for (size_t c = 1; c < start.size(); c++) start[c] += start[c - 1];
   std::vector<int> fill(start.begin(), start.end() - 1);
   for (int i = 0; i < nall; i++) atoms[fill[bin_of[i]]++] = i;
+  // positions in bin order: the bins of a row of the search below are one contiguous run
+  std::vector<double> xbin(3 * atoms.size());
+  for (int a = 0; a < nall; a++)
+    for (int m = 0; m < 3; m++) xbin[3 * a + m] = xx[3 * atoms[a] + m];
 
   for (int i = 0; i < nlocal; i++) {
     sr_first[i] = (int) sr_pairs.size();
     const int c[3] = {cell(i, 0), cell(i, 1), cell(i, 2)};
+    const int zlo = std::max(c[2] - 1, 0), zhi = std::min(c[2] + 1, nb[2] - 1);
     for (int ax = std::max(c[0] - 1, 0); ax <= std::min(c[0] + 1, nb[0] - 1); ax++)
-      for (int ay = std::max(c[1] - 1, 0); ay <= std::min(c[1] + 1, nb[1] - 1); ay++)
-        for (int az = std::max(c[2] - 1, 0); az <= std::min(c[2] + 1, nb[2] - 1); az++) {
-          const int bin = (ax * nb[1] + ay) * nb[2] + az;
-          for (int a = start[bin]; a < start[bin + 1]; a++) {
-            const int j = atoms[a];
-            if (j == i) continue;
-            const double dx = xx[3 * i] - xx[3 * j], dy = xx[3 * i + 1] - xx[3 * j + 1],
-                         dz = xx[3 * i + 2] - xx[3 * j + 2];
-            const double rsq = dx * dx + dy * dy + dz * dz;
-            if (rsq >= reach * reach) continue;
-            double d0[3] = {x0[i][0] - x0[j][0], x0[i][1] - x0[j][1], x0[i][2] - x0[j][2]};
-            if (periodic) BBPDCompat::minimum_image(domain, d0);
-            const double d =
-                short_range_distance(std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), lc);
-            if (std::sqrt(rsq) >= d + skin) continue;
-            sr_pairs.push_back(j);
-            sr_dist.push_back(d);
-          }
+      for (int ay = std::max(c[1] - 1, 0); ay <= std::min(c[1] + 1, nb[1] - 1); ay++) {
+        const int row = (ax * nb[1] + ay) * nb[2];
+        for (int a = start[row + zlo]; a < start[row + zhi + 1]; a++) {
+          const double dx = xx[3 * i] - xbin[3 * a], dy = xx[3 * i + 1] - xbin[3 * a + 1],
+                       dz = xx[3 * i + 2] - xbin[3 * a + 2];
+          const double rsq = dx * dx + dy * dy + dz * dz;
+          if (rsq >= reach * reach) continue;
+          const int j = atoms[a];
+          if (j == i) continue;
+          double d0[3] = {x0[i][0] - x0[j][0], x0[i][1] - x0[j][1], x0[i][2] - x0[j][2]};
+          if (periodic) BBPDCompat::minimum_image(domain, d0);
+          const double d =
+              short_range_distance(std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), lc);
+          if (std::sqrt(rsq) >= d + skin) continue;
+          sr_pairs.push_back(j);
+          sr_dist.push_back(d);
         }
+      }
   }
   sr_first[nlocal] = (int) sr_pairs.size();
 }

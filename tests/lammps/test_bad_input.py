@@ -137,9 +137,6 @@ CASES = {
                              "alpha must be >= 0"),
     "coeff-alpha-missing-value": (script(pair_coeff="pair_coeff * * 190.0e9 6.9e4 0.003015 "
                                          "critical_stretch 0.01 alpha"), "got 8 arguments"),
-    "coeff-alpha-periodic": (script(BASE_3D, boundary="boundary p p p",
-                                    pair_coeff="pair_coeff * * 190.0e9 6.9e4 0.003015 alpha 0.25"),
-                             "alpha is not supported in a periodic box"),
     # ---- compat pmb: pair_coeff I J c delta s00 alpha, as peri/pmb
     "compat-not-pmb": (script(BASE_3D, pair_style="pair_style bbpd/constant 3d compat lps"),
                        "compat must be 'pmb'"),

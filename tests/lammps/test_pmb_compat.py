@@ -28,9 +28,11 @@ SEED = 20261201
 THICKNESS = 1.0e-3    # of the 2D plate
 
 
-def block(dim=3):
+def block(dim=3, periodic=False):
+    """The reference lattice and its box: padded, or (periodic) one period of the lattice,
+    so that every atom has bonds across the boundary."""
     x0 = ref.square_lattice((7, 7, 7) if dim == 3 else (12, 12), DX)
-    pad = 5 * DX
+    pad = 0.5 * DX if periodic else 5 * DX
     box = [(x0[:, k].min() - pad, x0[:, k].max() + pad) for k in range(3)]
     if dim == 2:
         box[2] = (-0.5 * DX, 0.5 * DX)
@@ -59,8 +61,8 @@ def short_range_pairs(x0, y):
     return np.count_nonzero(r < np.minimum(0.9 * xi, 1.35 * DX))
 
 
-def force_script(pair_lines, plugin, dim=3):
-    geometry = ("boundary s s s\n" if dim == 3 else "dimension 2\nboundary s s p\n")
+def force_script(pair_lines, plugin, dim=3, boundary="s s s"):
+    geometry = (f"boundary {boundary}\n" if dim == 3 else "dimension 2\nboundary s s p\n")
     return ((("plugin load bbpdplugin.so\n" if plugin else "")
              + "units si\n" + geometry + "atom_style peri\natom_modify map array\n"
              "read_data body.data\n"
@@ -73,19 +75,23 @@ def force_script(pair_lines, plugin, dim=3):
              "write_dump all custom forces.dump id x y z fx fy fz modify format float %.17g\n"))
 
 
-def run_forces(lmp, tmp_path, pair_lines, plugin, nprocs=1, dim=3):
-    out = lmp(force_script(pair_lines, plugin, dim), nprocs=nprocs).output
+def run_forces(lmp, tmp_path, pair_lines, plugin, nprocs=1, dim=3, boundary="s s s"):
+    out = lmp(force_script(pair_lines, plugin, dim, boundary), nprocs=nprocs).output
     got = ref.read_dump(tmp_path / "forces.dump")
     return out, np.stack([got["fx"], got["fy"], got["fz"]], axis=1)
 
 
-@pytest.mark.parametrize("model", ["3d", "plane/stress"])
+@pytest.mark.parametrize("model", ["3d", "plane/stress", "3d-periodic"])
 def test_forces_equal_peri_pmb(lmp, tmp_path, model):
     """compat pmb gives peri/pmb's forces (bonds with the volume ramp, short-range forces
     between bonded atoms) to 1e-12 of the largest force, on 1 and 2 ranks; ours are the
-    same bits on 1 and 2 ranks. In 2D, peri/pmb runs in dimension 2 as well."""
+    same bits on 1 and 2 ranks. In 2D, peri/pmb runs in dimension 2 as well. 3d-periodic:
+    a periodic box one lattice period long, every atom bonded across the boundaries."""
+    periodic = model == "3d-periodic"
+    model = "3d" if periodic else model
+    boundary = "p p p" if periodic else "s s s"
     dim = 3 if model == "3d" else 2
-    x0, box = block(dim)
+    x0, box = block(dim, periodic)
     y = perturbed(x0, dim)
     assert short_range_pairs(x0, y) >= 3    # the short-range force is exercised
     ref.write_data(tmp_path / "body.data", x0, DX**3 if dim == 3 else THICKNESS * DX**2,
@@ -94,14 +100,16 @@ def test_forces_equal_peri_pmb(lmp, tmp_path, model):
     numbers = f"{C_PMB!r} {DELTA!r} {S00_ELASTIC!r} {ALPHA!r}"
 
     _, f_pmb = run_forces(lmp, tmp_path, f"pair_style peri/pmb\npair_coeff * * {numbers}\n",
-                          plugin=False, dim=dim)
+                          plugin=False, dim=dim, boundary=boundary)
     thick = "" if dim == 3 else f" thickness {THICKNESS!r}"
     ours = f"pair_style bbpd/constant {model}{thick} compat pmb\npair_coeff * * {numbers}\n"
-    out1, f1 = run_forces(lmp, tmp_path, ours, plugin=True, dim=dim)
-    out2, f2 = run_forces(lmp, tmp_path, ours, plugin=True, nprocs=2, dim=dim)
+    out1, f1 = run_forces(lmp, tmp_path, ours, plugin=True, dim=dim, boundary=boundary)
+    out2, f2 = run_forces(lmp, tmp_path, ours, plugin=True, nprocs=2, dim=dim, boundary=boundary)
     assert "compat pmb" in out1
     # |xi| <= delta gives an interior atom 122 partners (3D), 28 (2D) at delta = 3.0002 dx
     assert f"max {122 if dim == 3 else 28}" in out1
+    if periodic:    # every atom is interior
+        assert "min 122 mean 122 max 122" in out1
     scale = np.linalg.norm(f_pmb, axis=1).max()
     for f in (f1, f2):
         err = np.linalg.norm(f - f_pmb, axis=1).max() / scale
@@ -286,3 +294,47 @@ def test_cylinder_restart_equals_continuous_run(lmp, tmp_path):
     assert straight["c_1"].mean() > 0.1
     for key in ("x", "y", "z", "vx", "vy", "vz", "c_1"):
         np.testing.assert_array_equal(straight[key], restarted[key])
+
+
+def test_cylinder_atom_sorting_gives_the_same_bits(lmp, tmp_path):
+    """LAMMPS sorting the atoms (new local indices at a reneighboring) rebuilds the bond cache
+    and the short-range candidates; without sorting both are kept from one reneighboring to
+    the next. Either way the run ends in the same bits, with and without compat pmb."""
+    for variant in ("compat", "plain-alpha"):
+        states = []
+        for sort in ("atom_modify     sort 0 0.0", "atom_modify     sort 10 0.0005"):
+            script = cylinder(variant).replace("atom_modify     map array",
+                                               "atom_modify     map array\n" + sort)
+            lmp(script + "write_dump all custom end.dump id x y z vx vy vz c_1 "
+                "modify sort id format float %.17g\n")
+            states.append(ref.read_dump(tmp_path / "end.dump"))
+        assert states[0]["c_1"].mean() > 0.1
+        for key in ("x", "y", "z", "vx", "vy", "vz", "c_1"):
+            np.testing.assert_array_equal(states[0][key], states[1][key])
+
+
+def periodic_cylinder(style):
+    """The smaller cylinder in a box periodic in x and z (its bounding box): the atoms at the
+    rim where the cylinder touches the box faces are bonded across the boundary."""
+    script = cylinder("compat").replace("boundary        s s s", "boundary        p s p")
+    if style == "peri/pmb":
+        script = script.replace("plugin load     bbpdplugin.so\n", "")
+        script = script.replace("pair_style      bbpd/constant 3d compat pmb", "pair_style      peri/pmb")
+        script = script.replace("bbpd/damage/atom", "damage/atom")
+    return script
+
+
+def test_periodic_cylinder_follows_peri_pmb(lmp, tmp_path):
+    """compat pmb in a periodic box: the same damage as peri/pmb at every thermo step, and the
+    same bits on 1 and 2 ranks (every bond breaks at both ends at once)."""
+    tables, states = [], []
+    for style, nprocs in (("peri/pmb", 1), ("compat", 1), ("compat", 2)):
+        out = lmp(periodic_cylinder(style) + "write_dump all custom end.dump id x y z vx vy vz "
+                  "c_1 modify sort id format float %.17g\n", nprocs=nprocs).output
+        assert "Periodic" not in out
+        tables.append(ref.thermo_tables(out)[-1])
+        states.append(ref.read_dump(tmp_path / "end.dump"))
+    assert tables[0]["c_dmean"][-1] > 0.1
+    np.testing.assert_allclose(tables[1]["c_dmean"], tables[0]["c_dmean"], rtol=0.02)
+    for key in ("x", "y", "z", "vx", "vy", "vz", "c_1"):
+        np.testing.assert_array_equal(states[1][key], states[2][key])

@@ -25,6 +25,10 @@ _spec = importlib.util.spec_from_file_location("bbpd_test_storage",
                                                Path(__file__).with_name("test_storage.py"))
 storage = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(storage)
+_spec = importlib.util.spec_from_file_location("bbpd_test_pmb_compat",
+                                               Path(__file__).with_name("test_pmb_compat.py"))
+pmb_compat = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(pmb_compat)
 
 VARIANTS = {"avx2": ["-D", "BBPD_NATIVE=ON", "-D", "CMAKE_CXX_FLAGS=-mno-avx512f"],
             "portable": ["-D", "BBPD_NATIVE=OFF"]}
@@ -70,6 +74,17 @@ def final_state(lmp, tmp_path, plugin):
     return (tmp_path / "final.dump").read_text(), final
 
 
+def cylinder_state(lmp, tmp_path, plugin=None):
+    """Final state of the shattering compat pmb cylinder (the Silling-Askari loop: a fused
+    force-and-stretch pass with AVX-512, a stretch pass and the force kernel otherwise)."""
+    script = pmb_compat.cylinder("compat")
+    if plugin is not None:
+        script = script.replace("plugin load     bbpdplugin.so", f"plugin load     {plugin}")
+    lmp(script + "write_dump all custom cyl.dump id x y z vx vy vz c_1 modify sort id "
+        "format float %.17g\n")
+    return (tmp_path / "cyl.dump").read_text()
+
+
 @pytest.fixture(scope="module")
 def default_state(tmp_path_factory):
     from bbpd.runner import run_lammps
@@ -87,6 +102,7 @@ def test_avx2_kernel_gives_the_default_bits(lmp, tmp_path, default_state):
         assert registers(DEFAULT_BUILD / "bbpdplugin.so")[0], \
             "the default build on an AVX-512 host must hold the AVX-512 kernel"
     assert final_state(lmp, tmp_path, plugin) == default_state
+    assert cylinder_state(lmp, tmp_path, plugin) == cylinder_state(lmp, tmp_path)
 
 
 @pytest.mark.slow
@@ -95,3 +111,4 @@ def test_portable_loop_gives_the_default_bits(lmp, tmp_path, default_state):
     zmm, ymm = registers(plugin)
     assert not zmm and not ymm, "a build without -march=native must hold the portable loop"
     assert final_state(lmp, tmp_path, plugin) == default_state
+    assert cylinder_state(lmp, tmp_path, plugin) == cylinder_state(lmp, tmp_path)
