@@ -10,11 +10,12 @@
 
 namespace BBPD {
 
-/* What the per-bond cache holds besides the partner index: FAST also keeps the reference
+/* What the per-bond cache holds besides the partner (a 2-byte offset, or a 4-byte index where
+   a partner is out of an offset's reach: bbpd_partner_index.h): FAST also keeps the reference
    length and the coefficient, as a class into the rank's table of distinct pairs
-   (bbpd_bond_table.h, 20 bytes per bond) or per bond where a rank has too many distinct pairs
-   (48 bytes per bond); COMPACT recomputes both from x0 when needed, with the same operations,
-   so the same bits (16 bytes per bond). */
+   (bbpd_bond_table.h, 16 bytes per bond) or per bond where a rank has too many distinct pairs
+   (44 bytes per bond); COMPACT recomputes both from x0 when needed, with the same operations,
+   so the same bits (12 bytes per bond). 4 bytes more per bond with indices. */
 class BondStorage {
  public:
   enum Kind { FAST, COMPACT };

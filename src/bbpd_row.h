@@ -13,6 +13,7 @@
 #define BBPD_ROW_H
 
 #include "bbpd_bond_table.h"
+#include "bbpd_partner_index.h"
 
 #include <algorithm>
 #include <cmath>
@@ -55,63 +56,102 @@ struct ClassValues {
   double coef_of(int k) const { return coef[cls[k]]; }
 };
 
-/* bond/storage compact: the reference length recomputed from x0 with the operations of
-   FixBBPDBonds::xi0_of(), the coefficient from a per-thread cache keyed by everything it
-   depends on (the two types, the reference length and the partner volume, compared exactly):
-   a grid has a few hundred distinct keys, so the cache nearly always holds the coefficient,
-   and gives the same bits as computing it. */
+/* bond/storage compact: the reference length and the coefficient recomputed from x0 with the
+   operations of FixBBPDBonds::xi0_of() and coef_of(), through a per-thread cache keyed by
+   everything they depend on (the squared reference length, the partner volume and the two
+   types, compared exactly): a grid has a few hundred distinct keys, so the cache nearly always
+   holds the pair, and gives the same bits as computing it (a square root and a coefficient
+   saved per bond end). */
 struct CoefCache {
-  static constexpr int SIZE = 2048;    // entries, a power of 2: a few times the keys of a grid
-  std::vector<double> xi0, vj, coef;    // per entry; xi0 NaN: empty
-  std::vector<int> types;               // itype * TYPE_STRIDE + jtype
+  static constexpr int SLOT_BITS = 11;
+  static constexpr int SIZE = 1 << SLOT_BITS;    // entries: a few times the keys of a grid
+  std::vector<double> rsq0, vj;         // per entry, key: squared reference length (NaN: empty), partner volume
+  std::vector<int> types;               // and itype * TYPE_STRIDE + jtype
+  std::vector<double> xi0, coef;        // per entry, value
   unsigned epoch = 0;                   // of the pair settings the coefficients were computed with
   static constexpr int TYPE_STRIDE = 1 << 15;
+  // the partner volume and types of every entry so far, unless mixed
+  bool filled = false, mixed = false;
+  double only_v = 0.0;
+  int only_t = -1;
   void start(unsigned e)
   {
-    if (xi0.empty() || e != epoch) {
-      xi0.assign(SIZE, std::numeric_limits<double>::quiet_NaN());
+    if (rsq0.empty() || e != epoch) {
+      rsq0.assign(SIZE, std::numeric_limits<double>::quiet_NaN());
       vj.assign(SIZE, 0.0);
-      coef.assign(SIZE, 0.0);
       types.assign(SIZE, -1);
+      xi0.assign(SIZE, 0.0);
+      coef.assign(SIZE, 0.0);
+      filled = mixed = false;
       epoch = e;
     }
   }
-  static std::uint64_t slot(std::uint64_t xb, std::uint64_t vb, std::uint64_t t)
+  void note(double v, int t)
   {
-    // grid lengths differ in the high mantissa bits, round-off variants in the low ones
-    const std::uint64_t h = xb ^ (vb >> 7) ^ (t << 45);
-    return (h ^ (h >> 17) ^ (h >> 31)) & (SIZE - 1);
+    if (!filled) {
+      filled = true;
+      only_v = v;
+      only_t = t;
+    } else if (!(v == only_v && t == only_t)) {
+      mixed = true;
+    }
+  }
+  // does every entry have partner volume v and types t (then a key is its length alone)?
+  bool holds_only(double v, int t) const { return !mixed && (!filled || (v == only_v && t == only_t)); }
+  static std::uint64_t slot(std::uint64_t qb, std::uint64_t vb, std::uint64_t t)
+  {
+    // every bit of the key folded into the slot: round-off variants of a length differ in the
+    // low mantissa bits, grid lengths in the high ones and in the exponent (xi and 2 xi)
+    const std::uint64_t h = qb ^ (vb >> 7) ^ (t << 45);
+    std::uint64_t s = 0;
+    for (int b = 0; b < 64; b += SLOT_BITS) s ^= h >> b;
+    return s & (SIZE - 1);
   }
 };
 
-template <class CoefFn> struct RecomputedValues {
+template <class CoefFn, bool UNIFORM = false> struct RecomputedValues {
   const double *x0;       // reference positions, 3 per atom
   int i;
   const double *vfrac;
   const int *type;
   CoefCache *cache;
   CoefFn coef_fn;          // coefficient of (partner type, reference length, partner volume)
-  double xi0_of(int j) const
+  // UNIFORM: every atom a bond of i can reach has type uniform_type and volume uniform_v, and
+  // so has every cache entry: the SIMD kernel then reads and compares lengths alone
+  int uniform_type;
+  double uniform_v;
+  double rsq0_of(int j) const
   {
     const double d[3] = {x0[3 * j] - x0[3 * i], x0[3 * j + 1] - x0[3 * i + 1],
                          x0[3 * j + 2] - x0[3 * i + 2]};
-    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
   }
-  double coef_of(int jtype, double xi0, double v) const
+  double xi0_of(int j) const { return std::sqrt(rsq0_of(j)); }
+  // coefficient (and reference length) of a bond of squared reference length q to a partner of
+  // type jtype and volume v
+  double lookup(int jtype, double q, double v, double &xi0) const
   {
     CoefCache &c = *cache;
-    std::uint64_t xb, vb;
-    std::memcpy(&xb, &xi0, sizeof xb);
+    std::uint64_t qb, vb;
+    std::memcpy(&qb, &q, sizeof qb);
     std::memcpy(&vb, &v, sizeof vb);
     const int t = type[i] * CoefCache::TYPE_STRIDE + jtype;
-    const std::uint64_t s = CoefCache::slot(xb, vb, t);
-    if (!(c.xi0[s] == xi0 && c.vj[s] == v && c.types[s] == t)) {
-      c.xi0[s] = xi0;
+    const std::uint64_t s = CoefCache::slot(qb, vb, t);
+    if (!(c.rsq0[s] == q && c.vj[s] == v && c.types[s] == t)) {
+      c.rsq0[s] = q;
       c.vj[s] = v;
       c.types[s] = t;
-      c.coef[s] = coef_fn(jtype, xi0, v);
+      c.xi0[s] = std::sqrt(q);
+      c.coef[s] = coef_fn(jtype, c.xi0[s], v);
+      c.note(v, t);
     }
+    xi0 = c.xi0[s];
     return c.coef[s];
+  }
+  double coef_of(int j) const
+  {
+    double xi0;
+    return lookup(type[j], rsq0_of(j), vfrac[j], xi0);
   }
 };
 
@@ -128,12 +168,13 @@ inline void lane_sum(const double *ax, const double *ay, const double *az, doubl
 }
 
 /* lanes of the force density on atom i (positions xx, 3 per atom) from its n bonds to the
-   partners bj[k], in the portable loop: reference length xi0_of(k), coefficient
-   coef_of(k, xi0) and the partner's critical stretch s0_of(j) come from callables (cached
-   or recomputed, one s0 or per type). With FRACTURE it returns true if a bond is past s0 or
-   within margin of it, and the lanes are then incomplete. */
-template <int FRACTURE, int EV, class Xi0, class Coef, class S0>
-inline bool row_force_portable(const double *xx, int i, const int *bj, int n, Xi0 xi0_of,
+   partners bj[k] (local indices, or offsets from i: bbpd_partner_index.h), in the portable
+   loop: reference length xi0_of(k), coefficient coef_of(k, xi0) and the partner's critical
+   stretch s0_of(j) come from callables (cached or recomputed, one s0 or per type). With
+   FRACTURE it returns true if a bond is past s0 or within margin of it, and the lanes are then
+   incomplete. */
+template <int FRACTURE, int EV, class Idx, class Xi0, class Coef, class S0>
+inline bool row_force_portable(const double *xx, int i, const Idx *bj, int n, Xi0 xi0_of,
                                Coef coef_of, S0 s0_of, double margin, double *ax, double *ay,
                                double *az, RowTally *tally)
 {
@@ -141,7 +182,7 @@ inline bool row_force_portable(const double *xx, int i, const int *bj, int n, Xi
   int broken = 0;
   for (int k = 0; k < n; k++) {
     const int l = k % LANES;
-    const int j = bj[k];
+    const int j = partner_index(bj, i, k);
     const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
     const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
     const double xi0 = xi0_of(k);
@@ -183,8 +224,8 @@ inline void load_values(const ClassValues &v, __mmask8 m, int k, __m256i, __m512
   coef = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c, v.coef, 8);
 }
 
-template <class CoefFn>
-inline void load_values(const RecomputedValues<CoefFn> &v, __mmask8 m, int, __m256i j,
+template <class CoefFn, bool UNIFORM>
+inline void load_values(const RecomputedValues<CoefFn, UNIFORM> &v, __mmask8 m, int, __m256i j,
                         __m512d &xi0, __m512d &coef)
 {
   const __m256i j3 = _mm256_mullo_epi32(j, _mm256_set1_epi32(3));
@@ -193,43 +234,59 @@ inline void load_values(const RecomputedValues<CoefFn> &v, __mmask8 m, int, __m2
   const __m512d dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(x, m, j3, v.x0, 8), x);
   const __m512d dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(y, m, j3, v.x0 + 1, 8), y);
   const __m512d dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(z, m, j3, v.x0 + 2, 8), z);
-  xi0 = _mm512_sqrt_pd(
-      _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz)));
-  const __m512d vj = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, j, v.vfrac, 8);
-  const __m256i tj = _mm256_add_epi32(
-      _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), m, j, v.type, 4),
-      _mm256_set1_epi32(v.type[v.i] * CoefCache::TYPE_STRIDE));
+  const __m512d rsq0 =
+      _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
+  const __m512d vj = UNIFORM ? _mm512_set1_pd(v.uniform_v)
+                             : _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, j, v.vfrac, 8);
+  const __m256i jtype = UNIFORM ? _mm256_set1_epi32(v.uniform_type)
+                                : _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), m, j, v.type, 4);
+  const __m256i tj = _mm256_add_epi32(jtype, _mm256_set1_epi32(v.type[v.i] * CoefCache::TYPE_STRIDE));
   // the cache slots, as CoefCache::slot
-  const __m512i xb = _mm512_castpd_si512(xi0), vb = _mm512_castpd_si512(vj);
-  const __m512i h = _mm512_xor_si512(_mm512_xor_si512(xb, _mm512_srli_epi64(vb, 7)),
+  const __m512i qb = _mm512_castpd_si512(rsq0), vb = _mm512_castpd_si512(vj);
+  const __m512i h = _mm512_xor_si512(_mm512_xor_si512(qb, _mm512_srli_epi64(vb, 7)),
                                      _mm512_slli_epi64(_mm512_cvtepu32_epi64(tj), 45));
-  const __m512i slot = _mm512_and_si512(
-      _mm512_xor_si512(_mm512_xor_si512(h, _mm512_srli_epi64(h, 17)), _mm512_srli_epi64(h, 31)),
-      _mm512_set1_epi64(CoefCache::SIZE - 1));
+  __m512i fold = h;
+  for (int b = CoefCache::SLOT_BITS; b < 64; b += CoefCache::SLOT_BITS)
+    fold = _mm512_xor_si512(fold, _mm512_srli_epi64(h, b));
+  const __m512i slot = _mm512_and_si512(fold, _mm512_set1_epi64(CoefCache::SIZE - 1));
   CoefCache &c = *v.cache;
-  const __mmask8 hit =
-      _mm512_mask_cmp_pd_mask(m, xi0, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.xi0.data(), 8), _CMP_EQ_OQ) &
-      _mm512_mask_cmp_pd_mask(m, vj, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.vj.data(), 8), _CMP_EQ_OQ) &
-      _mm256_mask_cmpeq_epi32_mask(m, tj, _mm512_mask_i64gather_epi32(_mm256_setzero_si256(), m, slot, c.types.data(), 4));
+  __mmask8 hit =
+      _mm512_mask_cmp_pd_mask(m, rsq0, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.rsq0.data(), 8), _CMP_EQ_OQ);
+  if (!UNIFORM)
+    hit &= _mm512_mask_cmp_pd_mask(m, vj, _mm512_mask_i64gather_pd(_mm512_setzero_pd(), m, slot, c.vj.data(), 8), _CMP_EQ_OQ) &
+        _mm256_mask_cmpeq_epi32_mask(m, tj, _mm512_mask_i64gather_epi32(_mm256_setzero_si256(), m, slot, c.types.data(), 4));
+  xi0 = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), hit, slot, c.xi0.data(), 8);
   coef = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), hit, slot, c.coef.data(), 8);
   if (hit != m) {
-    // computed lane by lane (two lanes of this vector may share a slot)
-    alignas(64) double lx[LANES], lv[LANES], lc[LANES];
+    // looked up lane by lane (two lanes of this vector may share a slot)
+    alignas(64) double lq[LANES], lv[LANES], lx[LANES], lc[LANES];
     alignas(32) int lt[LANES];
-    _mm512_store_pd(lx, xi0);
+    _mm512_store_pd(lq, rsq0);
     _mm512_store_pd(lv, vj);
-    _mm256_store_si256(reinterpret_cast<__m256i *>(lt), _mm256_mmask_i32gather_epi32(_mm256_setzero_si256(), m, j, v.type, 4));
+    _mm512_store_pd(lx, xi0);
+    _mm256_store_si256(reinterpret_cast<__m256i *>(lt), jtype);
     for (int l = 0; l < LANES; l++)
-      lc[l] = ((m & ~hit) & (1u << l)) ? v.coef_of(lt[l], lx[l], lv[l]) : 0.0;
+      lc[l] = ((m & ~hit) & (1u << l)) ? v.lookup(lt[l], lq[l], lv[l], lx[l]) : 0.0;
+    xi0 = _mm512_mask_blend_pd(m & ~hit, xi0, _mm512_load_pd(lx));
     coef = _mm512_mask_blend_pd(m & ~hit, coef, _mm512_load_pd(lc));
   }
+}
+
+// partner indices of bonds k..k+7 (lanes off in m: zero, or i)
+inline __m256i load_partners(const int *bj, __mmask8 m, int, int k)
+{
+  return _mm256_maskz_loadu_epi32(m, bj + k);
+}
+inline __m256i load_partners(const PartnerOffset *bj, __mmask8 m, int i, int k)
+{
+  return _mm256_add_epi32(_mm256_cvtepi16_epi32(_mm_maskz_loadu_epi16(m, bj + k)), _mm256_set1_epi32(i));
 }
 
 /* lanes of the force density on atom i from n bonds (partner bj, reference length and
    coefficient from vals); with FRACTURE returns true if a bond is past s0 or within
    margin of it (elong + margin > s0 xi0; margin is 0 except in periodic boxes) */
-template <int FRACTURE, int EV, class Values>
-inline bool row_force_avx512(const double *xx, int i, const int *bj, const Values &vals, int n,
+template <int FRACTURE, int EV, class Values, class Idx>
+inline bool row_force_avx512(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                              double s0, double margin, double *ax, double *ay, double *az,
                              RowTally *tally)
 {
@@ -244,7 +301,7 @@ inline bool row_force_avx512(const double *xx, int i, const int *bj, const Value
   __mmask8 broken = 0;
   for (int k = 0; k < n; k += LANES) {
     const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
-    const __m256i j1 = _mm256_maskz_loadu_epi32(m, bj + k);
+    const __m256i j1 = load_partners(bj, m, i, k);
     const __m256i j3 = _mm256_mullo_epi32(j1, three);
     const __m512d dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(xi, m, j3, xx, 8), xi);
     const __m512d dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(yi, m, j3, xx + 1, 8), yi);
@@ -300,9 +357,21 @@ inline void load_values(const ClassValues &v, __m256d m, int k, __m256d &xi0, __
   coef = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), v.coef, c, m, 8);
 }
 
+// partner indices of bonds k..k+3 (m32: the lanes in the row; offsets read 4 entries, which
+// the storage pads past a row's end)
+inline __m128i load_partners(const int *bj, __m128i m32, int, int k)
+{
+  return _mm_maskload_epi32(bj + k, m32);
+}
+inline __m128i load_partners(const PartnerOffset *bj, __m128i m32, int i, int k)
+{
+  const __m128i d = _mm_cvtepi16_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i *>(bj + k)));
+  return _mm_and_si128(_mm_add_epi32(d, _mm_set1_epi32(i)), m32);
+}
+
 /* the same as row_force_avx512 with two 4-wide halves: lanes 0-3 and 4-7 */
-template <int FRACTURE, int EV, class Values>
-inline bool row_force_avx2(const double *xx, int i, const int *bj, const Values &vals, int n,
+template <int FRACTURE, int EV, class Values, class Idx>
+inline bool row_force_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                            double s0, double margin, double *ax, double *ay, double *az,
                            RowTally *tally)
 {
@@ -320,7 +389,7 @@ inline bool row_force_avx2(const double *xx, int i, const int *bj, const Values 
     const int h = (k / 4) & 1;    // which half of the 8 lanes
     const __m128i m32 = _mm_cmpgt_epi32(_mm_set1_epi32(n - k), iota);
     const __m256d m = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(m32));
-    const __m128i j3 = _mm_mullo_epi32(_mm_maskload_epi32(bj + k, m32), three);
+    const __m128i j3 = _mm_mullo_epi32(load_partners(bj, m32, i, k), three);
     const __m256d dx = _mm256_sub_pd(_mm256_mask_i32gather_pd(xi, xx, j3, m, 8), xi);
     const __m256d dy = _mm256_sub_pd(_mm256_mask_i32gather_pd(yi, xx + 1, j3, m, 8), yi);
     const __m256d dz = _mm256_sub_pd(_mm256_mask_i32gather_pd(zi, xx + 2, j3, m, 8), zi);

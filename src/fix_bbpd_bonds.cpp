@@ -42,11 +42,12 @@ static constexpr int PAGE_PER_ONE = 10;
 
 FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxpartner(1), npartner(nullptr), partner(nullptr), vinit(nullptr),
-    bond_start(nullptr), nbond(nullptr), bj(nullptr), bclass(nullptr), bxi0(nullptr),
+    bond_start(nullptr), nbond(nullptr), bdelta(nullptr), bj(nullptr), bclass(nullptr),
+    bxi0(nullptr),
     bcoef(nullptr),
-    vintact(nullptr), first(1),
-    nlocal_cache(0), nbond_cache(0), list(nullptr), have_rules(false), extent0(0.0), need_raw(0),
-    nmax_raw(0), xraw(nullptr), generation(0), xi0_min(0.0)
+    vintact(nullptr), uniform_type(0), uniform_vfrac(0.0), first(1),
+    nlocal_cache(0), nbond_cache(0), list(nullptr), have_rules(false), offsets_allowed(false),
+    extent0(0.0), need_raw(0), nmax_raw(0), xraw(nullptr), generation(0), xi0_min(0.0)
 {
   if (narg != 3) error->all(FLERR, "Fix bbpd/bonds takes no arguments (it is created by the pair style)");
   restart_global = 1;
@@ -75,6 +76,7 @@ FixBBPDBonds::~FixBBPDBonds()
   memory->destroy(vinit);
   memory->destroy(bond_start);
   memory->destroy(nbond);
+  memory->destroy(bdelta);
   memory->destroy(bj);
   memory->destroy(bclass);
   memory->destroy(bxi0);
@@ -360,9 +362,18 @@ void FixBBPDBonds::refresh_cache()
   if (nbond_cache < n) {
     // headroom: migration changes the count a little
     nbond_cache = static_cast<int>(MIN((bigint) n + n / 8, (bigint) MAXSMALLINT));
-    memory->destroy(bj);
-    memory->create(bj, nbond_cache, "bbpd/bonds:bj");
+    free_partners();
     free_bond_values();
+  }
+  // offsets unless the pair style's loops want indices; a partner out of reach of an offset
+  // turns the rank to indices (widen_partners), tried again at the next refresh
+  if (offsets_allowed && !bdelta) {
+    free_partners();
+    memory->create(bdelta, nbond_cache + LANES_PAD, "bbpd/bonds:bdelta");
+    for (int m = nbond_cache; m < nbond_cache + LANES_PAD; m++) bdelta[m] = 0;
+  } else if (!offsets_allowed && !bj) {
+    free_partners();
+    memory->create(bj, nbond_cache, "bbpd/bonds:bj");
   }
   if (compact) free_bond_values();
   else if (!bclass && !bxi0) {
@@ -379,6 +390,16 @@ void FixBBPDBonds::refresh_cache()
   tagint *tag = atom->tag;
   const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
   xi0_min = std::numeric_limits<double>::infinity();
+
+  uniform_type = 0;
+  const int nall = atom->nlocal + atom->nghost;
+  if (compact && nall > 0) {
+    uniform_type = type[0];
+    uniform_vfrac = vfrac[0];
+    for (int j = 1; j < nall && uniform_type; j++)
+      if (type[j] != uniform_type || std::memcmp(&vfrac[j], &uniform_vfrac, sizeof(double)) != 0)
+        uniform_type = 0;
+  }
 
   for (int i = 0; i < nlocal; i++) {
     int m = bond_start[i];
@@ -399,7 +420,11 @@ void FixBBPDBonds::refresh_cache()
       if (xi <= 0.0)
         error->one(FLERR, "Atoms {} and {} share a reference position: bonds need distinct atoms",
                    tag[i], t);
-      bj[m] = j;
+      if (bdelta && !BBPD::fits_offset(i, j)) widen_partners(i, m);
+      if (bdelta)
+        bdelta[m] = static_cast<BBPD::PartnerOffset>(j - i);
+      else
+        bj[m] = j;
       xi0_min = std::min(xi0_min, xi);
       if (!compact) store_bond_values(m, xi, law.coefficient(type[i], type[j], xi, vfrac[j]));
       m++;
@@ -407,6 +432,26 @@ void FixBBPDBonds::refresh_cache()
     nbond[i] = m - bond_start[i];
     vintact[i] = intact_volume(i);
   }
+}
+
+void FixBBPDBonds::free_partners()
+{
+  memory->destroy(bdelta);
+  memory->destroy(bj);
+  bdelta = nullptr;
+  bj = nullptr;
+}
+
+/* partner indices instead of offsets from cache entry m of atom i on (the entries before m
+   are converted) */
+void FixBBPDBonds::widen_partners(int i, int m)
+{
+  memory->create(bj, nbond_cache, "bbpd/bonds:bj");
+  for (int a = 0; a < i; a++)
+    for (int e = bond_start[a]; e < bond_start[a] + nbond[a]; e++) bj[e] = a + bdelta[e];
+  for (int e = bond_start[i]; e < m; e++) bj[e] = i + bdelta[e];
+  memory->destroy(bdelta);
+  bdelta = nullptr;
 }
 
 void FixBBPDBonds::free_bond_values()
@@ -443,14 +488,17 @@ double FixBBPDBonds::intact_volume(int i) const
 {
   double v = 0.0;
   for (int k = bond_start[i]; k < bond_start[i] + nbond[i]; k++)
-    v += law.partner_volume(atom->type[i], atom->type[bj[k]], xi0_of(i, k), atom->vfrac[bj[k]]);
+  {
+    const int j = partner_of(i, k);
+    v += law.partner_volume(atom->type[i], atom->type[j], xi0_of(i, k), atom->vfrac[j]);
+  }
   return v;
 }
 
 /* break bond k of local atom i: flag its partner tag, then close the gap in the row */
 void FixBBPDBonds::remove_bond(int i, int k)
 {
-  const tagint t = atom->tag[bj[k]];
+  const tagint t = atom->tag[partner_of(i, k)];
   tagint *p = partner[i];
   // partners are in reference-offset order; bonds break rarely, so a scan is enough
   for (int m = 0; m < npartner[i]; m++)
@@ -459,7 +507,10 @@ void FixBBPDBonds::remove_bond(int i, int k)
       break;
     }
   const int last = bond_start[i] + nbond[i] - 1;
-  for (int m = k; m < last; m++) bj[m] = bj[m + 1];
+  if (bdelta)
+    for (int m = k; m < last; m++) bdelta[m] = bdelta[m + 1];
+  else
+    for (int m = k; m < last; m++) bj[m] = bj[m + 1];
   if (bclass)
     for (int m = k; m < last; m++) bclass[m] = bclass[m + 1];
   if (bxi0)
@@ -478,7 +529,7 @@ double FixBBPDBonds::xi0_of(int i, int k) const
   if (bclass) return classes.xi0[bclass[k]];
   if (bxi0) return bxi0[k];
   double **x0 = atom->x0;
-  const int j = bj[k];
+  const int j = partner_of(i, k);
   double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
   return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
@@ -487,16 +538,17 @@ double FixBBPDBonds::coef_of(int i, int k, double xi0) const
 {
   if (bclass) return classes.coef[bclass[k]];
   if (bcoef) return bcoef[k];
-  const int j = bj[k];
+  const int j = partner_of(i, k);
   return law.coefficient(atom->type[i], atom->type[j], xi0, atom->vfrac[j]);
 }
 
 double FixBBPDBonds::bytes_per_bond() const
 {
-  // per bond end: partner tag (persistent) + bj [+ bclass | bxi0 + bcoef] (cache); two ends
-  // per bond (the class table itself is a few kB per rank, not counted)
+  // per bond end: partner tag (persistent) + bdelta | bj [+ bclass | bxi0 + bcoef] (cache); two
+  // ends per bond (the class table itself is a few kB per rank, not counted)
   const double cached = bclass ? sizeof(BBPD::BondClass) : bxi0 ? 2.0 * sizeof(double) : 0.0;
-  return 2.0 * (sizeof(tagint) + sizeof(int) + cached);
+  const double index = bdelta ? sizeof(BBPD::PartnerOffset) : sizeof(int);
+  return 2.0 * (sizeof(tagint) + index + cached);
 }
 
 bigint FixBBPDBonds::count_broken() const
@@ -517,7 +569,9 @@ double FixBBPDBonds::memory_usage()
   double bytes = nmax * (sizeof(int) + sizeof(double));
   bytes += nmax * maxpartner * sizeof(tagint);
   bytes += nlocal_cache * (2.0 * sizeof(int) + sizeof(double));
-  bytes += (double) nbond_cache * (sizeof(int) + (bxi0 ? 2.0 * sizeof(double) : 0.0));
+  bytes += (double) nbond_cache * (bxi0 ? 2.0 * sizeof(double) : 0.0);
+  if (bdelta) bytes += (nbond_cache + LANES_PAD) * sizeof(BBPD::PartnerOffset);
+  if (bj) bytes += (double) nbond_cache * sizeof(int);
   if (bclass)
     bytes += (nbond_cache + LANES_PAD) * sizeof(BBPD::BondClass) +
         2.0 * sizeof(double) * classes.size();

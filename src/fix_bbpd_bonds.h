@@ -13,19 +13,22 @@
    Cached per intact bond, rebuilt only when LAMMPS reneighbors (post_neighbor),
    one flat structure-of-arrays row per local atom, partners in that order:
      bond_start[i], nbond[i]  first entry and number of intact bonds of atom i
-     bj[k]                   local/ghost index of the partner
+     bdelta[k]               partner's local/ghost index minus i, 2 bytes, where every partner
+                             of the rank is within that reach (bbpd_partner_index.h); else
+     bj[k]                   local/ghost index of the partner (bdelta null); partner_of(i, k)
+                             reads either
      bclass[k]               class of the bond in the rank's table 'classes' of distinct
                              (reference length, coefficient) pairs (bbpd_bond_table.h):
        classes.xi0[c]        reference bond length |x0_j - x0_i|
        classes.coef[c]       c(xi0) C_v V_j / xi0: force density per unit elongation
      vintact[i]              sum of C_v V_j over the intact bonds (damage, eq. 17)
    A bond that breaks is removed from its row at once (the row shifts), so the
-   force loop has no per-bond branch. 20 bytes per bond. Should a rank have more
-   distinct pairs than a class can address, the pairs are kept per bond instead
-   (bxi0[k], bcoef[k]; bclass null), 48 bytes per bond. With the COMPACT storage
-   policy (bbpd_bond_storage.h, 'bond/storage compact' of the pair style) only bj
-   is cached; reference length and coefficient are recomputed from x0 when needed
-   (same operations, so the same bits), for 16 bytes per bond.
+   force loop has no per-bond branch. 16 bytes per bond with offsets, 20 with indices.
+   Should a rank have more distinct pairs than a class can address, the pairs are kept
+   per bond instead (bxi0[k], bcoef[k]; bclass null), 44 or 48 bytes per bond. With the
+   COMPACT storage policy (bbpd_bond_storage.h, 'bond/storage compact' of the pair
+   style) only the partner is cached; reference length and coefficient are recomputed
+   from x0 when needed (same operations, so the same bits), for 12 or 16 bytes per bond.
 
    The fix owns storage only. What a bond is and what it costs come from the
    BBPD::BondLaw (bbpd_bond_law.h, no LAMMPS dependency) the pair style passes
@@ -40,6 +43,7 @@
 #include "bbpd_bond_law.h"
 #include "bbpd_bond_storage.h"
 #include "bbpd_bond_table.h"
+#include "bbpd_partner_index.h"
 #include "fix.h"
 
 #include <vector>
@@ -76,12 +80,14 @@ class FixBBPDBonds : public Fix {
   int size_restart(int) override;
   int maxsize_restart() override;
 
-  // the pair style, at every init before the fix's own: the bond law, the storage policy and
-  // the run limits (again whenever a limit changes)
-  void set_rules(const BBPD::BondLaw &l, BBPD::BondStorage s)
+  // the pair style, at every init before the fix's own: the bond law, the storage policy,
+  // whether its loops read partner offsets (bdelta) and the run limits (again whenever a limit
+  // changes)
+  void set_rules(const BBPD::BondLaw &l, BBPD::BondStorage s, bool offsets)
   {
     law = l;
     policy = s;
+    offsets_allowed = offsets;
     have_rules = true;
   }
   void set_limits(const BBPD::RunLimits &r) { limits = r; }
@@ -93,11 +99,18 @@ class FixBBPDBonds : public Fix {
   int *npartner;
   tagint **partner;
   double *vinit;
-  int *bond_start, *nbond, *bj;
+  int *bond_start, *nbond;
+  BBPD::PartnerOffset *bdelta;    // null unless the rank stores offsets
+  int *bj;                        // null unless the rank stores indices
+  int partner_of(int i, int k) const { return bdelta ? i + bdelta[k] : bj[k]; }
   BBPD::BondClass *bclass;    // null unless the table holds the pairs
   BBPD::BondClassTable classes;
   double *bxi0, *bcoef;        // null unless the pairs are kept per bond
   double *vintact;
+  // compact storage: the type and volume of every local and ghost atom if they have one
+  // (uniform_type 0 if not)
+  int uniform_type;
+  double uniform_vfrac;
 
   void remove_bond(int i, int k);
   double xi0_of(int i, int k) const;                // reference length of bond k of atom i
@@ -120,6 +133,7 @@ class FixBBPDBonds : public Fix {
   BBPD::BondLaw law;
   bool have_rules;
   BBPD::BondStorage policy;
+  bool offsets_allowed;
   BBPD::RunLimits limits;
   double extent0;    // size of the body when the families were built
   double local_extent();
@@ -134,9 +148,11 @@ class FixBBPDBonds : public Fix {
   void size_family_neighbor_list();
   void set_maxexchange() { maxexchange = maxpartner + 2; }
 
-  // entries past the last bond of bclass: a whole SIMD vector of classes may be read at a row end
+  // entries past the last bond of bclass and bdelta: a whole SIMD vector may be read at a row end
   static constexpr int LANES_PAD = 8;
   void free_bond_values();
+  void free_partners();
+  void widen_partners(int i, int m);
   void store_bond_values(int m, double xi, double coef);
 
   void build_families();

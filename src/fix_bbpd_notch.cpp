@@ -157,7 +157,7 @@ void FixBBPDNotch::setup_pre_force(int)
   for (int i = 0; i < atom->nlocal; i++) {
     int k = bonds->bond_start[i];
     while (k < bonds->bond_start[i] + bonds->nbond[i]) {
-      const int j = bonds->bj[k];
+      const int j = bonds->partner_of(i, k);
       if (((mask[i] & groupbit) || (mask[j] & groupbit)) && bond_cut(i, j)) {
         bonds->remove_bond(i, k);
         n++;

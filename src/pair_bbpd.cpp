@@ -170,8 +170,8 @@ void PairBBPD::settings(int narg, char **arg)
     if (key == "bond/storage") {
       const std::string v = arg[iarg + 1];
       if (v != "fast" && v != "compact")
-        error->all(FLERR, "Pair style {}: bond/storage must be 'fast' (20 bytes per bond on a "
-                   "grid, 48 on irregular ones) or 'compact' (16 bytes per bond, slower)", style);
+        error->all(FLERR, "Pair style {}: bond/storage must be 'fast' (16 bytes per bond on a "
+                   "grid, 44 on irregular ones) or 'compact' (12 bytes per bond, slower)", style);
       storage = v == "compact" ? BBPD::BondStorage::COMPACT : BBPD::BondStorage::FAST;
       iarg += 2;
       continue;
@@ -377,7 +377,8 @@ void PairBBPD::init_style()
   law.lattice_constant = lattice_constant;
   law.micromodulus = micromodulus;
   law.horizon = horizon;
-  bonds->set_rules(law, storage);
+  // the Silling-Askari loop (pair_bbpd_pmb.cpp) reads partner indices, the others offsets too
+  bonds->set_rules(law, storage, !alpha_any);
 }
 
 double PairBBPD::init_one(int i, int j)
@@ -522,6 +523,7 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
 #endif
   {
     double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    BBPD::CoefCache *cache = thread_coef_cache();
 #if defined(_OPENMP)
     // chunks of 512 atoms dealt out in turn: rows differ in length near surfaces and cracks
     // (plate, 2 threads: 1.92x speed-up; one half per thread: 1.65x)
@@ -531,20 +533,20 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
       const double *s0row = MULTI ? critical_stretch[type[i]] : nullptr;
       double fi[3];
       if (!FRACTURE) {
-        row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc);
-      } else if (row_force<EVFLAG, 1, MULTI>(i, fi, s0row, acc)) {
+        row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc, cache);
+      } else if (row_force<EVFLAG, 1, MULTI>(i, fi, s0row, acc, cache)) {
         // a bond of the row is (near) past its critical stretch: remove such bonds
         // (irreversibly, in row order), then sum the row again
         int k = bonds->bond_start[i];
         while (k < bonds->bond_start[i] + bonds->nbond[i]) {
-          const int j = bonds->bj[k];
+          const int j = bonds->partner_of(i, k);
           const double s0 = MULTI ? s0row[type[j]] : s0_single;
           if (past_critical(i, j, bonds->xi0_of(i, k), s0))
             bonds->remove_bond(i, k);
           else
             k++;
         }
-        row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc);
+        row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc, cache);
       }
       add_row_force(i, fi, bad);
     }
@@ -662,6 +664,9 @@ void PairBBPD::report()
   // distinct (reference length, coefficient) pairs the bonds point into, largest over the ranks
   int nclass = fb->bclass ? (int) fb->classes.size() : 0, gclass = 0;
   MPI_Allreduce(&nclass, &gclass, 1, MPI_INT, MPI_MAX, world);
+  // ranks choose partner offsets or indices on their own: the largest storage over the ranks
+  double bytes = fb->bytes_per_bond(), gbytes = 0.0;
+  MPI_Allreduce(&bytes, &gbytes, 1, MPI_DOUBLE, MPI_MAX, world);
 
   if (comm->me == 0) {
     std::string mesg = fmt::format("BBPD pair style bbpd/{} model {}{}:\n", kernel.name,
@@ -696,7 +701,7 @@ void PairBBPD::report()
     mesg += contact ? fmt::format("  contact: on, distance {:.6g}\n", contact_factor * spacing)
                     : std::string("  contact: off (no neighbour list)\n");
     mesg += fmt::format("  bond storage: {:.1f} bytes per bond ({:.1f} per bond end){}\n",
-                        fb->bytes_per_bond(), 0.5 * fb->bytes_per_bond(),
+                        gbytes, 0.5 * gbytes,
                         gclass ? fmt::format("; table of {} distinct (reference length, "
                                              "coefficient) pairs", gclass) : std::string());
     mesg += fmt::format("  stable timestep: eq. 25 {:.6g}, velocity-Verlet limit {:.6g}; "

@@ -22,7 +22,8 @@
 #include <vector>
 
 namespace BBPD {
-struct RowTally;    // bbpd_row.h
+struct CoefCache;    // bbpd_row.h
+struct RowTally;     // bbpd_row.h
 }
 
 namespace LAMMPS_NS {
@@ -85,8 +86,13 @@ class PairBBPD : public Pair {
   bool past_critical(int i, int j, double xi0, double s0) const;
   double breaking_length(int i, int j) const;
   template <int EVFLAG, int FRACTURE, int MULTI> void eval();
+  // the row force of atom i; cache: the calling thread's coefficient cache (compact storage)
   template <int EVFLAG, int FRACTURE, int MULTI>
-  bool row_force(int i, double *fi, const double *s0row, double *acc);
+  bool row_force(int i, double *fi, const double *s0row, double *acc, BBPD::CoefCache *cache);
+  template <int EVFLAG, int FRACTURE, int MULTI, class Idx>
+  bool row_force(int i, const Idx *bj, double *fi, const double *s0row, double *acc,
+                 BBPD::CoefCache *cache);
+  static BBPD::CoefCache *thread_coef_cache();
   void coeff_from_file(const char *file, const char *material, double &E, double &Gc);
 
   // peri/pmb's rules ('compat pmb') and the Silling-Askari critical stretch (pair_bbpd_pmb.cpp)

@@ -178,6 +178,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
 #endif
   {
     double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    BBPD::CoefCache *cache = thread_coef_cache();
     // a row's reference lengths and coefficients, looked up from their classes (the fused
     // AVX-512 kernel gathers them itself)
     std::vector<double> class_xi0, class_coef;
@@ -191,7 +192,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
     for (int i = 0; i < nlocal; i++) {
       const int itype = type[i];
       const int beg = bonds->bond_start[i];
-      const int *bj = bonds->bj;
+      const int *bj = bonds->bj;    // indices, never offsets, in this loop (init_style)
       // reference lengths and coefficients of the row (null with bond/storage compact)
       const double *row_xi0 = bxi0 ? bxi0 + beg : nullptr;
       const double *row_coef = bxi0 ? bonds->bcoef + beg : nullptr;
@@ -291,7 +292,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         if (pmb)
           for (int m = 0; m < 3; m++) fbroken[i][m] = fb[m];
       }
-      if (!done) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc);
+      if (!done) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc, cache);
       if (pmb)
         for (int m = 0; m < 3; m++) fi[m] += fbroken[i][m];
       add_row_force(i, fi, bad);
@@ -314,7 +315,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
 template <int EVFLAG> void PairBBPD::broken_bond_force(int i, int k, double *fb, double *acc)
 {
   const double *xx = atom->x[0];
-  const int j = bonds->bj[k];
+  const int j = bonds->partner_of(i, k);
   const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
                dz = xx[3 * j + 2] - xx[3 * i + 2];
   const double r = std::sqrt(dx * dx + dy * dy + dz * dz);

@@ -36,7 +36,7 @@ void PairBBPD::nonfinite_error(int i)
       error->one(FLERR, "Atom {} has a non-finite position at step {} (the run became unstable; {})",
                  tag[i], update->ntimestep, cause);
   for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + bonds->nbond[i]; k++) {
-    const int j = bonds->bj[k];
+    const int j = bonds->partner_of(i, k);
     const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
                  dz = xx[3 * j + 2] - xx[3 * i + 2];
     const double rsq = dx * dx + dy * dy + dz * dz;
@@ -57,11 +57,30 @@ void PairBBPD::nonfinite_error(int i)
    tallied. With FRACTURE it returns true, and tallies nothing, if a bond of the
    row is past its critical stretch. */
 template <int EVFLAG, int FRACTURE, int MULTI>
-bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
+bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc,
+                         BBPD::CoefCache *cache)
+{
+  const int beg = bonds->bond_start[i];
+  // partners as offsets from i or as indices (bbpd_partner_index.h): the same atoms
+  return bonds->bdelta
+      ? row_force<EVFLAG, FRACTURE, MULTI>(i, bonds->bdelta + beg, fi, s0row, acc, cache)
+      : row_force<EVFLAG, FRACTURE, MULTI>(i, bonds->bj + beg, fi, s0row, acc, cache);
+}
+
+/* compact storage: a cache per thread of the coefficients (bbpd_row.h), taken once per thread
+   and force evaluation (a thread-local variable of a plugin costs a call at every access) */
+BBPD::CoefCache *PairBBPD::thread_coef_cache()
+{
+  static thread_local BBPD::CoefCache cache;
+  return &cache;
+}
+
+template <int EVFLAG, int FRACTURE, int MULTI, class Idx>
+bool PairBBPD::row_force(int i, const Idx *bj, double *fi, const double *s0row, double *acc,
+                         BBPD::CoefCache *cache_ptr)
 {
   const double *xx = atom->x[0];
   const int beg = bonds->bond_start[i], n = bonds->nbond[i];
-  const int *bj = bonds->bj + beg;
   // reference lengths and coefficients: by class (the default), per bond (a rank with too many
   // distinct pairs for the class table), or recomputed (bond/storage compact)
   const BBPD::ClassValues by_class = {bonds->bclass ? bonds->bclass + beg : nullptr,
@@ -71,15 +90,19 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
   const bool classed = by_class.cls != nullptr;
   const bool compact = !classed && per_bond.xi0 == nullptr;
   double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
-  // compact: a cache per thread of the coefficients (bbpd_row.h), from the bond law
-  static thread_local BBPD::CoefCache cache;
+  // compact: the thread's cache of the coefficients, computed from the bond law
+  BBPD::CoefCache &cache = *cache_ptr;
   const int *type = atom->type;
   auto coef_fn = [this, type, i](int jtype, double xi0, double vj) {
     return law.coefficient(type[i], jtype, xi0, vj);
   };
-  const BBPD::RecomputedValues<decltype(coef_fn)> recomputed = {
-      atom->x0 ? atom->x0[0] : nullptr, i, atom->vfrac, type, &cache, coef_fn};
   if (compact) cache.start(memo_epoch);
+  const int t_uniform = bonds->uniform_type * BBPD::CoefCache::TYPE_STRIDE + bonds->uniform_type;
+  const bool uniform = compact && bonds->uniform_type > 0 &&
+      cache.holds_only(bonds->uniform_vfrac, t_uniform);
+  const BBPD::RecomputedValues<decltype(coef_fn)> recomputed = {
+      atom->x0 ? atom->x0[0] : nullptr, i, atom->vfrac, type, &cache, coef_fn,
+      bonds->uniform_type, bonds->uniform_vfrac};
 
 #ifdef BBPD_SIMD
   if (!MULTI && !compact) {
@@ -98,8 +121,14 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
 #ifdef BBPD_AVX512
   if (!MULTI && compact) {
     RowTally tally;
-    const bool broken = BBPD::row_force_avx512<FRACTURE, EVFLAG>(
-        xx, i, bj, recomputed, n, s0_single, break_margin, ax, ay, az, &tally);
+    const BBPD::RecomputedValues<decltype(coef_fn), true> recomputed_uniform = {
+        recomputed.x0, i, atom->vfrac, type, &cache, coef_fn, bonds->uniform_type,
+        bonds->uniform_vfrac};
+    const bool broken = uniform
+        ? BBPD::row_force_avx512<FRACTURE, EVFLAG>(xx, i, bj, recomputed_uniform, n, s0_single,
+                                                   break_margin, ax, ay, az, &tally)
+        : BBPD::row_force_avx512<FRACTURE, EVFLAG>(xx, i, bj, recomputed, n, s0_single,
+                                                   break_margin, ax, ay, az, &tally);
     if (broken) return true;
     lane_sum(ax, ay, az, fi);
     if (EVFLAG) tally_lanes(i, tally, acc);
@@ -109,11 +138,13 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc)
 
   RowTally lanes = {};    // energy and virial in the same lanes as the SIMD kernels
   auto xi0_of = [&](int k) {
-    return classed ? by_class.xi0_of(k) : compact ? recomputed.xi0_of(bj[k]) : per_bond.xi0_of(k);
+    return classed ? by_class.xi0_of(k)
+        : compact  ? recomputed.xi0_of(BBPD::partner_index(bj, i, k))
+                   : per_bond.xi0_of(k);
   };
   auto coef_of = [&](int k, double xi0) {
     return classed ? by_class.coef_of(k)
-        : compact  ? recomputed.coef_of(type[bj[k]], xi0, atom->vfrac[bj[k]])
+        : compact  ? recomputed.coef_of(BBPD::partner_index(bj, i, k))
                    : per_bond.coef_of(k);
   };
   auto s0_of = [&](int j) { return MULTI ? s0row[type[j]] : s0_single; };
@@ -142,11 +173,19 @@ void PairBBPD::tally_lanes(int i, const RowTally &lanes, double *acc)
 }
 
 // the plain loop (eval) and the Silling-Askari loop (eval_alpha) sum rows with these
-template bool PairBBPD::row_force<0, 0, 0>(int, double *, const double *, double *);
-template bool PairBBPD::row_force<1, 0, 0>(int, double *, const double *, double *);
-template bool PairBBPD::row_force<0, 1, 0>(int, double *, const double *, double *);
-template bool PairBBPD::row_force<1, 1, 0>(int, double *, const double *, double *);
-template bool PairBBPD::row_force<0, 0, 1>(int, double *, const double *, double *);
-template bool PairBBPD::row_force<1, 0, 1>(int, double *, const double *, double *);
-template bool PairBBPD::row_force<0, 1, 1>(int, double *, const double *, double *);
-template bool PairBBPD::row_force<1, 1, 1>(int, double *, const double *, double *);
+template bool PairBBPD::row_force<0, 0, 0>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<1, 0, 0>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<0, 1, 0>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<1, 1, 0>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<0, 0, 1>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<1, 0, 1>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<0, 1, 1>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<1, 1, 1>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);

@@ -65,7 +65,7 @@ def test_restart_equals_continuous_run(tmp_path, scene):
     report = mr.PAIR_REPORT.search(ref_out).group(1)
     assert mr.PAIR_REPORT.search(out2).group(1) == report
     if scene == "compact":
-        assert "16.0 bytes per bond" in out2
+        assert "12.0 bytes per bond" in out2
     if scene == "contact":
         assert "contact: on" in out2
     if scene == "types":

@@ -1,7 +1,7 @@
-"""Storage modes and code paths give the same bits: bond/storage compact (16 bytes per bond) vs
-the default (a class per bond into a table of distinct pairs, 20 bytes per bond) and its
-per-bond fallback (48 bytes per bond), and the SIMD force kernel vs the portable loop that also
-tallies energy.
+"""Storage modes and code paths give the same bits: bond/storage compact (12 bytes per bond) vs
+the default (a class per bond into a table of distinct pairs, 16 bytes per bond) and its
+per-bond fallback (44 bytes per bond), partners as 2-byte offsets vs 4-byte indices (4 bytes
+more per bond), and the SIMD force kernel vs the portable loop that also tallies energy.
 
 The scene is a small Kalthoff-Winkler plate with G_c / 10 (6.9e3 J/m^2): the notch cuts 1159
 bonds and a crack grows from its tip during the 300 steps (measured: 1479 broken at the end), so
@@ -60,11 +60,46 @@ def test_compact_storage_is_bit_identical(lmp, tmp_path, kernel):
         out = lmp(SCENE.format(kernel=kernel, storage=storage)).output
         dumps[storage] = (tmp_path / "final.dump").read_text()
         outs[storage] = out
-    assert "bond storage: 20.0 bytes per bond" in outs["fast"]
-    assert "bond storage: 16.0 bytes per bond" in outs["compact"]
+    assert "bond storage: 16.0 bytes per bond" in outs["fast"]
+    assert "bond storage: 12.0 bytes per bond" in outs["compact"]
     notch, final = broken_counts(outs["fast"])
     assert final > notch + 100    # a crack grew: bonds broke during the run
     assert broken_counts(outs["compact"]) == (notch, final)
+    assert dumps["fast"] == dumps["compact"]
+
+
+def test_compact_storage_with_two_types_is_bit_identical(lmp, tmp_path):
+    """Two types with their own critical stretches take the portable loop, whose compact
+    storage looks coefficients up by the partner's type: the same bits as the default."""
+    dumps, outs = {}, {}
+    for storage in ("fast", "compact"):
+        script = SCENE.format(kernel="gaussian", storage=storage).replace(
+            "create_box 1 box", "create_box 2 box").replace(
+            "pair_coeff 1 1 190e9 6.9e3 0.005", "pair_coeff 1 1 190e9 6.9e3 0.005\n"
+            "pair_coeff 2 2 150e9 5e3 0.005\npair_coeff 1 2 170e9 6e3 0.005").replace(
+            "set group all volume 1e-9", "set group all volume 1e-9\n"
+            "region top block INF INF 10.5 INF INF INF\nset region top type 2")
+        outs[storage] = lmp(script).output
+        dumps[storage] = (tmp_path / "final.dump").read_text()
+    assert "bond storage: 12.0 bytes per bond" in outs["compact"]
+    notch, final = broken_counts(outs["fast"])
+    assert final > notch + 100
+    assert dumps["fast"] == dumps["compact"]
+
+
+def test_compact_storage_with_two_volumes_is_bit_identical(lmp, tmp_path):
+    """Atoms of two volumes: compact storage keys its coefficients by the partner volume too (the
+    SIMD kernel compares lengths alone only where every atom has one type and one volume), and
+    gives the bits of the default."""
+    dumps = {}
+    for storage in ("fast", "compact"):
+        script = SCENE.format(kernel="gaussian", storage=storage).replace(
+            "set group all volume 1e-9", "set group all volume 1e-9\n"
+            "region top block INF INF 10.5 INF INF INF\nset region top volume 1.1e-9")
+        out = lmp(script).output
+        notch, final = broken_counts(out)
+        assert final > notch + 100
+        dumps[storage] = (tmp_path / "final.dump").read_text()
     assert dumps["fast"] == dumps["compact"]
 
 
@@ -82,11 +117,75 @@ def test_per_bond_fallback_is_bit_identical(lmp, tmp_path):
     for storage in ("fast", "compact"):
         outs[storage] = lmp(IRREGULAR.format(kernel="gaussian", storage=storage)).output
         dumps[storage] = (tmp_path / "final.dump").read_text()
-    assert "bond storage: 48.0 bytes per bond" in outs["fast"]
-    assert "bond storage: 16.0 bytes per bond" in outs["compact"]
+    assert "bond storage: 44.0 bytes per bond" in outs["fast"]
+    assert "bond storage: 12.0 bytes per bond" in outs["compact"]
     broken = [int(b) for b in re.findall(r"total bonds \d+ \((\d+) broken\)", outs["fast"])]
     assert broken[-1] > broken[0] + 100    # bonds broke during the run
     assert dumps["fast"] == dumps["compact"]
+
+
+# 201 x 171 atoms created top half first, then bottom half: unsorted (atom_modify sort 0), the
+# atoms just above the middle line come first in memory and their partners below it about 34,000
+# entries later, beyond a 2-byte offset, so the rank keeps 4-byte partner indices; LAMMPS's
+# spatial sort brings them within reach of offsets. The notch cuts along the middle line.
+FAR_PARTNERS = """plugin load bbpdplugin.so
+units si
+dimension 2
+boundary s s p
+atom_style peri
+atom_modify map array sort {sort} 0.0
+lattice sq 0.001
+region box block 0 200 0 170 -0.5 0.5
+create_box 1 box
+region top block INF INF 84.5 INF INF INF
+region bottom block INF INF INF 84.5 INF INF
+create_atoms 1 region top
+create_atoms 1 region bottom
+set group all density 7800
+set group all volume 1e-9
+pair_style bbpd/gaussian plane/strain thickness 0.001 bond/storage {storage}
+pair_coeff 1 1 190e9 6.9e3 0.005
+region left block INF 3 INF INF INF INF
+group left region left
+velocity left set 32 0 0 units box
+fix 1 all nve
+fix 2 all enforce2d
+fix n all bbpd/notch segment 0.0 0.0845 0.03 0.0845
+timestep 8.7e-8
+thermo 100
+run 300
+write_dump all custom final.dump id x y vx vy modify format float %.17g
+run 0
+"""
+
+
+def by_position(dump):
+    """the atom rows of a dump (x y vx vy as printed), in the order of their positions (tags
+    depend on the rank count: create_atoms numbers atoms rank by rank)"""
+    rows = [line.split()[1:] for line in dump.split("ITEM: ATOMS")[1].splitlines()[1:] if line]
+    return sorted(rows, key=lambda r: (round(float(r[1]), 6), round(float(r[0]), 6)))
+
+
+def test_partner_indices_give_the_bits_of_offsets(lmp, tmp_path):
+    """Partners out of a 2-byte offset's reach: the rank stores 4-byte indices and gives the
+    bits of offsets (sorted atoms, and 2 ranks), with bonds breaking during the run; compact
+    storage with indices gives them too."""
+    # on 2 ranks the unsorted atoms are within reach again (half as many per rank): offsets,
+    # with ghost partners
+    runs = {("offsets", 1): ("1000", "fast", 1), ("indices", 1): ("0", "fast", 1),
+            ("unsorted", 2): ("0", "fast", 2), ("compact indices", 1): ("0", "compact", 1)}
+    dumps, outs = {}, {}
+    for key, (sort, storage, nprocs) in runs.items():
+        outs[key] = lmp(FAR_PARTNERS.format(sort=sort, storage=storage), nprocs=nprocs).output
+        dumps[key] = by_position((tmp_path / "final.dump").read_text())
+    assert "bond storage: 16.0 bytes per bond" in outs[("offsets", 1)]
+    assert "bond storage: 20.0 bytes per bond" in outs[("indices", 1)]
+    assert "bond storage: 16.0 bytes per bond" in outs[("unsorted", 2)]
+    assert "bond storage: 16.0 bytes per bond" in outs[("compact indices", 1)]
+    broken = [int(b) for b in re.findall(r"total bonds \d+ \((\d+) broken\)", outs[("offsets", 1)])]
+    assert broken[-1] > broken[0] + 100    # bonds broke during the run
+    for key in runs:
+        assert dumps[key] == dumps[("offsets", 1)], key
 
 
 def test_compact_storage_rejects_periodic_boundaries(lmp):
@@ -115,12 +214,14 @@ def test_energy_steps_do_not_change_the_trajectory(lmp, tmp_path):
     assert dumps[1] == dumps[300]
 
 
-def test_openmp_threads_give_the_same_trajectory(lmp, tmp_path):
-    """Threads split the atoms of the force loop (each sums only its own bonds): 1 and 2
-    threads give the same bits, with bonds breaking and energy tallied every step."""
+@pytest.mark.parametrize("storage", ["fast", "compact"])
+def test_openmp_threads_give_the_same_trajectory(lmp, tmp_path, storage):
+    """Threads split the atoms of the force loop (each sums only its own bonds; with compact
+    storage each has its own coefficient cache): 1 and 2 threads give the same bits, with bonds
+    breaking and energy tallied every step."""
     dumps = {}
     for threads in (1, 2):
-        script = SCENE.format(kernel="gaussian", storage="fast").replace(
+        script = SCENE.format(kernel="gaussian", storage=storage).replace(
             "units si", f"package omp {threads}\nunits si").replace("thermo 50", "thermo 1")
         out = lmp(script).output
         assert f"1 MPI tasks x {threads} OpenMP threads" in out

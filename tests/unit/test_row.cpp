@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <random>
 #include <vector>
@@ -118,6 +120,107 @@ TEST(Row, SimdKernelGivesTheSameBits)
                                     ay, az, &tally_simd)));
   }
 #endif
+}
+
+// the row of make_row with the centre atom moved to index CENTRE: partners before and after it
+// in memory, named by indices or by offsets from CENTRE (bbpd_partner_index.h)
+constexpr int CENTRE = 20;
+struct MovedRow {
+  std::vector<double> x;
+  std::vector<int> bj;
+  std::vector<BBPD::PartnerOffset> off;    // LANES entries of padding past the row end
+};
+
+MovedRow move_centre(const Row &row)
+{
+  MovedRow moved;
+  moved.x.assign(row.x.size(), 0.0);
+  const auto place = [&](int from, int to) {
+    for (int m = 0; m < 3; m++) moved.x[3 * to + m] = row.x[3 * from + m];
+  };
+  place(0, CENTRE);
+  for (int k = 0; k < NB; k++) {
+    const int j = k < CENTRE ? k : k + 1;
+    place(k + 1, j);
+    moved.bj.push_back(j);
+    moved.off.push_back(static_cast<BBPD::PartnerOffset>(j - CENTRE));
+  }
+  moved.off.resize(NB + LANES, 0);
+  return moved;
+}
+
+TEST(Row, PartnerOffsetsGiveTheBitsOfIndices)
+{
+  EXPECT_TRUE(BBPD::fits_offset(40000, 40000 + 32767));
+  EXPECT_FALSE(BBPD::fits_offset(40000, 40000 + 32768));
+  EXPECT_TRUE(BBPD::fits_offset(40000, 40000 - 32768));
+  EXPECT_FALSE(BBPD::fits_offset(40000, 40000 - 32769));
+  const Row row = make_row(0.004);
+  const MovedRow moved = move_centre(row);
+  double f[3], fi[3], fo[3], ax[LANES], ay[LANES], az[LANES];
+  RowTally tally, tally_i, tally_o;
+  portable<1, 1>(row, 1.0, f, &tally);
+  auto xi0_of = [&](int k) { return row.xi0[k]; };
+  auto coef_of = [&](int k, double) { return row.coef[k]; };
+  auto s0_of = [&](int) { return 1.0; };
+  for (const bool offsets : {false, true}) {
+    double a[3][LANES] = {};
+    tally_o = {};
+    EXPECT_FALSE(offsets
+        ? (BBPD::row_force_portable<1, 1>(moved.x.data(), CENTRE, moved.off.data(), NB, xi0_of,
+                                          coef_of, s0_of, 0.0, a[0], a[1], a[2], &tally_o))
+        : (BBPD::row_force_portable<1, 1>(moved.x.data(), CENTRE, moved.bj.data(), NB, xi0_of,
+                                          coef_of, s0_of, 0.0, a[0], a[1], a[2], &tally_o)));
+    BBPD::lane_sum(a[0], a[1], a[2], fo);
+    EXPECT_EQ(std::memcmp(f, fo, sizeof f), 0) << "portable, offsets " << offsets;
+    EXPECT_EQ(std::memcmp(tally.eng, tally_o.eng, sizeof tally.eng), 0);
+  }
+#ifdef BBPD_SIMD
+  const BBPD::PerBondValues per_bond = {row.xi0.data(), row.coef.data()};
+  EXPECT_FALSE((row_force_simd<1, 1>(moved.x.data(), CENTRE, moved.bj.data(), per_bond, NB, 1.0,
+                                     0.0, ax, ay, az, &tally_i)));
+  BBPD::lane_sum(ax, ay, az, fi);
+  EXPECT_FALSE((row_force_simd<1, 1>(moved.x.data(), CENTRE, moved.off.data(), per_bond, NB, 1.0,
+                                     0.0, ax, ay, az, &tally_o)));
+  BBPD::lane_sum(ax, ay, az, fo);
+  EXPECT_EQ(std::memcmp(f, fi, sizeof f), 0);
+  EXPECT_EQ(std::memcmp(f, fo, sizeof f), 0);
+  EXPECT_EQ(std::memcmp(tally.vir, tally_o.vir, sizeof tally.vir), 0);
+  // breaking: the same verdict from offsets as from indices
+  EXPECT_EQ((row_force_simd<1, 0>(moved.x.data(), CENTRE, moved.bj.data(), per_bond, NB, 1e-3,
+                                  0.0, ax, ay, az, &tally_i)),
+            (row_force_simd<1, 0>(moved.x.data(), CENTRE, moved.off.data(), per_bond, NB, 1e-3,
+                                  0.0, ax, ay, az, &tally_o)));
+#endif
+}
+
+// compact storage caches coefficients by (reference length, partner volume, types): the distinct
+// lengths of a family of 5 spacings (lattice offsets a, b, c; among them xi and 2 xi, which
+// differ in the exponent only) all get their own slot, so a row never evicts its own entries
+TEST(Row, CoefficientCacheSlotsSeparateTheLengthsOfAFamily)
+{
+  const double dx = 1e-3, volume = 1e-9;
+  std::vector<double> lengths;    // 3D family (a = 0: the 2D one)
+  for (int a = 0; a <= 5; a++)
+    for (int b = a; b <= 5; b++)
+      for (int c = b; c <= 5; c++) {
+        const int q = a * a + b * b + c * c;
+        if (q > 0 && q <= 25) lengths.push_back(std::sqrt(double(q)) * dx);
+      }
+  std::sort(lengths.begin(), lengths.end());
+  lengths.erase(std::unique(lengths.begin(), lengths.end()), lengths.end());    // 3-4-5 and 0-0-5
+  std::vector<std::uint64_t> slots;
+  std::uint64_t vb;
+  std::memcpy(&vb, &volume, sizeof vb);
+  const std::uint64_t t = 1 * BBPD::CoefCache::TYPE_STRIDE + 1;
+  for (const double len : lengths) {
+    std::uint64_t xb;
+    std::memcpy(&xb, &len, sizeof xb);
+    slots.push_back(BBPD::CoefCache::slot(xb, vb, t));
+  }
+  std::sort(slots.begin(), slots.end());
+  EXPECT_EQ(std::adjacent_find(slots.begin(), slots.end()), slots.end())
+      << lengths.size() << " lengths share " << slots.size() << " slots";
 }
 
 }    // namespace
