@@ -240,24 +240,19 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         if (!multi && (bonds->bclass || row_xi0)) {
           double ax[LANES], ay[LANES], az[LANES];
           RowTally tally;
-          if (bonds->bclass) {
-            const BBPD::ClassValues vals = {bonds->bclass + beg, bonds->classes.xi0.data(),
-                                            bonds->classes.coef.data()};
-            broken = pmb ? BBPD::row_force_stretch_avx512<EVFLAG, true, false>(
-                               xx, i, bj + beg, vals, n, smin, s00_one, alpha_one, margin, &snew, ax,
-                               ay, az, &tally)
-                         : BBPD::row_force_stretch_avx512<EVFLAG, false, true>(
-                               xx, i, bj + beg, vals, n, smin, s00_one, alpha_one, margin, &snew, ax,
-                               ay, az, &tally);
-          } else {
-            const BBPD::PerBondValues vals = {row_xi0, row_coef};
-            broken = pmb ? BBPD::row_force_stretch_avx512<EVFLAG, true, false>(
-                               xx, i, bj + beg, vals, n, smin, s00_one, alpha_one, margin, &snew, ax,
-                               ay, az, &tally)
-                         : BBPD::row_force_stretch_avx512<EVFLAG, false, true>(
-                               xx, i, bj + beg, vals, n, smin, s00_one, alpha_one, margin, &snew, ax,
-                               ay, az, &tally);
-          }
+          // the reference lengths and coefficients by class or per bond: same kernel
+          auto fused = [&](const auto &vals) {
+            return pmb ? BBPD::row_force_stretch_avx512<EVFLAG, true, false>(
+                             xx, i, bj + beg, vals, n, smin, s00_one, alpha_one, margin, &snew,
+                             ax, ay, az, &tally)
+                       : BBPD::row_force_stretch_avx512<EVFLAG, false, true>(
+                             xx, i, bj + beg, vals, n, smin, s00_one, alpha_one, margin, &snew,
+                             ax, ay, az, &tally);
+          };
+          broken = bonds->bclass
+              ? fused(BBPD::ClassValues{bonds->bclass + beg, bonds->classes.xi0.data(),
+                                        bonds->classes.coef.data()})
+              : fused(BBPD::PerBondValues{row_xi0, row_coef});
           if (!broken) {
             lane_sum(ax, ay, az, fi);
             if (EVFLAG) tally_lanes(i, tally, acc);
