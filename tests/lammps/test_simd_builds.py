@@ -85,6 +85,16 @@ def cylinder_state(lmp, tmp_path, plugin=None):
     return (tmp_path / "cyl.dump").read_text()
 
 
+def far_partners_state(lmp, tmp_path, plugin=None):
+    """Final state of a run whose rank keeps 4-byte partner indices (unsorted atoms: partners
+    out of an offset's reach; test_storage.py), with bonds breaking."""
+    script = storage.FAR_PARTNERS.format(sort="0", storage="fast")
+    if plugin is not None:
+        script = script.replace("plugin load bbpdplugin.so", f"plugin load {plugin}")
+    assert "bond storage: 20.0 bytes per bond" in lmp(script).output    # indices, not offsets
+    return (tmp_path / "final.dump").read_text()
+
+
 @pytest.fixture(scope="module")
 def default_state(tmp_path_factory):
     from bbpd.runner import run_lammps
@@ -103,6 +113,7 @@ def test_avx2_kernel_gives_the_default_bits(lmp, tmp_path, default_state):
             "the default build on an AVX-512 host must hold the AVX-512 kernel"
     assert final_state(lmp, tmp_path, plugin) == default_state
     assert cylinder_state(lmp, tmp_path, plugin) == cylinder_state(lmp, tmp_path)
+    assert far_partners_state(lmp, tmp_path, plugin) == far_partners_state(lmp, tmp_path)
 
 
 @pytest.mark.slow
@@ -112,3 +123,4 @@ def test_portable_loop_gives_the_default_bits(lmp, tmp_path, default_state):
     assert not zmm and not ymm, "a build without -march=native must hold the portable loop"
     assert final_state(lmp, tmp_path, plugin) == default_state
     assert cylinder_state(lmp, tmp_path, plugin) == cylinder_state(lmp, tmp_path)
+    assert far_partners_state(lmp, tmp_path, plugin) == far_partners_state(lmp, tmp_path)
