@@ -344,17 +344,75 @@ inline bool row_force_avx512(const double *xx, int i, const Idx *bj, const Value
 #endif
 
 #ifdef BBPD_AVX2
-// reference lengths and coefficients of bonds k..k+3 (lanes off in m: zero)
-inline void load_values(const PerBondValues &v, __m256d m, int k, __m256d &xi0, __m256d &coef)
+// reference lengths and coefficients of bonds k..k+3 with partners j (lanes off in m and m32:
+// zero)
+inline void load_values(const PerBondValues &v, __m256d m, __m128i, int k, __m128i, __m256d &xi0,
+                        __m256d &coef)
 {
   xi0 = _mm256_maskload_pd(v.xi0 + k, _mm256_castpd_si256(m));
   coef = _mm256_maskload_pd(v.coef + k, _mm256_castpd_si256(m));
 }
-inline void load_values(const ClassValues &v, __m256d m, int k, __m256d &xi0, __m256d &coef)
+inline void load_values(const ClassValues &v, __m256d m, __m128i, int k, __m128i, __m256d &xi0,
+                        __m256d &coef)
 {
   const __m128i c = _mm_cvtepu16_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i *>(v.cls + k)));
   xi0 = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), v.xi0, c, m, 8);
   coef = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), v.coef, c, m, 8);
+}
+
+// compact storage: the AVX-512 load_values in 4 lanes (same operations, same bits)
+template <class CoefFn, bool UNIFORM>
+inline void load_values(const RecomputedValues<CoefFn, UNIFORM> &v, __m256d m, __m128i m32, int,
+                        __m128i j, __m256d &xi0, __m256d &coef)
+{
+  const __m128i j3 = _mm_mullo_epi32(j, _mm_set1_epi32(3));
+  const double *xi = v.x0 + 3 * v.i;
+  const __m256d x = _mm256_set1_pd(xi[0]), y = _mm256_set1_pd(xi[1]), z = _mm256_set1_pd(xi[2]);
+  const __m256d dx = _mm256_sub_pd(_mm256_mask_i32gather_pd(x, v.x0, j3, m, 8), x);
+  const __m256d dy = _mm256_sub_pd(_mm256_mask_i32gather_pd(y, v.x0 + 1, j3, m, 8), y);
+  const __m256d dz = _mm256_sub_pd(_mm256_mask_i32gather_pd(z, v.x0 + 2, j3, m, 8), z);
+  const __m256d rsq0 =
+      _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
+  const __m256d vj = UNIFORM ? _mm256_set1_pd(v.uniform_v)
+                             : _mm256_mask_i32gather_pd(_mm256_setzero_pd(), v.vfrac, j, m, 8);
+  const __m128i jtype = UNIFORM ? _mm_set1_epi32(v.uniform_type)
+                                : _mm_mask_i32gather_epi32(_mm_setzero_si128(), v.type, j, m32, 4);
+  const __m128i tj = _mm_add_epi32(jtype, _mm_set1_epi32(v.type[v.i] * CoefCache::TYPE_STRIDE));
+  // the cache slots, as CoefCache::slot
+  const __m256i qb = _mm256_castpd_si256(rsq0), vb = _mm256_castpd_si256(vj);
+  const __m256i h = _mm256_xor_si256(_mm256_xor_si256(qb, _mm256_srli_epi64(vb, 7)),
+                                     _mm256_slli_epi64(_mm256_cvtepu32_epi64(tj), 45));
+  __m256i fold = h;
+  for (int b = CoefCache::SLOT_BITS; b < 64; b += CoefCache::SLOT_BITS)
+    fold = _mm256_xor_si256(fold, _mm256_srli_epi64(h, b));
+  const __m256i slot = _mm256_and_si256(fold, _mm256_set1_epi64x(CoefCache::SIZE - 1));
+  CoefCache &c = *v.cache;
+  const __m256d zero = _mm256_setzero_pd();
+  __m256d hit = _mm256_and_pd(
+      m, _mm256_cmp_pd(rsq0, _mm256_mask_i64gather_pd(zero, c.rsq0.data(), slot, m, 8), _CMP_EQ_OQ));
+  if (!UNIFORM) {
+    const __m128i ct = _mm256_mask_i64gather_epi32(_mm_setzero_si128(), c.types.data(), slot, m32, 4);
+    hit = _mm256_and_pd(hit, _mm256_cmp_pd(vj, _mm256_mask_i64gather_pd(zero, c.vj.data(), slot, m, 8),
+                                           _CMP_EQ_OQ));
+    hit = _mm256_and_pd(hit, _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm_cmpeq_epi32(tj, ct))));
+  }
+  xi0 = _mm256_mask_i64gather_pd(zero, c.xi0.data(), slot, hit, 8);
+  coef = _mm256_mask_i64gather_pd(zero, c.coef.data(), slot, hit, 8);
+  const int missed = _mm256_movemask_pd(m) & ~_mm256_movemask_pd(hit);
+  if (missed) {
+    // looked up lane by lane (two lanes of this vector may share a slot)
+    alignas(32) double lq[4], lv[4], lx[4], lc[4];
+    alignas(16) int lt[4];
+    _mm256_store_pd(lq, rsq0);
+    _mm256_store_pd(lv, vj);
+    _mm256_store_pd(lx, xi0);
+    _mm256_store_pd(lc, coef);
+    _mm_store_si128(reinterpret_cast<__m128i *>(lt), jtype);
+    for (int l = 0; l < 4; l++)
+      if (missed & (1 << l)) lc[l] = v.lookup(lt[l], lq[l], lv[l], lx[l]);
+    xi0 = _mm256_load_pd(lx);
+    coef = _mm256_load_pd(lc);
+  }
 }
 
 // partner indices of bonds k..k+3 (m32: the lanes in the row; offsets read 4 entries, which
@@ -389,7 +447,8 @@ inline bool row_force_avx2(const double *xx, int i, const Idx *bj, const Values 
     const int h = (k / 4) & 1;    // which half of the 8 lanes
     const __m128i m32 = _mm_cmpgt_epi32(_mm_set1_epi32(n - k), iota);
     const __m256d m = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(m32));
-    const __m128i j3 = _mm_mullo_epi32(load_partners(bj, m32, i, k), three);
+    const __m128i j1 = load_partners(bj, m32, i, k);
+    const __m128i j3 = _mm_mullo_epi32(j1, three);
     const __m256d dx = _mm256_sub_pd(_mm256_mask_i32gather_pd(xi, xx, j3, m, 8), xi);
     const __m256d dy = _mm256_sub_pd(_mm256_mask_i32gather_pd(yi, xx + 1, j3, m, 8), yi);
     const __m256d dz = _mm256_sub_pd(_mm256_mask_i32gather_pd(zi, xx + 2, j3, m, 8), zi);
@@ -397,7 +456,7 @@ inline bool row_force_avx2(const double *xx, int i, const Idx *bj, const Values 
         _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
     const __m256d r = _mm256_sqrt_pd(rsq);
     __m256d xi0, coef;
-    load_values(vals, m, k, xi0, coef);
+    load_values(vals, m, m32, k, j1, xi0, coef);
     const __m256d elong = _mm256_sub_pd(r, xi0);
     if (FRACTURE)
       broken = _mm256_or_pd(broken, _mm256_and_pd(m, _mm256_cmp_pd(_mm256_add_pd(elong, vmargin),

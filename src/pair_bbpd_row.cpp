@@ -118,17 +118,17 @@ bool PairBBPD::row_force(int i, const Idx *bj, double *fi, const double *s0row, 
     return false;
   }
 #endif
-#ifdef BBPD_AVX512
+#ifdef BBPD_SIMD
   if (!MULTI && compact) {
     RowTally tally;
     const BBPD::RecomputedValues<decltype(coef_fn), true> recomputed_uniform = {
         recomputed.x0, i, atom->vfrac, type, &cache, coef_fn, bonds->uniform_type,
         bonds->uniform_vfrac};
     const bool broken = uniform
-        ? BBPD::row_force_avx512<FRACTURE, EVFLAG>(xx, i, bj, recomputed_uniform, n, s0_single,
-                                                   break_margin, ax, ay, az, &tally)
-        : BBPD::row_force_avx512<FRACTURE, EVFLAG>(xx, i, bj, recomputed, n, s0_single,
-                                                   break_margin, ax, ay, az, &tally);
+        ? row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, recomputed_uniform, n, s0_single,
+                                           break_margin, ax, ay, az, &tally)
+        : row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, recomputed, n, s0_single, break_margin,
+                                           ax, ay, az, &tally);
     if (broken) return true;
     lane_sum(ax, ay, az, fi);
     if (EVFLAG) tally_lanes(i, tally, acc);

@@ -64,8 +64,16 @@ def host_has(flag):
     return re.search(rf"\b{flag}\b", Path("/proc/cpuinfo").read_text()) is not None
 
 
-def final_state(lmp, tmp_path, plugin):
-    script = storage.SCENE.format(kernel="gaussian", storage="fast")
+TWO_VOLUMES = ("set group all volume 1e-9", "set group all volume 1e-9\n"
+               "region top block INF INF 10.5 INF INF INF\nset region top volume 1.1e-9")
+
+
+def final_state(lmp, tmp_path, plugin, bond_storage="fast", volumes=1):
+    """Final state of the crack scene of test_storage.py; with compact storage the kernel
+    compares cached lengths alone (one volume) or lengths, volumes and types (two volumes)."""
+    script = storage.SCENE.format(kernel="gaussian", storage=bond_storage)
+    if volumes == 2:
+        script = script.replace(*TWO_VOLUMES)
     if plugin is not None:
         script = script.replace("plugin load bbpdplugin.so", f"plugin load {plugin}")
     out = lmp(script).output
@@ -114,6 +122,10 @@ def test_avx2_kernel_gives_the_default_bits(lmp, tmp_path, default_state):
     assert final_state(lmp, tmp_path, plugin) == default_state
     assert cylinder_state(lmp, tmp_path, plugin) == cylinder_state(lmp, tmp_path)
     assert far_partners_state(lmp, tmp_path, plugin) == far_partners_state(lmp, tmp_path)
+    # compact storage runs in the AVX2 kernel too
+    assert final_state(lmp, tmp_path, plugin, "compact") == default_state
+    assert final_state(lmp, tmp_path, plugin, "compact", volumes=2) == \
+        final_state(lmp, tmp_path, None, "fast", volumes=2)
 
 
 @pytest.mark.slow
@@ -124,3 +136,5 @@ def test_portable_loop_gives_the_default_bits(lmp, tmp_path, default_state):
     assert final_state(lmp, tmp_path, plugin) == default_state
     assert cylinder_state(lmp, tmp_path, plugin) == cylinder_state(lmp, tmp_path)
     assert far_partners_state(lmp, tmp_path, plugin) == far_partners_state(lmp, tmp_path)
+    assert final_state(lmp, tmp_path, plugin, "compact", volumes=2) == \
+        final_state(lmp, tmp_path, None, "fast", volumes=2)
