@@ -4,13 +4,16 @@
    the plain loop (pair_bbpd.cpp) and the Silling-Askari loop
    (pair_bbpd_pmb.cpp): dispatch to the SIMD or portable kernel of
    bbpd_row.h over the rows of fix bbpd/bonds, the energy and virial tallies,
-   and the diagnosis of a non-finite force.
+   adding a row's force, the breaking test both ends of a bond agree on, and the
+   diagnosis of a non-finite force.
 ------------------------------------------------------------------------- */
 
 #include "pair_bbpd.h"
+#include "bbpd_compat.h"
 #include "bbpd_row.h"
 
 #include "atom.h"
+#include "domain.h"
 #include "error.h"
 #include "fix_bbpd_bonds.h"
 #include "update.h"
@@ -170,6 +173,52 @@ void PairBBPD::tally_lanes(int i, const RowTally &lanes, double *acc)
     acc[1 + m] += vir[m];
     if (vflag_atom) vatom[i][m] += vir[m];
   }
+}
+
+/* a row's force into f; the lowest atom with a non-finite force is kept for finish_eval()
+   (three compares per atom turn the first NaN/inf into an ERROR that names its cause) */
+void PairBBPD::add_row_force(int i, const double *fi, int &bad)
+{
+  if (!std::isfinite(fi[0]) || !std::isfinite(fi[1]) || !std::isfinite(fi[2])) {
+#if defined(_OPENMP)
+#pragma omp critical(bbpd_nonfinite)
+#endif
+    if (bad < 0 || i < bad) bad = i;
+  }
+  double *fi_atom = atom->f[i];
+  fi_atom[0] += fi[0];
+  fi_atom[1] += fi[1];
+  fi_atom[2] += fi[2];
+}
+
+/* after the loop over rows: the ERROR of a non-finite force, then the global tallies */
+void PairBBPD::finish_eval(int bad, bool evflag_on, const double *totals)
+{
+  if (bad >= 0) nonfinite_error(bad);
+  if (evflag_on) {
+    if (eflag_global) eng_vdwl += totals[0];
+    if (vflag_global)
+      for (int m = 0; m < 6; m++) virial[m] += totals[1 + m];
+  }
+}
+
+/* is bond i-j past its critical stretch? Decided from breaking_length(), the same at both ends */
+bool PairBBPD::past_critical(int i, int j, double xi0, double s0) const
+{
+  return breaking_length(i, j) - xi0 > s0 * xi0;
+}
+
+/* the current length of bond i-j from which breaking is decided: in a periodic box from the
+   minimum-image difference of the owners' unshifted positions, identical at both ends (the
+   ghost image x +- L rounds differently at the two ends, and one end could break a bond the
+   other keeps) */
+double PairBBPD::breaking_length(int i, int j) const
+{
+  const double *xi = atom->x[i];
+  const double *xj = bonds->raw_positions() ? bonds->raw_x(j) : atom->x[j];
+  double d[3] = {xj[0] - xi[0], xj[1] - xi[1], xj[2] - xi[2]};
+  if (bonds->raw_positions()) BBPDCompat::minimum_image(domain, d);
+  return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
 // the plain loop (eval) and the Silling-Askari loop (eval_alpha) sum rows with these
