@@ -37,6 +37,15 @@ class Job:
         return h.hexdigest()[:16]
 
 
+@dataclass
+class Spec:
+    """A job of the report, with what it computes: benchmark, kernel and grid spacing."""
+    bench: str       # dispersion | mode1 | mode2 | kw | kwstudy | ...
+    kernel: str
+    dx: float        # m (dispersion: the example's fixed grid, 0.2 mm)
+    job: Job
+
+
 def plugin_path():
     version = os.environ.get("BBPD_LAMMPS_VERSION", "20260704")
     return ROOT / "build" / f"lammps-{version}" / "bbpdplugin.so"

@@ -156,22 +156,22 @@ def repeat_run(workdir, target, args, repeats, of=None):
     return {"loop_times": times}
 
 
-def _timing_spec(report, spec, repeats):
-    from bbpd.jobs import Job
+def _timing_spec(spec, repeats):
+    from bbpd.jobs import Job, Spec
     label = f"timing of {spec.job.label}"
     kw = spec.job.kwargs
     job = Job(label=label, func="bbpd.work_precision:repeat_run",
               kwargs={"target": kw["target"], "args": kw["args"], "repeats": repeats,
                       "of": spec.job.label},
               inputs=spec.job.inputs, estimate_s=spec.job.estimate_s * repeats)
-    return report.Spec(TIMING_BENCH, spec.kernel, spec.dx, job)
+    return Spec(TIMING_BENCH, spec.kernel, spec.dx, job)
 
 
 def extra_specs(specs, the_plan):
-    """The runs of the_plan that specs (report.job_list) lacks, and timing repeats of the
-    short ones (estimate below REPEAT_BELOW_S): a list of report.Spec."""
-    from bbpd import report
-    from bbpd.jobs import Job
+    """The runs of the_plan that specs (the report's benchmark runs) lacks, and timing repeats of the
+    short ones (estimate below REPEAT_BELOW_S): a list of Spec."""
+    from bbpd.jobs import Job, Spec
+    from bbpd.report.runs import ESTIMATE_S, bench_inputs, make_spec
     have = {(BENCH_OF_SPEC.get(s.bench), s.kernel, round(s.dx, 12)): s for s in specs
             if s.bench != TIMING_BENCH}
     out, runs = [], []
@@ -183,39 +183,39 @@ def extra_specs(specs, the_plan):
             out.append(have[key])
         runs.append(have[key])
 
-    est = report.ESTIMATE_S
+    est = ESTIMATE_S
     # the same files as the report's own runs of each benchmark (report.bench_inputs)
-    m1_in, m2_in, kw_in = (report.bench_inputs(b) for b in ("mode1", "mode2", "kw"))
+    m1_in, m2_in, kw_in = (bench_inputs(b) for b in ("mode1", "mode2", "kw"))
 
     def renamed(spec, bench):
-        return report.Spec(bench, spec.kernel, spec.dx, spec.job)
+        return Spec(bench, spec.kernel, spec.dx, spec.job)
 
     for k in the_plan.kernels:
         for m in the_plan.dispersion_m:
             dx = DISPERSION_DELTA / m
             label = f"dispersion {k} m = {m:g}"
-            want("dispersion", k, dx, lambda: report.Spec(
+            want("dispersion", k, dx, lambda: Spec(
                 "wp-dispersion", k, dx,
                 Job(label=label, func="bbpd.report:run_job",
                     kwargs={"target": "bbpd.work_precision:dispersion_run",
                             "args": {"kernel": k, "m": m}, "label": label},
-                    inputs=tuple(str(p) for p in report.bench_inputs("dispersion")),
+                    inputs=tuple(str(p) for p in bench_inputs("dispersion")),
                     estimate_s=DISPERSION_ESTIMATE_S.get(m, 60.0))))
         for dx in the_plan.mode1_dx:
-            want("mode1", k, dx, lambda: renamed(report.make_spec(
+            want("mode1", k, dx, lambda: renamed(make_spec(
                 "mode1", k, dx, "bbpd.benchmarks.mode1:run", {"kernel": k, "dx": dx, "nprocs": 1},
                 m1_in, est.get(("mode1", dx), MODE1_ESTIMATE_S.get(dx, 60.0))), "wp-mode1"))
         for dx in the_plan.mode2_dx:
-            want("mode2", k, dx, lambda: renamed(report.make_spec(
+            want("mode2", k, dx, lambda: renamed(make_spec(
                 "mode2", k, dx, "bbpd.benchmarks.mode2:run", {"kernel": k, "dx": dx, "nprocs": 1},
                 m2_in, est.get(("mode2", dx), 60.0)), "wp-mode2"))
         for dx in the_plan.kw_dx:
-            want("kalthoff_winkler", k, dx, lambda: renamed(report.make_spec(
+            want("kalthoff_winkler", k, dx, lambda: renamed(make_spec(
                 "kw", k, dx, "bbpd.benchmarks.kalthoff_winkler:run",
                 {"kernel": k, "dx": dx, "nprocs": 1}, kw_in,
                 est.get(("kw", dx), KW_ESTIMATE_S.get(dx, 600.0))), "wp-kw"))
     if the_plan.repeats > 1:
-        out += [_timing_spec(report, s, the_plan.repeats - 1) for s in runs
+        out += [_timing_spec(s, the_plan.repeats - 1) for s in runs
                 if s.job.estimate_s < REPEAT_BELOW_S]
     return out
 
@@ -479,12 +479,12 @@ def plot(path, table, benchmark):
 def collect(specs, results):
     """Finished runs and their run times: ([(benchmark, kernel, dx, result, wall_s)],
     {label: number of timings}, [failed labels])."""
-    from bbpd import report
+    from bbpd.report.tables import failed
     repeats = {}
     for s in specs:
         if s.bench == TIMING_BENCH:
             res = results.get(s.job.label)
-            if not report.failed(res):
+            if not failed(res):
                 repeats[s.job.kwargs["of"]] = list(res["loop_times"])
     runs, samples, seen = [], {}, set()
     for s in specs:
@@ -493,7 +493,7 @@ def collect(specs, results):
             continue
         key = (bench, s.kernel, round(s.dx, 12))
         res = results.get(s.job.label)
-        if key in seen or report.failed(res):
+        if key in seen or failed(res):
             continue
         seen.add(key)
         times = [t for t in [loop_time(res)] + repeats.get(s.job.label, []) if t is not None]
@@ -506,7 +506,8 @@ def collect(specs, results):
 
 def section(specs, results, figdir, notes):
     """The report section: CSV, one figure per benchmark, sentences computed from the numbers."""
-    from bbpd import report
+    from bbpd.report.figures import _figure
+    from bbpd.report.provenance import machine
     figdir = Path(figdir)
     runs, samples = collect(specs, results)
     table = rows(runs, notes)
@@ -516,7 +517,7 @@ def section(specs, results, figdir, notes):
         if not any(r["benchmark"] == bench for r in table):
             continue
         path = figdir / f"work_precision_{bench}.png"
-        name = report._figure(lambda: plot(path, table, bench), path, notes)
+        name = _figure(lambda: plot(path, table, bench), path, notes)
         figs += [name] if name else []
         said = [sentence(table, bench, metric, target)
                 for (b, metric), target in TARGETS.items() if b == bench]
@@ -536,7 +537,7 @@ def section(specs, results, figdir, notes):
                  {round(DISPERSION_DELTA / r[2]) for r in runs if r[0] == 'dispersion'}))
              + f", error |c/c_29 - 1| at the wavelength {WAVELENGTH * 1e3:g} mm (k delta = "
              f"{2 * math.pi * DISPERSION_DELTA / WAVELENGTH:.2f}). Kalthoff-Winkler: "
-             "initiation = the damage band leaves the tip. Machine: " + report.machine()
+             "initiation = the damage band leaves the tip. Machine: " + machine()
              + f". All points: {csv_path.parent.name}/{csv_path.name}.")
     return {"title": "Error against run time (work-precision diagrams)", "setup": setup,
             "table": summary_table(table), "text": " ".join(text), "figures": figs}
@@ -558,7 +559,7 @@ def kw_initiation_text(table):
 def summary_table(table):
     """Markdown: one row per benchmark, kernel, method and metric: error (run time) per
     resolution, coarsest first."""
-    from bbpd.report import md_table
+    from bbpd.report.tables import md_table
     keys = []
     for r in table:
         key = (r["benchmark"], r["kernel"], r["method"], r["error_metric"])

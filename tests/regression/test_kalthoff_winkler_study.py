@@ -179,7 +179,8 @@ def test_released_loading_dx2mm(tmp_path):
     12.0 and 23.0 us); then the cracks stop short of the plate edge.  Pinned values are this
     run's (README, 'Loading study'): tolerances of about one snapshot (1 us), one or two grid
     spacings in length and 3 deg in angle."""
-    res = kws.run_case(tmp_path, "gaussian", DX, "v32release")
+    (tmp_path / "run").mkdir()
+    res = kws.run_case(tmp_path / "run", "gaussian", DX, "v32release")
     check_study_run(res)
     assert res["thold"] == pytest.approx(kws.T_CONTACT)
     assert res["t_init_us"] == pytest.approx(12.0, abs=0.2)
@@ -215,6 +216,11 @@ def test_released_loading_dx2mm(tmp_path):
     assert "| v32release | gaussian | 2 |" in sec["table"]
     assert "Not measured (failed or not run): " + specs[1].job.label in sec["text"]
     assert kws.section([], {}, tmp_path, [])["table"] == ""
+
+    # the study's command re-analyses the finished run folder without running anything
+    kws.main(["--reuse", "--work", str(tmp_path), "--figures", str(tmp_path / "figs")])
+    assert "| v32release | gaussian | 2 |" in (tmp_path / "study.md").read_text()
+    assert (tmp_path / "figs" / "study_paths_v32release.png").is_file()
 
 
 @pytest.mark.slow

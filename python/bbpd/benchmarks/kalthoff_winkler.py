@@ -32,7 +32,7 @@ far damage    atoms whose damage grew during the run and lie farther than delta 
 Command line (from the repository root):
   tools/python -m bbpd.benchmarks.kalthoff_winkler \
       --kernels constant triangular gaussian --dx 2e-3 1e-3 --work /tmp/kw --figures DIR
-  ... --study --work DIR --figures DIR     the loading study (kalthoff_winkler_study.py)
+The loading study has its own command: python -m bbpd.benchmarks.kalthoff_winkler_study.
 """
 
 import argparse
@@ -387,18 +387,10 @@ def main(argv=None):
     ap.add_argument("--np", type=int, default=2, dest="nprocs")
     ap.add_argument("--reuse", action="store_true",
                     help="re-analyse finished runs in --work instead of running them again")
-    ap.add_argument("--study", action="store_true",
-                    help="the loading study (kalthoff_winkler_study.py): every loading case "
-                         "for the three kernels at 1 mm and the Gaussian at 0.5 mm, one run at "
-                         "a time, finished runs cached in --work")
     args = ap.parse_args(argv)
     work = Path(args.work)
     figs = Path(args.figures or work)
     figs.mkdir(parents=True, exist_ok=True)
-    if args.study:
-        from bbpd.benchmarks import kalthoff_winkler_study
-        kalthoff_winkler_study.main_study(work, figs, reuse_only=args.reuse)
-        return
     results = []
     for dx in args.dx:
         for kernel in args.kernels:

@@ -24,10 +24,11 @@ far edge      first new damage at x > Lx - delta farther than delta + dx from th
 symmetry      tip mismatch and mirror damage difference (kalthoff_winkler.py)
 
 Command line (from the repository root; the runs are cached in --work):
-  OMP_NUM_THREADS=2 nice -n 10 PYTHONPATH=python /usr/bin/python3 \
-      -m bbpd.benchmarks.kalthoff_winkler --study --work /tmp/kw-study --figures DIR
+  tools/python -m bbpd.benchmarks.kalthoff_winkler_study --work /tmp/kw-study --figures DIR
+  ... --reuse                              re-analyse the finished runs, run nothing
 """
 
+import argparse
 import json
 import math
 import re
@@ -100,7 +101,7 @@ def run_case(workdir, kernel, dx, case, nprocs=1, tend=TEND):
     start = time.perf_counter()
     run_lammps(str(kw.EXAMPLE), workdir, nprocs=nprocs, vars=case_vars(case, kernel, dx, tend))
     wall = time.perf_counter() - start
-    # what --study --reuse needs to re-analyse this folder without running it again
+    # what --reuse needs to re-analyse this folder without running it again
     (workdir / "case.json").write_text(json.dumps({"case": case, "kernel": kernel, "dx": dx,
                                                    "wall_s": wall, "nprocs": nprocs}))
     res = analyse(workdir)
@@ -485,22 +486,21 @@ def figures(results, figdir):
 # ---------------------------------------------------------------------------- jobs, report
 
 def jobs(nprocs=1):
-    """The study's runs as bbpd.report specs (the report's --full and the --study command)."""
-    from bbpd import report
+    """The study's runs as bbpd.report specs (the report's --full and this module's command)."""
+    from bbpd.jobs import Job, Spec
     inputs = (kw.EXAMPLE, Path(kw.__file__), Path(__file__),
               kw.ROOT / "potentials" / "kalthoff_winkler_steel.bbpd", Path(readers.__file__))
     specs = []
     for case in CASES:
         for k, dx in STUDY_KERNEL_DX:
             label = f"Kalthoff-Winkler study {case} {k} dx = {dx * 1e3:g} mm"
-            job = report.Job(label=label, func="bbpd.report:run_job",
-                             kwargs={"target": "bbpd.benchmarks.kalthoff_winkler_study:run_case",
-                                     "args": {"kernel": k, "dx": dx, "case": case,
-                                              "nprocs": nprocs},
-                                     "label": label},
-                             inputs=tuple(str(p) for p in inputs),
-                             estimate_s=500.0 if dx < 1e-3 else 90.0)
-            specs.append(report.Spec("kwstudy", k, dx, job))
+            job = Job(label=label, func="bbpd.report:run_job",
+                      kwargs={"target": "bbpd.benchmarks.kalthoff_winkler_study:run_case",
+                              "args": {"kernel": k, "dx": dx, "case": case, "nprocs": nprocs},
+                              "label": label},
+                      inputs=tuple(str(p) for p in inputs),
+                      estimate_s=500.0 if dx < 1e-3 else 90.0)
+            specs.append(Spec("kwstudy", k, dx, job))
     return specs
 
 
@@ -578,3 +578,19 @@ SUMMARY_KEYS = ("t_init_us", "t_band_us", "initial_deg", "t_initial_us", "fit_t7
                 "t_edge_us", "t_arrest_us",
                 "speed", "speed_peak", "speed_over_cR", "speed_peak_over_cR", "far_edge_own_us",
                 "far_edge_y_mm", "far_damage_other", "symmetry_tip_mm", "symmetry_phi", "wall_s")
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description="The Kalthoff-Winkler loading study: every loading "
+                                 "case for the three kernels at 1 mm and the Gaussian at 0.5 mm, "
+                                 "one run at a time, finished runs cached in --work")
+    ap.add_argument("--work", default="/tmp/kw-study", help="run directories go here")
+    ap.add_argument("--figures", default=None, help="write the PNGs here (default: --work)")
+    ap.add_argument("--reuse", action="store_true",
+                    help="re-analyse finished runs in --work instead of running them")
+    args = ap.parse_args(argv)
+    main_study(Path(args.work), Path(args.figures or args.work), reuse_only=args.reuse)
+
+
+if __name__ == "__main__":
+    main()

@@ -26,13 +26,13 @@ from bbpd.kernels import COLORS, KERNELS
 
 from .document import FIGURE_LIST, write_report
 from .figures import RESOLUTION_COLORS, _figure, plot_k
-from .make import reproduce
+from .make import job_list, reproduce
 from .prose import ANGLE_TIE_DEG, MODE2_FIELD_SHARE, NEGATIVE_VG, mode2_j_verdict, ranking
 from .provenance import git_revision, lammps_build, machine, plugin_version
 from .runs import (BENCH, ESTIMATE_S, ESTIMATES_ENV, FREUND_PY, HEARTBEAT_S, KW_DX,
                    KW_GAUSSIAN_DX_FULL, METRICS_PY, MODE1_TABLE2_DX, MODE1_TABLE3_DX, MODE2_DX,
-                   MODE2_DX_FULL, READERS_PY, Spec, _tools, build_of_run, dispersion_run, job_list,
-                   make_spec, run_job, bench_inputs)
+                   MODE2_DX_FULL, READERS_PY, Spec, _tools, benchmark_specs, build_of_run,
+                   dispersion_run, make_spec, run_job, bench_inputs)
 from .sections import (dispersion_section, kw_section, kw_study_section, mode1_section,
                        mode2_section)
 from .tables import (DISP_KDX, _arrays, _plain, f, failed, failed_row, failure_text, md_table,
@@ -45,7 +45,8 @@ __all__ = ["ROOT", "Job", "COLORS", "KERNELS", "FIGURE_LIST", "write_report",
            "FREUND_PY", "HEARTBEAT_S", "KW_DX", "KW_GAUSSIAN_DX_FULL", "METRICS_PY",
            "READERS_PY",
            "MODE1_TABLE2_DX", "MODE1_TABLE3_DX", "MODE2_DX", "MODE2_DX_FULL", "Spec", "_tools",
-           "build_of_run", "bench_inputs", "dispersion_run", "job_list", "make_spec", "run_job",
+           "benchmark_specs", "build_of_run", "bench_inputs", "dispersion_run", "job_list",
+           "make_spec", "run_job",
            "dispersion_section", "kw_section", "kw_study_section", "mode1_section",
            "mode2_section", "DISP_KDX", "_arrays", "_plain", "f", "failed", "failed_row",
            "failure_text", "md_table", "run_time"]

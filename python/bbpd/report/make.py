@@ -7,11 +7,19 @@ import time
 from pathlib import Path
 
 from bbpd import jobs as jobmod
+from bbpd import work_precision
 
 from .document import write_report
 from .provenance import git_revision, lammps_build, machine, plugin_version
-from .runs import ESTIMATES_ENV
+from .runs import ESTIMATES_ENV, benchmark_specs
 from .tables import _plain, failed
+
+
+def job_list(full=False):
+    """Every run of the report: the benchmarks' runs at default resolutions (or the paper's full
+    ones with full=True), then the runs and timing repeats of the work-precision diagrams."""
+    specs = benchmark_specs(full)
+    return specs + work_precision.extra_specs(specs, work_precision.plan(full))
 
 
 def reproduce(out, specs, workers, full=False, log=None):

@@ -9,12 +9,11 @@ import json
 import os
 import threading
 import time
-from dataclasses import dataclass
 from pathlib import Path
 
 from bbpd import jobs as jobmod
 from bbpd import readers
-from bbpd.jobs import ROOT, Job
+from bbpd.jobs import ROOT, Job, Spec
 from bbpd.kernels import KERNELS
 
 BENCH = ROOT / "python" / "bbpd" / "benchmarks"
@@ -42,14 +41,6 @@ ESTIMATE_S = {
     ("mode2", 1.0e-3): 2.0, ("mode2", 0.5e-3): 8.0, ("mode2", 0.25e-3): 30.0,
     ("kw", 2.0e-3): 8.0, ("kw", 1.0e-3): 75.0, ("kw", 0.5e-3): 200.0,
 }
-
-
-@dataclass
-class Spec:
-    bench: str       # dispersion | mode1 | mode2 | kw
-    kernel: str
-    dx: float        # m (dispersion: the example's fixed grid, 0.2 mm)
-    job: Job
 
 
 def run_job(workdir, target, args, label):
@@ -139,8 +130,9 @@ def make_spec(bench, kernel, dx, target, args, inputs, estimate):
     return Spec(bench, kernel, dx, job)
 
 
-def job_list(full=False):
-    """The runs of the report: default resolutions, or the paper's full ones with full=True."""
+def benchmark_specs(full=False):
+    """The benchmarks' runs of the report: default resolutions, or the paper's full ones with
+    full=True (make.job_list adds the work-precision runs)."""
     specs = []
     disp_in = bench_inputs("dispersion")
     for k in KERNELS:
@@ -173,5 +165,4 @@ def job_list(full=False):
     if full:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
         from bbpd.benchmarks import kalthoff_winkler_study
         specs += kalthoff_winkler_study.jobs()
-    from bbpd import work_precision    # its runs and timing repeats (work-precision diagrams)
-    return specs + work_precision.extra_specs(specs, work_precision.plan(full))
+    return specs
