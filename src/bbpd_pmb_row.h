@@ -51,51 +51,24 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const int *bj, con
                                      double margin, double *smin_row, double *ax, double *ay,
                                      double *az, RowTally *tally)
 {
-  const __m512d quarter = _mm512_set1_pd(0.25), half = _mm512_set1_pd(0.5);
-  __m512d eacc = _mm512_setzero_pd(), vacc[6];
-  for (auto &v : vacc) v = _mm512_setzero_pd();
   const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
                 zi = _mm512_set1_pd(xx[3 * i + 2]);
   const __m512d vs00 = _mm512_set1_pd(s00), valpha = _mm512_set1_pd(alpha),
                 vsmin_i = _mm512_set1_pd(smin[i]), zero = _mm512_setzero_pd(),
                 near_zero = _mm512_set1_pd(BBPD::PMB::NEAR_ZERO), one = _mm512_set1_pd(1.0),
                 vmargin = _mm512_set1_pd(margin);
-  const __m256i three = _mm256_set1_epi32(3);
-  __m512d fx = _mm512_setzero_pd(), fy = fx, fz = fx;
+  RowLanes<EV> lanes;
   __m512d vmin = _mm512_set1_pd(std::numeric_limits<double>::max());
   __mmask8 broken = 0;
   for (int k = 0; k < n; k += LANES) {
     const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
-    const __m256i j1 = _mm256_maskz_loadu_epi32(m, bj + k);
-    const __m256i j3 = _mm256_mullo_epi32(j1, three);
-    const __m512d dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(xi, m, j3, xx, 8), xi);
-    const __m512d dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(yi, m, j3, xx + 1, 8), yi);
-    const __m512d dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(zi, m, j3, xx + 2, 8), zi);
-    const __m512d rsq =
-        _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
-    const __m512d r = _mm512_sqrt_pd(rsq);
-    __m512d xi0, coef;
-    load_values(vals, m, k, j1, xi0, coef);
-    const __m512d elong = _mm512_sub_pd(r, xi0);
-    // force: as row_force_avx512
-    const __m512d fbond = _mm512_maskz_div_pd(m, _mm512_mul_pd(coef, elong), r);
-    fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fbond, dx));
-    fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fbond, dy));
-    fz = _mm512_mask_add_pd(fz, m, fz, _mm512_mul_pd(fbond, dz));
-    if (EV) {
-      eacc = _mm512_mask_add_pd(eacc, m, eacc,
-                                _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(quarter, coef), elong), elong));
-      const __m512d hf = _mm512_mul_pd(half, fbond);
-      const __m512d d[3] = {dx, dy, dz};
-      const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
-      for (int c = 0; c < 6; c++)
-        vacc[c] = _mm512_mask_sub_pd(vacc[c], m, vacc[c],
-                                     _mm512_mul_pd(_mm512_mul_pd(hf, d[pa[c]]), d[pb[c]]));
-    }
-    // stretch: as row_stretch_portable
-    __m512d es = elong;
+    const __m256i j1 = load_partners(bj, m, i, k);
+    const BondLanes b = bond_lanes(xx, xi, yi, zi, j1, m, vals, k);
+    lanes.add(m, b);    // the force: as row_force_avx512
+    // the stretch: as row_stretch_portable
+    __m512d es = b.elong;
     if (PMB) es = _mm512_mask_mov_pd(es, _mm512_cmp_pd_mask(_mm512_abs_pd(es), near_zero, _CMP_LT_OQ), zero);
-    const __m512d s = _mm512_div_pd(es, _mm512_mask_mov_pd(one, m, xi0));
+    const __m512d s = _mm512_div_pd(es, _mm512_mask_mov_pd(one, m, b.xi0));
     vmin = _mm512_mask_min_pd(vmin, m, s, vmin);
     __m512d smax = _mm512_max_pd(_mm512_mask_i32gather_pd(vsmin_i, m, j1, smin, 8), vsmin_i);
     if (CLAMP) smax = _mm512_min_pd(smax, zero);
@@ -103,13 +76,7 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const int *bj, con
     broken |= _mm512_mask_cmp_pd_mask(m, _mm512_add_pd(s, vmargin), s0, _CMP_GT_OQ);
   }
   *smin_row = _mm512_reduce_min_pd(vmin);
-  _mm512_storeu_pd(ax, fx);
-  _mm512_storeu_pd(ay, fy);
-  _mm512_storeu_pd(az, fz);
-  if (EV) {
-    _mm512_storeu_pd(tally->eng, eacc);
-    for (int c = 0; c < 6; c++) _mm512_storeu_pd(tally->vir[c], vacc[c]);
-  }
+  lanes.store(ax, ay, az, tally);
   return broken != 0;
 }
 #endif

@@ -282,6 +282,65 @@ inline __m256i load_partners(const PartnerOffset *bj, __mmask8 m, int i, int k)
   return _mm256_add_epi32(_mm256_cvtepi16_epi32(_mm_maskz_loadu_epi16(m, bj + k)), _mm256_set1_epi32(i));
 }
 
+/* one vector of bonds k..k+7 of atom i (position xi, yi, zi; partners j1, lanes off in m):
+   partner differences, current and reference length, coefficient and elongation */
+struct BondLanes {
+  __m512d dx, dy, dz, r, xi0, coef, elong;
+};
+template <class Values>
+inline BondLanes bond_lanes(const double *xx, __m512d xi, __m512d yi, __m512d zi, __m256i j1,
+                            __mmask8 m, const Values &vals, int k)
+{
+  BondLanes b;
+  const __m256i j3 = _mm256_mullo_epi32(j1, _mm256_set1_epi32(3));
+  b.dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(xi, m, j3, xx, 8), xi);
+  b.dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(yi, m, j3, xx + 1, 8), yi);
+  b.dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(zi, m, j3, xx + 2, 8), zi);
+  const __m512d rsq = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(b.dx, b.dx), _mm512_mul_pd(b.dy, b.dy)),
+                                    _mm512_mul_pd(b.dz, b.dz));
+  b.r = _mm512_sqrt_pd(rsq);
+  load_values(vals, m, k, j1, b.xi0, b.coef);
+  b.elong = _mm512_sub_pd(b.r, b.xi0);
+  return b;
+}
+
+/* the force lanes of a row and, with EV, its energy and virial lanes (RowTally) */
+template <int EV> struct RowLanes {
+  __m512d fx = _mm512_setzero_pd(), fy = _mm512_setzero_pd(), fz = _mm512_setzero_pd();
+  __m512d eacc = _mm512_setzero_pd();
+  __m512d vacc[6] = {_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd(),
+                     _mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()};
+  void add(__mmask8 m, const BondLanes &b)
+  {
+    const __m512d fbond = _mm512_maskz_div_pd(m, _mm512_mul_pd(b.coef, b.elong), b.r);
+    fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fbond, b.dx));
+    fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fbond, b.dy));
+    fz = _mm512_mask_add_pd(fz, m, fz, _mm512_mul_pd(fbond, b.dz));
+    if (EV) {
+      // as row_force_portable: a quarter of coef elong^2, and half of -fbond d (x) d
+      const __m512d quarter = _mm512_set1_pd(0.25), half = _mm512_set1_pd(0.5);
+      eacc = _mm512_mask_add_pd(
+          eacc, m, eacc, _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(quarter, b.coef), b.elong), b.elong));
+      const __m512d hf = _mm512_mul_pd(half, fbond);
+      const __m512d d[3] = {b.dx, b.dy, b.dz};
+      const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
+      for (int c = 0; c < 6; c++)
+        vacc[c] = _mm512_mask_sub_pd(vacc[c], m, vacc[c],
+                                     _mm512_mul_pd(_mm512_mul_pd(hf, d[pa[c]]), d[pb[c]]));
+    }
+  }
+  void store(double *ax, double *ay, double *az, RowTally *tally) const
+  {
+    _mm512_storeu_pd(ax, fx);
+    _mm512_storeu_pd(ay, fy);
+    _mm512_storeu_pd(az, fz);
+    if (EV) {
+      _mm512_storeu_pd(tally->eng, eacc);
+      for (int c = 0; c < 6; c++) _mm512_storeu_pd(tally->vir[c], vacc[c]);
+    }
+  }
+};
+
 /* lanes of the force density on atom i from n bonds (partner bj, reference length and
    coefficient from vals); with FRACTURE returns true if a bond is past s0 or within
    margin of it (elong + margin > s0 xi0; margin is 0 except in periodic boxes) */
@@ -290,54 +349,21 @@ inline bool row_force_avx512(const double *xx, int i, const Idx *bj, const Value
                              double s0, double margin, double *ax, double *ay, double *az,
                              RowTally *tally)
 {
-  const __m512d quarter = _mm512_set1_pd(0.25), half = _mm512_set1_pd(0.5);
-  __m512d eacc = _mm512_setzero_pd(), vacc[6];
-  for (auto &v : vacc) v = _mm512_setzero_pd();
   const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
                 zi = _mm512_set1_pd(xx[3 * i + 2]), vs0 = _mm512_set1_pd(s0),
                 vmargin = _mm512_set1_pd(margin);
-  const __m256i three = _mm256_set1_epi32(3);
-  __m512d fx = _mm512_setzero_pd(), fy = fx, fz = fx;
+  RowLanes<EV> lanes;
   __mmask8 broken = 0;
   for (int k = 0; k < n; k += LANES) {
     const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
-    const __m256i j1 = load_partners(bj, m, i, k);
-    const __m256i j3 = _mm256_mullo_epi32(j1, three);
-    const __m512d dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(xi, m, j3, xx, 8), xi);
-    const __m512d dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(yi, m, j3, xx + 1, 8), yi);
-    const __m512d dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(zi, m, j3, xx + 2, 8), zi);
-    const __m512d rsq =
-        _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
-    const __m512d r = _mm512_sqrt_pd(rsq);
-    __m512d xi0, coef;
-    load_values(vals, m, k, j1, xi0, coef);
-    const __m512d elong = _mm512_sub_pd(r, xi0);
+    const BondLanes b = bond_lanes(xx, xi, yi, zi, load_partners(bj, m, i, k), m, vals, k);
     if (FRACTURE)
-      broken |= _mm512_mask_cmp_pd_mask(m, _mm512_add_pd(elong, vmargin), _mm512_mul_pd(vs0, xi0),
-                                        _CMP_GT_OQ);
-    const __m512d fbond = _mm512_maskz_div_pd(m, _mm512_mul_pd(coef, elong), r);
-    fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fbond, dx));
-    fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fbond, dy));
-    fz = _mm512_mask_add_pd(fz, m, fz, _mm512_mul_pd(fbond, dz));
-    if (EV) {
-      eacc = _mm512_mask_add_pd(eacc, m, eacc,
-                                _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(quarter, coef), elong), elong));
-      const __m512d hf = _mm512_mul_pd(half, fbond);
-      const __m512d d[3] = {dx, dy, dz};
-      const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
-      for (int c = 0; c < 6; c++)
-        vacc[c] = _mm512_mask_sub_pd(vacc[c], m, vacc[c],
-                                     _mm512_mul_pd(_mm512_mul_pd(hf, d[pa[c]]), d[pb[c]]));
-    }
+      broken |= _mm512_mask_cmp_pd_mask(m, _mm512_add_pd(b.elong, vmargin),
+                                        _mm512_mul_pd(vs0, b.xi0), _CMP_GT_OQ);
+    lanes.add(m, b);
   }
   if (FRACTURE && broken) return true;
-  _mm512_storeu_pd(ax, fx);
-  _mm512_storeu_pd(ay, fy);
-  _mm512_storeu_pd(az, fz);
-  if (EV) {
-    _mm512_storeu_pd(tally->eng, eacc);
-    for (int c = 0; c < 6; c++) _mm512_storeu_pd(tally->vir[c], vacc[c]);
-  }
+  lanes.store(ax, ay, az, tally);
   return false;
 }
 #define row_force_simd BBPD::row_force_avx512

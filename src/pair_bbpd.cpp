@@ -549,12 +549,7 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
       }
       add_row_force(i, fi, bad);
     }
-    if (EVFLAG) {
-#if defined(_OPENMP)
-#pragma omp critical(bbpd_totals)
-#endif
-      for (int m = 0; m < 7; m++) totals[m] += acc[m];
-    }
+    if (EVFLAG) add_thread_totals(totals, acc);
   }
   finish_eval(bad, EVFLAG, totals);
 }

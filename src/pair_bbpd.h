@@ -77,6 +77,7 @@ class PairBBPD : public Pair {
   [[noreturn]] void nonfinite_error(int i);
   void add_row_force(int i, const double *fi, int &bad);
   void finish_eval(int bad, bool evflag_on, const double *totals);
+  void add_thread_totals(double *totals, const double *acc);
   void tally_lanes(int i, const BBPD::RowTally &lanes, double *acc);
   bool bonded(int i, tagint jtag) const;
   int multi_s0;           // critical stretch differs between type pairs

@@ -206,21 +206,21 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
       }
       const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
       const double smin_i = smin[i];
-      auto stretch_of = [&](int k) {
-        const int j = bj[k];
-        const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
+      // stretch of bond k at current length r (peri/pmb zeroes round-off elongations)
+      auto stretch_at = [&](int k, double r) {
         const double xi0 = bonds->xi0_of(i, k);
-        double elong = std::sqrt(dx * dx + dy * dy + dz * dz) - xi0;
+        double elong = r - xi0;
         if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
         return elong / xi0;
       };
+      auto stretch_of = [&](int k) {
+        const int j = bj[k];
+        const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
+        return stretch_at(k, std::sqrt(dx * dx + dy * dy + dz * dz));
+      };
       // the stretch that decides breaking: the same at both ends of the bond
       auto breaking_stretch = [&](int k) {
-        if (!canonical) return stretch_of(k);
-        const double xi0 = bonds->xi0_of(i, k);
-        double elong = breaking_length(i, bj[k]) - xi0;
-        if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
-        return elong / xi0;
+        return canonical ? stretch_at(k, breaking_length(i, bj[k])) : stretch_of(k);
       };
       auto s0_of = [&](int k) {
         const int j = bj[k];
@@ -292,12 +292,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         for (int m = 0; m < 3; m++) fi[m] += fbroken[i][m];
       add_row_force(i, fi, bad);
     }
-    if (EVFLAG) {
-#if defined(_OPENMP)
-#pragma omp critical(bbpd_totals)
-#endif
-      for (int m = 0; m < 7; m++) totals[m] += acc[m];
-    }
+    if (EVFLAG) add_thread_totals(totals, acc);
   }
   finish_eval(bad, EVFLAG, totals);
   // the new smin takes effect at the next step, once sent to the ghosts

@@ -191,6 +191,15 @@ void PairBBPD::add_row_force(int i, const double *fi, int &bad)
   fi_atom[2] += fi[2];
 }
 
+/* a thread's energy and virial sums (acc) into the loop's totals, one thread at a time */
+void PairBBPD::add_thread_totals(double *totals, const double *acc)
+{
+#if defined(_OPENMP)
+#pragma omp critical(bbpd_totals)
+#endif
+  for (int m = 0; m < 7; m++) totals[m] += acc[m];
+}
+
 /* after the loop over rows: the ERROR of a non-finite force, then the global tallies */
 void PairBBPD::finish_eval(int bad, bool evflag_on, const double *totals)
 {
