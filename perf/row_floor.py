@@ -1,0 +1,113 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""What bounds the AVX-512 force loop: the 3D block timed with parts of the kernel taken out.
+
+The 3D block of pair_vs_pmb.py (41^3 atoms, m = 4.5, 15.4 M bonds), held still (no time
+integration: the probes compute wrong forces on purpose), pair time of `--steps` force
+evaluations. Each variant is the plugin built from HEAD with perf/probes/row_floor.patch applied
+and one of its switches on (bbpd_row.h, AVX-512 kernel only):
+  baseline          the kernel as it is (the patch with no switch is the same code)
+  no_sqrt_div       multiplications in place of the square root and the division
+  no_memory         no partner-offset or class stream and no gathers: partners i+1.., positions
+                    and table entries loaded contiguously (square root and division kept)
+  no_memory_no_sqrt_div   both: the loop's arithmetic alone
+  rsqrt14_fma       square root and 1/r from the 14-bit estimate, Newton steps and an FMA
+                    correction (no divider instruction)
+  float_guess       1/sqrt in single precision, two Newton steps in double
+Usage (from the repository root, after tools/bootstrap):
+  tools/python perf/row_floor.py [--steps 20] [--reps 2] [--variants baseline,no_sqrt_div]
+Prints the CPU model and, per variant, the minimum pair time over --reps alternating rounds.
+The plugins are built in a temporary worktree of HEAD; the checkout is not touched.
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from pair_vs_pmb import BLOCK, DX, RHO, DT, cpu_model, ours  # noqa: E402
+
+from bbpd.runner import run_lammps  # noqa: E402
+
+ROOT = Path(__file__).resolve().parent.parent
+PATCH = ROOT / "perf" / "probes" / "row_floor.patch"
+VARIANTS = {
+    "baseline": [],
+    "no_sqrt_div": ["NO_SQRT_DIV"],
+    "no_memory": ["NO_MEMORY"],
+    "no_memory_no_sqrt_div": ["NO_MEMORY", "NO_SQRT_DIV"],
+    "rsqrt14_fma": ["RSQRT14_FMA"],
+    "float_guess": ["FLOAT_GUESS"],
+}
+
+
+def cache_entry(cache, name):
+    m = re.search(rf"^{name}:[A-Z]+=(.*)$", cache, re.M)
+    if not m:
+        sys.exit(f"row_floor: {name} not in the build's CMakeCache.txt: run tools/bootstrap")
+    return m.group(1)
+
+
+def build(src, builddir, switches, lammps_dir, lammps_source):
+    flags = " ".join(f"-DBBPD_PROBE_{s}=1" for s in switches)
+    subprocess.run(["cmake", "-S", str(src), "-B", str(builddir), f"-DLAMMPS_DIR={lammps_dir}",
+                    f"-DLAMMPS_SOURCE_DIR={lammps_source}", "-DBBPD_BUILD_TESTS=OFF",
+                    f"-DCMAKE_CXX_FLAGS={flags}"], check=True, capture_output=True)
+    subprocess.run(["cmake", "--build", str(builddir), "--target", "bbpdplugin", "-j",
+                    str(os.cpu_count() or 1)], check=True, capture_output=True)
+    return builddir / "bbpdplugin.so"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--steps", type=int, default=20)
+    ap.add_argument("--reps", type=int, default=2)
+    ap.add_argument("--variants", default=",".join(VARIANTS))
+    args = ap.parse_args()
+    names = args.variants.split(",")
+    for n in names:
+        if n not in VARIANTS:
+            sys.exit(f"row_floor: unknown variant {n}: choose from {', '.join(VARIANTS)}")
+    version = os.environ.get("BBPD_LAMMPS_VERSION", "20260704")
+    cache = (ROOT / "build" / f"lammps-{version}" / "CMakeCache.txt").read_text()
+    lammps_dir = cache_entry(cache, "LAMMPS_DIR")
+    lammps_source = cache_entry(cache, "LAMMPS_SOURCE_DIR")
+    # held still: the force loop alone, on the lattice (the probes' forces are wrong)
+    still = BLOCK.replace("fix 1 all nve\n", "")
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        src = tmp / "src"
+        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "--detach", str(src), "HEAD"],
+                       check=True, capture_output=True)
+        try:
+            if subprocess.run(["git", "-C", str(src), "apply", str(PATCH)]).returncode:
+                sys.exit("row_floor: perf/probes/row_floor.patch no longer applies to "
+                         "src/bbpd_row.h: update the patch")
+            plugins = {n: build(src, tmp / f"build-{n}", VARIANTS[n], lammps_dir, lammps_source)
+                       for n in names}
+            best = {n: float("inf") for n in names}
+            for rep in range(args.reps):
+                for n in names:
+                    pair = ours("constant", "3d").replace("plugin load bbpdplugin.so",
+                                                          f"plugin load {plugins[n]}")
+                    script = still.format(dx=DX, rho=RHO, vol=DX ** 3, pair=pair, v=1.0, dt=DT,
+                                          steps=args.steps, nx=40, ny=40, nz=40)
+                    out = run_lammps(script, workdir=tmp / f"run-{n}-{rep}").output
+                    t = float(re.search(r"^Pair\s*\|\s*([0-9.eE+-]+)", out, re.M).group(1))
+                    best[n] = min(best[n], 1e3 * t / args.steps)
+        finally:
+            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(src)],
+                           capture_output=True)
+    print(f"CPU: {cpu_model()}; 3D block 41^3 held still, pair time in ms/step, "
+          f"minimum of {args.reps} alternating rounds")
+    base = best.get("baseline")
+    for n in names:
+        rel = f"{best[n] / base:6.2f} x baseline" if base else ""
+        print(f"{n:24s} {best[n]:8.2f}  {rel}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,30 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The timing probes of doc/performance.md still fit the kernel they alter.
+
+perf/row_floor.py builds the plugin with perf/probes/row_floor.patch applied; a change to
+src/bbpd_row.h that the patch no longer fits would leave the documented bound unreproducible.
+"""
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+PATCH = ROOT / "perf" / "probes" / "row_floor.patch"
+
+
+@pytest.mark.skipif(shutil.which("git") is None or not (ROOT / ".git").exists(),
+                    reason="needs git and a clone")
+def test_row_floor_patch_applies_to_the_kernel():
+    r = subprocess.run(["git", "apply", "--check", str(PATCH)], cwd=ROOT, capture_output=True,
+                       text=True)
+    assert r.returncode == 0, f"update perf/probes/row_floor.patch: {r.stderr}"
+
+
+def test_every_probe_switch_is_in_the_patch():
+    text = PATCH.read_text()
+    src = (ROOT / "perf" / "row_floor.py").read_text()
+    for switch in ("NO_SQRT_DIV", "NO_MEMORY", "RSQRT14_FMA", "FLOAT_GUESS"):
+        assert f"BBPD_PROBE_{switch}" in text
+        assert f'"{switch}"' in src
