@@ -20,6 +20,7 @@ Prints the CPU model and, per variant, the minimum pair time over --reps alterna
 The plugins are built in a temporary worktree of HEAD; the checkout is not touched.
 """
 import argparse
+import importlib.util
 import os
 import re
 import subprocess
@@ -27,11 +28,18 @@ import sys
 import tempfile
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from pair_vs_pmb import BLOCK, DX, RHO, DT, cpu_model, ours  # noqa: E402
+from bbpd.runner import run_lammps
 
-from bbpd.runner import run_lammps  # noqa: E402
 
+def _pair_vs_pmb():
+    """the scene and the pair lines of perf/pair_vs_pmb.py (a script beside this one)"""
+    spec = importlib.util.spec_from_file_location("pair_vs_pmb", Path(__file__).with_name("pair_vs_pmb.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+PVP = _pair_vs_pmb()
 ROOT = Path(__file__).resolve().parent.parent
 PATCH = ROOT / "perf" / "probes" / "row_floor.patch"
 VARIANTS = {
@@ -76,7 +84,7 @@ def main():
     lammps_dir = cache_entry(cache, "LAMMPS_DIR")
     lammps_source = cache_entry(cache, "LAMMPS_SOURCE_DIR")
     # held still: the force loop alone, on the lattice (the probes' forces are wrong)
-    still = BLOCK.replace("fix 1 all nve\n", "")
+    still = PVP.BLOCK.replace("fix 1 all nve\n", "")
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         src = tmp / "src"
@@ -91,9 +99,9 @@ def main():
             best = {n: float("inf") for n in names}
             for rep in range(args.reps):
                 for n in names:
-                    pair = ours("constant", "3d").replace("plugin load bbpdplugin.so",
+                    pair = PVP.ours("constant", "3d").replace("plugin load bbpdplugin.so",
                                                           f"plugin load {plugins[n]}")
-                    script = still.format(dx=DX, rho=RHO, vol=DX ** 3, pair=pair, v=1.0, dt=DT,
+                    script = still.format(dx=PVP.DX, rho=PVP.RHO, vol=PVP.DX ** 3, pair=pair, v=1.0, dt=PVP.DT,
                                           steps=args.steps, nx=40, ny=40, nz=40)
                     out = run_lammps(script, workdir=tmp / f"run-{n}-{rep}").output
                     t = float(re.search(r"^Pair\s*\|\s*([0-9.eE+-]+)", out, re.M).group(1))
@@ -101,7 +109,7 @@ def main():
         finally:
             subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(src)],
                            capture_output=True)
-    print(f"CPU: {cpu_model()}; 3D block 41^3 held still, pair time in ms/step, "
+    print(f"CPU: {PVP.cpu_model()}; 3D block 41^3 held still, pair time in ms/step, "
           f"minimum of {args.reps} alternating rounds")
     base = best.get("baseline")
     for n in names:
