@@ -84,6 +84,9 @@ def main():
     lammps_dir = cache_entry(cache, "LAMMPS_DIR")
     lammps_source = cache_entry(cache, "LAMMPS_SOURCE_DIR")
     # held still: the force loop alone, on the lattice (the probes' forces are wrong)
+    if "fix 1 all nve\n" not in PVP.BLOCK:
+        sys.exit("row_floor: the block of pair_vs_pmb.py no longer integrates with 'fix 1 all nve': "
+                 "update how row_floor holds it still")
     still = PVP.BLOCK.replace("fix 1 all nve\n", "")
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)

@@ -70,6 +70,9 @@ struct CoefCache {
   std::vector<double> xi0, coef;        // per entry, value
   unsigned epoch = 0;                   // of the pair settings the coefficients were computed with
   static constexpr int TYPE_STRIDE = 1 << 15;
+  // where the partner volume's and the types' bits enter the slot (slot() and the SIMD copies
+  // in load_values must agree, or the vector lookups miss every time)
+  static constexpr int VOLUME_SHIFT = 7, TYPES_SHIFT = 45;
   // the partner volume and types of every entry so far, unless mixed
   bool filled = false, mixed = false;
   double only_v = 0.0;
@@ -102,7 +105,7 @@ struct CoefCache {
   {
     // every bit of the key folded into the slot: round-off variants of a length differ in the
     // low mantissa bits, grid lengths in the high ones and in the exponent (xi and 2 xi)
-    const std::uint64_t h = qb ^ (vb >> 7) ^ (t << 45);
+    const std::uint64_t h = qb ^ (vb >> VOLUME_SHIFT) ^ (t << TYPES_SHIFT);
     std::uint64_t s = 0;
     for (int b = 0; b < 64; b += SLOT_BITS) s ^= h >> b;
     return s & (SIZE - 1);
@@ -243,8 +246,9 @@ inline void load_values(const RecomputedValues<CoefFn, UNIFORM> &v, __mmask8 m, 
   const __m256i tj = _mm256_add_epi32(jtype, _mm256_set1_epi32(v.type[v.i] * CoefCache::TYPE_STRIDE));
   // the cache slots, as CoefCache::slot
   const __m512i qb = _mm512_castpd_si512(rsq0), vb = _mm512_castpd_si512(vj);
-  const __m512i h = _mm512_xor_si512(_mm512_xor_si512(qb, _mm512_srli_epi64(vb, 7)),
-                                     _mm512_slli_epi64(_mm512_cvtepu32_epi64(tj), 45));
+  const __m512i h =
+      _mm512_xor_si512(_mm512_xor_si512(qb, _mm512_srli_epi64(vb, CoefCache::VOLUME_SHIFT)),
+                       _mm512_slli_epi64(_mm512_cvtepu32_epi64(tj), CoefCache::TYPES_SHIFT));
   __m512i fold = h;
   for (int b = CoefCache::SLOT_BITS; b < 64; b += CoefCache::SLOT_BITS)
     fold = _mm512_xor_si512(fold, _mm512_srli_epi64(h, b));
@@ -406,8 +410,9 @@ inline void load_values(const RecomputedValues<CoefFn, UNIFORM> &v, __m256d m, _
   const __m128i tj = _mm_add_epi32(jtype, _mm_set1_epi32(v.type[v.i] * CoefCache::TYPE_STRIDE));
   // the cache slots, as CoefCache::slot
   const __m256i qb = _mm256_castpd_si256(rsq0), vb = _mm256_castpd_si256(vj);
-  const __m256i h = _mm256_xor_si256(_mm256_xor_si256(qb, _mm256_srli_epi64(vb, 7)),
-                                     _mm256_slli_epi64(_mm256_cvtepu32_epi64(tj), 45));
+  const __m256i h =
+      _mm256_xor_si256(_mm256_xor_si256(qb, _mm256_srli_epi64(vb, CoefCache::VOLUME_SHIFT)),
+                       _mm256_slli_epi64(_mm256_cvtepu32_epi64(tj), CoefCache::TYPES_SHIFT));
   __m256i fold = h;
   for (int b = CoefCache::SLOT_BITS; b < 64; b += CoefCache::SLOT_BITS)
     fold = _mm256_xor_si256(fold, _mm256_srli_epi64(h, b));
