@@ -40,6 +40,7 @@ struct BondLaw {
   // per type pair [itype][jtype], owned by the pair style
   const double *const *micromodulus = nullptr;
   const double *const *horizon = nullptr;
+  const int *const *bondless = nullptr;    // type pairs that form no bonds (separate bodies)
 
   // reference distance below which a pair is in a family (pmb: up to and including delta)
   double family_cutoff(int itype, int jtype) const
@@ -49,6 +50,7 @@ struct BondLaw {
   // is a pair at squared reference distance rsq in a family?
   bool bonded(int itype, int jtype, double rsq) const
   {
+    if (bondless && bondless[itype][jtype]) return false;
     if (pmb) return PMB::in_family(rsq, horizon[itype][jtype]);
     const double rc = family_cutoff(itype, jtype);
     return rsq < rc * rc;
