@@ -46,7 +46,7 @@ V0 = 32.0                                   # m/s, the experiment's impact veloc
 # experiment (Kalthoff & Winkler 1988): projectile 50 mm in diameter; plate 9 mm thick, struck
 # between notches 50 mm apart. The 2D projectile's E and rho carry this ratio (input script).
 AREA_RATIO = math.pi * 0.025 ** 2 / (0.050 * 0.009)       # 4.363
-V_INTERFACE = V0 * AREA_RATIO / (AREA_RATIO + 1.0)         # 26.05 m/s (1D two-bar)
+V_INTERFACE = V0 * AREA_RATIO / (AREA_RATIO + 1.0)         # 26.03 m/s (1D two-bar)
 # the projectile's waves: E and rho scaled alike keep the plate's speeds (plane strain, nu = 1/4)
 C_P = study.C_P                                           # 5407 m/s, plane wave
 C_STRIP = math.sqrt(study.E / (1.0 - study.NU ** 2) / study.RHO)   # 5097 m/s, plane-strain strip
