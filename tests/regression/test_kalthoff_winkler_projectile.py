@@ -148,3 +148,25 @@ def test_one_and_two_ranks_give_the_same_bits(projectile):
         if name == "projectile.dat":
             scale[4] = scale[3]          # y momentum: round-off of the x momentum's size
         assert np.all(np.abs(a - b) <= 1e-12 * scale), name
+
+
+@pytest.mark.slow
+def test_3d_plate_conserves_momentum_and_is_mirror_symmetric(tmp_path):
+    """in.kalthoff_winkler_3d at dx = 3 mm (three layers, 8,118 atoms), 40 us: momentum to
+    round-off, and the damage the same in mirror atoms about the mid-line and the mid-plane."""
+    from bbpd import readers
+    work = tmp_path / "3d"
+    run_lammps(str(kwp.EXAMPLE_3D), work, vars={"dx": "3.0e-3", "tend": "40e-6"})
+    r = kwp.analyse(work)
+    assert r["setup"] == "3d" and r["loading"] == "projectile"
+    assert r["momentum_drift"] < 1e-13
+    assert abs(r["v_interface"] / kwp.V_INTERFACE - 1.0) < 0.03
+    _, d = readers.dump_snapshots(work / "final3d.dump")[-1]
+    x, y, z, phi = d["f_ref[1]"], d["f_ref[2]"], d["f_ref[3]"], d["c_dmg"]
+    assert phi.max() > 0.3                                # cracks have started
+    key = {(round(a / 1.5e-3), round(b / 1.5e-3), round(c / 1.5e-3)): p
+           for a, b, c, p in zip(x, y, z, phi)}
+    Ly, Lz = 0.198, 0.009
+    for a, b, c, p in zip(x, y, z, phi):
+        assert abs(p - key[(round(a / 1.5e-3), round((Ly - b) / 1.5e-3), round(c / 1.5e-3))]) < 1e-12
+        assert abs(p - key[(round(a / 1.5e-3), round(b / 1.5e-3), round((Lz - c) / 1.5e-3))]) < 1e-12

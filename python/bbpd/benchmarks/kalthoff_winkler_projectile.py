@@ -42,6 +42,7 @@ from bbpd.runner import run_lammps
 
 # ---------------------------------------------------------------------------- physics
 
+EXAMPLE_3D = kw.EXAMPLE.with_name("in.kalthoff_winkler_3d")
 V0 = 32.0                                   # m/s, the experiment's impact velocity
 # experiment (Kalthoff & Winkler 1988): projectile 50 mm in diameter; plate 9 mm thick, struck
 # between notches 50 mm apart. The 2D projectile's E and rho carry this ratio (input script).
@@ -90,6 +91,8 @@ def measure_contact(d, dt):
     f = -d["force"]                                  # the plate pushes the projectile back
     plateau = float(f[win].mean())
     out["force_plateau"] = plateau
+    gap = d["x_plate"] - d["x_proj"]
+    out["gap_min"] = float(gap.min())
     drop = np.nonzero((t > INTERFACE_WINDOW_US[1]) & (f < 0.5 * plateau))[0]
     out["t_drop_us"] = float(t[drop[0]]) if len(drop) else None
     zero = np.nonzero((t > INTERFACE_WINDOW_US[1]) & (np.abs(f) < OPEN_FRACTION * np.abs(f).max()))[0]
@@ -108,6 +111,16 @@ def read_projectile_log(text):
     return None if m is None else {"Lp": float(m[1]), "ncol": int(m[2])}
 
 
+def loop_cpu(text):
+    """CPU seconds of the run's loop, all ranks: LAMMPS's loop (wall) time x its CPU use.
+    On a shared machine the wall time follows the load; the CPU time much less."""
+    loop = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs", text)
+    use = re.search(r"([0-9.]+)% CPU use with (\d+) MPI tasks", text)
+    if not (loop and use):
+        return None
+    return float(loop[1]) * float(use[1]) / 100.0 * int(use[2])
+
+
 def analyse(workdir):
     """The study's measures plus, for a projectile run, the contact measures."""
     workdir = Path(workdir)
@@ -115,20 +128,31 @@ def analyse(workdir):
     log = (workdir / "log.lammps").read_text()
     proj = read_projectile_log(log)
     res["loading"] = "prescribed" if proj is None else "projectile"
+    res["setup"] = "3d" if re.search(r"^KW 3d:", log, re.M) else "2d"
+    res["loop_cpu_s"] = loop_cpu(log)
     m = re.search(r"types 1 1: E = \S+\s+Gc = (\S+)", log)
     res["Gc"] = float(m[1]) if m else None
     if proj is not None:
         res.update(proj)
         res["Lp_effective"] = proj["ncol"] * res["dx"]
         res.update(measure_contact(read_projectile(workdir / "projectile.dat"), res["dt"]))
+        # the contact stress: force over the struck face (width between the notch lines x
+        # thickness: dx in 2D, one layer of cells; the plate's in 3D)
+        m3 = re.search(r"^KW 3d: thickness (\S+)", log, re.M)
+        thick = float(m3[1]) if m3 else res["dx"]
+        res["contact_stress_MPa"] = res["force_plateau"] / ((res["yhi"] - res["ylo"]) * thick) / 1e6
+        # the faces' largest overlap past the contact distance, in grid spacings
+        res["overlap_max_dx"] = (0.9 * res["dx"] - res["gap_min"]) / res["dx"]
         res["two_l_over_c_us"] = two_l_over_c(res["Lp_effective"])
     return res
 
 
 # ---------------------------------------------------------------------------- running
 
-def run_case(workdir, kernel, dx, loading, gc, nprocs=1, tend=TEND, lp=None, reuse=False):
-    """Run one case in workdir (unless reuse and it has finished) and measure it."""
+def run_case(workdir, kernel, dx, loading, gc, nprocs=1, tend=TEND, lp=None, reuse=False,
+             dim=2):
+    """Run one case in workdir (unless reuse and it has finished) and measure it; dim = 3
+    runs in.kalthoff_winkler_3d."""
     workdir = Path(workdir)
     done = workdir / "case.json"
     if not (reuse and done.is_file()):
@@ -137,34 +161,39 @@ def run_case(workdir, kernel, dx, loading, gc, nprocs=1, tend=TEND, lp=None, reu
         if lp is not None:
             variables["Lp"] = repr(float(lp))
         start = time.perf_counter()
-        run_lammps(str(kw.EXAMPLE), workdir, nprocs=nprocs, vars=variables)
+        run_lammps(str(kw.EXAMPLE if dim == 2 else EXAMPLE_3D), workdir, nprocs=nprocs,
+                   vars=variables)
         wall = time.perf_counter() - start
         done.write_text(json.dumps({"kernel": kernel, "dx": dx, "loading": loading, "Gc": gc,
                                     "wall_s": wall, "nprocs": nprocs}))
     res = analyse(workdir)
-    res["wall_s"] = json.loads(done.read_text())["wall_s"]
+    case = json.loads(done.read_text())
+    res["wall_s"], res["nprocs"] = case["wall_s"], case["nprocs"]
     return res
 
 
 # ---------------------------------------------------------------------------- table
 
-COLUMNS = ("loading", "kernel", "dx_mm", "Gc", "first_bond_us", "band_us", "initial_deg",
+COLUMNS = ("setup", "loading", "kernel", "dx_mm", "Gc", "first_bond_us", "band_us", "initial_deg",
            "fit_deg", "chord_deg", "length_end_mm", "crack_stops", "far_edge_us",
-           "v_interface", "t_drop_us", "t_open_us", "momentum_drift", "wall_s")
+           "v_interface", "contact_stress_MPa", "overlap_max_dx", "t_drop_us", "t_open_us",
+           "t_retouch_us", "momentum_drift", "loop_cpu_s", "nprocs")
 
 
 def row(r):
     """One CSV row of a result (numbers as measured; None as empty)."""
     stops = ("edge %.0f" % r["t_edge_us"] if r.get("t_edge_us") is not None else
              "arrest %.0f" % r["t_arrest_us"] if r.get("t_arrest_us") is not None else "running")
-    return {"loading": r["loading"], "kernel": r["kernel"], "dx_mm": r["dx"] * 1e3,
+    return {"setup": r["setup"], "loading": r["loading"], "kernel": r["kernel"],
+            "dx_mm": r["dx"] * 1e3,
             "Gc": r["Gc"], "first_bond_us": r["t_init_us"], "band_us": r["t_band_us"],
             "initial_deg": study.angle(r, "initial"), "fit_deg": study.angle(r, "fit"),
             "chord_deg": study.angle(r, "chord"), "length_end_mm": r["length_end_mm"],
             "crack_stops": stops, "far_edge_us": r.get("far_edge_own_us"),
-            "v_interface": r.get("v_interface"), "t_drop_us": r.get("t_drop_us"),
-            "t_open_us": r.get("t_open_us"), "momentum_drift": r.get("momentum_drift"),
-            "wall_s": r["wall_s"]}
+            "v_interface": r.get("v_interface"), "contact_stress_MPa": r.get("contact_stress_MPa"),
+            "overlap_max_dx": r.get("overlap_max_dx"), "t_drop_us": r.get("t_drop_us"),
+            "t_open_us": r.get("t_open_us"), "t_retouch_us": r.get("t_retouch_us"), "momentum_drift": r.get("momentum_drift"),
+            "loop_cpu_s": r["loop_cpu_s"], "nprocs": r["nprocs"]}
 
 
 def write_csv(rows, path):
@@ -197,7 +226,7 @@ def verdict(rows):
         defs = [d for d in ("initial", "fit", "chord") if _num(r[f"{d}_deg"]) is not None
                 and abs(_num(r[f"{d}_deg"]) - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
         if defs and crosses_plate(r):
-            hits.append(f"{r['loading']} {r['kernel']} {float(r['dx_mm']):g} mm Gc = "
+            hits.append(f"{r['setup'].upper()} {r['loading']} {r['kernel']} {float(r['dx_mm']):g} mm Gc = "
                         f"{float(r['Gc']):g} ({', '.join(defs)})")
     return ("Setups with 70 +- 2 deg and cracks that cross the plate: "
             + ("; ".join(hits) if hits else "none") + ".")
@@ -207,19 +236,19 @@ def markdown(rows):
     def f(v, spec):
         v = _num(v)
         return "-" if v is None else format(v, spec)
-    head = ("| loading | kernel | dx (mm) | Gc (J/m2) | first bond (us) | damage band (us) | "
+    head = ("| setup | loading | kernel | dx (mm) | Gc (J/m2) | first bond (us) | damage band (us) | "
             "initial (deg) | fit (deg) | chord (deg) | crack length at end (mm) | crack stops (us) | "
             "far-edge crack (us) | interface speed (m/s) | contact force drop (us) | "
-            "contact opens (us) | momentum drift | run time (s) |")
-    lines = [head, "|" + "---|" * 17]
+            "contact opens (us) | momentum drift | loop CPU (s) | ranks |")
+    lines = [head, "|" + "---|" * 19]
     for r in rows:
         lines.append("| " + " | ".join([
-            r["loading"], r["kernel"], f"{float(r['dx_mm']):g}", f"{float(r['Gc']):g}",
+            r["setup"].upper(), r["loading"], r["kernel"], f"{float(r['dx_mm']):g}", f"{float(r['Gc']):g}",
             f(r["first_bond_us"], ".1f"), f(r["band_us"], ".1f"), f(r["initial_deg"], ".1f"),
             f(r["fit_deg"], ".1f"), f(r["chord_deg"], ".1f"), f(r["length_end_mm"], ".0f"),
             r["crack_stops"], f(r["far_edge_us"], ".0f"), f(r["v_interface"], ".2f"),
             f(r["t_drop_us"], ".1f"), f(r["t_open_us"], ".1f"), f(r["momentum_drift"], ".1e"),
-            f(r["wall_s"], ".0f")]) + " |")
+            f(r["loop_cpu_s"], ".0f"), r["nprocs"]]) + " |")
     return "\n".join(lines) + "\n\n" + verdict(rows)
 
 
@@ -238,6 +267,8 @@ def main(argv=None):
     ap.add_argument("--dx", nargs="+", type=float, default=[2e-3])
     ap.add_argument("--loadings", nargs="+", default=["prescribed", "projectile"])
     ap.add_argument("--gc", nargs="+", type=float, default=list(GC_VALUES.values()))
+    ap.add_argument("--dim", type=int, default=2, choices=(2, 3))
+    ap.add_argument("--tend", type=float, default=TEND)
     ap.add_argument("--work", default="/tmp/kw-projectile")
     ap.add_argument("--np", type=int, default=1, dest="nprocs")
     ap.add_argument("--reuse", action="store_true")
@@ -249,8 +280,10 @@ def main(argv=None):
         for kernel in args.kernels:
             for loading in args.loadings:
                 for gc in args.gc:
-                    wd = work / f"{loading}-{kernel}-dx{dx * 1e3:g}mm-Gc{gc:g}"
-                    r = run_case(wd, kernel, dx, loading, gc, nprocs=args.nprocs, reuse=args.reuse)
+                    wd = work / (f"{'3d-' if args.dim == 3 else ''}{loading}-{kernel}-"
+                                 f"dx{dx * 1e3:g}mm-Gc{gc:g}")
+                    r = run_case(wd, kernel, dx, loading, gc, nprocs=args.nprocs,
+                                 reuse=args.reuse, dim=args.dim, tend=args.tend)
                     (wd / "results.json").write_text(json.dumps(
                         {k: v for k, v in r.items() if k not in ("damage_map", "trajectory")},
                         default=str))
@@ -263,8 +296,8 @@ def main(argv=None):
         c = json.loads(p.read_text())
         rows.append(row(run_case(p.parent, c["kernel"], c["dx"], c["loading"], c["Gc"],
                                  reuse=True)))
-    rows.sort(key=lambda r: (order[r["loading"]], kw.KERNELS.index(r["kernel"]), -r["dx_mm"],
-                             -r["Gc"]))
+    rows.sort(key=lambda r: (r["setup"], order[r["loading"]], kw.KERNELS.index(r["kernel"]),
+                             -r["dx_mm"], -r["Gc"]))
     if args.csv:
         write_csv(rows, args.csv)
         rows = read_csv(args.csv)
