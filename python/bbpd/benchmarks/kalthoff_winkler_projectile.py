@@ -172,6 +172,73 @@ def run_case(workdir, kernel, dx, loading, gc, nprocs=1, tend=TEND, lp=None, reu
     return res
 
 
+# ---------------------------------------------------------------------------- figures
+
+def plot_contact(workdir, path):
+    """Face velocities and contact force of a projectile run against the two-bar estimate."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    r = analyse(workdir)
+    d = read_projectile(Path(workdir) / "projectile.dat")
+    t = d["step"] * r["dt"] * 1e6
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(6.0, 5.5), sharex=True)
+    try:
+        a1.plot(t, d["v_proj"], lw=0.8, label="projectile front column")
+        a1.plot(t, d["v_plate"], lw=0.8, label="plate's struck column")
+        a1.axhline(V_INTERFACE, color="k", ls="--", lw=1,
+                   label=f"two-bar estimate {V_INTERFACE:.2f} m/s")
+        a1.set_ylabel("x velocity (m/s)")
+        a1.legend(fontsize=7)
+        a2.plot(t, -d["force"] / 1e3, lw=0.8, color="tab:red")
+        for x, name, h in zip(r["two_l_over_c_us"], ("2Lp/c_p", "2Lp/c_strip"), (0.92, 0.82)):
+            a2.axvline(x, color="k", ls=":", lw=1)
+            a2.text(x, a2.get_ylim()[1] * h, " " + name, fontsize=7)
+        if r["t_open_us"] is not None:
+            a2.axvline(r["t_open_us"], color="tab:red", ls="--", lw=1)
+            a2.text(r["t_open_us"], 0.0, f" opens {r['t_open_us']:.1f} us", fontsize=7)
+        a2.set_ylabel("contact force (kN)")
+        a2.set_xlabel("t (us)")
+        a1.set_title(f"projectile, {r['kernel']}, dx = {r['dx'] * 1e3:g} mm, "
+                     f"Gc = {r['Gc']:g} J/m2", fontsize=9)
+        fig.tight_layout()
+        fig.savefig(path, dpi=150)
+    finally:
+        plt.close(fig)
+    return path
+
+
+def plot_paths(workdirs, labels, path, title):
+    """Crack-tip paths of several runs with the 70-degree lines (kalthoff_winkler's frame)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(3.8, 6.0))
+    try:
+        rs = [kw.analyse(w) for w in workdirs]
+        g = rs[0]
+        ax.plot([0, g["Lx"] * 1e3, g["Lx"] * 1e3, 0, 0], [0, 0, g["Ly"] * 1e3, g["Ly"] * 1e3, 0],
+                color="black", linewidth=0.8)
+        for r, name in zip(rs, labels):
+            tr = r["trajectory"]
+            line = None
+            for side, y0 in (("lo", r["ylo"]), ("hi", r["yhi"])):
+                L = np.array(tr["L_" + side])
+                p = np.vstack([[r["a"], y0], np.array(tr[side])[L > 0]]) * 1e3
+                ax.plot([0, r["a"] * 1e3], [y0 * 1e3] * 2, color="grey", linewidth=2)
+                line = ax.plot(p[:, 0], p[:, 1], "-", linewidth=1.1,
+                               color=None if line is None else line[0].get_color(),
+                               label=name if side == "lo" else None)
+        kw.draw_plate_frame(ax, g)
+        ax.legend(fontsize=6, loc="center left")
+        ax.set_title(title, fontsize=8)
+        fig.tight_layout()
+        fig.savefig(path, dpi=150)
+    finally:
+        plt.close(fig)
+    return path
+
+
 # ---------------------------------------------------------------------------- table
 
 COLUMNS = ("setup", "loading", "kernel", "dx_mm", "Gc", "first_bond_us", "band_us", "initial_deg",
@@ -274,6 +341,7 @@ def main(argv=None):
     ap.add_argument("--reuse", action="store_true")
     ap.add_argument("--csv", default=None, help="write every finished run in --work here")
     ap.add_argument("--readme", default=None, help="put the table between its markers here")
+    ap.add_argument("--figures", default=None, help="write the PNGs here")
     args = ap.parse_args(argv)
     work = Path(args.work)
     for dx in args.dx:
@@ -305,6 +373,23 @@ def main(argv=None):
         print(text)
         if args.readme:
             update_readme(args.readme, text)
+    if args.figures:
+        figs = Path(args.figures)
+        for p in sorted(work.glob("projectile-*-Gc69000/case.json")):
+            plot_contact(p.parent, figs / f"projectile_contact_{p.parent.name.split('-', 2)[2]}.png")
+        for kernel in kw.KERNELS:
+            for dx in (2e-3, 1e-3):
+                tag = f"{kernel}-dx{dx * 1e3:g}mm"
+                dirs, names = [], []
+                for loading in ("prescribed", "projectile"):
+                    for name, gc in GC_VALUES.items():
+                        wd = work / f"{loading}-{tag}-Gc{gc:g}"
+                        if (wd / "case.json").is_file():
+                            dirs.append(wd)
+                            names.append(f"{loading}, Gc {gc:g}")
+                if len(dirs) > 1:
+                    plot_paths(dirs, names, figs / f"projectile_paths_{tag}.png",
+                               f"crack-tip paths, {kernel}, dx = {dx * 1e3:g} mm")
 
 
 if __name__ == "__main__":
