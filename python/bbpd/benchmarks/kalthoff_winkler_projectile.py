@@ -16,7 +16,7 @@ interface     mean x velocity of the two faces in contact (the plate's first col
 contact drop  first time the contact force falls below half its mean over INTERFACE_WINDOW
 contact open  first time after that at which the contact force on the projectile is zero
               (|F| < OPEN_FRACTION x its largest value: round-off of the projectile's own bond
-              forces), against 2 Lp / c of the projectile: with equal lengths and wave speeds
+              forces) and stays zero for OPEN_MIN_US (shorter gaps: the faces chatter), against 2 Lp / c of the projectile: with equal lengths and wave speeds
               the two 1D bars separate exactly then (the relief from the projectile's rear and
               the tension from the plate's far edge arrive together)
 
@@ -57,6 +57,7 @@ LP_DEFAULT = 0.100                                        # m, the input script'
 # plate's wave from the notch tips (2 x 50 mm / c_p = 18.5 us), where the struck strip widens
 INTERFACE_WINDOW_US = (2.0, 2.0 * 0.050 / C_P * 1e6)
 OPEN_FRACTION = 1.0e-9
+OPEN_MIN_US = 1.0
 GC_VALUES = {"paper": 6.9e4, "KIc90": 4.24e4, "phasefield": 2.213e4}   # J/m^2, issue 28
 TEND = 100.0e-6
 
@@ -95,13 +96,17 @@ def measure_contact(d, dt):
     out["gap_min"] = float(gap.min())
     drop = np.nonzero((t > INTERFACE_WINDOW_US[1]) & (f < 0.5 * plateau))[0]
     out["t_drop_us"] = float(t[drop[0]]) if len(drop) else None
-    zero = np.nonzero((t > INTERFACE_WINDOW_US[1]) & (np.abs(f) < OPEN_FRACTION * np.abs(f).max()))[0]
-    out["t_open_us"] = float(t[zero[0]]) if len(zero) else None
-    # does it touch again after opening?
-    out["t_retouch_us"] = None
-    if len(zero):
-        again = np.nonzero((t > t[zero[0]]) & (np.abs(f) >= OPEN_FRACTION * np.abs(f).max()))[0]
-        out["t_retouch_us"] = float(t[again[0]]) if len(again) else None
+    # open: the first time the force is zero and stays zero for OPEN_MIN_US (shorter gaps are
+    # the faces chattering); touch again: the first nonzero force after that
+    touching = np.abs(f) >= OPEN_FRACTION * np.abs(f).max()
+    out["t_open_us"], out["t_retouch_us"] = None, None
+    for k in np.nonzero((t > INTERFACE_WINDOW_US[1]) & ~touching)[0]:
+        later = np.nonzero(touching[k:])[0]
+        end = t[k + later[0]] if len(later) else np.inf
+        if end - t[k] >= OPEN_MIN_US or not len(later):
+            out["t_open_us"] = float(t[k])
+            out["t_retouch_us"] = None if not len(later) else float(end)
+            break
     out["px_plate_end"] = float(d["px_plate"][-1] / p0)
     return out
 
@@ -244,7 +249,7 @@ def plot_paths(workdirs, labels, path, title):
 COLUMNS = ("setup", "loading", "kernel", "dx_mm", "Gc", "first_bond_us", "band_us", "initial_deg",
            "fit_deg", "chord_deg", "length_end_mm", "crack_stops", "far_edge_us",
            "v_interface", "contact_stress_MPa", "overlap_max_dx", "t_drop_us", "t_open_us",
-           "t_retouch_us", "momentum_drift", "loop_cpu_s", "nprocs")
+           "t_retouch_us", "momentum_drift", "tip_mismatch_mm", "loop_cpu_s", "nprocs")
 
 
 def row(r):
@@ -260,6 +265,7 @@ def row(r):
             "v_interface": r.get("v_interface"), "contact_stress_MPa": r.get("contact_stress_MPa"),
             "overlap_max_dx": r.get("overlap_max_dx"), "t_drop_us": r.get("t_drop_us"),
             "t_open_us": r.get("t_open_us"), "t_retouch_us": r.get("t_retouch_us"), "momentum_drift": r.get("momentum_drift"),
+            "tip_mismatch_mm": r["symmetry_tip_mm"],
             "loop_cpu_s": r["loop_cpu_s"], "nprocs": r["nprocs"]}
 
 
@@ -376,7 +382,7 @@ def main(argv=None):
     if args.figures:
         figs = Path(args.figures)
         for p in sorted(work.glob("projectile-*-Gc69000/case.json")):
-            plot_contact(p.parent, figs / f"projectile_contact_{p.parent.name.split('-', 2)[2]}.png")
+            plot_contact(p.parent, figs / f"projectile_contact_{p.parent.name.split('-', 1)[1]}.png")
         for kernel in kw.KERNELS:
             for dx in (2e-3, 1e-3):
                 tag = f"{kernel}-dx{dx * 1e3:g}mm"
