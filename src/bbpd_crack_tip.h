@@ -59,11 +59,11 @@ struct Params {
 };
 
 struct Result {
-  bool found = false;        // some node is connected to S
-  std::size_t nodes = 0;     // nodes reached from S
-  std::int64_t tag = -1;     // the tip atom (-1: none)
-  double x = 0.0, y = 0.0;   // tip position (S if none)
-  double extension = 0.0;    // path length of the tip
+  bool found = false;             // some node is connected to S
+  std::size_t nodes = 0;          // nodes reached from S
+  std::int64_t tag = -1;          // the tip atom (-1: none)
+  double x = 0.0, y = 0.0;        // tip position (S if none)
+  double extension = 0.0;         // path length of the tip
   double back[2] = {0.0, 0.0};    // start of the direction chord
   double direction = 0.0;         // degrees in (-180, 180]: the chord, or d if none
 };
@@ -71,8 +71,7 @@ struct Result {
 /* may the atom be a node? (used to select what is gathered, and again by the search) */
 inline bool candidate(const Params &p, double x, double y, double damage)
 {
-  return damage >= p.threshold &&
-      (x - p.start[0]) * p.dir[0] + (y - p.start[1]) * p.dir[1] >= 0.0;
+  return damage >= p.threshold && (x - p.start[0]) * p.dir[0] + (y - p.start[1]) * p.dir[1] >= 0.0;
 }
 
 inline double degrees(double dx, double dy)

@@ -26,10 +26,10 @@ using namespace LAMMPS_NS;
 using BBPD::CrackTip::Node;
 
 namespace {
-// damage of the first row of atoms beside a straight crack through a uniform grid, m =
-// horizon/spacing: the share of the family across the crack line at dx/2, 0.34 (m = 2),
-// 0.39 (m = 3), 0.44 (m = 5); an atom just ahead of a notch tip loses about half of that
-// (measured in doc/compute_bbpd_crack_tip.rst). 0.3 takes the first and not the second.
+// damage beside a notch between two rows of a square grid, horizon m spacings (measured,
+// doc/compute_bbpd_crack_tip.rst): 0.38 / 0.41 / 0.44 in the first row of atoms at m = 2 / 3 / 5,
+// 0.10 / 0.11 / 0.12 at the first atom ahead of the notch tip. 0.3 takes the first row of a
+// crack and not the atoms ahead of its tip.
 constexpr double THRESHOLD_DEFAULT = 0.3;
 constexpr double SPAN_DEFAULT = 2.0;      // chord of the direction, in units of the link
 constexpr double WINDOW_DEFAULT = 0.0;    // speed since the previous invocation

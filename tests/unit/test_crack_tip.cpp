@@ -161,7 +161,7 @@ TEST(CrackTip, PartsBeyondAGapWiderThanTheLinkAreIgnored)
   double at[2] = {0.0, 0.0};
   add_leg(nodes, at, 6, 1.0, 0.0, tag);    // ends at x = 6
   const double end = at[0];
-  at[0] += 1.6 - 1.0;                      // next node 1.6 > link after the last
+  at[0] += 1.6 - 1.0;    // next node 1.6 > link after the last
   add_leg(nodes, at, 30, 1.0, 0.0, tag);
   for (int k = 0; k < 50; k++) nodes.push_back({tag++, 3.0 + k, 10.0, 1.0});    // far band
   Result r = find_tip(nodes, params(LINK));
@@ -182,8 +182,8 @@ TEST(CrackTip, TiesGoToTheSmallestYThenXWhateverTheOrderAndNumbering)
   std::vector<Node> nodes;
   std::int64_t tag = 50;
   double up[2] = {0.0, 0.0}, down[2] = {0.0, 0.0};
-  add_leg(nodes, up, 7, 1.0, 20.0, tag);     // tags 50..56
-  add_leg(nodes, down, 7, 1.0, -20.0, tag);  // tags 57..63
+  add_leg(nodes, up, 7, 1.0, 20.0, tag);       // tags 50..56
+  add_leg(nodes, down, 7, 1.0, -20.0, tag);    // tags 57..63
   Params p = params(1.01);
   EXPECT_EQ(find_tip(nodes, p).tag, 63);
   std::vector<Node> swapped = nodes;
