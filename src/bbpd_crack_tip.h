@@ -115,21 +115,29 @@ inline Result find_tip(std::vector<Node> all, const Params &p)
   for (std::size_t i = 0; i < n; i++) binned[i] = {cell_of(node[i]), i};
   std::sort(binned.begin(), binned.end());
 
-  auto dist = [&](std::size_t i, std::size_t j) {
-    const double dx = node[j].x - node[i].x, dy = node[j].y - node[i].y;
-    return std::sqrt(dx * dx + dy * dy);
-  };
-  std::vector<std::vector<std::size_t>> adj(n);
+  // edges as compressed rows with their lengths; a row lists the cells in a fixed order and
+  // each cell in node order, so the same nodes give the same rows
+  std::vector<std::size_t> row(n + 1, 0), col;
+  std::vector<double> length;
+  const double wide = p.link * p.link * (1.0 + 1.0e-12);    // beyond it no d <= link
   for (std::size_t i = 0; i < n; i++) {
     const Cell c = cell_of(node[i]);
     for (std::int64_t cx = c.first - 1; cx <= c.first + 1; cx++)
       for (std::int64_t cy = c.second - 1; cy <= c.second + 1; cy++) {
-        const auto lo = std::lower_bound(binned.begin(), binned.end(),
-                                         std::make_pair(Cell(cx, cy), std::size_t(0)));
-        for (auto it = lo; it != binned.end() && it->first == Cell(cx, cy); ++it)
-          if (it->second != i && dist(i, it->second) <= p.link) adj[i].push_back(it->second);
+        auto it = std::lower_bound(binned.begin(), binned.end(),
+                                   std::make_pair(Cell(cx, cy), std::size_t(0)));
+        for (; it != binned.end() && it->first == Cell(cx, cy); ++it) {
+          const std::size_t j = it->second;
+          const double dx = node[j].x - node[i].x, dy = node[j].y - node[i].y;
+          if (j == i || dx * dx + dy * dy > wide) continue;    // the square root only near
+          const double d = std::sqrt(dx * dx + dy * dy);
+          if (d <= p.link) {
+            col.push_back(j);
+            length.push_back(d);
+          }
+        }
       }
-    std::sort(adj[i].begin(), adj[i].end());    // node order
+    row[i + 1] = col.size();
   }
 
   // Dijkstra from S; equal keys leave the queue in node order
@@ -153,8 +161,9 @@ inline Result find_tip(std::vector<Node> all, const Params &p)
     if (done[i]) continue;
     done[i] = 1;
     r.nodes++;
-    for (std::size_t j : adj[i]) {
-      const double dj = d + dist(i, j);
+    for (std::size_t k = row[i]; k < row[i + 1]; k++) {
+      const std::size_t j = col[k];
+      const double dj = d + length[k];
       if (dj < len[j]) {
         len[j] = dj;
         pred[j] = i;

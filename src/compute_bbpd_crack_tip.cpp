@@ -11,14 +11,12 @@
 #include "error.h"
 #include "fix_bbpd_bonds.h"
 #include "force.h"
-#include "memory.h"
 #include "modify.h"
 #include "pair_bbpd.h"
 #include "update.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <string>
 #include <type_traits>
 
@@ -42,7 +40,7 @@ static_assert(std::is_trivially_copyable<Node>::value, "nodes are sent as bytes"
 ComputeBBPDCrackTip::ComputeBBPDCrackTip(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), values{0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
     params{{0.0, 0.0}, {1.0, 0.0}, THRESHOLD_DEFAULT, UNSET, UNSET}, link_user(UNSET),
-    span_user(UNSET), history(WINDOW_DEFAULT), bonds(nullptr)
+    span_user(UNSET), history(WINDOW_DEFAULT), bonds(nullptr), have_found(false)
 {
   if (narg < 5 || !utils::is_double(arg[3]) || !utils::is_double(arg[4]))
     error->all(FLERR, "Illegal compute bbpd/crack/tip command: expected 'compute ID group "
@@ -122,6 +120,17 @@ void ComputeBBPDCrackTip::init()
                "atoms would be connected; increase link (default: the horizon)", params.link,
                pair->spacing);
   params.span = span_user > 0.0 ? span_user : SPAN_DEFAULT * params.link;
+  have_found = false;    // the link may have changed with the pair style
+}
+
+/* the gathered crack atoms are those of the last search, in the same order */
+bool ComputeBBPDCrackTip::same_nodes() const
+{
+  if (!have_found || all.size() != searched.size()) return false;
+  for (std::size_t k = 0; k < all.size(); k++)
+    if (all[k].tag != searched[k].tag || all[k].x != searched[k].x || all[k].y != searched[k].y)
+      return false;
+  return true;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -158,7 +167,13 @@ void ComputeBBPDCrackTip::compute_vector()
   MPI_Allgatherv(mine.data(), nbytes, MPI_BYTE, all.data(), counts.data(), displs.data(),
                  MPI_BYTE, world);
 
-  const BBPD::CrackTip::Result r = BBPD::CrackTip::find_tip(all, params);
+  // the damage of a crack atom does not enter the search: a new search only if the set changed
+  if (!same_nodes()) {
+    found = BBPD::CrackTip::find_tip(all, params);
+    searched = all;
+    have_found = true;
+  }
+  const BBPD::CrackTip::Result &r = found;
   const double time = update->atime + (update->ntimestep - update->atimestep) * update->dt;
   history.record(time, r.extension);
 
@@ -174,5 +189,6 @@ void ComputeBBPDCrackTip::compute_vector()
 
 double ComputeBBPDCrackTip::memory_usage()
 {
-  return static_cast<double>((mine.capacity() + all.capacity()) * sizeof(Node));
+  return static_cast<double>((mine.capacity() + all.capacity() + searched.capacity()) *
+                             sizeof(Node));
 }

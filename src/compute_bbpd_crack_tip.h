@@ -40,6 +40,11 @@ class ComputeBBPDCrackTip : public Compute {
   BBPD::CrackTip::History history;
   class FixBBPDBonds *bonds;
   std::vector<BBPD::CrackTip::Node> mine, all;
+  // the last search: reused while the same atoms (ID and position) are crack atoms
+  std::vector<BBPD::CrackTip::Node> searched;
+  BBPD::CrackTip::Result found;
+  bool have_found;
+  bool same_nodes() const;
 };
 
 }    // namespace LAMMPS_NS

@@ -101,6 +101,16 @@ TEST(CrackTip, NodesBelowTheThresholdOrBehindTheStartLineAreNotNodes)
   EXPECT_FALSE(candidate(p, -1e-12, 0.0, 1.0));
 }
 
+TEST(CrackTip, AnEdgeOfExactlyTheLinkCounts)
+{
+  std::vector<Node> nodes;
+  for (int k = 1; k <= 6; k++) nodes.push_back({k, 0.25 * k, 0.0, DAMAGED});
+  const Result r = find_tip(nodes, params(0.25));    // 0.25 k: exact in binary
+  EXPECT_EQ(r.nodes, 6u);
+  EXPECT_EQ(r.extension, 1.5);
+  EXPECT_EQ(find_tip(nodes, params(std::nextafter(0.25, 0.0))).nodes, 0u);
+}
+
 TEST(CrackTip, KinkedPathLengthAndNewestDirection)
 {
   // legs of 10 steps, the step a little shorter than the link: no edge skips a node, and none
