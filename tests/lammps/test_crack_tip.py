@@ -15,6 +15,8 @@ first to round-off and with the second within one grid spacing; its vector must 
 same bits on 1, 2 and 4 ranks; the extension must never decrease on this straight crack.
 """
 import math
+import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -222,14 +224,37 @@ fix k all ave/time {EVERY} 1 {EVERY} c_tip[1] c_tip[2] v_tx v_ty c_km[1] c_kf[1]
     assert moved >= 5, moved
 
 
-def test_default_threshold_separates_crack_faces_from_the_atoms_ahead(serial):
-    """The doc's reason for T = 0.3 at m = 3: the first rows beside the notch lie above it
-    (0.409 away from its ends), the atoms just ahead of the notch tip below it (0.110)."""
-    table, frames = serial
-    x, y, damage = frames[0][:, 1], frames[0][:, 2], frames[0][:, 3]
-    face = (np.abs(np.abs(y) - 0.5 * DX) < 1e-9) & (x > 5 * DX) & (x < NOTCH - 5 * DX)
-    ahead = (np.abs(np.abs(y) - 0.5 * DX) < 1e-9) & (np.abs(x - NOTCH - 0.5 * DX) < 1e-9)
-    np.testing.assert_allclose(damage[face], 0.408969, atol=5e-7)
-    np.testing.assert_allclose(damage[ahead], 0.110008, atol=5e-7)
-    assert damage[face].min() >= THRESHOLD > damage[ahead].max()
-    assert float(table[0][2]) == 0.0    # no crack yet: the tip is S
+
+def doc_damage_table():
+    """(m, first row, second row, first atom ahead) of the table in the doc page"""
+    text = (Path(__file__).resolve().parents[2] / "doc" / "compute_bbpd_crack_tip.rst").read_text()
+    table = text[text.index("first atom ahead of the notch tip"):text.index("The first row has lost")]
+    values = [float(v) for v in re.findall(r"^\s+[*-]?\s*-\s+([0-9.]+)$", table, re.M)]
+    return [tuple(values[k:k + 4]) for k in range(0, len(values), 4)]
+
+
+def test_default_threshold_separates_crack_faces_from_the_atoms_ahead(tmp_path):
+    """The doc's table behind T = 0.3, measured: the damage beside a notch after run 0 (first
+    and second row, away from the notch's ends, and the first atom ahead of its tip), for each
+    horizon of the table; the first row lies above T, the atoms ahead below it."""
+    rows = doc_damage_table()
+    assert [r[0] for r in rows] == [2.015, 3.015, 5.015]
+    script = "plugin load bbpdplugin.so\n"
+    for n, (m, *_) in enumerate(rows):
+        body = scene(nsteps=0, dump=False).split("\n", 1)[1]
+        body = body.replace(f"{HORIZON!r}", f"{m * DX!r}").replace("file tip.dat", f"file t{n}.dat")
+        script += "clear\n" + body.replace("run 0\n", f"dump d all custom 1 d{n}.dump id x y c_phi\n"
+                                            "dump_modify d format float %.17g\nrun 0\n")
+    run_lammps(script, workdir=tmp_path)
+    for n, (m, first, second, ahead_doc) in enumerate(rows):
+        frame = read_dump(tmp_path / f"d{n}.dump")[0]
+        x, y, damage = frame[:, 1], frame[:, 2], frame[:, 3]
+        away = (x > 6 * DX) & (x < NOTCH - 6 * DX)
+        for dist, expected in ((0.5, first), (1.5, second)):
+            row = away & (np.abs(np.abs(y) - dist * DX) < 1e-9)
+            np.testing.assert_allclose(damage[row], expected, atol=5e-4, err_msg=f"m = {m}")
+        ahead = (np.abs(np.abs(y) - 0.5 * DX) < 1e-9) & (np.abs(x - NOTCH - 0.5 * DX) < 1e-9)
+        np.testing.assert_allclose(damage[ahead], ahead_doc, atol=5e-4, err_msg=f"m = {m}")
+        assert damage[away & (np.abs(y) < DX)].min() >= THRESHOLD > damage[ahead].max()
+        # no crack yet: the tip is S
+        assert float(read_table(tmp_path / f"t{n}.dat")[0][2]) == 0.0
