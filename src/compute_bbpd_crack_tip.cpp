@@ -151,19 +151,17 @@ void ComputeBBPDCrackTip::compute_vector()
   }
 
   // every rank gets every candidate: the damaged set is small
+  bigint nmine = mine.size(), nall = 0;
+  MPI_Allreduce(&nmine, &nall, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (nall > MAXSMALLINT / static_cast<bigint>(sizeof(Node)))
+    error->all(FLERR, "Compute bbpd/crack/tip {}: {} damaged atoms are too many to gather; "
+               "raise the threshold", id, nall);
   const int nprocs = comm->nprocs;
   std::vector<int> counts(nprocs), displs(nprocs);
-  int nbytes = static_cast<int>(mine.size() * sizeof(Node));
+  const int nbytes = static_cast<int>(nmine * sizeof(Node));
   MPI_Allgather(&nbytes, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  bigint total = 0;
-  for (int p = 0; p < nprocs; p++) {
-    displs[p] = static_cast<int>(total);
-    total += counts[p];
-  }
-  if (total > MAXSMALLINT)
-    error->all(FLERR, "Compute bbpd/crack/tip {}: {} damaged atoms are too many to gather; "
-               "raise the threshold", id, total / static_cast<bigint>(sizeof(Node)));
-  all.resize(total / sizeof(Node));
+  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
+  all.resize(nall);
   MPI_Allgatherv(mine.data(), nbytes, MPI_BYTE, all.data(), counts.data(), displs.data(),
                  MPI_BYTE, world);
 
