@@ -65,7 +65,7 @@ struct Result {
   double x = 0.0, y = 0.0;        // tip position (S if none)
   double extension = 0.0;         // path length of the tip
   double back[2] = {0.0, 0.0};    // start of the direction chord
-  double direction = 0.0;         // degrees in (-180, 180]: the chord, or d if none
+  double direction = 0.0;         // degrees, atan2 of the chord (or of d if none)
 };
 
 /* may the atom be a node? (used to select what is gathered, and again by the search) */
