@@ -207,7 +207,8 @@ class History {
     if (!rec_.empty() && t < rec_.back().first) rec_.clear();
     if (!rec_.empty() && t == rec_.back().first) rec_.pop_back();
     rec_.emplace_back(t, extension);
-    // keep the newest record at least a window old and everything after it
+    // keep the newest earlier record at least a window old (else the oldest) and everything
+    // after it: that record is then the first
     while (rec_.size() > 2 && rec_[1].first <= t - window_) rec_.pop_front();
   }
 
@@ -216,11 +217,7 @@ class History {
   double speed() const
   {
     if (rec_.size() < 2) return 0.0;
-    const auto &now = rec_.back();
-    std::size_t k = 0;
-    for (std::size_t m = 0; m + 1 < rec_.size(); m++)
-      if (rec_[m].first <= now.first - window_) k = m;
-    return (now.second - rec_[k].second) / (now.first - rec_[k].first);
+    return (rec_.back().second - rec_.front().second) / (rec_.back().first - rec_.front().first);
   }
   std::size_t size() const { return rec_.size(); }
 
