@@ -13,7 +13,7 @@ nu inverted from c0. Each run ends with a `run 0` that prints pe, ke and pressur
 
 Usage (from the repository root):
   tools/python perf/same_bits.py run [--build DIR] OUT [--scenes a,b]   # DIR: a plugin build
-  tools/python perf/same_bits.py compare REF OUT                        # exit 1 if any differ
+  tools/python perf/same_bits.py compare REF OUT    # exit 1 if any differ (scenes of OUT only)
   tools/python perf/same_bits.py list
 DIR is a folder with bbpdplugin.so and bbpd-env.sh (default: build/lammps-20260704 of this
 checkout, what /work/build-plugin.sh or tools/bootstrap builds). OUT gets, per scene, the input
@@ -204,9 +204,13 @@ def run_scene(name, runs, lmp, env, out):
 
 
 def compare(ref, out):
-    """names of the files that differ or exist on one side only"""
+    """(files compared, files that differ or exist on one side only, scenes of ref not run in
+    out); a scene run with --scenes is compared with the same scene of ref"""
+    run = {p.name for p in out.iterdir() if p.is_dir()}
+    skipped = sorted(p.name for p in ref.iterdir() if p.is_dir() and p.name not in run)
     diffs = []
-    names = sorted({p.relative_to(ref) for p in ref.rglob("*") if p.is_file()}
+    names = sorted({p.relative_to(ref) for p in ref.rglob("*")
+                    if p.is_file() and p.relative_to(ref).parts[0] in run}
                    | {p.relative_to(out) for p in out.rglob("*") if p.is_file()})
     for rel in names:
         a, b = ref / rel, out / rel
@@ -217,7 +221,7 @@ def compare(ref, out):
                                                            b.read_text().splitlines()), 1)
                           if x != y), None)
             diffs.append(f"{rel}: differs" + (f" from line {first}" if first else " in length"))
-    return names, diffs
+    return names, diffs, skipped
 
 
 def main():
@@ -234,10 +238,11 @@ def main():
     args = parser.parse_args()
 
     if args.cmd == "compare":
-        names, diffs = compare(args.ref, args.out)
+        names, diffs, skipped = compare(args.ref, args.out)
         for d in diffs:
             print(d)
-        print(f"{len(names) - len(diffs)} of {len(names)} files identical")
+        print(f"{len(names) - len(diffs)} of {len(names)} files identical"
+              + (f"; {len(skipped)} scenes of {args.ref} not run" if skipped else ""))
         sys.exit(1 if diffs else 0)
     scenes = _scenes()
     if args.cmd == "list":
