@@ -41,12 +41,13 @@ TOTALS = "thermo_style custom step pe ke press\nthermo_modify format float %.17g
 
 
 def _test_module(name):
-    """a test file of tests/lammps as a module (the scenes are its inputs)"""
-    sys.path[:0] = [str(TESTS), str(ROOT / "python")]
-    spec = importlib.util.spec_from_file_location(f"same_bits_{name}", TESTS / f"{name}.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    """a file of tests/lammps as a module (the scenes are its inputs), registered under its
+    name, so that the test files that import it by name (pytest.ini's pythonpath) find it"""
+    if name not in sys.modules:
+        spec = importlib.util.spec_from_file_location(name, TESTS / f"{name}.py")
+        sys.modules[name] = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(sys.modules[name])
+    return sys.modules[name]
 
 
 def _scenes():
