@@ -13,6 +13,7 @@ from pathlib import Path
 
 from bbpd import jobs as jobmod
 from bbpd import readers
+from bbpd.benchmarks import dispersion, kalthoff_winkler_study
 from bbpd.jobs import ROOT, Job, Spec
 from bbpd.kernels import KERNELS
 
@@ -83,7 +84,6 @@ def build_of_run(workdir):
 
 def dispersion_run(workdir, kernel):
     """One kernel of the dispersion benchmark: run, FFT ridge, deviations (dispersion.measure)."""
-    from bbpd.benchmarks import dispersion
     start = time.perf_counter()
     res = dispersion.measure((kernel,), work=workdir)[kernel]
     res["wall_time"] = time.perf_counter() - start
@@ -92,7 +92,6 @@ def dispersion_run(workdir, kernel):
 
 def _tools():
     """The dispersion tools, part of the dispersion jobs' inputs when built."""
-    from bbpd.benchmarks import dispersion
     out = []
     for name in ("bbpd-measure-dispersion", "bbpd-dispersion-curves"):
         try:
@@ -163,6 +162,5 @@ def benchmark_specs(full=False):
                                {"kernel": k, "dx": dx, "nprocs": 1}, kw_in,
                                ESTIMATE_S.get(("kw", dx), 600.0)))
     if full:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
-        from bbpd.benchmarks import kalthoff_winkler_study
         specs += kalthoff_winkler_study.jobs()
     return specs

@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """One section of REPORT.md per benchmark: its title, the setup it ran, the table, the
 paragraph and the figures, each from tables, prose and figures."""
+from bbpd.benchmarks import kalthoff_winkler_study
+
 from . import figures, prose, tables
 from .runs import MODE1_TABLE3_DX
 from .tables import md_table
@@ -70,7 +72,6 @@ def kw_section(specs, results, figdir, notes):
 
 
 def kw_study_section(specs, results, figdir, notes):
-    from bbpd.benchmarks import kalthoff_winkler_study
     return kalthoff_winkler_study.section(specs, results, figdir, notes)
 
 
