@@ -107,6 +107,9 @@ class FixBBPDBonds : public Fix {
   BBPD::BondClassTable classes;
   double *bxi0, *bcoef;        // null unless the pairs are kept per bond
   double *vintact;
+  // local damage of eq. 17, phi_i = 1 - vintact_i / vinit_i (0 before the families exist and
+  // for an atom that never had a bond): what compute bbpd/damage/atom and bbpd/crack/tip report
+  double damage(int i) const { return first || vinit[i] <= 0.0 ? 0.0 : 1.0 - vintact[i] / vinit[i]; }
   // compact storage: the type and volume of every local and ghost atom if they have one
   // (uniform_type 0 if not)
   int uniform_type;
