@@ -17,6 +17,8 @@ l(t)    l = a + the extension of compute bbpd/crack/tip (grown from (a, 0), thre
         the same definition (the largest difference is reported, in grid spacings); L2 error of the extension l - a over
         [t_i, 3 t_c] relative to the theory's, for the K_I = K_Ic (toughness) and the
         G = G_c (energy) forms of the equation of motion.
+width   largest |y| of the crack atoms (damage >= 0.3, x >= a) at 3 t_c, in horizons: a
+        crack between two rows has 0.5 dx; a wider band is a process zone that spreads.
 v       least-squares slope of l(t) over +-SPEED_HALF_WINDOW t_c around SPEED_TIMES t_c.
 
 Command line (from the repository root):
@@ -57,7 +59,7 @@ DX_FULL = (0.1, 0.05, 0.025)
 TABLE_NAME = "mode1-propagation"
 CSV_COLUMNS = ("kernel", "dx", "Gc", "dt", "atoms", "loop_s", "ti_pd", "ti_theory",
                "ti_err_pct", "J_at_ti_over_Gc", "ti_tip_pd", "ti_tip_err_pct",
-               "J_at_ti_tip_over_Gc", "tip_check_dx", "ext_pd_3tc", "ext_toughness_3tc",
+               "J_at_ti_tip_over_Gc", "tip_check_dx", "width_3tc_over_delta", "ext_pd_3tc", "ext_toughness_3tc",
                "ext_energy_3tc", "l2_toughness_pct", "l2_energy_pct") + tuple(
     f"v_{s:g}tc_over_cR" for s in SPEED_TIMES)
 
@@ -88,6 +90,17 @@ def l2_extension_error(t, l, l_theory, window):
     num = np.trapz((l[w] - l_theory[w]) ** 2, t[w])
     den = np.trapz((l_theory[w] - A) ** 2, t[w])
     return float(np.sqrt(num / den))
+
+
+def band_width(dump_path, dt, t_end, threshold=crack_tip.DEFAULT_THRESHOLD):
+    """Largest |y| of the atoms with damage >= threshold ahead of x = a in the last snapshot
+    at or before t_end."""
+    last = None
+    for step, cols in readers.dump_snapshots(dump_path):
+        if step * dt <= t_end * (1.0 + 1e-12):
+            last = cols
+    crack = (last["c_damage"] >= threshold) & (last["x"] >= A)
+    return float(np.abs(last["y"][crack]).max()) if crack.any() else 0.0
 
 
 def measure(t_k, k_cols, t_tip, ext_tip, dx, G_c=G_C):
@@ -144,6 +157,8 @@ def run(workdir, kernel="gaussian", dx=0.05, G_c=G_C, dt=None, nprocs=1, t_end=T
     res = measure(t_k, d[:, 1:].T, t_tip, ext, dx, G_c)
     t_py, _, _, ext_py = crack_tip.tip_history(workdir / "damage.dump", dt, (A, 0.0), M * dx)
     res["tip_check_dx"] = float(np.max(np.abs(np.interp(t_py, t_tip, ext) - ext_py))) / dx
+    res["width_3tc_over_delta"] = band_width(workdir / "damage.dump", dt, res["t_c"]
+                                             * freund.MODE1_VALIDITY_MULTIPLE) / (M * dx)
     res.update({"kernel": kernel, "dt": dt, "nprocs": nprocs, "wall_time": wall,
                 "loop_s": loop_s, "atoms": int(round(10.0 / dx)) * int(round(2 * H / dx)),
                 "t_k": t_k, "J": d[:, 2], "damage_sum": d[:, 5]})
@@ -201,26 +216,29 @@ def read_rows(path):
 
 def table_markdown(rows, command):
     """The README table of a results CSV."""
-    head = ("| kernel | dx (m) | atoms | t_i PD (ms) | t_i error (% of t_i - t_c) | "
-            "J(t_i)/G_c | extension at 3 t_c (m) | L2 of l(t), K_Ic form (%) | "
-            "L2 of l(t), energy form (%) | v/c_R at " + ", ".join(f"{s:g}" for s in SPEED_TIMES)
-            + " t_c | loop time (s) |")
+    head = ("| kernel | dx (m) | atoms | first bond: t_i (ms), error (%), J/G_c | "
+            "tip moved: t_i (ms), error (%), J/G_c | extension at 3 t_c (m) | "
+            "L2 of l(t), K_Ic form (%) | L2 of l(t), energy form (%) | v/c_R at "
+            + ", ".join(f"{s:g}" for s in SPEED_TIMES)
+            + " t_c | crack half-width at 3 t_c (delta) | loop time (s) |")
     lines = [f"Made by `{command}`.", "", head, "|" + "---|" * (head.count("|") - 1)]
     prob = problem(rows[0]["Gc"]) if rows else problem()
     for r in rows:
         speeds = ", ".join(f"{r[f'v_{s:g}tc_over_cR']:.2f}" for s in SPEED_TIMES)
-        lines.append(f"| {r['kernel']} | {r['dx']:g} | {int(r['atoms'])} | {1e3 * r['ti_pd']:.4f} "
-                     f"| {r['ti_err_pct']:+.1f} | {r['J_at_ti_over_Gc']:.3f} | "
+        lines.append(f"| {r['kernel']} | {r['dx']:g} | {int(r['atoms'])} | "
+                     f"{1e3 * r['ti_pd']:.4f}, {r['ti_err_pct']:+.1f}, "
+                     f"{r['J_at_ti_over_Gc']:.2f} | {1e3 * r['ti_tip_pd']:.4f}, "
+                     f"{r['ti_tip_err_pct']:+.1f}, {r['J_at_ti_tip_over_Gc']:.2f} | "
                      f"{r['ext_pd_3tc']:.2f} | {r['l2_toughness_pct']:.1f} | "
-                     f"{r['l2_energy_pct']:.1f} | {speeds} | {r['loop_s']:.1f} |")
+                     f"{r['l2_energy_pct']:.1f} | {speeds} | {r['width_3tc_over_delta']:.2f} | "
+                     f"{r['loop_s']:.1f} |")
     v_th = {c: [prob.tip_position(np.array([s * prob.t_c]), c)[1][0] / prob.c_r
                 for s in SPEED_TIMES] for c in crack_motion.CRITERIA}
-    lines.append(f"| theory, K_Ic form | | | {1e3 * prob.initiation_time():.4f} | | 1 | "
-                 f"{prob.tip_position(np.array([prob.t_end]), 'toughness')[0][0] - A:.2f} | | | "
-                 + ", ".join(f"{v:.2f}" for v in v_th["toughness"]) + " | |")
-    lines.append(f"| theory, energy form | | | {1e3 * prob.initiation_time():.4f} | | 1 | "
-                 f"{prob.tip_position(np.array([prob.t_end]), 'energy')[0][0] - A:.2f} | | | "
-                 + ", ".join(f"{v:.2f}" for v in v_th["energy"]) + " | |")
+    t_i = f"{1e3 * prob.initiation_time():.4f}, 0, 1"
+    for crit, name in (("toughness", "K_Ic form"), ("energy", "energy form")):
+        ext = prob.tip_position(np.array([prob.t_end]), crit)[0][0] - A
+        lines.append(f"| theory, {name} | | | {t_i} | {t_i} | {ext:.2f} | | | "
+                     + ", ".join(f"{v:.2f}" for v in v_th[crit]) + " | | |")
     return "\n".join(lines)
 
 
