@@ -214,14 +214,15 @@ def read_rows(path):
     return out
 
 
-def table_markdown(rows, command):
-    """The README table of a results CSV."""
+def table_markdown(rows, command=None):
+    """The README table of a results CSV (rows: dicts with the CSV's columns)."""
     head = ("| kernel | dx (m) | atoms | first bond: t_i (ms), error (%), J/G_c | "
             "tip moved: t_i (ms), error (%), J/G_c | extension at 3 t_c (m) | "
             "L2 of l(t), K_Ic form (%) | L2 of l(t), energy form (%) | v/c_R at "
             + ", ".join(f"{s:g}" for s in SPEED_TIMES)
             + " t_c | crack half-width at 3 t_c (delta) | loop time (s) |")
-    lines = [f"Made by `{command}`.", "", head, "|" + "---|" * (head.count("|") - 1)]
+    lines = ([f"Made by `{command}`.", ""] if command else []) + [
+        head, "|" + "---|" * (head.count("|") - 1)]
     prob = problem(rows[0]["Gc"]) if rows else problem()
     for r in rows:
         speeds = ", ".join(f"{r[f'v_{s:g}tc_over_cR']:.2f}" for s in SPEED_TIMES)
@@ -251,19 +252,30 @@ def update_readme(readme, text, name=TABLE_NAME):
     readme.write_text(src[:i] + "\n" + text + "\n" + src[j:])
 
 
-def figures(histories_csv, results_csv, folder):
-    """l(t) and v(t) of every run with the theory (both forms of the equation of motion)."""
+FIGURE_NAMES = ("crack_extension.png", "crack_speed.png", "work_precision.png")
+
+
+def figures(histories_csv, results_csv, folder, prefix=""):
+    """The figures of the example from its CSVs (see figures_of_rows)."""
+    rows = read_rows(results_csv)
+    hist = {}
+    for ln in Path(histories_csv).read_text().splitlines()[1:]:
+        if ln:
+            k, dx, t, l = ln.split(",")
+            hist.setdefault((k, float(dx)), []).append((float(t), float(l)))
+    for r in rows:
+        r["t_tip"], r["l_pd"] = np.array(hist[(r["kernel"], r["dx"])]).T
+    return figures_of_rows(rows, folder, prefix)
+
+
+def figures_of_rows(rows, folder, prefix=""):
+    """l(t) and v(t) of every run (rows with kernel, dx, Gc, t_tip, l_pd) with the theory in
+    both forms of the equation of motion, and the work-precision figure; returns the names."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from bbpd.kernels import COLORS
 
-    rows = read_rows(results_csv)
-    hist = {}
-    lines = [ln for ln in Path(histories_csv).read_text().splitlines()[1:] if ln]
-    for ln in lines:
-        k, dx, t, l = ln.split(",")
-        hist.setdefault((k, float(dx)), []).append((float(t), float(l)))
     prob = problem(rows[0]["Gc"])
     t_c = prob.t_c
     tt = np.linspace(0.0, prob.t_end, 600)
@@ -276,8 +288,9 @@ def figures(histories_csv, results_csv, folder):
         label = "Freund, K = K_Ic" if crit == "toughness" else "Freund, G = G_c"
         ax_l.plot(tt / t_c, l_th - A, color=col, lw=2.5, label=label)
         ax_v.plot(tt / t_c, v_th / prob.c_r, color=col, lw=2.5, label=label)
-    for (kernel, dx), pts in sorted(hist.items()):
-        t, l = np.array(pts).T
+    for r in sorted(rows, key=lambda r: (r["kernel"], r["dx"])):
+        t, l = np.asarray(r["t_tip"], dtype=float), np.asarray(r["l_pd"], dtype=float)
+        kernel, dx = r["kernel"], r["dx"]
         color = COLORS.get(kernel, None)
         ax_l.plot(t / t_c, l - A, styles.get(dx, "-"), color=color, label=f"{kernel}, dx = {dx:g}")
         tv = np.linspace(t_c, prob.t_end - SPEED_HALF_WINDOW * t_c, 60)
@@ -293,13 +306,15 @@ def figures(histories_csv, results_csv, folder):
     ax_v.set_ylim(0.0, 1.05)
     ax_v.set_title(f"v: slope of l(t) over +-{SPEED_HALF_WINDOW:g} t_c", fontsize=9)
     folder = Path(folder)
-    work_precision_figure(rows, folder / "work_precision.png")
+    names = [prefix + n for n in FIGURE_NAMES]
     fig_l.tight_layout()
-    fig_l.savefig(folder / "crack_extension.png", dpi=110)
+    fig_l.savefig(folder / names[0], dpi=110)
     fig_v.tight_layout()
-    fig_v.savefig(folder / "crack_speed.png", dpi=110)
+    fig_v.savefig(folder / names[1], dpi=110)
     plt.close(fig_l)
     plt.close(fig_v)
+    work_precision_figure(rows, folder / names[2])
+    return names
 
 
 def work_precision_figure(rows, path):
@@ -328,6 +343,55 @@ def work_precision_figure(rows, path):
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
+
+
+# --------------------------------------------------------------------------- report
+
+REPORT_TITLE = "Mode-I crack growth against Freund's equation of motion"
+REPORT_SETUP = ("The stationary Mode-I plate with fracture on: G_c = 2 J/m^2 at sigma0 = 1 MPa, "
+                "plane stress, m = 5, unbreakable bands 0.5 m wide along the edges; t_i from "
+                "K_I(t_i) = sqrt(E G_c) with eq. 42 (the model's constants), l(t) from Freund's "
+                "equation of motion in the K_Ic form (k(v) K* = K_Ic) and the energy form "
+                "(v = c_R (1 - K_Ic^2/K*^2)), t <= 3 t_c; tip from compute bbpd/crack/tip; "
+                "see examples/mode1-propagation/README.md.")
+
+
+def summary_text(rows):
+    """Sentences of the report from the measured rows."""
+    def span(col, fmt):
+        vals = [r[col] for r in rows]
+        return f"{min(vals):{fmt}} to {max(vals):{fmt}}"
+    finest = [r for r in rows if r["dx"] == min(q["dx"] for q in rows)]
+    best = min(finest, key=lambda r: r["l2_toughness_pct"])
+    return [f"First broken bond: t_i error {span('ti_err_pct', '+.1f')} % of t_i - t_c, "
+            f"J/G_c {span('J_at_ti_over_Gc', '.2f')}; the tip's first grid step: "
+            f"{span('ti_tip_err_pct', '+.1f')} %, J/G_c {span('J_at_ti_tip_over_Gc', '.2f')} "
+            f"(at dx = {finest[0]['dx']:g} m: J/G_c "
+            + ", ".join(f"{r['J_at_ti_tip_over_Gc']:.2f}" for r in finest) + ").",
+            f"Extension at 3 t_c {span('ext_pd_3tc', '.2f')} m (theory "
+            f"{rows[0]['ext_toughness_3tc']:.2f} m in the K_Ic form, "
+            f"{rows[0]['ext_energy_3tc']:.2f} m in the energy form); on the finest grid the "
+            f"smallest L2 error of l(t) is {best['l2_toughness_pct']:.1f} % against the K_Ic "
+            f"form ({best['kernel']})."]
+
+
+def section(specs, results, figdir, notes):
+    """The section of REPORT.md (bbpd.report.write_report) from the report's runs."""
+    done = [s for s in specs if results.get(s.job.label) and "error" not in results[s.job.label]]
+    rows = [results[s.job.label] for s in done]
+    bad = [s.job.label for s in specs if s not in done]
+    text = summary_text(rows) if rows else []
+    if bad:
+        text.append("Not measured (failed or not run): " + ", ".join(bad) + ".")
+    names = []
+    if rows:
+        try:
+            names = figures_of_rows(rows, figdir, prefix="mode1_propagation_")
+        except Exception as exc:  # the report must still be written
+            notes.append(f"mode1-propagation figures not made: {type(exc).__name__}: {exc}")
+    return {"title": REPORT_TITLE, "setup": REPORT_SETUP,
+            "table": table_markdown(rows) if rows else "", "text": " ".join(text),
+            "figures": names}
 
 
 def main(argv=None):
