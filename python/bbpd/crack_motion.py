@@ -14,13 +14,12 @@ Stationary SIF of a crack at l, K*(t, l)
     the benchmark until the waves reflected from the edges reach the tip (t <= 3 t_c for
     the edge opposite the loaded one).
 
-Equation of motion (Freund 1990, Dynamic Fracture Mechanics, sec. 7.4; Freund 1973,
+Equation of motion (Freund 1990, Dynamic Fracture Mechanics, ch. 7; Freund 1973,
 J. Mech. Phys. Solids 21, 47-61)
     For any non-decreasing l(t) the dynamic SIF is K_I(t) = k(v) K*(t, l(t)): exact for the
     semi-infinite crack in an unbounded body, with k(v) a universal function of the speed
-    (k(0) = 1, k(c_R) = 0).  We use Freund's approximation
-    k(v) ~ (1 - v/c_R) / sqrt(1 - v/c_d), within a few per cent of the exact k(v) over
-    0 <= v < c_R.  The energy release rate is G = A(v) K_I^2 / E' with
+    (k(0) = 1, k(c_R) = 0).  Approximate: we use Freund's closed form
+    k(v) ~ (1 - v/c_R) / sqrt(1 - v/c_d) of the exact k(v), 0 <= v <= c_R.  The energy release rate is G = A(v) K_I^2 / E' with
     A(v) k(v)^2 = g(v) ~ 1 - v/c_R.  Two growth criteria:
 
     toughness   K_I = K_Ic:     k(v) K* = K_Ic, solved in closed form (quadratic in v);
@@ -92,7 +91,7 @@ def universal_k(v, c_r, c_d):
 
 
 def energy_factor(v, c_r):
-    """g(v) = A(v) k(v)^2 ~ 1 - v/c_R: G = g(v) G* (Freund 1990, sec. 7.4)."""
+    """g(v) = A(v) k(v)^2 ~ 1 - v/c_R: G = g(v) G* (Freund 1990, ch. 7)."""
     freund._check_positive(c_r=c_r)
     arr = np.asarray(v, dtype=float)
     if np.any(arr < 0.0) or np.any(arr > c_r):
