@@ -75,6 +75,12 @@ def kw_study_section(specs, results, figdir, notes):
     return kalthoff_winkler_study.section(specs, results, figdir, notes)
 
 
+def mode1_propagation_section(specs, results, figdir, notes):
+    from bbpd.benchmarks import mode1_propagation
+    return mode1_propagation.section(specs, results, figdir, notes)
+
+
 # the sections of REPORT.md in order: (Spec.bench of their runs, builder)
 BUILDERS = (("dispersion", dispersion_section), ("mode1", mode1_section),
-            ("mode2", mode2_section), ("kw", kw_section), ("kwstudy", kw_study_section))
+            ("mode2", mode2_section), ("mode1prop", mode1_propagation_section),
+            ("kw", kw_section), ("kwstudy", kw_study_section))
