@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """One section of REPORT.md per benchmark: its title, the setup it ran, the table, the
 paragraph and the figures, each from tables, prose and figures."""
-from bbpd.benchmarks import kalthoff_winkler_study
+from bbpd.benchmarks import kalthoff_winkler_study, mode1_propagation
 
 from . import figures, prose, tables
 from .runs import MODE1_TABLE3_DX
@@ -76,7 +76,6 @@ def kw_study_section(specs, results, figdir, notes):
 
 
 def mode1_propagation_section(specs, results, figdir, notes):
-    from bbpd.benchmarks import mode1_propagation
     return mode1_propagation.section(specs, results, figdir, notes)
 
 
