@@ -175,10 +175,11 @@ def test_python_imports_have_no_circle():
 # those below
 PYTHON_LAYERS = [
     {"bbpd", "bbpd.inprocess", "bbpd.jobs", "bbpd.kernels", "bbpd.readers", "bbpd.reference",
-     "bbpd.runner", "bbpd.freund", "bbpd.metrics", "bbpd.dsif", "bbpd.plots"},
+     "bbpd.runner", "bbpd.freund", "bbpd.metrics", "bbpd.dsif", "bbpd.plots",
+     "bbpd.crack_tip", "bbpd.crack_motion"},
     {"bbpd.benchmarks", "bbpd.benchmarks.dispersion", "bbpd.benchmarks.kalthoff_winkler",
      "bbpd.benchmarks.kalthoff_winkler_study", "bbpd.benchmarks.mode1", "bbpd.benchmarks.mode2",
-     "bbpd.benchmarks.stability"},
+     "bbpd.benchmarks.stability", "bbpd.benchmarks.mode1_propagation"},
     {"bbpd.report", "bbpd.report.runs", "bbpd.report.tables", "bbpd.report.figures",
      "bbpd.report.prose", "bbpd.report.provenance", "bbpd.report.sections"},
     {"bbpd.work_precision"},

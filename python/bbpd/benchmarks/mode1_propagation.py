@@ -25,7 +25,7 @@ Command line (from the repository root):
   tools/python -m bbpd.benchmarks.mode1_propagation --dx 0.1 0.05 \
       --work /tmp/mode1-propagation --csv examples/mode1-propagation/results/mode1_propagation.csv \
       --figures examples/mode1-propagation --readme examples/mode1-propagation/README.md
-(add 0.025 to --dx for the finest grid: about 1 min per kernel on one core; --full).
+(add 0.025 to --dx for the finest grid; --full; run times in the README).
 """
 
 import argparse
@@ -39,7 +39,7 @@ import numpy as np
 
 from bbpd import crack_motion, crack_tip, freund, readers
 from bbpd.benchmarks import mode1
-from bbpd.kernels import KERNELS
+from bbpd.kernels import COLORS, KERNELS
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -274,7 +274,6 @@ def figures_of_rows(rows, folder, prefix=""):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from bbpd.kernels import COLORS
 
     prob = problem(rows[0]["Gc"])
     t_c = prob.t_c
@@ -321,7 +320,6 @@ def work_precision_figure(rows, path):
     """|t_i error| and the L2 error of l(t) (energy form) against the loop time, one line per
     kernel through its grids."""
     import matplotlib.pyplot as plt
-    from bbpd.kernels import COLORS
 
     fig, axes = plt.subplots(1, 3, figsize=(11, 3.8))
     metrics = (("ti_err_pct", "|t_i error| (% of t_i - t_c), first bond"),
