@@ -1,7 +1,9 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The plugin's sources depend on each other one way (doc/architecture.rst): a core of headers
 with no LAMMPS dependency, the bond storage (fix bbpd/bonds) on top of it, and the pair style,
-fix bbpd/notch and the computes on top of the storage. The storage never reaches up."""
+fix bbpd/notch and the computes on top of the storage. The storage never reaches up, and no
+include runs in a circle. The Python package is layered the same way: its imports, all at
+module level, run one way and in no circle."""
 import ast
 import re
 from pathlib import Path
