@@ -5,9 +5,11 @@
    Which pairs of atoms are bonded (the family), and per bond the partner
    volume C_v V_j (eq. 19) and the force density per unit elongation
    c(xi0) C_v V_j / xi0 (eqs. 9, 19, 21); with 'compat pmb' the rules of
-   LAMMPS's peri/pmb (bbpd_pmb_rules.h). The pair style fills one BondLaw from
-   its calibrated per-type tables and hands a copy to the bond storage (fix
-   bbpd/bonds), which builds and caches with it without knowing the pair.
+   LAMMPS's peri/pmb (bbpd_pmb_rules.h). The pair style fills one BondLaw with
+   copies of its calibrated per-type-pair values once it has calibrated them,
+   and hands a copy to the bond storage (fix bbpd/bonds), which builds and
+   caches with it without knowing the pair: a BondLaw is a value, it points
+   into no table of the pair style.
 ------------------------------------------------------------------------- */
 
 #ifndef BBPD_BOND_LAW_H
@@ -17,6 +19,7 @@
 #include "bbpd_pmb_rules.h"
 
 #include <cmath>
+#include <vector>
 
 namespace BBPD {
 
@@ -30,6 +33,26 @@ inline double grid_spacing_of(Model m, double geom, double vfrac)
   }
 }
 
+// one value per type pair [itype][jtype], types 1..ntypes, held by value
+class TypePairTable {
+ public:
+  TypePairTable() = default;
+  // copies rows[1..ntypes][1..ntypes] (a LAMMPS per-type-pair array; row and column 0 unused)
+  template <class T>
+  TypePairTable(int ntypes, const T *const *rows) :
+      stride(ntypes + 1), values(static_cast<size_t>(stride) * stride, 0.0)
+  {
+    for (int i = 1; i <= ntypes; i++)
+      for (int j = 1; j <= ntypes; j++) values[i * stride + j] = static_cast<double>(rows[i][j]);
+  }
+  double operator()(int itype, int jtype) const { return values[itype * stride + jtype]; }
+  bool empty() const { return values.empty(); }
+
+ private:
+  int stride = 0;
+  std::vector<double> values;
+};
+
 struct BondLaw {
   KernelInfo kernel = kernel_info<ConstantKernel>();
   Model model = Model::Solid3D;
@@ -37,21 +60,20 @@ struct BondLaw {
   double spacing = 0.0;              // grid spacing of the partial-volume correction (eq. 19)
   bool pmb = false;                  // peri/pmb's families, volumes and volume ramp
   double lattice_constant = 0.0;     // pmb: the ramp's width
-  // per type pair [itype][jtype], owned by the pair style
-  const double *const *micromodulus = nullptr;
-  const double *const *horizon = nullptr;
-  const int *const *bondless = nullptr;    // type pairs that form no bonds (separate bodies)
+  // per type pair, as calibrated by the pair style: c0 (eq. 21; pmb: peri/pmb's c) and delta
+  TypePairTable micromodulus, horizon;
+  TypePairTable bondless;    // nonzero: the type pair forms no bonds (separate bodies)
 
   // reference distance below which a pair is in a family (pmb: up to and including delta)
   double family_cutoff(int itype, int jtype) const
   {
-    return pmb ? horizon[itype][jtype] : horizon[itype][jtype] + 0.5 * spacing;
+    return pmb ? horizon(itype, jtype) : horizon(itype, jtype) + 0.5 * spacing;
   }
   // is a pair at squared reference distance rsq in a family?
   bool bonded(int itype, int jtype, double rsq) const
   {
-    if (bondless && bondless[itype][jtype]) return false;
-    if (pmb) return PMB::in_family(rsq, horizon[itype][jtype]);
+    if (!bondless.empty() && bondless(itype, jtype) != 0.0) return false;
+    if (pmb) return PMB::in_family(rsq, horizon(itype, jtype));
     const double rc = family_cutoff(itype, jtype);
     return rsq < rc * rc;
   }
@@ -59,14 +81,14 @@ struct BondLaw {
   double partner_volume(int itype, int jtype, double xi0, double vj) const
   {
     if (pmb) return vj;
-    return partial_volume(xi0, horizon[itype][jtype], spacing) * vj;
+    return partial_volume(xi0, horizon(itype, jtype), spacing) * vj;
   }
   // force density per unit elongation: c(xi0) C_v V_j / xi0; pmb: c V_j times its ramp / xi0
   double coefficient(int itype, int jtype, double xi0, double vj) const
   {
-    const double delta = horizon[itype][jtype];
-    if (pmb) return micromodulus[itype][jtype] * vj * PMB::volume_scale(xi0, delta, lattice_constant) / xi0;
-    return micromodulus[itype][jtype] * kernel.shape(xi0 / delta) *
+    const double delta = horizon(itype, jtype);
+    if (pmb) return micromodulus(itype, jtype) * vj * PMB::volume_scale(xi0, delta, lattice_constant) / xi0;
+    return micromodulus(itype, jtype) * kernel.shape(xi0 / delta) *
         partner_volume(itype, jtype, xi0, vj) / xi0;
   }
   double spacing_of_volume(double vfrac) const { return grid_spacing_of(model, geom, vfrac); }

@@ -6,6 +6,7 @@
 #include "lammpsplugin.h"
 
 #include "comm.h"
+#include "compute_bbpd_crack_tip.h"
 #include "compute_bbpd_damage_atom.h"
 #include "compute_bbpd_dsif.h"
 #include "compute_bbpd_jintegral.h"
@@ -57,6 +58,10 @@ Compute *dsif_creator(LAMMPS *lmp, int narg, char **arg)
 Compute *jintegral_creator(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputeBBPDJIntegral(lmp, narg, arg);
+}
+Compute *crack_tip_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new ComputeBBPDCrackTip(lmp, narg, arg);
 }
 }    // namespace
 
@@ -122,5 +127,9 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "bbpd/jintegral";
   plugin.info = "BBPD dynamic J-integral and K_I, K_II by the domain integral v" BBPD_VERSION;
   plugin.creator.v2 = (lammpsplugin_factory2 *) &jintegral_creator;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/crack/tip";
+  plugin.info = "BBPD crack tip, extension, speed and direction of a growing crack v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &crack_tip_creator;
   (*register_plugin)(&plugin, lmp);
 }

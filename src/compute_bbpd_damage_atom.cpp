@@ -44,12 +44,8 @@ void ComputeBBPDDamageAtom::compute_peratom()
     vector_atom = damage;
   }
   const int *mask = atom->mask;
-  for (int i = 0; i < atom->nlocal; i++) {
-    damage[i] = 0.0;
-    if (!(mask[i] & groupbit) || !bonds->families_built() || bonds->vinit[i] <= 0.0) continue;
-    // the fix keeps the intact volume per atom: no pass over the bonds here
-    damage[i] = 1.0 - bonds->vintact[i] / bonds->vinit[i];
-  }
+  // the fix keeps the intact volume per atom: no pass over the bonds here
+  for (int i = 0; i < atom->nlocal; i++) damage[i] = (mask[i] & groupbit) ? bonds->damage(i) : 0.0;
 }
 
 double ComputeBBPDDamageAtom::memory_usage()

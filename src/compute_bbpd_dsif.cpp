@@ -10,20 +10,16 @@
 #include "error.h"
 #include "force.h"
 #include "group.h"
-#include "input.h"
 #include "pair_bbpd.h"
 #include "update.h"
-#include "variable.h"
 
 #include <cmath>
-#include <cstring>
 #include <limits>
 
 using namespace LAMMPS_NS;
 
 namespace {
-enum { PLANE_UNSET, PLANE_STRESS, PLANE_STRAIN };
-constexpr double UNSET = -1.0;
+constexpr double UNSET = CrackComputeArgs::UNSET;
 // defaults in units of the grid spacing: the paper's B and D (Fig. 7) and the
 // face rows of a notch that runs between two rows of atoms
 constexpr double R1_DEFAULT = 1.0, R2_DEFAULT = 2.0, OFFSET_DEFAULT = 0.5, TOLERANCE_DEFAULT = 0.5;
@@ -37,66 +33,16 @@ const char *const POINT_NAME[4] = {"upper-face r1", "lower-face r1", "upper-face
 /* ---------------------------------------------------------------------- */
 
 ComputeBBPDDsif::ComputeBBPDDsif(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), kvec{0.0, 0.0}, tip_value{0.0, 0.0}, tip_ivar{-1, -1}, dir{1.0, 0.0},
-    r_user{UNSET, UNSET}, offset_user(UNSET), tolerance_user(UNSET), youngs_user(UNSET),
-    poisson_user(UNSET), plane(PLANE_UNSET), pair(nullptr), tags{0, 0, 0, 0},
-    cached_tip{0.0, 0.0}, cached(0)
+    Compute(lmp, narg, arg), kvec{0.0, 0.0}, args(lmp, "bbpd/dsif", narg, arg),
+    r_user{UNSET, UNSET}, offset_user(UNSET), tolerance_user(UNSET), pair(nullptr),
+    tags{0, 0, 0, 0}, cached_tip{0.0, 0.0}, cached(0)
 {
-  if (narg < 6 || strcmp(arg[3], "tip") != 0)
-    error->all(FLERR, "Illegal compute bbpd/dsif command: expected 'compute ID group bbpd/dsif "
-               "tip X Y [keyword value ...]'");
-  for (int m = 0; m < 2; m++) {
-    if (utils::strmatch(arg[4 + m], "^v_")) tip_var[m] = arg[4 + m] + 2;
-    else tip_value[m] = utils::numeric(FLERR, arg[4 + m], false, lmp);
-  }
-
-  int iarg = 6;
-  auto positive = [&](const char *key) {
-    if (iarg + 1 >= narg) error->all(FLERR, "Compute bbpd/dsif: keyword {} needs a value", key);
-    const double v = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-    if (v <= 0.0) error->all(FLERR, "Compute bbpd/dsif: {} must be > 0, got {}", key, v);
-    return v;
-  };
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (key == "r1" || key == "r2") {
-      r_user[key == "r1" ? 0 : 1] = positive(key.c_str());
-      iarg += 2;
-    } else if (key == "offset") {
-      offset_user = positive("offset");
-      iarg += 2;
-    } else if (key == "tolerance") {
-      tolerance_user = positive("tolerance");
-      iarg += 2;
-    } else if (key == "E") {
-      youngs_user = positive("E");
-      iarg += 2;
-    } else if (key == "nu") {
-      if (iarg + 1 >= narg) error->all(FLERR, "Compute bbpd/dsif: keyword nu needs a value");
-      poisson_user = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (poisson_user <= -1.0 || poisson_user >= 0.5)
-        error->all(FLERR, "Compute bbpd/dsif: nu must lie in (-1, 0.5), got {}", poisson_user);
-      iarg += 2;
-    } else if (key == "plane") {
-      if (iarg + 1 >= narg) error->all(FLERR, "Compute bbpd/dsif: keyword plane needs stress or strain");
-      if (strcmp(arg[iarg + 1], "stress") == 0) plane = PLANE_STRESS;
-      else if (strcmp(arg[iarg + 1], "strain") == 0) plane = PLANE_STRAIN;
-      else error->all(FLERR, "Compute bbpd/dsif: plane must be stress or strain, got {}", arg[iarg + 1]);
-      iarg += 2;
-    } else if (key == "direction") {
-      if (iarg + 2 >= narg) error->all(FLERR, "Compute bbpd/dsif: direction needs DX DY");
-      const double dx = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      const double dy = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
-      const double len = std::sqrt(dx * dx + dy * dy);
-      if (len == 0.0) error->all(FLERR, "Compute bbpd/dsif: direction {} {} has zero length", dx, dy);
-      dir[0] = dx / len;
-      dir[1] = dy / len;
-      iarg += 3;
-    } else {
+  for (int iarg = 6; iarg < narg;)
+    if (!args.parse(narg, arg, iarg,
+                    {{"r1", &r_user[0]}, {"r2", &r_user[1]}, {"offset", &offset_user},
+                     {"tolerance", &tolerance_user}}))
       error->all(FLERR, "Compute bbpd/dsif: unknown keyword '{}' (expected r1, r2, direction, "
-                 "offset, E, nu, plane or tolerance)", key);
-    }
-  }
+                 "offset, E, nu, plane or tolerance)", arg[iarg]);
   if (r_user[0] > 0.0 && r_user[1] > 0.0 && r_user[1] <= r_user[0])
     error->all(FLERR, "Compute bbpd/dsif: need r2 > r1, got r1 = {} r2 = {}", r_user[0], r_user[1]);
 
@@ -120,38 +66,24 @@ void ComputeBBPDDsif::init()
   pair = dynamic_cast<PairBBPD *>(force->pair_match("^bbpd/", 0));
   const bool need_spacing = r_user[0] < 0.0 || r_user[1] < 0.0 || offset_user < 0.0 ||
       tolerance_user < 0.0;
-  if (!pair && (need_spacing || youngs_user < 0.0 || poisson_user == UNSET || plane == PLANE_UNSET))
+  if (!pair && (need_spacing || !args.elastic_given()))
     error->all(FLERR, "Compute bbpd/dsif without a bbpd/* pair style needs r1, r2, offset, "
                "tolerance, E, nu and plane");
   if (pair && (pair->model == BBPD::Model::Bar1D || pair->model == BBPD::Model::Solid3D) &&
-      plane == PLANE_UNSET)
+      args.plane == CrackComputeArgs::PLANE_UNSET)
     error->all(FLERR, "Compute bbpd/dsif: pair model {} is not plane/stress or plane/strain: "
                "give 'plane stress' or 'plane strain'", BBPD::model_name(pair->model));
   const double r1 = r_user[0] > 0.0 ? r_user[0] : R1_DEFAULT * grid_spacing();
   const double r2 = r_user[1] > 0.0 ? r_user[1] : R2_DEFAULT * grid_spacing();
   if (r2 <= r1) error->all(FLERR, "Compute bbpd/dsif: need r2 > r1, got r1 = {} r2 = {}", r1, r2);
 
-  for (int m = 0; m < 2; m++) {
-    tip_ivar[m] = -1;
-    if (tip_var[m].empty()) continue;
-    tip_ivar[m] = input->variable->find(tip_var[m].c_str());
-    if (tip_ivar[m] < 0)
-      error->all(FLERR, "Compute bbpd/dsif: tip variable {} does not exist", tip_var[m]);
-    if (!input->variable->equalstyle(tip_ivar[m]))
-      error->all(FLERR, "Compute bbpd/dsif: tip variable {} is not equal-style", tip_var[m]);
-  }
+  args.init_tip();
   cached = 0;    // atoms may have been added or the group changed since the last run
 }
 
 double ComputeBBPDDsif::grid_spacing() const
 {
   return pair ? pair->spacing : 0.0;
-}
-
-void ComputeBBPDDsif::current_tip(double *tip) const
-{
-  for (int m = 0; m < 2; m++)
-    tip[m] = tip_ivar[m] >= 0 ? input->variable->compute_equal(tip_ivar[m]) : tip_value[m];
 }
 
 /* upper (left of the direction) and lower face points at r1 and r2 behind the tip */
@@ -161,6 +93,7 @@ void ComputeBBPDDsif::face_points(const double *tip, double pts[NPOINT][2]) cons
   const double r[2] = {r_user[0] > 0.0 ? r_user[0] : R1_DEFAULT * dx,
                        r_user[1] > 0.0 ? r_user[1] : R2_DEFAULT * dx};
   const double h = offset_user > 0.0 ? offset_user : OFFSET_DEFAULT * dx;
+  const double *dir = args.dir;    // ahead of the tip
   const double n[2] = {-dir[1], dir[0]};
   for (int k = 0; k < 2; k++)
     for (int side = 0; side < 2; side++) {
@@ -175,6 +108,7 @@ void ComputeBBPDDsif::find_face_nodes(const double *tip)
 {
   double pts[NPOINT][2];
   face_points(tip, pts);
+  const double *dir = args.dir;    // ahead of the tip
   const double n[2] = {-dir[1], dir[0]};
   const double big = std::numeric_limits<double>::max();
   double **x0 = atom->x0;
@@ -239,7 +173,7 @@ void ComputeBBPDDsif::compute_vector()
 {
   invoked_vector = update->ntimestep;
   double tip[2];
-  current_tip(tip);
+  args.current_tip(tip);
   if (!cached || tip[0] != cached_tip[0] || tip[1] != cached_tip[1]) find_face_nodes(tip);
 
   // per face node: displacement (2), reference position (2), type, owner count
@@ -269,6 +203,7 @@ void ComputeBBPDDsif::compute_vector()
       error->all(FLERR, "Compute bbpd/dsif {}: the {} face atom (ID {}) is lost", id,
                  POINT_NAME[p], tags[p]);
 
+  const double *dir = args.dir;    // ahead of the tip
   const double n[2] = {-dir[1], dir[0]};
   double r[2], opening[2], sliding[2];
   for (int k = 0; k < 2; k++) {
@@ -284,22 +219,8 @@ void ComputeBBPDDsif::compute_vector()
                "0 < r1 < r2", id, r[0], r[1]);
 
   // elastic constants at node B (upper face, r1)
-  double E = youngs_user, nu = poisson_user;
-  if (E < 0.0 || nu == UNSET) {
-    const int itype = static_cast<int>(all[4]);
-    int dim = 0;
-    auto c0 = static_cast<double **>(pair->extract("micromodulus", dim));
-    auto horizon = static_cast<double **>(pair->extract("horizon", dim));
-    // c0 is linear in E: E = c0 / c0(E = 1)
-    if (E < 0.0)
-      E = c0[itype][itype] /
-          BBPD::micromodulus(pair->kernel, pair->model, 1.0, horizon[itype][itype], pair->geom);
-    if (nu == UNSET) nu = BBPD::implied_poisson_ratio(pair->model);
-  }
-  int pl = plane;
-  if (pl == PLANE_UNSET) pl = pair->model == BBPD::Model::PlaneStress ? PLANE_STRESS : PLANE_STRAIN;
-  const double mu = E / (2.0 * (1.0 + nu));
-  const double kappa = pl == PLANE_STRESS ? (3.0 - nu) / (1.0 + nu) : 3.0 - 4.0 * nu;    // eq. 40
+  const BBPD::JIntegral::Elastic e = args.elastic(pair, static_cast<int>(all[4]));
+  const double mu = e.mu(), kappa = e.kappa();    // eq. 40
 
   kvec[0] = extrapolate(opening[0], opening[1], r[0], r[1], mu, kappa);
   kvec[1] = extrapolate(sliding[0], sliding[1], r[0], r[1], mu, kappa);

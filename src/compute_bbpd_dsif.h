@@ -17,9 +17,8 @@
 #define LMP_COMPUTE_BBPD_DSIF_H
 
 #include "compute.h"
+#include "compute_bbpd_crack_args.h"
 #include "lmptype.h"
-
-#include <string>
 
 namespace LAMMPS_NS {
 
@@ -39,13 +38,8 @@ class ComputeBBPDDsif : public Compute {
   static constexpr int NPOINT = 4;    // upper r1, lower r1, upper r2, lower r2
 
   double kvec[2];
-  double tip_value[2];               // tip coordinates when given as numbers
-  std::string tip_var[2];            // equal-style variable names ("" if a number)
-  int tip_ivar[2];
-  double dir[2];                     // unit crack direction (ahead of the tip)
+  CrackComputeArgs args;    // tip, crack direction, E, nu, plane
   double r_user[2], offset_user, tolerance_user;    // < 0: default from the grid spacing
-  double youngs_user, poisson_user;                 // < 0: default from the pair style
-  int plane;                                        // PLANE_STRESS, PLANE_STRAIN or UNSET
   class PairBBPD *pair;
 
   // cached face nodes: valid while the tip has not moved
@@ -53,7 +47,6 @@ class ComputeBBPDDsif : public Compute {
   double cached_tip[2];
   int cached;
 
-  void current_tip(double *) const;
   void face_points(const double *tip, double pts[NPOINT][2]) const;
   void find_face_nodes(const double *tip);
   double grid_spacing() const;

@@ -11,22 +11,18 @@
 #include "error.h"
 #include "force.h"
 #include "group.h"
-#include "input.h"
 #include "pair_bbpd.h"
 #include "update.h"
-#include "variable.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <numeric>
 
 using namespace LAMMPS_NS;
 namespace JI = BBPD::JIntegral;
 
 namespace {
-enum { PLANE_UNSET, PLANE_STRESS, PLANE_STRAIN };
-constexpr double UNSET = -1.0;
+constexpr double UNSET = CrackComputeArgs::UNSET;
 // defaults: the annulus in units of the horizon (outside the nonlocal zone at the tip, as
 // FE practice keeps q,j out of the process zone), the gradient stencil in grid spacings
 // (the nearest and next-nearest neighbours, with a margin against round-off)
@@ -39,75 +35,17 @@ constexpr int NFIELD = 7;    // gathered per atom and call: u (2), v (2), a (2),
 /* ---------------------------------------------------------------------- */
 
 ComputeBBPDJIntegral::ComputeBBPDJIntegral(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), jvec{0.0, 0.0, 0.0}, tip_value{0.0, 0.0}, tip_ivar{-1, -1},
-    dir{1.0, 0.0}, rin_user(UNSET), rout_user(UNSET), grad_user(UNSET), youngs_user(UNSET),
-    poisson_user(UNSET), thickness_user(UNSET), plane(PLANE_UNSET), pair(nullptr), rin(0.0),
-    rout(0.0), rgrad(0.0), thickness(0.0), cached(0), cached_tip{0.0, 0.0},
+    Compute(lmp, narg, arg), jvec{0.0, 0.0, 0.0}, args(lmp, "bbpd/jintegral", narg, arg),
+    rin_user(UNSET), rout_user(UNSET), grad_user(UNSET), thickness_user(UNSET), pair(nullptr),
+    rin(0.0), rout(0.0), rgrad(0.0), thickness(0.0), cached(0), cached_tip{0.0, 0.0},
     aux_elastic{0.0, 0.0, 0.0}, itype_tip(1)
 {
-  if (narg < 6 || strcmp(arg[3], "tip") != 0)
-    error->all(FLERR, "Illegal compute bbpd/jintegral command: expected 'compute ID group "
-               "bbpd/jintegral tip X Y [keyword value ...]'");
-  for (int m = 0; m < 2; m++) {
-    if (utils::strmatch(arg[4 + m], "^v_")) tip_var[m] = arg[4 + m] + 2;
-    else tip_value[m] = utils::numeric(FLERR, arg[4 + m], false, lmp);
-  }
-
-  int iarg = 6;
-  auto positive = [&](const char *key) {
-    if (iarg + 1 >= narg)
-      error->all(FLERR, "Compute bbpd/jintegral: keyword {} needs a value", key);
-    const double v = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-    if (v <= 0.0) error->all(FLERR, "Compute bbpd/jintegral: {} must be > 0, got {}", key, v);
-    return v;
-  };
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (key == "rin") {
-      rin_user = positive("rin");
-      iarg += 2;
-    } else if (key == "rout") {
-      rout_user = positive("rout");
-      iarg += 2;
-    } else if (key == "gradient") {
-      grad_user = positive("gradient");
-      iarg += 2;
-    } else if (key == "E") {
-      youngs_user = positive("E");
-      iarg += 2;
-    } else if (key == "thickness") {
-      thickness_user = positive("thickness");
-      iarg += 2;
-    } else if (key == "nu") {
-      if (iarg + 1 >= narg) error->all(FLERR, "Compute bbpd/jintegral: keyword nu needs a value");
-      poisson_user = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (poisson_user <= -1.0 || poisson_user >= 0.5)
-        error->all(FLERR, "Compute bbpd/jintegral: nu must lie in (-1, 0.5), got {}", poisson_user);
-      iarg += 2;
-    } else if (key == "plane") {
-      if (iarg + 1 >= narg)
-        error->all(FLERR, "Compute bbpd/jintegral: keyword plane needs stress or strain");
-      if (strcmp(arg[iarg + 1], "stress") == 0) plane = PLANE_STRESS;
-      else if (strcmp(arg[iarg + 1], "strain") == 0) plane = PLANE_STRAIN;
-      else
-        error->all(FLERR, "Compute bbpd/jintegral: plane must be stress or strain, got {}",
-                   arg[iarg + 1]);
-      iarg += 2;
-    } else if (key == "direction") {
-      if (iarg + 2 >= narg) error->all(FLERR, "Compute bbpd/jintegral: direction needs DX DY");
-      const double dx = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      const double dy = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
-      const double len = std::sqrt(dx * dx + dy * dy);
-      if (len == 0.0)
-        error->all(FLERR, "Compute bbpd/jintegral: direction {} {} has zero length", dx, dy);
-      dir[0] = dx / len;
-      dir[1] = dy / len;
-      iarg += 3;
-    } else {
+  for (int iarg = 6; iarg < narg;)
+    if (!args.parse(narg, arg, iarg,
+                    {{"rin", &rin_user}, {"rout", &rout_user}, {"gradient", &grad_user},
+                     {"thickness", &thickness_user}}))
       error->all(FLERR, "Compute bbpd/jintegral: unknown keyword '{}' (expected rin, rout, "
-                 "gradient, direction, E, nu, plane or thickness)", key);
-    }
-  }
+                 "gradient, direction, E, nu, plane or thickness)", arg[iarg]);
   if (rin_user > 0.0 && rout_user > 0.0 && rout_user <= rin_user)
     error->all(FLERR, "Compute bbpd/jintegral: need rout > rin, got rin = {} rout = {}; "
                "increase rout or decrease rin", rin_user, rout_user);
@@ -134,8 +72,8 @@ void ComputeBBPDJIntegral::init()
     error->all(FLERR, "Compute bbpd/jintegral requires atom_style peri (x0, density, volume)");
   if (atom->map_style == Atom::MAP_NONE)
     error->all(FLERR, "Compute bbpd/jintegral requires an atom map, see atom_modify");
-  if (!pair && (youngs_user < 0.0 || poisson_user == UNSET || plane == PLANE_UNSET ||
-                thickness_user < 0.0 || rin_user < 0.0 || rout_user < 0.0 || grad_user < 0.0))
+  if (!pair && (!args.elastic_given() || thickness_user < 0.0 || rin_user < 0.0 ||
+                rout_user < 0.0 || grad_user < 0.0))
     error->all(FLERR, "Compute bbpd/jintegral without a bbpd/* pair style needs rin, rout, "
                "gradient, E, nu, plane and thickness");
 
@@ -153,22 +91,8 @@ void ComputeBBPDJIntegral::init()
     error->all(FLERR, "Compute bbpd/jintegral: need rout > rin, got rin = {} rout = {}; "
                "increase rout or decrease rin", rin, rout);
 
-  for (int m = 0; m < 2; m++) {
-    tip_ivar[m] = -1;
-    if (tip_var[m].empty()) continue;
-    tip_ivar[m] = input->variable->find(tip_var[m].c_str());
-    if (tip_ivar[m] < 0)
-      error->all(FLERR, "Compute bbpd/jintegral: tip variable {} does not exist", tip_var[m]);
-    if (!input->variable->equalstyle(tip_ivar[m]))
-      error->all(FLERR, "Compute bbpd/jintegral: tip variable {} is not equal-style", tip_var[m]);
-  }
+  args.init_tip();
   cached = 0;    // atoms may have been added or the group changed since the last run
-}
-
-void ComputeBBPDJIntegral::current_tip(double *tip) const
-{
-  for (int m = 0; m < 2; m++)
-    tip[m] = tip_ivar[m] >= 0 ? input->variable->compute_equal(tip_ivar[m]) : tip_value[m];
 }
 
 /* ----------------------------------------------------------------------
@@ -239,6 +163,7 @@ void ComputeBBPDJIntegral::build_cache(const double *tip)
     return pa[0] < pb[0];
   });
 
+  const double *dir = args.dir;    // ahead of the tip
   const double n2[2] = {-dir[1], dir[0]};
   tags.assign(n, 0);
   xloc.assign(2 * n, 0.0);
@@ -328,31 +253,13 @@ void ComputeBBPDJIntegral::build_cache(const double *tip)
   cached = 1;
 }
 
-void ComputeBBPDJIntegral::elastic_constants(double &E, double &nu, int &plane_stress) const
-{
-  E = youngs_user;
-  nu = poisson_user;
-  if (E < 0.0) {
-    int dim = 0;
-    auto c0 = static_cast<double **>(pair->extract("micromodulus", dim));
-    auto horizon = static_cast<double **>(pair->extract("horizon", dim));
-    // c0 is linear in E: E = c0 / c0(E = 1)
-    E = c0[itype_tip][itype_tip] / BBPD::micromodulus(pair->kernel, pair->model, 1.0,
-                                                      horizon[itype_tip][itype_tip], pair->geom);
-  }
-  if (nu == UNSET) nu = BBPD::implied_poisson_ratio(pair->model);
-  int pl = plane;
-  if (pl == PLANE_UNSET) pl = pair->model == BBPD::Model::PlaneStress ? PLANE_STRESS : PLANE_STRAIN;
-  plane_stress = pl == PLANE_STRESS;
-}
-
 /* ---------------------------------------------------------------------- */
 
 void ComputeBBPDJIntegral::compute_vector()
 {
   invoked_vector = update->ntimestep;
   double tip[2];
-  current_tip(tip);
+  args.current_tip(tip);
   if (!cached || tip[0] != cached_tip[0] || tip[1] != cached_tip[1]) build_cache(tip);
 
   // displacement, velocity, acceleration of the cached atoms, in crack-tip coordinates;
@@ -361,6 +268,7 @@ void ComputeBBPDJIntegral::compute_vector()
   std::fill(fields.begin(), fields.end(), 0.0);
   double **x = atom->x, **x0 = atom->x0, **v = atom->v, **f = atom->f;
   const double *rmass = atom->rmass;
+  const double *dir = args.dir;    // ahead of the tip
   const double n2[2] = {-dir[1], dir[0]};
   const double prd[2] = {domain->xprd, domain->yprd};
   const int periodic[2] = {domain->xperiodic, domain->yperiodic};
@@ -387,19 +295,16 @@ void ComputeBBPDJIntegral::compute_vector()
     if (fields[NFIELD * k + 6] != 1.0)
       error->all(FLERR, "Compute bbpd/jintegral {}: atom ID {} of the disc is lost", id, tags[k]);
 
-  double E, nu;
-  int plane_stress;
-  elastic_constants(E, nu, plane_stress);
-  const JI::Elastic el{E, nu, plane_stress != 0};
+  const JI::Elastic el = args.elastic(pair, itype_tip);
   const int npoint = static_cast<int>(points.size());
-  if (aux.empty() || aux_elastic[0] != E || aux_elastic[1] != nu ||
-      aux_elastic[2] != plane_stress) {
+  if (aux.empty() || aux_elastic[0] != el.E || aux_elastic[1] != el.nu ||
+      aux_elastic[2] != el.plane_stress) {
     aux.resize(npoint);
     for (int p = 0; p < npoint; p++)
       JI::aux_fields(&xloc[2 * points[p]], el, rin, rout, aux[p]);
-    aux_elastic[0] = E;
-    aux_elastic[1] = nu;
-    aux_elastic[2] = plane_stress;
+    aux_elastic[0] = el.E;
+    aux_elastic[1] = el.nu;
+    aux_elastic[2] = el.plane_stress;
   }
 
   double sum[3] = {0.0, 0.0, 0.0};

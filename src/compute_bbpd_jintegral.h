@@ -24,9 +24,9 @@
 
 #include "bbpd_jintegral.h"
 #include "compute.h"
+#include "compute_bbpd_crack_args.h"
 #include "lmptype.h"
 
-#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -40,13 +40,9 @@ class ComputeBBPDJIntegral : public Compute {
 
  private:
   double jvec[3];
-  double tip_value[2];       // tip coordinates when given as numbers
-  std::string tip_var[2];    // equal-style variable names ("" if a number)
-  int tip_ivar[2];
-  double dir[2];             // unit crack direction (ahead of the tip)
+  CrackComputeArgs args;    // tip, crack direction, E, nu, plane
   double rin_user, rout_user, grad_user;    // < 0: default from the horizon / grid spacing
-  double youngs_user, poisson_user, thickness_user;    // < 0: default from the pair style
-  int plane;
+  double thickness_user;                    // < 0: the pair style's thickness
   class PairBBPD *pair;
 
   // resolved parameters (init)
@@ -67,9 +63,7 @@ class ComputeBBPDJIntegral : public Compute {
   int itype_tip;                     // type of the atom nearest to the tip
   std::vector<double> fields;        // gathered u, v, a (crack-tip coordinates) and owner count
 
-  void current_tip(double *) const;
   void build_cache(const double *tip);
-  void elastic_constants(double &E, double &nu, int &plane_stress) const;
 };
 
 }    // namespace LAMMPS_NS

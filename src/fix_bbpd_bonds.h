@@ -32,8 +32,10 @@
 
    The fix owns storage only. What a bond is and what it costs come from the
    BBPD::BondLaw (bbpd_bond_law.h, no LAMMPS dependency) the pair style passes
-   with set_rules() at every init, with the storage policy and the run limits;
-   the fix includes no pair-style header.
+   with set_rules() at every init, once it has calibrated c0 and s0: a value
+   holding its own copy of the calibrated numbers, no pointer into the pair's
+   tables. With it come the storage policy and the run limits; the fix
+   includes no pair-style header.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_BBPD_BONDS_H
@@ -80,9 +82,9 @@ class FixBBPDBonds : public Fix {
   int size_restart(int) override;
   int maxsize_restart() override;
 
-  // the pair style, at every init before the fix's own: the bond law, the storage policy,
-  // whether its loops read partner offsets (bdelta) and the run limits (again whenever a limit
-  // changes)
+  // the pair style, at every init after its calibration and before the fix's own init: the
+  // bond law (calibrated values, copied), the storage policy, whether its loops read partner
+  // offsets (bdelta) and the run limits (again whenever a limit changes)
   void set_rules(const BBPD::BondLaw &l, BBPD::BondStorage s, bool offsets)
   {
     law = l;
@@ -107,6 +109,9 @@ class FixBBPDBonds : public Fix {
   BBPD::BondClassTable classes;
   double *bxi0, *bcoef;        // null unless the pairs are kept per bond
   double *vintact;
+  // local damage of eq. 17, phi_i = 1 - vintact_i / vinit_i (0 before the families exist and
+  // for an atom that never had a bond): what compute bbpd/damage/atom and bbpd/crack/tip report
+  double damage(int i) const { return first || vinit[i] <= 0.0 ? 0.0 : 1.0 - vintact[i] / vinit[i]; }
   // compact storage: the type and volume of every local and ghost atom if they have one
   // (uniform_type 0 if not)
   int uniform_type;

@@ -64,7 +64,7 @@ PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k) :
     dt_safety(DT_SAFETY_DEFAULT), contact(0), contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
     fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
     s0_user(nullptr), bondless(nullptr), bonds(nullptr), report_due(0), dt_bound_paper(0.0), dt_bound(0.0), multi_s0(0),
-    s0_single(0.0), s0_seen(0), break_margin(0.0),
+    s0_single(0.0), break_margin(0.0),
     compat_pmb(0), lattice_constant(0.0), alpha(nullptr), alpha_any(0),
     nmax_smin(0), smin_new(nullptr), alpha_state(nullptr)
 {
@@ -288,7 +288,7 @@ void PairBBPD::coeff(int narg, char **arg)
       youngs[i][j] = E;
       fracture_energy[i][j] = Gc;
       horizon[i][j] = delta;
-      // c0 and s0 (unless given) are calibrated in init_one(), from the model and thickness
+      // c0 and s0 (unless given) are calibrated in init_style(), from the model and thickness
       // of the pair_style in force then
       micromodulus[i][j] = 0.0;
       s0_user[i][j] = s0 > 0.0;
@@ -369,10 +369,6 @@ void PairBBPD::init_style()
 
   // coefficients memoised with the settings before this init are stale
   memo_epoch = ++memo_epochs;
-  // set by init_one() (called for every type pair after init_style)
-  fracture_any = 0;
-  multi_s0 = 0;
-  s0_seen = 0;
 
   bonds = dynamic_cast<FixBBPDBonds *>(modify->get_fix_by_id(BONDS_FIX_ID));
   if (!bonds)
@@ -383,53 +379,64 @@ void PairBBPD::init_style()
   if (contact) neighbor->add_request(this, NeighConst::REQ_FULL)->set_cutoff(contact_factor * spacing);
   init_pmb();
 
-  // the bond fix builds and caches with the bond law; the tables it points to are calibrated
-  // by init_one(), which also hands the fix the limits it depends on
+  calibrate();
+  // the bond fix builds and caches with the bond law: the calibrated values, by value
   law.kernel = kernel;
   law.model = model;
   law.geom = geom;
   law.spacing = spacing;
   law.pmb = compat_pmb;
   law.lattice_constant = lattice_constant;
-  law.micromodulus = micromodulus;
-  law.horizon = horizon;
-  law.bondless = bondless;
+  law.micromodulus = BBPD::TypePairTable(atom->ntypes, micromodulus);
+  law.horizon = BBPD::TypePairTable(atom->ntypes, horizon);
+  law.bondless = BBPD::TypePairTable(atom->ntypes, bondless);
   // the Silling-Askari loop (pair_bbpd_pmb.cpp) reads partner indices, the others offsets too
   bonds->set_rules(law, storage, !alpha_any);
+  bonds->set_limits(run_limits());
 }
 
+/* c0 and s0 of every type pair, at every init, so that a re-issued pair_style (model,
+   thickness, area) applies; compat pmb takes peri/pmb's c and s00 as given */
+void PairBBPD::calibrate()
+{
+  fracture_any = 0;
+  multi_s0 = 0;
+  bool s0_seen = false;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (setflag[i][j] == 0)
+        error->all(FLERR, "Pair style bbpd/{}: pair_coeff for types {} {} is missing (bbpd "
+                   "styles do not mix coefficients)", kernel.name, i, j);
+      if (!compat_pmb)
+        micromodulus[i][j] = BBPD::micromodulus(kernel, model, youngs[i][j], horizon[i][j], geom);
+      if (bondless[i][j])
+        critical_stretch[i][j] = std::numeric_limits<double>::infinity();    // nothing to break
+      else if (!s0_user[i][j])
+        critical_stretch[i][j] = std::isinf(fracture_energy[i][j])
+            ? std::numeric_limits<double>::infinity()
+            : BBPD::critical_stretch(kernel, model, micromodulus[i][j], fracture_energy[i][j],
+                                     horizon[i][j], geom);
+      if (std::isfinite(critical_stretch[i][j])) fracture_any = 1;
+      // a pair without bonds needs no critical stretch: it does not make the stretches differ
+      if (!bondless[i][j]) {
+        if (!s0_seen) s0_single = critical_stretch[i][j];
+        else if (critical_stretch[i][j] != s0_single) multi_s0 = 1;
+        s0_seen = true;
+      }
+      youngs[j][i] = youngs[i][j];
+      fracture_energy[j][i] = fracture_energy[i][j];
+      horizon[j][i] = horizon[i][j];
+      micromodulus[j][i] = micromodulus[i][j];
+      critical_stretch[j][i] = critical_stretch[i][j];
+      s0_user[j][i] = s0_user[i][j];
+      bondless[j][i] = bondless[i][j];
+      alpha[j][i] = alpha[i][j];
+    }
+}
+
+/* calibrated in init_style() (LAMMPS calls init_one() for every type pair after it) */
 double PairBBPD::init_one(int i, int j)
 {
-  if (setflag[i][j] == 0)
-    error->all(FLERR, "Pair style bbpd/{}: pair_coeff for types {} {} is missing (bbpd styles "
-               "do not mix coefficients)", kernel.name, i, j);
-  // calibrated at every init, so that a re-issued pair_style (model, thickness, area) applies;
-  // compat pmb takes peri/pmb's c and s00 as given
-  if (!compat_pmb)
-    micromodulus[i][j] = BBPD::micromodulus(kernel, model, youngs[i][j], horizon[i][j], geom);
-  if (bondless[i][j])
-    critical_stretch[i][j] = std::numeric_limits<double>::infinity();    // nothing to break
-  else if (!s0_user[i][j])
-    critical_stretch[i][j] = std::isinf(fracture_energy[i][j])
-        ? std::numeric_limits<double>::infinity()
-        : BBPD::critical_stretch(kernel, model, micromodulus[i][j], fracture_energy[i][j],
-                                 horizon[i][j], geom);
-  if (std::isfinite(critical_stretch[i][j])) fracture_any = 1;
-  // a pair without bonds needs no critical stretch: it does not make the stretches differ
-  if (!bondless[i][j]) {
-    if (!s0_seen) s0_single = critical_stretch[i][j];
-    else if (critical_stretch[i][j] != s0_single) multi_s0 = 1;
-    s0_seen = 1;
-  }
-  youngs[j][i] = youngs[i][j];
-  fracture_energy[j][i] = fracture_energy[i][j];
-  horizon[j][i] = horizon[i][j];
-  micromodulus[j][i] = micromodulus[i][j];
-  critical_stretch[j][i] = critical_stretch[i][j];
-  s0_user[j][i] = s0_user[i][j];
-  bondless[j][i] = bondless[i][j];
-  alpha[j][i] = alpha[i][j];
-  bonds->set_limits(run_limits());
   return law.family_cutoff(i, j);
 }
 

@@ -4,9 +4,10 @@
    bbpd/constant, bbpd/triangular, bbpd/gaussian (one class, the kernel is a
    constructor parameter). Bouaraquia & Mabssout (2026), eqs. 6-9, 19, 21-22.
 
-   The pair style creates its bond storage (fix bbpd/bonds) and hands it the
-   bond law and storage policy in init_style() and the run limits in
-   init_one(); calibration (c0, s0) is done in init_one(). It evaluates the
+   The pair style creates its bond storage (fix bbpd/bonds), calibrates c0 and
+   s0 in init_style() (calibrate()) and then hands the storage the bond law
+   with the calibrated values (by value), the storage policy and the run
+   limits; init_one() only reports the cutoffs. It evaluates the
    forces over the storage's rows and breaks bonds through remove_bond(); the
    storage never calls back (doc/architecture.rst).
 ------------------------------------------------------------------------- */
@@ -69,6 +70,7 @@ class PairBBPD : public Pair {
   int report_due;    // setup() was called: report once the setup's notches are cut
   void report();
   BBPD::BondLaw law;    // what the bond fix builds and caches with, filled in init_style()
+  void calibrate();     // c0 and s0 of every type pair (init_style)
   BBPD::RunLimits run_limits() const
   {
     return {fracture_any != 0, spacing, dt_bound, dt_safety};
@@ -83,7 +85,6 @@ class PairBBPD : public Pair {
   bool bonded(int i, tagint jtag) const;
   int multi_s0;           // critical stretch differs between type pairs
   double s0_single;       // the critical stretch when it does not
-  int s0_seen;            // init_one() has met a type pair (s0_single holds its s0)
   double break_margin;    // periodic box: bonds this close to s0 are re-checked canonically
   bool past_critical(int i, int j, double xi0, double s0) const;
   double breaking_length(int i, int j) const;

@@ -1,7 +1,10 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The plugin's sources depend on each other one way (doc/architecture.rst): a core of headers
 with no LAMMPS dependency, the bond storage (fix bbpd/bonds) on top of it, and the pair style,
-fix bbpd/notch and the computes on top of the storage. The storage never reaches up."""
+fix bbpd/notch and the computes on top of the storage. The storage never reaches up, and no
+include runs in a circle. The Python package is layered the same way: its imports, all at
+module level, run one way and in no circle."""
+import ast
 import re
 from pathlib import Path
 
@@ -44,3 +47,189 @@ def test_storage_knows_neither_pair_style_nor_notch(name):
     text = (SRC / name).read_text()
     for cls in ("PairBBPD", "FixBBPDNotch", "FixBBPDAlpha"):
         assert cls not in text, f"{name} names {cls}: the storage must not call its users"
+
+
+# --------------------------------------------------------------------------- no circles
+
+def include_graph(src=SRC):
+    """{file: files of src it includes (quoted includes)} over src/*.h and src/*.cpp"""
+    files = {p.name: p for p in sorted(src.glob("*.h")) + sorted(src.glob("*.cpp"))}
+    return {name: {inc for inc in INCLUDE.findall(p.read_text()) if inc in files}
+            for name, p in files.items()}
+
+
+def circles(graph):
+    """the strongly connected components of graph with more than one node or a self-edge,
+    each sorted (Tarjan's algorithm)"""
+    index, low, stack, on_stack, found = {}, {}, [], set(), []
+
+    def visit(v):
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        on_stack.add(v)
+        for w in sorted(graph.get(v, ())):
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on_stack:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            component = []
+            while True:
+                w = stack.pop()
+                on_stack.discard(w)
+                component.append(w)
+                if w == v:
+                    break
+            if len(component) > 1 or v in graph.get(v, ()):
+                found.append(sorted(component))
+
+    for v in sorted(graph):
+        if v not in index:
+            visit(v)
+    return found
+
+
+def test_src_includes_have_no_circle():
+    assert circles(include_graph()) == []
+
+
+PYTHON = Path(__file__).resolve().parents[1] / "python"
+# what a function may import: modules outside bbpd that are optional or only for plotting
+LAZY_IMPORTS = {
+    "matplotlib": "plotting only: the Agg backend is chosen before pyplot is imported, and the "
+                  "analysis that every run job imports does without it",
+    "lammps": "LAMMPS's own Python module exists only with a LAMMPS build (bbpd.inprocess)",
+}
+
+
+def python_modules(root=PYTHON, package="bbpd"):
+    """{dotted name: path} of the package's modules (a package by the name of its folder)"""
+    mods = {}
+    for p in sorted((root / package).rglob("*.py")):
+        parts = list(p.relative_to(root).with_suffix("").parts)
+        if parts[-1] == "__init__":
+            parts.pop()
+        mods[".".join(parts)] = p
+    return mods
+
+
+def imports_of(module, path, mods):
+    """[(line, imported module, inside a function)] of one module; `from P import x` names the
+    submodule P.x where there is one; relative imports resolved"""
+    tree = ast.parse(path.read_text())
+    inside = set()
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+            inside.update(id(n) for n in ast.walk(node) if n is not node)
+    here = module.split(".") if path.name == "__init__.py" else module.split(".")[:-1]
+    found = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            names = [a.name for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            base = node.module or ""
+            if node.level:
+                base = ".".join(here[:len(here) - node.level + 1] + ([base] if base else []))
+            names = [f"{base}.{a.name}" if f"{base}.{a.name}" in mods else base
+                     for a in node.names]
+        else:
+            continue
+        found += [(node.lineno, name, id(node) in inside) for name in names]
+    return found
+
+
+def python_import_graph(root=PYTHON, package="bbpd"):
+    """{module: modules of the package that importing it imports}: the modules it names, at
+    module level or in a function, and the packages above them (their __init__ runs first)
+    that are not its own"""
+    mods = python_modules(root, package)
+    graph = {}
+    for module, path in mods.items():
+        own = {".".join(module.split(".")[:k]) for k in range(1, module.count(".") + 1)}
+        edges = set()
+        for _, name, _ in imports_of(module, path, mods):
+            parts = name.split(".")
+            edges |= {".".join(parts[:k]) for k in range(1, len(parts) + 1)} & set(mods)
+        graph[module] = edges - own - {module}
+    return graph
+
+
+def imports_in_functions(root=PYTHON, package="bbpd"):
+    mods = python_modules(root, package)
+    return sorted({f"{path.relative_to(root)}:{line}: import {name} inside a function"
+                   for module, path in mods.items()
+                   for line, name, inner in imports_of(module, path, mods)
+                   if inner and name.split(".")[0] not in LAZY_IMPORTS})
+
+
+def test_python_imports_no_module_inside_a_function():
+    """an import inside a function hides an edge of the import graph (it was used to dodge
+    circles): import at module level, except the optional modules of LAZY_IMPORTS"""
+    assert imports_in_functions() == []
+
+
+def test_python_imports_have_no_circle():
+    assert circles(python_import_graph()) == []
+
+
+# the layers of doc/architecture.rst, from the bottom up: a module imports its own layer or
+# those below
+PYTHON_LAYERS = [
+    {"bbpd", "bbpd.inprocess", "bbpd.jobs", "bbpd.kernels", "bbpd.readers", "bbpd.reference",
+     "bbpd.runner", "bbpd.freund", "bbpd.metrics", "bbpd.dsif", "bbpd.plots",
+     "bbpd.crack_tip", "bbpd.crack_motion"},
+    {"bbpd.benchmarks", "bbpd.benchmarks.dispersion", "bbpd.benchmarks.kalthoff_winkler",
+     "bbpd.benchmarks.kalthoff_winkler_study", "bbpd.benchmarks.mode1", "bbpd.benchmarks.mode2",
+     "bbpd.benchmarks.stability", "bbpd.benchmarks.mode1_propagation"},
+    {"bbpd.report", "bbpd.report.runs", "bbpd.report.tables", "bbpd.report.figures",
+     "bbpd.report.prose", "bbpd.report.provenance", "bbpd.report.sections"},
+    {"bbpd.work_precision"},
+    {"bbpd.report.document", "bbpd.report.make", "bbpd.report.__main__"},
+]
+
+
+def test_python_layers_cover_the_package():
+    assert set().union(*PYTHON_LAYERS) == set(python_modules())
+
+
+def test_python_imports_run_one_way():
+    layer = {m: k for k, mods in enumerate(PYTHON_LAYERS) for m in mods}
+    up = sorted(f"{m} imports {t}" for m, targets in python_import_graph().items()
+                for t in targets if layer[t] > layer[m])
+    assert up == []
+
+
+# negative controls: the checks above find what they are for
+
+def test_a_circle_is_found():
+    assert circles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]
+    assert circles({"a": {"a"}, "b": set()}) == [["a"]]
+    assert circles({"a": {"b"}, "b": set()}) == []
+
+
+def test_an_include_circle_is_found(tmp_path):
+    (tmp_path / "a.h").write_text('#include "b.h"\n')
+    (tmp_path / "b.h").write_text('#include "c.h"\n#include <vector>\n')
+    (tmp_path / "c.h").write_text('#include "a.h"\n')
+    (tmp_path / "d.cpp").write_text('#include "a.h"\n')
+    assert circles(include_graph(tmp_path)) == [["a.h", "b.h", "c.h"]]
+
+
+def test_a_hidden_import_circle_is_found(tmp_path):
+    """the pattern removed from python/bbpd: a package whose __init__ imports its top module,
+    which imports a module outside that imports the package's building blocks in a function"""
+    pkg = tmp_path / "toy"
+    (pkg / "report").mkdir(parents=True)
+    (pkg / "__init__.py").write_text("")
+    (pkg / "report" / "__init__.py").write_text("from .make import reproduce\n")
+    (pkg / "report" / "make.py").write_text("from toy import extra\n\ndef reproduce():\n"
+                                            "    return extra.more()\n")
+    (pkg / "report" / "runs.py").write_text("RUNS = 1\n")
+    (pkg / "extra.py").write_text("import math\n\n\ndef more():\n"
+                                  "    from toy.report.runs import RUNS\n"
+                                  "    import matplotlib\n    return RUNS\n")
+    assert imports_in_functions(tmp_path, "toy") == [
+        "toy/extra.py:5: import toy.report.runs inside a function"]
+    assert circles(python_import_graph(tmp_path, "toy")) == [
+        ["toy.extra", "toy.report", "toy.report.make"]]

@@ -35,7 +35,14 @@ from pathlib import Path
 
 import numpy as np
 
+from bbpd.benchmarks import dispersion
+from bbpd.benchmarks.kalthoff_winkler import PAPER_INITIATION_US
+from bbpd.jobs import Job, Spec
 from bbpd.kernels import COLORS, KERNELS
+from bbpd.report.figures import _figure
+from bbpd.report.provenance import machine
+from bbpd.report.runs import ESTIMATE_S, bench_inputs, make_spec
+from bbpd.report.tables import failed, md_table
 
 BENCHMARKS = ("mode1", "mode2", "dispersion", "kalthoff_winkler")
 CSV_COLUMNS = ("benchmark", "kernel", "method", "resolution", "error_metric", "error", "wall_s")
@@ -121,7 +128,6 @@ def dispersion_vars(m):
 
 def dispersion_run(workdir, kernel, m):
     """One kernel of the dispersion ring at m = delta/dx (dispersion.measure)."""
-    from bbpd.benchmarks import dispersion
     res = dispersion.measure((kernel,), work=workdir, **dispersion_vars(m))[kernel]
     res["analytic"] = {kernel: res["analytic"][kernel]}    # the other kernels' are not needed
     return res
@@ -157,7 +163,6 @@ def repeat_run(workdir, target, args, repeats, of=None):
 
 
 def _timing_spec(spec, repeats):
-    from bbpd.jobs import Job, Spec
     label = f"timing of {spec.job.label}"
     kw = spec.job.kwargs
     job = Job(label=label, func="bbpd.work_precision:repeat_run",
@@ -170,8 +175,6 @@ def _timing_spec(spec, repeats):
 def extra_specs(specs, the_plan):
     """The runs of the_plan that specs (the report's benchmark runs) lacks, and timing repeats of the
     short ones (estimate below REPEAT_BELOW_S): a list of Spec."""
-    from bbpd.jobs import Job, Spec
-    from bbpd.report.runs import ESTIMATE_S, bench_inputs, make_spec
     have = {(BENCH_OF_SPEC.get(s.bench), s.kernel, round(s.dx, 12)): s for s in specs
             if s.bench != TIMING_BENCH}
     out, runs = [], []
@@ -394,7 +397,6 @@ TITLES = {"mode1": "Mode I: K_I against Freund (consistent constants)",
           "dispersion": f"1D dispersion: phase velocity against eq. 29,\nwavelength "
                         f"{WAVELENGTH * 1e3:g} mm, delta = {DISPERSION_DELTA * 1e3:g} mm",
           "kalthoff_winkler": "Kalthoff-Winkler: crack angle and initiation"}
-PAPER_INITIATION_US = {"constant": 20.0, "triangular": 20.8, "gaussian": 21.7}
 
 
 def _plain_log_ticks(ax, which):
@@ -479,7 +481,6 @@ def plot(path, table, benchmark):
 def collect(specs, results):
     """Finished runs and their run times: ([(benchmark, kernel, dx, result, wall_s)],
     {label: number of timings}, [failed labels])."""
-    from bbpd.report.tables import failed
     repeats = {}
     for s in specs:
         if s.bench == TIMING_BENCH:
@@ -506,8 +507,6 @@ def collect(specs, results):
 
 def section(specs, results, figdir, notes):
     """The report section: CSV, one figure per benchmark, sentences computed from the numbers."""
-    from bbpd.report.figures import _figure
-    from bbpd.report.provenance import machine
     figdir = Path(figdir)
     runs, samples = collect(specs, results)
     table = rows(runs, notes)
@@ -559,7 +558,6 @@ def kw_initiation_text(table):
 def summary_table(table):
     """Markdown: one row per benchmark, kernel, method and metric: error (run time) per
     resolution, coarsest first."""
-    from bbpd.report.tables import md_table
     keys = []
     for r in table:
         key = (r["benchmark"], r["kernel"], r["method"], r["error_metric"])

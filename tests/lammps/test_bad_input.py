@@ -49,6 +49,7 @@ PMB = dict(pair_style="pair_style peri/pmb",
            pair_coeff="pair_coeff * * 1.0e22 0.003015 0.001 0.0")
 NOTCH_2D = "fix n all bbpd/notch segment 0 0.0045 0.004 0.0045"
 JINT = "compute J all bbpd/jintegral {}\nthermo_style custom step c_J[1] c_J[2] c_J[3]"
+TIP = "compute tip all bbpd/crack/tip {}\nthermo_style custom step c_tip[3]"
 
 # id: (script, expected substring of the ERROR line)
 CASES = {
@@ -273,6 +274,32 @@ CASES = {
     "jint-tip-variable-missing": (script(extra=JINT.format("tip v_tx 0.005 rin 0.001 "
                                                            "rout 0.002")),
                                   "tip variable tx does not exist"),
+    # ---- compute ID group bbpd/crack/tip X Y [threshold T] [link L] [span S] [window W]
+    #      [direction DX DY]
+    "tip-no-xy": (script(extra=TIP.format("threshold 0.3")),
+                  "expected 'compute ID group bbpd/crack/tip X Y"),
+    "tip-one-coordinate": (script(extra=TIP.format("0.005")),
+                           "expected 'compute ID group bbpd/crack/tip X Y"),
+    "tip-threshold-zero": (script(extra=TIP.format("0.005 0.0045 threshold 0")),
+                           "threshold must lie in (0, 1], got 0"),
+    "tip-threshold-above-one": (script(extra=TIP.format("0.005 0.0045 threshold 1.5")),
+                                "threshold must lie in (0, 1], got 1.5"),
+    "tip-threshold-no-value": (script(extra=TIP.format("0.005 0.0045 threshold")),
+                               "keyword threshold needs a value"),
+    "tip-window-negative": (script(extra=TIP.format("0.005 0.0045 window -1e-6")),
+                            "window must be >= 0 (a time), got -1e-06"),
+    "tip-link-zero": (script(extra=TIP.format("0.005 0.0045 link 0")), "link must be > 0"),
+    "tip-span-negative": (script(extra=TIP.format("0.005 0.0045 span -0.001")),
+                          "span must be > 0"),
+    "tip-direction-zero": (script(extra=TIP.format("0.005 0.0045 direction 0 0")),
+                           "direction 0 0 has zero length"),
+    "tip-unknown-keyword": (script(extra=TIP.format("0.005 0.0045 horizon 0.003")),
+                            "unknown keyword 'horizon'"),
+    "tip-link-below-spacing": (script(extra=TIP.format("0.005 0.0045 link 0.0005")),
+                               "link 0.0005 is below the grid spacing 0.001"),
+    "tip-without-bbpd-pair": (script(**PMB, extra=TIP.format("0.005 0.0045")),
+                              "bbpd/crack/tip requires a bbpd/* pair style"),
+    "tip-3d": (script(BASE_3D, extra=TIP.format("0.003 0.003")), "works in 2D only"),
     # ---- fix bbpd/bonds is internal (created by the pair style)
     "bonds-fix-with-args": (script(extra="fix b all bbpd/bonds 1"), "takes no arguments"),
     "bonds-fix-without-bbpd-pair": (script(**PMB, extra="fix b all bbpd/bonds"),
@@ -314,7 +341,7 @@ def test_bad_input_stops_with_error(tmp_path, text, expected):
 # the other ranks must not hang in a collective call
 @pytest.mark.parametrize("name", ["coeff-file-unknown-material", "coeff-file-unit-mismatch",
                                   "init-horizon-below-spacing", "notch-segment-zero-length",
-                                  "jint-annulus-outside"])
+                                  "jint-annulus-outside", "tip-link-below-spacing"])
 def test_bad_input_stops_under_mpi(tmp_path, name):
     text, expected = CASES[name]
     check_error_exit(run_case(tmp_path, text, nprocs=2), expected)

@@ -48,6 +48,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+from scenes import peri_preamble
 
 KERNELS = ("constant", "triangular", "gaussian")
 MODELS = ("plane/stress", "plane/strain", "3d")
@@ -106,8 +107,7 @@ def section(kernel, model, m, datafile, dumps, centre, two_types):
     else:
         coeff = f"pair_coeff * * {YOUNGS!r} none {delta!r}\n"
     coords = "x y z" if dim == 3 else "x y"
-    text = (f"clear\nunits si\ndimension {dim}\nboundary s s {'p' if dim == 2 else 's'}\n"
-            f"atom_style peri\natom_modify map array\nread_data {datafile}\n"
+    text = (peri_preamble(dim, data=datafile, plugin=False, clear=True) +
             f"pair_style bbpd/{kernel} {model}{thick}\n{coeff}"
             # a 3D family at m = 10 has ~4850 partners, more than the default 'one 2000'
             "neigh_modify one 10000 page 100000\n"

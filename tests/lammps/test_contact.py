@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+from scenes import peri_preamble
 
 DX = 1.0e-3
 THICKNESS = 1.0e-3
@@ -49,13 +50,8 @@ def pressed():
 def run_pair(lmp, tmp_path, distance_keyword="", two_bodies=""):
     ref.write_data(tmp_path / "atoms.data", X0, VOLUMES, DENSITY, BOX)
     ref.write_positions(tmp_path / "pressed.dump", pressed(), BOX)
-    script = f"""plugin load bbpdplugin.so
-units si
-dimension 2
-boundary f f p
-atom_style peri
-atom_modify map array
-read_data atoms.data{" extra/atom/types 1" if two_bodies else ""}
+    data = "atoms.data extra/atom/types 1" if two_bodies else "atoms.data"
+    script = peri_preamble(2, "f f p", data=data) + f"""\
 {"set atom 2 type 2" if two_bodies else ""}
 pair_style bbpd/gaussian plane/stress thickness {THICKNESS!r} contact yes{distance_keyword}
 pair_coeff * * {YOUNGS!r} none {DELTA!r}

@@ -10,6 +10,7 @@ from eq. 17 on this body by far more than the tolerance.
 import numpy as np
 
 from bbpd import reference as ref
+from scenes import peri_preamble
 
 DX = 1.0e-3
 THICKNESS = 1.0e-3
@@ -35,8 +36,7 @@ SEGMENTS = [((-1.0 * DX, 6.5 * DX), (7.3 * DX, 6.5 * DX)),
 
 def script(extra=""):
     notch = " ".join(f"segment {a[0]!r} {a[1]!r} {b[0]!r} {b[1]!r}" for a, b in SEGMENTS)
-    return ("plugin load bbpdplugin.so\nunits si\ndimension 2\nboundary s s p\n"
-            "atom_style peri\natom_modify map array\nread_data body.data\n"
+    return (peri_preamble(2, data="body.data") +
             f"pair_style bbpd/gaussian plane/stress thickness {THICKNESS!r}\n"
             f"pair_coeff * * 190e9 none {DELTA!r} critical_stretch 0.004\n"
             f"fix notch all bbpd/notch {notch}\n"

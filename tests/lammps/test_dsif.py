@@ -14,6 +14,7 @@ import pytest
 
 from bbpd import dsif
 from bbpd.runner import LammpsError
+from scenes import peri_preamble
 
 DX = 1.0              # grid spacing (m): nodes at (i + 1/2, j + 1/2)
 HALF = 20             # plate [-20, 20]^2 around the origin, 1600 atoms
@@ -55,13 +56,7 @@ def field_script(model="plane/stress", tip=(0.5, 0.0), direction=(1.0, 0.0), E=Y
     sgn = f"({q}/abs({q}))"
     slide = f"({sgn}*({a1!r}*sqrt({r})+{B_II!r}*{r}^1.5))"
     opening = f"({sgn}*({a2!r}*sqrt({r})+{B_I!r}*{r}^1.5))"
-    return f"""
-units si
-dimension 2
-boundary s s p
-atom_style peri
-atom_modify map array
-lattice sq {DX} origin 0.5 0.5 0.0
+    return peri_preamble(2, lattice=f"sq {DX} origin 0.5 0.5 0.0", plugin=False) + f"""\
 region plate block {-HALF} {HALF} {-HALF} {HALF} -0.5 0.5 units box
 create_box 1 plate
 create_atoms 1 region plate

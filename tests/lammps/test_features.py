@@ -17,6 +17,7 @@ import pytest
 
 from bbpd import reference as ref
 from bbpd.runner import LammpsError
+from scenes import peri_preamble
 
 DX = 1.0e-3
 THICKNESS = 1.0e-3
@@ -29,9 +30,7 @@ REPORT = re.compile(r"micromodulus c0 = (\S+)\s+critical_stretch s0 = (\S+)")
 
 
 def preamble(dim=2, boundary=None, datafile="body.data"):
-    boundary = boundary or ("s s p" if dim == 2 else "s s s")
-    return (f"plugin load bbpdplugin.so\nunits si\ndimension {dim}\nboundary {boundary}\n"
-            f"atom_style peri\natom_modify map array\nread_data {datafile}\n")
+    return peri_preamble(dim, boundary, data=datafile)
 
 
 def plate(nx=12, ny=12):

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+from scenes import peri_preamble
 
 KERNELS = ("constant", "triangular", "gaussian")
 MODELS = ("plane/stress", "plane/strain", "3d")
@@ -56,8 +57,7 @@ def material(kernel, model):
 def header(kernel, model, datafile, gc, delta, extra=""):
     dim = ref.DIMENSION[model]
     thick = f" thickness {THICKNESS!r}" if dim == 2 else ""
-    return (f"units si\ndimension {dim}\nboundary s s {'p' if dim == 2 else 's'}\n"
-            f"atom_style peri\natom_modify map array\nread_data {datafile}\n"
+    return (peri_preamble(dim, data=datafile, plugin=False) +
             f"pair_style bbpd/{kernel} {model}{thick}\n"
             f"pair_coeff * * {YOUNGS!r} {gc!r} {delta!r}{extra}\n")
 

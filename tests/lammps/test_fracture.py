@@ -21,6 +21,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+from scenes import peri_preamble
 
 KERNELS = ("constant", "triangular", "gaussian")
 MODELS = ("plane/stress", "plane/strain", "3d")
@@ -44,8 +45,8 @@ def volume_of(dim):
 def section(kernel, model, datafile, coeff_tail, extra=""):
     dim = ref.DIMENSION[model]
     thick = f" thickness {THICKNESS!r}" if dim == 2 else ""
-    return (f"clear\nunits si\ndimension {dim}\nboundary f f {'p' if dim == 2 else 'f'}\n"
-            f"atom_style peri\natom_modify map array\nread_data {datafile}\n"
+    return (peri_preamble(dim, "f f p" if dim == 2 else "f f f", data=datafile, plugin=False,
+                          clear=True) +
             f"pair_style bbpd/{kernel} {model}{thick}\npair_coeff * * {YOUNGS!r} {coeff_tail}\n"
             + extra)
 

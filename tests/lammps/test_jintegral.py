@@ -21,6 +21,7 @@ import numpy as np
 import pytest
 
 from bbpd.runner import LammpsError
+from scenes import peri_preamble
 
 DX = 1.0              # grid spacing (m): nodes at (i + 1/2, j + 1/2)
 HALF = 40             # plate [-40, 40]^2, 6400 atoms
@@ -45,7 +46,7 @@ def e_prime(E, nu, plane):
 
 
 def williams_script(model="plane/stress", tip=(0.0, 0.0), direction=(1.0, 0.0), ki=K_I,
-                    kii=K_II, processors=""):
+                    kii=K_II, processors=None):
     """Plate, pair style and the Williams field of a crack ending at tip along -direction."""
     nu = IMPLIED_NU[model]
     plane = model.split("/")[1]
@@ -56,14 +57,8 @@ def williams_script(model="plane/stress", tip=(0.0, 0.0), direction=(1.0, 0.0), 
     n1, n2 = -d2, d1
     s = f"((f_ref[1]-{tx!r})*{d1!r}+(f_ref[2]-{ty!r})*{d2!r})"
     q = f"((f_ref[1]-{tx!r})*{n1!r}+(f_ref[2]-{ty!r})*{n2!r})"
-    return f"""
-units si
-dimension 2
-boundary s s p
-atom_style peri
-atom_modify map array
-{processors}
-lattice sq {DX} origin 0.5 0.5 0.0
+    return peri_preamble(2, processors=processors, lattice=f"sq {DX} origin 0.5 0.5 0.0",
+                         plugin=False) + f"""\
 region plate block {-HALF} {HALF} {-HALF} {HALF} -0.5 0.5 units box
 create_box 1 plate
 create_atoms 1 region plate
@@ -147,7 +142,7 @@ def test_e_nu_plane_keywords_scale_as_the_formula(lmp):
 def test_same_bits_on_1_2_and_4_ranks(lmp):
     args = {"J": "tip 0.0 0.0 rin 6 rout 15"}
     serial = run_j(lmp, williams_script(), args)["J"]
-    for n, grid in ((2, "processors 2 1 1"), (4, "processors 2 2 1")):
+    for n, grid in ((2, "2 1 1"), (4, "2 2 1")):
         parallel = run_j(lmp, williams_script(processors=grid), args, nprocs=n)["J"]
         assert parallel == serial
 
@@ -157,7 +152,7 @@ def test_same_bits_on_1_and_3_ranks_in_a_dynamic_run(lmp):
     dyn = "unfix zero\nfix 1 all nve\nfix 2 all enforce2d\ntimestep 2.0e-5\n"
     args = {"J": "tip 0.0 0.0 rin 6 rout 15"}
     serial = run_j(lmp, williams_script() + dyn, args, steps=10)["J"]
-    parallel = run_j(lmp, williams_script(processors="processors 3 1 1") + dyn, args, nprocs=3,
+    parallel = run_j(lmp, williams_script(processors="3 1 1") + dyn, args, nprocs=3,
                      steps=10)["J"]
     assert parallel == serial
     static = run_j(lmp, williams_script(), args)["J"]
@@ -183,13 +178,7 @@ variable vx atom {-amp * w!r}*cos({k!r}*x)
 velocity all set v_vx 0.0 0.0
 variable fx atom {-RHO * amp * w * w!r}*sin({k!r}*f_ref[1])
 """ if dynamic else ""
-    return f"""
-units si
-dimension 2
-boundary s s p
-atom_style peri
-atom_modify map array
-lattice sq {DX} origin 0.5 0.5 0.0
+    return peri_preamble(2, lattice=f"sq {DX} origin 0.5 0.5 0.0", plugin=False) + f"""\
 region plate block {-HALF} {HALF} {-HALF} {HALF} -0.5 0.5 units box
 create_box 1 plate
 create_atoms 1 region plate

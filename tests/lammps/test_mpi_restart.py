@@ -13,6 +13,7 @@ import re
 import pytest
 
 from bbpd.runner import run_lammps
+from scenes import peri_preamble
 
 DX = 1.0e-3            # grid spacing (m)
 THICKNESS = 1.0e-3     # plate thickness (m)
@@ -61,21 +62,9 @@ def blocks_data(path):
     write_data(path, left + right, box, DX * DX * THICKNESS)
 
 
-HEAD = """
-plugin load bbpdplugin.so
-units si
-atom_style peri
-atom_modify map array
-processors {grid}
-"""
-
 # 2D: a small Kalthoff-Winkler plate, 60 x 30 atoms, notch from the left edge between the
 # atom rows at y = 15 mm, impact layer of 3 mm below it
-SETUP_2D = f"""
-dimension 2
-boundary s s p
-{HEAD}
-read_data atoms.data
+SETUP_2D = peri_preamble(2, processors="{grid}", data="atoms.data") + f"""\
 pair_style bbpd/triangular plane/strain thickness {THICKNESS!r}
 pair_coeff * * {E!r} {GC!r} 0.003015
 region impact block INF 0.003 INF 0.015 INF INF units box
@@ -85,10 +74,7 @@ fix notch all bbpd/notch segment 0.0 0.015 0.02 0.015
 """
 
 # 3D: a 16 x 10 x 6 block, notch plane y = 5 mm from the left face to x = 6 mm
-SETUP_3D = f"""
-boundary s s s
-{HEAD}
-read_data atoms.data
+SETUP_3D = peri_preamble(3, processors="{grid}", data="atoms.data") + f"""\
 pair_style bbpd/gaussian 3d
 pair_coeff * * {E!r} {GC!r} 0.003015
 region impact block INF 0.003 INF 0.005 INF INF units box
@@ -110,11 +96,7 @@ thermo 50
 """
 
 # contact: two elastic blocks collide at 2 x 500 m/s; they touch after about 130 steps
-SETUP_CONTACT = f"""
-dimension 2
-boundary s s p
-{HEAD}
-read_data atoms.data
+SETUP_CONTACT = peri_preamble(2, processors="{grid}", data="atoms.data") + f"""\
 pair_style bbpd/triangular plane/strain thickness {THICKNESS!r} contact yes contact/distance 1.0
 pair_coeff * * {E!r} none 0.003015
 region left block INF 0.016 INF INF INF INF units box

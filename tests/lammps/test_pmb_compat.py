@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+from scenes import peri_preamble
 
 DX = 1.0e-3
 DENSITY = 2200.0
@@ -62,17 +63,14 @@ def short_range_pairs(x0, y):
 
 
 def force_script(pair_lines, plugin, dim=3, boundary="s s s"):
-    geometry = (f"boundary {boundary}\n" if dim == 3 else "dimension 2\nboundary s s p\n")
-    return ((("plugin load bbpdplugin.so\n" if plugin else "")
-             + "units si\n" + geometry + "atom_style peri\natom_modify map array\n"
-             "read_data body.data\n"
-             f"lattice {'sc' if dim == 3 else 'sq'} {DX!r}\n"
-             + pair_lines +
-             "neighbor 0.0005 bin\n"
-             "run 0\n"
-             f"read_dump current.dump 0 {'x y z' if dim == 3 else 'x y'} box no replace yes\n"
-             "run 0\n"
-             "write_dump all custom forces.dump id x y z fx fy fz modify format float %.17g\n"))
+    return (peri_preamble(dim, boundary if dim == 3 else None, data="body.data",
+                          lattice=f"{'sc' if dim == 3 else 'sq'} {DX!r}", plugin=plugin)
+            + pair_lines +
+            "neighbor 0.0005 bin\n"
+            "run 0\n"
+            f"read_dump current.dump 0 {'x y z' if dim == 3 else 'x y'} box no replace yes\n"
+            "run 0\n"
+            "write_dump all custom forces.dump id x y z fx fy fz modify format float %.17g\n")
 
 
 def run_forces(lmp, tmp_path, pair_lines, plugin, nprocs=1, dim=3, boundary="s s s"):
@@ -145,8 +143,7 @@ S00 = 1.0e-3
 def bond_history(lmp, pair_lines, stretches, lattice=True):
     """Put the bond at each stretch in turn (one force evaluation each); return the number
     of broken bonds after the first evaluation (stretch 0) and after each stretch."""
-    lines = ["plugin load bbpdplugin.so", "units si", "boundary f f f", "atom_style peri",
-             "atom_modify map array", "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box",
+    lines = [peri_preamble(3, "f f f").rstrip("\n"), "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box",
              "create_box 1 box", "create_atoms 1 single 0 0 0 units box",
              f"create_atoms 1 single {PAIR_XI!r} 0 0 units box",
              f"set group all volume {PAIR_XI**3!r}", f"set group all density {DENSITY!r}"]

@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 from bbpd import inprocess
+from scenes import peri_preamble
 
 ROOT = Path(__file__).resolve().parents[2]
 TOOLS_PYTHON = ROOT / "tools" / "python"
@@ -41,13 +42,7 @@ def test_bbpd_lammps_is_lammps_with_the_plugin_and_numpy_results(tmp_path):
         styles = {s: lmp.has_style(*s.split()) for s in
                   ("pair bbpd/gaussian", "fix bbpd/notch", "compute bbpd/damage/atom",
                    "compute bbpd/dsif")}
-        lmp.commands_string('''
-            units si
-            dimension 2
-            boundary s s p
-            atom_style peri
-            atom_modify map array
-            lattice sq 1.0e-3 origin 0.5 0.5 0.0
+        lmp.commands_string(PREAMBLE + '''
             region plate block 0 0.02 0 0.02 -0.5 0.5 units box
             create_box 1 plate
             create_atoms 1 region plate
@@ -65,7 +60,8 @@ def test_bbpd_lammps_is_lammps_with_the_plugin_and_numpy_results(tmp_path):
         json.dump({"is_lammps": isinstance(lmp, lammps.lammps), "styles": styles,
                    "phi_type": type(phi).__name__, "natoms": lmp.get_natoms(),
                    "phi": phi.tolist(), "x": x[:, :2].tolist()}, sys.stdout)
-    """)
+    """).replace("PREAMBLE", repr(peri_preamble(2, lattice="sq 1.0e-3 origin 0.5 0.5 0.0",
+                                                plugin=False)))    # bbpd.lammps() loads it
     out = json.loads(tools_python("-c", script, cwd=tmp_path))
     assert out["is_lammps"]
     assert all(out["styles"].values()), out["styles"]

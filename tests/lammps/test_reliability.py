@@ -9,24 +9,16 @@ import pytest
 
 from bbpd import reference as ref
 from bbpd.runner import LammpsError
+from scenes import peri_preamble
 
 DX = 1.0e-3
 RHO = 7800.0
 E = 190.0e9
 TIMEOUT = 300
 
-HEAD = """plugin load bbpdplugin.so
-units si
-atom_modify map array
-atom_style peri
-"""
-
-
-def block_3d(n, m, boundary="p p p", processors="", extra=""):
+def block_3d(n, m, boundary="p p p", processors=None, extra=""):
     """n^3 simple-cubic steel block, Gaussian kernel with horizon m dx, no fracture."""
-    return HEAD + f"""boundary {boundary}
-{processors}
-lattice sc {DX!r}
+    return peri_preamble(3, boundary, processors=processors, lattice=f"sc {DX!r}") + f"""\
 region box block 0 {n} 0 {n} 0 {n}
 create_box 1 box
 create_atoms 1 box
@@ -42,7 +34,7 @@ pair_coeff * * {E!r} none {m * DX!r}
 def migrating_block(n, m):
     """The block translates by 3 lattice planes between reneighborings (every 10 steps) across
     the boundary of 2 ranks: every exchange carries atoms with ~(4/3) pi (m + 1/2)^3 partners."""
-    return block_3d(n, m, processors="processors 2 1 1") + f"""neighbor {1e-3 * DX!r} bin
+    return block_3d(n, m, processors="2 1 1") + f"""neighbor {1e-3 * DX!r} bin
 neigh_modify every 10 delay 0 check no
 velocity all set 6000.0 0.0 0.0 units box
 fix nve all nve
@@ -120,9 +112,7 @@ def straddling_pairs(tmp_path, seed=12, alpha=False):
     # with alpha the setup of a run re-evaluates the step before without breaking (pair_bbpd.rst):
     # the bonds are first tested at step 1, after a step too short to move an atom by one ulp
     dt = 1e-15 if alpha else 1e-9
-    return HEAD + f"""dimension 2
-boundary p f p
-read_data pairs.data
+    return peri_preamble(2, "p f p", data="pairs.data") + f"""\
 pair_style bbpd/gaussian plane/stress thickness {DX!r}
 pair_coeff * * {E!r} none {3 * DX!r} critical_stretch {S0!r}{" alpha 0.25" if alpha else ""}
 fix nve all nve
@@ -165,9 +155,7 @@ def exploding_plate(velocity_scale):
     """A soft 3 x 3 plate (E = 1e3 Pa: stable time-step bound 2e-3 s) set flying apart at up to
     1400 m/s with a timestep of 1e-6 s: atoms move 1.4 spacings per step, so only the growth
     of the still-bonded body (1000 x its size after ~1000 steps) reveals the explosion."""
-    return HEAD + f"""dimension 2
-boundary s s p
-lattice sq {DX!r}
+    return peri_preamble(2, lattice=f"sq {DX!r}") + f"""\
 region box block -0.5 2.5 -0.5 2.5 -0.5 0.5
 create_box 1 box
 create_atoms 1 box
@@ -187,7 +175,10 @@ run 100
 """
 
 
-RESTARTED = HEAD.replace("atom_style peri\n", "") + """read_restart state.restart
+RESTARTED = """plugin load bbpdplugin.so
+units si
+atom_modify map array
+read_restart state.restart
 fix nve all nve
 fix 2d all enforce2d
 neigh_modify every 1 delay 0 check yes
@@ -214,9 +205,7 @@ def test_restart_keeps_the_unstable_run_detector(lmp, tmp_path):
 
 # --------------------------------------------------------------------------- re-issued pair_style
 
-PLATE_2D = HEAD + f"""dimension 2
-boundary s s p
-lattice sq {DX!r}
+PLATE_2D = peri_preamble(2, lattice=f"sq {DX!r}") + f"""\
 region box block 0 12 0 8 -0.5 0.5
 create_box 1 box
 create_atoms 1 box
@@ -269,10 +258,7 @@ run 100
 
 # --------------------------------------------------------------------------- atom numbering
 
-NUMBERED = HEAD + """dimension 2
-boundary s s p
-processors {grid}
-lattice sq 0.001
+NUMBERED = peri_preamble(2, processors="{grid}", lattice="sq 0.001") + """\
 region box block 0 40 0 20 -0.5 0.5
 create_box 1 box
 create_atoms 1 box

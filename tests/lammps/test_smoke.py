@@ -3,7 +3,8 @@ import pytest
 
 STYLES = ["pair style plugin bbpd/constant", "pair style plugin bbpd/triangular",
           "pair style plugin bbpd/gaussian", "fix style plugin bbpd/notch",
-          "compute style plugin bbpd/damage/atom", "compute style plugin bbpd/dsif"]
+          "compute style plugin bbpd/damage/atom", "compute style plugin bbpd/dsif",
+          "compute style plugin bbpd/jintegral", "compute style plugin bbpd/crack/tip"]
 
 SCRIPT = "plugin load bbpdplugin.so\nplugin list\n"
 

@@ -17,6 +17,7 @@ import pytest
 from bbpd import reference as ref
 from bbpd.benchmarks import stability as st
 from bbpd.runner import LammpsError
+from scenes import peri_preamble
 
 DX = st.DX
 H = st.THICKNESS
@@ -43,13 +44,7 @@ def full_family_bound(kernel, m, **kw):
 
 def two_d(boundary="s s p", ntypes=1, region="-0.5 11.5 -0.5 11.5"):
     """2D preamble with an empty box (lattice units = DX) of ntypes types."""
-    return f"""plugin load bbpdplugin.so
-units si
-dimension 2
-boundary {boundary}
-atom_style peri
-atom_modify map array
-lattice sq {DX!r}
+    return peri_preamble(2, boundary, lattice=f"sq {DX!r}") + f"""\
 region box block {region} -0.5 0.5
 create_box {ntypes} box
 """
@@ -250,7 +245,7 @@ def test_perturbed_lattice(lmp, tmp_path):
     x0[:, :2] += rng.uniform(-0.1, 0.1, size=(len(x0), 2)) * DX
     box = [(-2 * DX, 14 * DX), (-2 * DX, 14 * DX), (-0.5 * DX, 0.5 * DX)]
     ref.write_data(tmp_path / "plate.data", x0, VOLUME, RHO, box)
-    script = (two_d().split("lattice")[0] + "read_data plate.data\n" + pair("gaussian", 3)
+    script = (peri_preamble(2, data="plate.data") + pair("gaussian", 3)
               + """variable vx atom random(-1,1,3)
 variable vy atom random(-1,1,4)
 velocity all set v_vx v_vy 0.0 units box
@@ -421,7 +416,7 @@ def two_atom_body(tmp_path, second=(BOND0, 0.0)):
     x0 = np.array([[0.0, 0.0, 0.0], [second[0], second[1], 0.0]])
     box = [(-4 * DX, 4 * DX), (-4 * DX, 4 * DX), (-0.5 * DX, 0.5 * DX)]
     ref.write_data(tmp_path / "two.data", x0, VOLUME, RHO, box)
-    return (two_d("f f p").split("lattice")[0] + "read_data two.data\n" + pair("gaussian", 3)
+    return (peri_preamble(2, "f f p", data="two.data") + pair("gaussian", 3)
             + "fix 2d all enforce2d\nthermo_style custom step pe ke\n")
 
 

@@ -12,14 +12,9 @@ import re
 import pytest
 
 from bbpd.runner import LammpsError
+from scenes import peri_preamble
 
-SCENE = """plugin load bbpdplugin.so
-units si
-dimension 2
-boundary s s p
-atom_style peri
-atom_modify map array
-lattice sq 0.001
+SCENE = peri_preamble(2, lattice="sq 0.001") + """\
 region box block 0 40 0 20 -0.5 0.5
 create_box 1 box
 create_atoms 1 box
@@ -128,13 +123,7 @@ def test_per_bond_fallback_is_bit_identical(lmp, tmp_path):
 # atoms just above the middle line come first in memory and their partners below it about 34,000
 # entries later, beyond a 2-byte offset, so the rank keeps 4-byte partner indices; LAMMPS's
 # spatial sort brings them within reach of offsets. The notch cuts along the middle line.
-FAR_PARTNERS = """plugin load bbpdplugin.so
-units si
-dimension 2
-boundary s s p
-atom_style peri
-atom_modify map array sort {sort} 0.0
-lattice sq 0.001
+FAR_PARTNERS = peri_preamble(2, lattice="sq 0.001", atom_modify="sort {sort} 0.0") + """\
 region box block 0 200 0 170 -0.5 0.5
 create_box 1 box
 region top block INF INF 84.5 INF INF INF

@@ -9,6 +9,7 @@ passes their pair's s0), momentum over a dynamic run with two densities and brea
 import numpy as np
 
 from bbpd import reference as ref
+from scenes import peri_preamble
 
 DX = 1.0e-3
 THICKNESS = 1.0e-3
@@ -76,8 +77,7 @@ def two_type_lattice():
 
 def header(datafile, stretch=None):
     """Input lines up to pair_coeff; stretch: type pair -> s0 given by critical_stretch."""
-    lines = ["plugin load bbpdplugin.so", "units si", "dimension 2", "boundary s s p",
-             "atom_style peri", "atom_modify map array", f"read_data {datafile}",
+    lines = [peri_preamble(2, data=datafile).rstrip("\n"),
              f"pair_style bbpd/{KERNEL} {MODEL} thickness {THICKNESS!r}"]
     for (a, b), (E, m, s0) in MATERIALS.items():
         gc = gc_for(E, m * DX, s0)

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+from scenes import peri_preamble
 
 DX = 1.0e-3
 THICKNESS = 1.0e-3
@@ -56,8 +57,7 @@ def test_pressure_matches_reference(lmp, tmp_path, model, variant, nprocs):
                          for a, b, s in ((1, 1, 0.1), (1, 2, 0.2), (2, 2, 0.3)))
     coords = "x y z" if dim == 3 else "x y"
     boundary = "f f p" if dim == 2 else "f f f"    # fixed: the box volume is known
-    script = (f"plugin load bbpdplugin.so\nunits si\ndimension {dim}\nboundary {boundary}\n"
-              "atom_style peri\natom_modify map array\nread_data body.data\n"
+    script = (peri_preamble(dim, boundary, data="body.data") +
               f"pair_style bbpd/gaussian {model}{thick}{storage}\n" + coeffs
               + "compute p all pressure NULL virial\n"
               "thermo_style custom step press c_p[1] c_p[2] c_p[3] c_p[4] c_p[5] c_p[6]\n"

@@ -27,6 +27,7 @@ import re
 import pytest
 
 from bbpd.benchmarks import mode1
+from scenes import peri_preamble
 
 PEAK_TOL = 2.2        # % (consistent convention; measured 1.70)
 L2_TOL = 2.8          # % (measured 2.33)
@@ -73,14 +74,7 @@ def check_j_mode_mixity(res):
     assert abs(res["kii_j"][w]).max() < J_KII_TOL * abs(res["k_j"][w]).max()
 
 
-FAR_FIELD = """
-plugin load bbpdplugin.so
-units si
-dimension 2
-boundary s s p
-atom_style peri
-atom_modify map array
-lattice sq {dx} origin 0.5 0.5 0.0
+FAR_FIELD = peri_preamble(2, lattice="sq {dx} origin 0.5 0.5 0.0") + """\
 region plate block 0.0 10.0 -2.0 2.0 -0.5 0.5 units box
 create_box 1 plate
 create_atoms 1 region plate

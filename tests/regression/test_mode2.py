@@ -34,6 +34,7 @@ import pytest
 
 from bbpd import metrics
 from bbpd.benchmarks import mode2
+from scenes import peri_preamble
 
 FE_PEAK_TOL = 2.0     # % (measured 1.1 and 0.9 at h = 0.25 mm)
 # measured (peak %, L2 %) per (kernel, dx), README of examples/mode2-central-crack
@@ -58,14 +59,7 @@ def test_reference_matches_classical_fe(mode):
     assert peak < FE_PEAK_TOL
 
 
-SHEAR_FAR_FIELD = """
-plugin load bbpdplugin.so
-units si
-dimension 2
-boundary s s p
-atom_style peri
-atom_modify map array
-lattice sq {dx} origin 0.5 0.5 0.0
+SHEAR_FAR_FIELD = peri_preamble(2, lattice="sq {dx} origin 0.5 0.5 0.0") + """\
 region plate block -0.052 0.052 -0.02 0.02 -0.5 0.5 units box
 create_box 1 plate
 create_atoms 1 region plate

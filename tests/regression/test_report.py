@@ -13,6 +13,7 @@ import pytest
 
 from bbpd import report
 from bbpd.benchmarks import mode1
+from bbpd.report import make
 
 ROOT = Path(__file__).resolve().parents[2]
 EX = ROOT / "examples"
@@ -62,11 +63,11 @@ def calls(tmp_path_factory):
     logs = []
     for n in range(2):
         lines = []
-        path, failed = report.reproduce(out, tiny_specs(extra), workers=2, log=lines.append)
+        path, failed = make.reproduce(out, tiny_specs(extra), workers=2, log=lines.append)
         logs.append((lines, path.read_text(), failed, cached_results(out)))
     extra.write_text("second\n")
     lines = []
-    report.reproduce(out, tiny_specs(extra), workers=2, log=lines.append)
+    make.reproduce(out, tiny_specs(extra), workers=2, log=lines.append)
     logs.append((lines, None, None, None))
     return out, logs
 
@@ -157,7 +158,7 @@ def test_changed_input_reruns_its_jobs_only(calls):
 
 
 def test_default_jobs_declare_their_input_scripts():
-    for spec in report.job_list(full=True):
+    for spec in make.job_list(full=True):
         names = [Path(p).name for p in spec.job.inputs]
         assert any(n.startswith("in.") for n in names), spec.job.label
         assert all(Path(p).is_file() for p in spec.job.inputs), spec.job.label

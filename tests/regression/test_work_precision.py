@@ -9,8 +9,8 @@ import re
 
 import pytest
 
-from bbpd import report
 from bbpd import work_precision as wp
+from bbpd.report import make
 
 # coarse grids: seconds per run
 TINY = wp.Plan(mode1_dx=(0.2, 0.1), mode2_dx=(2.0e-3, 1.0e-3), kw_dx=(4.0e-3, 2.0e-3),
@@ -21,7 +21,7 @@ TINY = wp.Plan(mode1_dx=(0.2, 0.1), mode2_dx=(2.0e-3, 1.0e-3), kw_dx=(4.0e-3, 2.
 def made(tmp_path_factory):
     out = tmp_path_factory.mktemp("wp")
     specs = wp.extra_specs([], TINY)
-    path, failed = report.reproduce(out, specs, workers=2, log=lambda msg: None)
+    path, failed = make.reproduce(out, specs, workers=2, log=lambda msg: None)
     return out, path.read_text(), failed, specs
 
 

@@ -27,8 +27,8 @@ BBPD::BondLaw gaussian_law(const Tables &t)
   law.model = BBPD::Model::PlaneStrain;
   law.geom = 1.0e-3;
   law.spacing = DX;
-  law.micromodulus = t.c0_rows;
-  law.horizon = t.delta_rows;
+  law.micromodulus = BBPD::TypePairTable(1, t.c0_rows);
+  law.horizon = BBPD::TypePairTable(1, t.delta_rows);
   return law;
 }
 
@@ -68,6 +68,17 @@ TEST(BondLaw, PmbUsesWholeVolumesAndTheLatticeRamp)
   EXPECT_EQ(law.coefficient(1, 1, DELTA, VJ),
             C0 * VJ * BBPD::PMB::volume_scale(DELTA, DELTA, DX) / DELTA);
   EXPECT_EQ(law.coefficient(1, 1, DX, VJ), C0 * VJ / DX);    // far inside: no ramp
+}
+
+TEST(BondLaw, HoldsItsValuesNotThePairStylesTables)
+{
+  Tables t;
+  const BBPD::BondLaw law = gaussian_law(t);
+  const double before = law.coefficient(1, 1, DX, VJ);
+  t.c0[1][1] = 2.0 * C0;    // the pair style recalibrates its table after handing the law
+  t.delta[1][1] = 2.0 * DELTA;
+  EXPECT_EQ(law.coefficient(1, 1, DX, VJ), before);
+  EXPECT_EQ(law.family_cutoff(1, 1), DELTA + 0.5 * DX);
 }
 
 TEST(BondLaw, GridSpacingFromVolume)

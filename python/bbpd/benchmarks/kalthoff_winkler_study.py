@@ -38,8 +38,11 @@ from pathlib import Path
 import numpy as np
 from scipy.spatial import cKDTree
 
+from bbpd import jobs as jobmod
 from bbpd import readers
 from bbpd.benchmarks import kalthoff_winkler as kw
+from bbpd.jobs import Job, Spec
+from bbpd.kernels import COLORS
 from bbpd.runner import run_lammps
 
 # ---------------------------------------------------------------------------- physics
@@ -422,14 +425,13 @@ def plot_paths_case(results, case, path):
                 color="black", linewidth=0.8)
         for yn in (g["ylo"], g["yhi"]):
             ax.plot([0, g["a"] * 1e3], [yn * 1e3] * 2, color="grey", linewidth=2)
-        palette = {"constant": "tab:blue", "triangular": "tab:orange", "gaussian": "tab:green"}
         for k, dx, r in runs:
             tr = r["trajectory"]
             style = "-" if dx >= 1e-3 - 1e-12 else ":"
             for side, y0 in (("lo", r["ylo"]), ("hi", r["yhi"])):
                 L = np.array(tr["L_" + side])
                 p = np.vstack([[r["a"], y0], np.array(tr[side])[L > 0]]) * 1e3
-                ax.plot(p[:, 0], p[:, 1], style, color=palette[k], linewidth=1.2,
+                ax.plot(p[:, 0], p[:, 1], style, color=COLORS[k], linewidth=1.2,
                         label=(f"{k} {dx * 1e3:g} mm ({f(r.get('fit_t70_deg'), '.1f')} deg)"
                                if side == "lo" else None))
         kw.draw_plate_frame(ax, g)
@@ -487,7 +489,6 @@ def figures(results, figdir):
 
 def jobs(nprocs=1):
     """The study's runs as bbpd.report specs (the report's --full and this module's command)."""
-    from bbpd.jobs import Job, Spec
     inputs = (kw.EXAMPLE, Path(kw.__file__), Path(__file__),
               kw.ROOT / "potentials" / "kalthoff_winkler_steel.bbpd", Path(readers.__file__))
     specs = []
@@ -548,7 +549,6 @@ def section(specs, results, figdir, notes):
 def main_study(work, figdir, workers=1, log=print, reuse_only=False):
     """Run (or reuse) the study's runs in work and write study.md, study.json and figures.
     reuse_only: re-analyse the finished run folders in work (with this code), run nothing."""
-    from bbpd import jobs as jobmod
     specs = sorted(jobs(), key=lambda s: s.job.estimate_s)   # the 1 mm runs first
     if reuse_only:
         done = {}

@@ -29,6 +29,7 @@ import numpy as np
 
 from bbpd import freund, metrics, readers
 from bbpd.kernels import KERNELS
+from bbpd.plots import plot_k_histories
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -180,7 +181,6 @@ def tip_study(work, dx=0.05, kernel="gaussian", nprocs=1):
 
 
 def figures(rows2, rows3, folder):
-    from bbpd.plots import plot_k_histories
     folder = Path(folder)
     norm = SIGMA0 * np.sqrt(H)
     exact, t_c = reference("consistent")

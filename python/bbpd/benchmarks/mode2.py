@@ -26,9 +26,11 @@ import time
 from pathlib import Path
 
 import numpy as np
+import scipy.sparse as sparse
 
 from bbpd import freund, metrics, readers
 from bbpd.kernels import KERNELS
+from bbpd.plots import plot_k_histories
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -149,7 +151,6 @@ def _q4_stiffness(lam, mu, h):
 
 def classical_fe(mode=2, h=0.25e-3, t_end=10.0e-6, every=4):
     """Classical FE K(t) at the right tip: returns t, K (same load and plate as in.mode2)."""
-    import scipy.sparse as sparse
     lam, mu = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
     nx, ny = int(round(2 * HALF_LENGTH / h)), int(round(2 * HALF_HEIGHT / h))
     x = -HALF_LENGTH + h * np.arange(nx + 1)
@@ -234,7 +235,6 @@ def table(work, kernels=KERNELS, dxs=(1.0e-3, 0.5e-3), td=0.0, nprocs=1):
 
 
 def figure(rows, path, td=0.0):
-    from bbpd.plots import plot_k_histories
     w = window()
     tt = np.linspace(0.0, T_END, 400)
     series = {f"{k} dx = {dx * 1e3:g} mm": (r["t"] * 1e6, normalise(r["k_ii"]))

@@ -17,16 +17,17 @@ bbpd.benchmarks run and analyse each case.
 
 Modules: runs (which runs, as bbpd.jobs jobs), tables (results -> rows and CSV), prose (the
 paragraphs), figures, sections (one per benchmark), provenance (LAMMPS, plugin, git, machine),
-document (REPORT.md), make (reproduce: the runs, then the document); __main__ is the command.
+then bbpd.work_precision (built on these), and on top document (REPORT.md) and make
+(reproduce: the runs, then the document); __main__ is the command.
 """
-# The public names, here so that "bbpd.report:run_job" (part of every run's cache key) and the
-# callers of bbpd.report.X keep working.
+# The public names of the building blocks, here so that "bbpd.report:run_job" (part of every
+# run's cache key) and the callers of bbpd.report.X keep working. document and make are not
+# among them: they use bbpd.work_precision, which imports the blocks (import them as
+# bbpd.report.document and bbpd.report.make).
 from bbpd.jobs import ROOT, Job
 from bbpd.kernels import COLORS, KERNELS
 
-from .document import FIGURE_LIST, write_report
 from .figures import RESOLUTION_COLORS, _figure, plot_k
-from .make import job_list, reproduce
 from .prose import ANGLE_TIE_DEG, MODE2_FIELD_SHARE, NEGATIVE_VG, mode2_j_verdict, ranking
 from .provenance import git_revision, lammps_build, machine, plugin_version
 from .runs import (BENCH, ESTIMATE_S, ESTIMATES_ENV, FREUND_PY, HEARTBEAT_S, KW_DX,
@@ -38,14 +39,14 @@ from .sections import (dispersion_section, kw_section, kw_study_section, mode1_s
 from .tables import (DISP_KDX, _arrays, _plain, f, failed, failed_row, failure_text, md_table,
                      run_time)
 
-__all__ = ["ROOT", "Job", "COLORS", "KERNELS", "FIGURE_LIST", "write_report",
-           "RESOLUTION_COLORS", "_figure", "plot_k", "reproduce", "ANGLE_TIE_DEG",
+__all__ = ["ROOT", "Job", "COLORS", "KERNELS",
+           "RESOLUTION_COLORS", "_figure", "plot_k", "ANGLE_TIE_DEG",
            "MODE2_FIELD_SHARE", "NEGATIVE_VG", "mode2_j_verdict", "ranking", "git_revision",
            "lammps_build", "machine", "plugin_version", "BENCH", "ESTIMATE_S", "ESTIMATES_ENV",
            "FREUND_PY", "HEARTBEAT_S", "KW_DX", "KW_GAUSSIAN_DX_FULL", "METRICS_PY",
            "READERS_PY",
            "MODE1_TABLE2_DX", "MODE1_TABLE3_DX", "MODE2_DX", "MODE2_DX_FULL", "Spec", "_tools",
-           "benchmark_specs", "build_of_run", "bench_inputs", "dispersion_run", "job_list",
+           "benchmark_specs", "build_of_run", "bench_inputs", "dispersion_run",
            "make_spec", "run_job",
            "dispersion_section", "kw_section", "kw_study_section", "mode1_section",
            "mode2_section", "DISP_KDX", "_arrays", "_plain", "f", "failed", "failed_row",

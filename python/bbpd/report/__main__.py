@@ -6,6 +6,7 @@ import sys
 
 import bbpd.report as report
 from bbpd.jobs import ROOT
+from bbpd.report import make
 
 
 def main(argv=None):
@@ -22,8 +23,7 @@ def main(argv=None):
     args = ap.parse_args(argv)
     if args.jobs < 1:
         ap.error("--jobs must be at least 1")
-    _, n_failed = report.reproduce(args.out, report.job_list(args.full), args.jobs,
-                                   args.full)
+    _, n_failed = make.reproduce(args.out, make.job_list(args.full), args.jobs, args.full)
     return 1 if n_failed else 0
 
 

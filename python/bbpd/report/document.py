@@ -5,6 +5,7 @@ import time
 from pathlib import Path
 
 from bbpd import jobs as jobmod
+from bbpd import work_precision
 
 from .sections import BUILDERS
 from .tables import failed, run_time
@@ -28,7 +29,6 @@ def write_report(out, specs, results, meta, start):
             sections.append({"title": bench, "setup": "", "table": "",
                              "text": f"FAILED to build this section: {type(exc).__name__}: {exc}",
                              "figures": []})
-    from bbpd import work_precision
     try:
         sections.append(work_precision.section(specs, results, figdir, notes))
     except Exception as exc:  # one broken section must not cost the others

@@ -6,6 +6,9 @@ from pathlib import Path
 
 import numpy as np
 
+from bbpd.benchmarks import dispersion as disp
+from bbpd.benchmarks import kalthoff_winkler as kw
+from bbpd.benchmarks import mode1, mode2
 from bbpd.kernels import COLORS, KERNELS
 
 from .runs import MODE1_TABLE3_DX
@@ -54,7 +57,6 @@ def plot_k(path, series, refs, window, title, xlabel, ylabel):
 
 def dispersion_figures(runs, paper, cv, figdir, notes):
     """Figs. 4-6 (dispersion.plot_figures): measured points on the analytic curves."""
-    from bbpd.benchmarks import dispersion as disp
     try:
         return [p.name for p in disp.plot_figures(runs, paper, cv, figdir)]
     except Exception as exc:  # the report must still be written
@@ -64,7 +66,6 @@ def dispersion_figures(runs, paper, cv, figdir, notes):
 
 def mode1_figures(rows2_ok, rows3_ok, figdir, notes):
     """Fig. 9 (Gaussian, every dx) and Fig. 10 (three kernels): K_I(t) against eq. 42."""
-    from bbpd.benchmarks import mode1
     figs = []
     norm = mode1.SIGMA0 * math.sqrt(mode1.H)
     exact, t_c = mode1.reference("consistent")
@@ -96,7 +97,6 @@ def mode1_figures(rows2_ok, rows3_ok, figdir, notes):
 
 def mode2_figures(ok, figdir, notes):
     """Fig. 12 per dx: K_II(t) of the three kernels, from the extrapolation and from J."""
-    from bbpd.benchmarks import mode2
     figs = []
     win = mode2.window()
     tt = np.linspace(0.0, mode2.T_END, 600)
@@ -128,7 +128,6 @@ def mode2_figures(ok, figdir, notes):
 
 def kw_figures(ok, figdir, notes):
     """Damage maps of every run, crack paths per dx and the Gaussian's paths over dx."""
-    from bbpd.benchmarks import kalthoff_winkler as kw
     gauss = sorted(((d, r) for (k, d), r in ok.items() if k == "gaussian"), reverse=True)
     figs = []
     for (k, dx), r in sorted(ok.items(), key=lambda x: (-x[0][1], KERNELS.index(x[0][0]))):

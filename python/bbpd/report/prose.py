@@ -1,6 +1,9 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The report's paragraphs: sentences computed from the runs' numbers (rankings, ranges,
 verdicts against the paper), none written in advance."""
+from bbpd.benchmarks import dispersion as disp
+from bbpd.benchmarks import kalthoff_winkler as kw
+from bbpd.benchmarks import mode1
 from bbpd.kernels import KERNELS
 
 from .tables import DISP_KDX, f, run_time
@@ -23,7 +26,6 @@ def ranking(values):
 
 def dispersion_text(numbers, table):
     """numbers: tables.dispersion_table's; table: dispersion.analytic_table's."""
-    from bbpd.benchmarks import dispersion as disp
     meas_phase, min_vg, dev = numbers["phase"], numbers["min_vg"], numbers["dev"]
     text = []
     if not dev:
@@ -62,7 +64,6 @@ def dispersion_text(numbers, table):
 def mode1_text(ok, rows2_ok, rows3_ok):
     """ok: every finished run by (kernel, dx); rows2_ok: Table 2's by dx; rows3_ok: Table 3's
     by kernel."""
-    from bbpd.benchmarks import mode1
     text = []
     if rows3_ok:
         l2c = {k: r["consistent"]["l2"] for k, r in rows3_ok.items()}
@@ -196,7 +197,6 @@ def mode2_j_verdict(ok):
 
 def kw_text(ok):
     """ok: (kernel, dx) -> finished result."""
-    from bbpd.benchmarks import kalthoff_winkler as kw
     text = []
     for dx in sorted({dx for _, dx in ok}, reverse=True):
         same = {k: r for (k, d), r in ok.items() if d == dx}

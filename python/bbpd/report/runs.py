@@ -13,6 +13,7 @@ from pathlib import Path
 
 from bbpd import jobs as jobmod
 from bbpd import readers
+from bbpd.benchmarks import dispersion, kalthoff_winkler_study
 from bbpd.jobs import ROOT, Job, Spec
 from bbpd.kernels import KERNELS
 
@@ -32,6 +33,8 @@ MODE2_DX = (1.0e-3, 0.5e-3)                 # m, three kernels (Fig. 12; the pap
 MODE2_DX_FULL = (1.0e-3, 0.5e-3, 0.25e-3)
 KW_DX = (2.0e-3, 1.0e-3)                    # m, three kernels (1 mm: the paper's, Figs. 14-15)
 KW_GAUSSIAN_DX_FULL = (0.5e-3,)             # m, Gaussian only
+MODE1PROP_DX = (0.1, 0.05)                  # m, three kernels (crack growth)
+MODE1PROP_DX_FULL = (0.1, 0.05, 0.025)
 
 # Expected wall time of each single-rank run here, 2 at a time on 2 shared cores (s); only
 # the time-left estimate and the job order (longest first) use them.
@@ -40,6 +43,7 @@ ESTIMATE_S = {
     ("mode1", 0.1): 2.0, ("mode1", 0.05): 6.0, ("mode1", 0.025): 60.0,
     ("mode2", 1.0e-3): 2.0, ("mode2", 0.5e-3): 8.0, ("mode2", 0.25e-3): 30.0,
     ("kw", 2.0e-3): 8.0, ("kw", 1.0e-3): 75.0, ("kw", 0.5e-3): 200.0,
+    ("mode1prop", 0.1): 3.0, ("mode1prop", 0.05): 15.0, ("mode1prop", 0.025): 160.0,
 }
 
 
@@ -83,7 +87,6 @@ def build_of_run(workdir):
 
 def dispersion_run(workdir, kernel):
     """One kernel of the dispersion benchmark: run, FFT ridge, deviations (dispersion.measure)."""
-    from bbpd.benchmarks import dispersion
     start = time.perf_counter()
     res = dispersion.measure((kernel,), work=workdir)[kernel]
     res["wall_time"] = time.perf_counter() - start
@@ -92,7 +95,6 @@ def dispersion_run(workdir, kernel):
 
 def _tools():
     """The dispersion tools, part of the dispersion jobs' inputs when built."""
-    from bbpd.benchmarks import dispersion
     out = []
     for name in ("bbpd-measure-dispersion", "bbpd-dispersion-curves"):
         try:
@@ -114,7 +116,12 @@ def bench_inputs(bench):
                       FREUND_PY, METRICS_PY, READERS_PY),
             "kw": (ROOT / "examples" / "kalthoff-winkler" / "in.kalthoff_winkler",
                    BENCH / "kalthoff_winkler.py",
-                   ROOT / "potentials" / "kalthoff_winkler_steel.bbpd", READERS_PY)}[bench]
+                   ROOT / "potentials" / "kalthoff_winkler_steel.bbpd", READERS_PY),
+            "mode1prop": (ROOT / "examples" / "mode1-propagation" / "in.mode1-propagation",
+                          BENCH / "mode1_propagation.py", BENCH / "mode1.py",
+                          ROOT / "python" / "bbpd" / "crack_motion.py",
+                          ROOT / "python" / "bbpd" / "crack_tip.py", FREUND_PY,
+                          READERS_PY)}[bench]
 
 
 def make_spec(bench, kernel, dx, target, args, inputs, estimate):
@@ -123,7 +130,8 @@ def make_spec(bench, kernel, dx, target, args, inputs, estimate):
     label = {"dispersion": f"dispersion {kernel}",
              "mode1": f"Mode I {kernel} dx = {dx:g} m",
              "mode2": f"Mode II {kernel} dx = {dx * 1e3:g} mm",
-             "kw": f"Kalthoff-Winkler {kernel} dx = {dx * 1e3:g} mm"}[bench]
+             "kw": f"Kalthoff-Winkler {kernel} dx = {dx * 1e3:g} mm",
+             "mode1prop": f"Mode I propagation {kernel} dx = {dx:g} m"}[bench]
     job = Job(label=label, func="bbpd.report:run_job",
               kwargs={"target": target, "args": args, "label": label},
               inputs=tuple(str(p) for p in inputs), estimate_s=estimate)
@@ -162,7 +170,12 @@ def benchmark_specs(full=False):
         specs.append(make_spec("kw", k, dx, "bbpd.benchmarks.kalthoff_winkler:run",
                                {"kernel": k, "dx": dx, "nprocs": 1}, kw_in,
                                ESTIMATE_S.get(("kw", dx), 600.0)))
+    prop_in = bench_inputs("mode1prop")
+    for dx in (MODE1PROP_DX_FULL if full else MODE1PROP_DX):
+        for k in KERNELS:
+            specs.append(make_spec("mode1prop", k, dx, "bbpd.benchmarks.mode1_propagation:run",
+                                   {"kernel": k, "dx": dx, "nprocs": 1}, prop_in,
+                                   ESTIMATE_S.get(("mode1prop", dx), 160.0)))
     if full:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
-        from bbpd.benchmarks import kalthoff_winkler_study
         specs += kalthoff_winkler_study.jobs()
     return specs

@@ -9,6 +9,9 @@ from pathlib import Path
 import numpy as np
 
 from bbpd import jobs as jobmod
+from bbpd.benchmarks import dispersion as disp
+from bbpd.benchmarks import kalthoff_winkler as kw
+from bbpd.benchmarks import mode1, mode2
 from bbpd.kernels import KERNELS
 
 from .runs import MODE1_TABLE3_DX
@@ -80,7 +83,6 @@ def dispersion_csv(runs, figdir):
     """The analytic curves of Figs. 4-6 at m = 5, delta = 1 mm, kept as CSV beside the figures
     (csv/analytic-paper: eqs. 29 and 31 as printed; csv/analytic-cv: with the C_v weights), and
     the measured points; returns dispersion.analytic_table's (table, paper, cv)."""
-    from bbpd.benchmarks import dispersion as disp
     csvdir = Path(figdir) / "csv"
     table, paper, cv = disp.analytic_table(csvdir)
     for k, r in runs.items():
@@ -96,7 +98,6 @@ def dispersion_table(specs, results, runs, table):
     """(header, rows, numbers): numbers holds per kernel the measured c/v at DISP_KDX
     ('phase'), the smallest measured v_g/v ('min_vg') and the deviation from what LAMMPS
     integrates ('dev')."""
-    from bbpd.benchmarks import dispersion as disp
     info = next(iter(runs.values()))["info"] if runs else None
     v = math.sqrt(info["E"] / info["rho"]) if info else 1.0
 
@@ -144,7 +145,6 @@ def mode1_results(specs, results):
 def mode1_tables(by, ok):
     """Table 2 (Gaussian, every dx) and Table 3 (three kernels): (header, rows, finished runs
     by dx or kernel) of each."""
-    from bbpd.benchmarks import mode1
 
     def cells(r):
         p, c = r["paper"], r["consistent"]
@@ -190,7 +190,6 @@ def mode1_tables(by, ok):
 
 def mode2_table(specs, results):
     """(header, rows, {(kernel, dx): finished result with arrays})"""
-    from bbpd.benchmarks import mode2
     header = ["kernel", "dx (mm)", "atoms", "peak (%)", "L2 (%)",
               "K_II/(tau sqrt(pi a)) at window end: ours / reference", "ours/reference",
               "K_II from J: peak / L2 (%)", "from J: ours/reference", "paper", "run time (s)"]
@@ -218,7 +217,6 @@ def mode2_table(specs, results):
 
 def kw_table(specs, results):
     """(header, rows, {(kernel, dx): finished result})"""
-    from bbpd.benchmarks import kalthoff_winkler as kw
     header = ["kernel", "dx (mm)", "atoms", "first bond (us)", "damage band (us)",
               "paper initiation (us)", "angle (deg)", "experiment (deg)", "speed (m/s)",
               "far-edge crack from (us)", "run time (s)"]

@@ -1,0 +1,436 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Mode-I crack growth under a stress wave, against Freund's equation of motion.
+
+Runs examples/mode1-propagation/in.mode1-propagation (the plate, notch and ramp load of the
+stationary Mode-I benchmark, mode1.py, with fracture on) and compares with
+bbpd.crack_motion (plane stress, the model's constants: nu = 1/3, i.e. eq. 42 with
+nu' = 1/4 and C_d = sqrt(E/(rho (1 - nu^2)))):
+
+t_i     against the root of K_I(t_i) = K_Ic = sqrt(E G_c) of eq. 42, two measures:
+        first bond  the first broken bond within 1 m of the tip (the damage sum there rises);
+        tip moved   the first dump in which the tracked tip has moved (by one grid spacing).
+        Errors relative to t_i - t_c (the loading time of the tip).
+J/G_c   J of compute bbpd/jintegral at the initial tip at each measured t_i, over G_c
+        (energy balance at initiation).
+l(t)    l = a + the extension of compute bbpd/crack/tip (grown from (a, 0), threshold 0.3,
+        link = the horizon; tip.dat); bbpd.crack_tip finds the tip in the damage dumps by
+        the same definition (the largest difference is reported, in grid spacings); L2 error of the extension l - a over
+        [t_i, 3 t_c] relative to the theory's, for the K_I = K_Ic (toughness) and the
+        G = G_c (energy) forms of the equation of motion.
+width   largest |y| of the crack atoms (damage >= 0.3, x >= a) at 3 t_c, in horizons: a
+        crack between two rows has 0.5 dx; a wider band is a process zone that spreads.
+v       least-squares slope of l(t) over +-SPEED_HALF_WINDOW t_c around SPEED_TIMES t_c.
+
+Command line (from the repository root):
+  tools/python -m bbpd.benchmarks.mode1_propagation --dx 0.1 0.05 \
+      --work /tmp/mode1-propagation --csv examples/mode1-propagation/results/mode1_propagation.csv \
+      --figures examples/mode1-propagation --readme examples/mode1-propagation/README.md
+(add 0.025 to --dx for the finest grid; --full; run times in the README).
+"""
+
+import argparse
+import csv
+import platform
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+from bbpd import crack_motion, crack_tip, freund, readers
+from bbpd.benchmarks import mode1
+from bbpd.kernels import COLORS, KERNELS
+from bbpd.runner import run_lammps
+
+ROOT = Path(__file__).resolve().parents[3]
+EXAMPLE = ROOT / "examples" / "mode1-propagation" / "in.mode1-propagation"
+
+E, RHO, H, T_D, SIGMA0 = mode1.E, mode1.RHO, mode1.H, mode1.T_D, mode1.SIGMA0
+A = 5.0                     # initial tip, m
+NU = mode1.IMPLIED_NU["plane/stress"]
+G_C = 2.0                   # J/m^2 at sigma0 = 1 MPa: t_i = 1.70 t_c, theory runs 0.77-0.98 m
+M = 5.0                     # delta/dx
+T_END = 1.2e-3              # run length, > 3 t_c = 1.10e-3 s
+DUMP_DT = 1.0e-5            # s between damage snapshots
+SPEED_TIMES = (2.0, 2.4, 2.8)   # in units of t_c
+SPEED_HALF_WINDOW = 0.15        # in units of t_c
+DX_DEFAULT = (0.1, 0.05)
+DX_FULL = (0.1, 0.05, 0.025)
+TABLE_NAME = "mode1-propagation"
+CSV_COLUMNS = ("kernel", "dx", "Gc", "dt", "atoms", "loop_s", "ti_pd", "ti_theory",
+               "ti_err_pct", "J_at_ti_over_Gc", "ti_tip_pd", "ti_tip_err_pct",
+               "J_at_ti_tip_over_Gc", "tip_check_dx", "width_3tc_over_delta", "ext_pd_3tc", "ext_toughness_3tc",
+               "ext_energy_3tc", "l2_toughness_pct", "l2_energy_pct") + tuple(
+    f"v_{s:g}tc_over_cR" for s in SPEED_TIMES)
+
+
+def problem(G_c=G_C, sigma0=SIGMA0):
+    """The theory of bbpd.crack_motion for the model's constants (plane stress)."""
+    return crack_motion.RampProblem(E, NU, RHO, G_c, sigma0, T_D, H, A, freund.PLANE_STRESS)
+
+
+def initiation_time(t, damage_sum):
+    """Time of the first output at which the damage sum exceeds its initial value (the
+    notch's damage): the first broken bond.  None if no bond breaks."""
+    rise = np.nonzero(damage_sum > damage_sum[0])[0]
+    return None if rise.size == 0 else float(t[rise[0]])
+
+
+def speed_at(t, l, t0, half_window):
+    """Least-squares slope of l(t) over |t - t0| <= half_window."""
+    w = np.abs(t - t0) <= half_window
+    if w.sum() < 3:
+        return float("nan")
+    return float(np.polyfit(t[w], l[w], 1)[0])
+
+
+def l2_extension_error(t, l, l_theory, window):
+    """sqrt(int (l - l_th)^2 dt / int (l_th - a)^2 dt) over the window (trapezoid)."""
+    w = (t >= window[0]) & (t <= window[1])
+    num = np.trapz((l[w] - l_theory[w]) ** 2, t[w])
+    den = np.trapz((l_theory[w] - A) ** 2, t[w])
+    return float(np.sqrt(num / den))
+
+
+def band_width(dump_path, dt, t_end, threshold=crack_tip.DEFAULT_THRESHOLD):
+    """Largest |y| of the atoms with damage >= threshold ahead of x = a in the last snapshot
+    at or before t_end."""
+    last = None
+    for step, cols in readers.dump_snapshots(dump_path):
+        if step * dt <= t_end * (1.0 + 1e-12):
+            last = cols
+    crack = (last["c_damage"] >= threshold) & (last["x"] >= A)
+    return float(np.abs(last["y"][crack]).max()) if crack.any() else 0.0
+
+
+def measure(t_k, k_cols, t_tip, ext_tip, dx, G_c=G_C):
+    """All the numbers of one run.  k_cols: K_I (dsif), J, K_I(J), K_II(J), damage sum near
+    the tip; ext_tip: crack extension at the times t_tip."""
+    prob = problem(G_c)
+    t_c, t_end = prob.t_c, prob.t_end
+    ti_th = prob.initiation_time()
+    ti_pd = initiation_time(t_k, k_cols[4])
+    l_pd = A + ext_tip
+    res = {"dx": dx, "Gc": G_c, "ti_theory": ti_th, "t_c": t_c, "c_r": prob.c_r,
+           "ti_pd": ti_pd if ti_pd is not None else float("nan"),
+           "t_tip": t_tip, "l_pd": l_pd}
+    res["ti_err_pct"] = 100.0 * (res["ti_pd"] - ti_th) / (ti_th - t_c)
+    res["J_at_ti_over_Gc"] = (float(np.interp(res["ti_pd"], t_k, k_cols[1])) / G_c
+                              if ti_pd is not None else float("nan"))
+    moved = np.nonzero(l_pd > A + 0.5 * dx)[0]
+    res["ti_tip_pd"] = float(t_tip[moved[0]]) if moved.size else float("nan")
+    res["ti_tip_err_pct"] = 100.0 * (res["ti_tip_pd"] - ti_th) / (ti_th - t_c)
+    res["J_at_ti_tip_over_Gc"] = float(np.interp(res["ti_tip_pd"], t_k, k_cols[1])) / G_c
+    window = (ti_th, t_end)
+    res["ext_pd_3tc"] = float(np.interp(t_end, t_tip, l_pd)) - A
+    for crit in crack_motion.CRITERIA:
+        l_th, _ = prob.tip_position(t_tip, crit)
+        res[f"l_{crit}"] = l_th
+        res[f"ext_{crit}_3tc"] = float(prob.tip_position(np.array([t_end]), crit)[0][0]) - A
+        res[f"l2_{crit}_pct"] = 100.0 * l2_extension_error(t_tip, l_pd, l_th, window)
+    for s in SPEED_TIMES:
+        res[f"v_{s:g}tc_over_cR"] = speed_at(t_tip, l_pd, s * t_c,
+                                             SPEED_HALF_WINDOW * t_c) / prob.c_r
+    return res
+
+
+def run(workdir, kernel="gaussian", dx=0.05, G_c=G_C, dt=None, nprocs=1, t_end=T_END,
+        reuse=False):
+    """Run the example once and measure it (see measure()); reuse=True measures the
+    outputs of an earlier run in workdir (same arguments) without running LAMMPS."""
+    dt = mode1.default_dt(dx) if dt is None else dt
+    workdir = Path(workdir)
+    vars_ = {"kernel": kernel, "dx": dx, "Gc": G_c, "m": M, "dt": dt, "tend": t_end,
+             "dumpdt": DUMP_DT, "E": E, "rho": RHO, "H": H, "a": A, "td": T_D,
+             "sigma0": SIGMA0}
+    start = time.perf_counter()
+    if reuse:
+        output = (workdir / "log.lammps").read_text()
+    else:
+        output = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_).output
+    wall = time.perf_counter() - start
+    loop_s, _ = readers.loop_time(output)
+    d = np.loadtxt(workdir / "k.dat", comments="#", ndmin=2)
+    t_k = d[:, 0] * dt
+    tip = np.loadtxt(workdir / "tip.dat", comments="#", ndmin=2)
+    t_tip, ext = tip[:, 0] * dt, tip[:, 3]
+    res = measure(t_k, d[:, 1:].T, t_tip, ext, dx, G_c)
+    t_py, _, _, ext_py = crack_tip.tip_history(workdir / "damage.dump", dt, (A, 0.0), M * dx)
+    res["tip_check_dx"] = float(np.max(np.abs(np.interp(t_py, t_tip, ext) - ext_py))) / dx
+    res["width_3tc_over_delta"] = band_width(workdir / "damage.dump", dt, res["t_c"]
+                                             * freund.MODE1_VALIDITY_MULTIPLE) / (M * dx)
+    res.update({"kernel": kernel, "dt": dt, "nprocs": nprocs, "wall_time": wall,
+                "loop_s": loop_s, "atoms": int(round(10.0 / dx)) * int(round(2 * H / dx)),
+                "t_k": t_k, "J": d[:, 2], "damage_sum": d[:, 5]})
+    return res
+
+
+# --------------------------------------------------------------------------- outputs
+
+def machine():
+    """CPU model and vector ISA for the timing columns."""
+    model, flags = platform.processor() or "unknown CPU", set()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                model = line.split(":", 1)[1].strip()
+            elif line.startswith("flags"):
+                flags = set(line.split(":", 1)[1].split())
+    except OSError:
+        pass
+    isa = "AVX-512" if "avx512f" in flags else "AVX2" if "avx2" in flags else "SSE"
+    return f"{model}, {isa}"
+
+
+def write_csv(path, rows, command):
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "w", newline="") as f:
+        f.write(f"# made by: {command}\n# timing: LAMMPS loop time, 1 rank, {machine()}\n")
+        w = csv.writer(f)
+        w.writerow(CSV_COLUMNS)
+        for r in rows:
+            w.writerow([r[c] if isinstance(r[c], str) else f"{r[c]:.6g}" for c in CSV_COLUMNS])
+
+
+def write_histories(path, rows):
+    """Tip histories of every run (for the figures): kernel, dx, t, l."""
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(("kernel", "dx", "t", "l"))
+        for r in rows:
+            for t, l in zip(r["t_tip"], r["l_pd"]):
+                w.writerow((r["kernel"], f"{r['dx']:g}", f"{t:.6g}", f"{l:.6g}"))
+
+
+def read_rows(path):
+    """The CSV written by write_csv as a list of dicts (kernel a string, the rest floats)."""
+    lines = [ln for ln in Path(path).read_text().splitlines() if ln and not ln.startswith("#")]
+    names = lines[0].split(",")
+    out = []
+    for ln in lines[1:]:
+        vals = ln.split(",")
+        out.append({n: (v if n == "kernel" else float(v)) for n, v in zip(names, vals)})
+    return out
+
+
+def table_markdown(rows, command=None):
+    """The README table of a results CSV (rows: dicts with the CSV's columns)."""
+    head = ("| kernel | dx (m) | atoms | first bond: t_i (ms), error (%), J/G_c | "
+            "tip moved: t_i (ms), error (%), J/G_c | extension at 3 t_c (m) | "
+            "L2 of l(t), K_Ic form (%) | L2 of l(t), energy form (%) | v/c_R at "
+            + ", ".join(f"{s:g}" for s in SPEED_TIMES)
+            + " t_c | crack half-width at 3 t_c (delta) | loop time (s) |")
+    lines = ([f"Made by `{command}`.", ""] if command else []) + [
+        head, "|" + "---|" * (head.count("|") - 1)]
+    prob = problem(rows[0]["Gc"]) if rows else problem()
+    for r in rows:
+        speeds = ", ".join(f"{r[f'v_{s:g}tc_over_cR']:.2f}" for s in SPEED_TIMES)
+        lines.append(f"| {r['kernel']} | {r['dx']:g} | {int(r['atoms'])} | "
+                     f"{1e3 * r['ti_pd']:.4f}, {r['ti_err_pct']:+.1f}, "
+                     f"{r['J_at_ti_over_Gc']:.2f} | {1e3 * r['ti_tip_pd']:.4f}, "
+                     f"{r['ti_tip_err_pct']:+.1f}, {r['J_at_ti_tip_over_Gc']:.2f} | "
+                     f"{r['ext_pd_3tc']:.2f} | {r['l2_toughness_pct']:.1f} | "
+                     f"{r['l2_energy_pct']:.1f} | {speeds} | {r['width_3tc_over_delta']:.2f} | "
+                     f"{r['loop_s']:.1f} |")
+    v_th = {c: [prob.tip_position(np.array([s * prob.t_c]), c)[1][0] / prob.c_r
+                for s in SPEED_TIMES] for c in crack_motion.CRITERIA}
+    t_i = f"{1e3 * prob.initiation_time():.4f}, 0, 1"
+    for crit, name in (("toughness", "K_Ic form"), ("energy", "energy form")):
+        ext = prob.tip_position(np.array([prob.t_end]), crit)[0][0] - A
+        lines.append(f"| theory, {name} | | | {t_i} | {t_i} | {ext:.2f} | | | "
+                     + ", ".join(f"{v:.2f}" for v in v_th[crit]) + " | | |")
+    return "\n".join(lines)
+
+
+def update_readme(readme, text, name=TABLE_NAME):
+    """Replace the lines between <!-- bbpd:table name --> and <!-- /bbpd:table -->."""
+    readme = Path(readme)
+    src = readme.read_text()
+    start, end = f"<!-- bbpd:table {name} -->", "<!-- /bbpd:table -->"
+    i, j = src.index(start) + len(start), src.index(end, src.index(start))
+    readme.write_text(src[:i] + "\n" + text + "\n" + src[j:])
+
+
+FIGURE_NAMES = ("crack_extension.png", "crack_speed.png", "work_precision.png")
+
+
+def figures(histories_csv, results_csv, folder, prefix=""):
+    """The figures of the example from its CSVs (see figures_of_rows)."""
+    rows = read_rows(results_csv)
+    hist = {}
+    for ln in Path(histories_csv).read_text().splitlines()[1:]:
+        if ln:
+            k, dx, t, l = ln.split(",")
+            hist.setdefault((k, float(dx)), []).append((float(t), float(l)))
+    for r in rows:
+        r["t_tip"], r["l_pd"] = np.array(hist[(r["kernel"], r["dx"])]).T
+    return figures_of_rows(rows, folder, prefix)
+
+
+def figures_of_rows(rows, folder, prefix=""):
+    """l(t) and v(t) of every run (rows with kernel, dx, Gc, t_tip, l_pd) with the theory in
+    both forms of the equation of motion, and the work-precision figure; returns the names."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    prob = problem(rows[0]["Gc"])
+    t_c = prob.t_c
+    tt = np.linspace(0.0, prob.t_end, 600)
+    dxs = sorted({r["dx"] for r in rows}, reverse=True)
+    styles = dict(zip(dxs, (":", "--", "-", "-.")))
+    fig_l, ax_l = plt.subplots(figsize=(7, 4.5))
+    fig_v, ax_v = plt.subplots(figsize=(7, 4.5))
+    for crit, col in (("toughness", "black"), ("energy", "grey")):
+        l_th, v_th = prob.tip_position(tt, crit)
+        label = "Freund, K = K_Ic" if crit == "toughness" else "Freund, G = G_c"
+        ax_l.plot(tt / t_c, l_th - A, color=col, lw=2.5, label=label)
+        ax_v.plot(tt / t_c, v_th / prob.c_r, color=col, lw=2.5, label=label)
+    for r in sorted(rows, key=lambda r: (r["kernel"], r["dx"])):
+        t, l = np.asarray(r["t_tip"], dtype=float), np.asarray(r["l_pd"], dtype=float)
+        kernel, dx = r["kernel"], r["dx"]
+        color = COLORS.get(kernel, None)
+        ax_l.plot(t / t_c, l - A, styles.get(dx, "-"), color=color, label=f"{kernel}, dx = {dx:g}")
+        tv = np.linspace(t_c, prob.t_end - SPEED_HALF_WINDOW * t_c, 60)
+        v = [speed_at(t, l, x, SPEED_HALF_WINDOW * t_c) for x in tv]
+        ax_v.plot(tv / t_c, np.array(v) / prob.c_r, styles.get(dx, "-"), color=color,
+                  label=f"{kernel}, dx = {dx:g}")
+    for ax, ylabel in ((ax_l, "crack extension l - a (m)"), (ax_v, "crack speed v / c_R")):
+        ax.axvline(prob.t_end / t_c, color="k", lw=0.8, ls=":")
+        ax.set_xlabel("t / t_c")
+        ax.set_ylabel(ylabel)
+        ax.set_xlim(1.0, 3.2)
+        ax.legend(fontsize=7, ncol=2)
+    ax_v.set_ylim(0.0, 1.05)
+    ax_v.set_title(f"v: slope of l(t) over +-{SPEED_HALF_WINDOW:g} t_c", fontsize=9)
+    folder = Path(folder)
+    names = [prefix + n for n in FIGURE_NAMES]
+    fig_l.tight_layout()
+    fig_l.savefig(folder / names[0], dpi=110)
+    fig_v.tight_layout()
+    fig_v.savefig(folder / names[1], dpi=110)
+    plt.close(fig_l)
+    plt.close(fig_v)
+    work_precision_figure(rows, folder / names[2])
+    return names
+
+
+def work_precision_figure(rows, path):
+    """|t_i error| and the L2 error of l(t) (energy form) against the loop time, one line per
+    kernel through its grids."""
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(1, 3, figsize=(11, 3.8))
+    metrics = (("ti_err_pct", "|t_i error| (% of t_i - t_c), first bond"),
+               ("l2_energy_pct", "L2 of l(t), energy form (%)"),
+               ("l2_toughness_pct", "L2 of l(t), K_Ic form (%)"))
+    for ax, (col, label) in zip(axes, metrics):
+        for kernel in KERNELS:
+            rs = sorted((r for r in rows if r["kernel"] == kernel), key=lambda r: -r["dx"])
+            if not rs:
+                continue
+            x = [r["loop_s"] for r in rs]
+            y = [max(abs(r[col]), 1e-2) for r in rs]
+            ax.loglog(x, y, "o-", color=COLORS.get(kernel), label=kernel)
+            for r, xi, yi in zip(rs, x, y):
+                ax.annotate(f"{r['dx']:g}", (xi, yi), fontsize=7)
+        ax.set_xlabel(f"loop time (s), 1 rank\n{machine()}", fontsize=7)
+        ax.set_ylabel(label, fontsize=8)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+# --------------------------------------------------------------------------- report
+
+REPORT_TITLE = "Mode-I crack growth against Freund's equation of motion"
+REPORT_SETUP = ("The stationary Mode-I plate with fracture on: G_c = 2 J/m^2 at sigma0 = 1 MPa, "
+                "plane stress, m = 5, unbreakable bands 0.5 m wide along the edges; t_i from "
+                "K_I(t_i) = sqrt(E G_c) with eq. 42 (the model's constants), l(t) from Freund's "
+                "equation of motion in the K_Ic form (k(v) K* = K_Ic) and the energy form "
+                "(v = c_R (1 - K_Ic^2/K*^2)), t <= 3 t_c; tip from compute bbpd/crack/tip; "
+                "see examples/mode1-propagation/README.md.")
+
+
+def summary_text(rows):
+    """Sentences of the report from the measured rows."""
+    def span(col, fmt):
+        vals = [r[col] for r in rows]
+        return f"{min(vals):{fmt}} to {max(vals):{fmt}}"
+    finest = [r for r in rows if r["dx"] == min(q["dx"] for q in rows)]
+    best = min(finest, key=lambda r: r["l2_toughness_pct"])
+    return [f"First broken bond: t_i error {span('ti_err_pct', '+.1f')} % of t_i - t_c, "
+            f"J/G_c {span('J_at_ti_over_Gc', '.2f')}; the tip's first grid step: "
+            f"{span('ti_tip_err_pct', '+.1f')} %, J/G_c {span('J_at_ti_tip_over_Gc', '.2f')} "
+            f"(at dx = {finest[0]['dx']:g} m: J/G_c "
+            + ", ".join(f"{r['J_at_ti_tip_over_Gc']:.2f}" for r in finest) + ").",
+            f"Extension at 3 t_c {span('ext_pd_3tc', '.2f')} m (theory "
+            f"{rows[0]['ext_toughness_3tc']:.2f} m in the K_Ic form, "
+            f"{rows[0]['ext_energy_3tc']:.2f} m in the energy form); on the finest grid the "
+            f"smallest L2 error of l(t) is {best['l2_toughness_pct']:.1f} % against the K_Ic "
+            f"form ({best['kernel']})."]
+
+
+def section(specs, results, figdir, notes):
+    """The section of REPORT.md (bbpd.report.write_report) from the report's runs."""
+    done = [s for s in specs if results.get(s.job.label) and "error" not in results[s.job.label]]
+    rows = [results[s.job.label] for s in done]
+    bad = [s.job.label for s in specs if s not in done]
+    text = summary_text(rows) if rows else []
+    if bad:
+        text.append("Not measured (failed or not run): " + ", ".join(bad) + ".")
+    names = []
+    if rows:
+        try:
+            names = figures_of_rows(rows, figdir, prefix="mode1_propagation_")
+        except Exception as exc:  # the report must still be written
+            notes.append(f"mode1-propagation figures not made: {type(exc).__name__}: {exc}")
+    return {"title": REPORT_TITLE, "setup": REPORT_SETUP,
+            "table": table_markdown(rows) if rows else "", "text": " ".join(text),
+            "figures": names}
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--work", default="/tmp/bbpd-mode1-propagation")
+    ap.add_argument("--nprocs", type=int, default=1)
+    ap.add_argument("--dx", type=float, nargs="+", default=list(DX_DEFAULT))
+    ap.add_argument("--full", action="store_true", help=f"dx = {DX_FULL}")
+    ap.add_argument("--kernels", nargs="+", default=list(KERNELS))
+    ap.add_argument("--Gc", type=float, default=G_C)
+    ap.add_argument("--reuse", action="store_true",
+                    help="measure the outputs already in --work without running LAMMPS")
+    ap.add_argument("--csv", help="results CSV to write")
+    ap.add_argument("--figures", help="folder for crack_extension.png and crack_speed.png")
+    ap.add_argument("--readme", help="README whose bbpd:table block is rewritten")
+    args = ap.parse_args(argv)
+    dxs = DX_FULL if args.full else args.dx
+    command = "tools/python -m bbpd.benchmarks.mode1_propagation " + " ".join(
+        a for a in (argv if argv is not None else sys.argv[1:]) if a != "--reuse")
+    rows = []
+    for dx in dxs:
+        for kernel in args.kernels:
+            res = run(Path(args.work) / f"{kernel}_{dx}", kernel, dx, args.Gc,
+                      nprocs=args.nprocs, reuse=args.reuse)
+            rows.append(res)
+            print(f"{kernel:10s} dx {dx:6.3f}: t_i {1e3 * res['ti_pd']:.4f} ms "
+                  f"(theory {1e3 * res['ti_theory']:.4f}, {res['ti_err_pct']:+.1f} %), "
+                  f"J/G_c {res['J_at_ti_over_Gc']:.3f}, tip moves at "
+                  f"{1e3 * res['ti_tip_pd']:.4f} ms ({res['ti_tip_err_pct']:+.1f} %, J/G_c "
+                  f"{res['J_at_ti_tip_over_Gc']:.3f}), tip check {res['tip_check_dx']:.2f} dx, extension {res['ext_pd_3tc']:.2f} m "
+                  f"(theory {res['ext_toughness_3tc']:.2f} / {res['ext_energy_3tc']:.2f}), "
+                  f"L2 {res['l2_toughness_pct']:.1f} / {res['l2_energy_pct']:.1f} %, "
+                  f"loop {res['loop_s']:.1f} s", flush=True)
+    if args.csv:
+        write_csv(args.csv, rows, command)
+        write_histories(Path(args.csv).with_name("tip_histories.csv"), rows)
+        if args.readme:
+            update_readme(args.readme, table_markdown(read_rows(args.csv), command))
+        if args.figures:
+            figures(Path(args.csv).with_name("tip_histories.csv"), args.csv, args.figures)
+
+
+if __name__ == "__main__":
+    main()
