@@ -38,13 +38,15 @@ class TypePairTable {
  public:
   TypePairTable() = default;
   // copies rows[1..ntypes][1..ntypes] (a LAMMPS per-type-pair array; row and column 0 unused)
-  TypePairTable(int ntypes, const double *const *rows) :
+  template <class T>
+  TypePairTable(int ntypes, const T *const *rows) :
       stride(ntypes + 1), values(static_cast<size_t>(stride) * stride, 0.0)
   {
     for (int i = 1; i <= ntypes; i++)
-      for (int j = 1; j <= ntypes; j++) values[i * stride + j] = rows[i][j];
+      for (int j = 1; j <= ntypes; j++) values[i * stride + j] = static_cast<double>(rows[i][j]);
   }
   double operator()(int itype, int jtype) const { return values[itype * stride + jtype]; }
+  bool empty() const { return values.empty(); }
 
  private:
   int stride = 0;
@@ -60,6 +62,7 @@ struct BondLaw {
   double lattice_constant = 0.0;     // pmb: the ramp's width
   // per type pair, as calibrated by the pair style: c0 (eq. 21; pmb: peri/pmb's c) and delta
   TypePairTable micromodulus, horizon;
+  TypePairTable bondless;    // nonzero: the type pair forms no bonds (separate bodies)
 
   // reference distance below which a pair is in a family (pmb: up to and including delta)
   double family_cutoff(int itype, int jtype) const
@@ -69,6 +72,7 @@ struct BondLaw {
   // is a pair at squared reference distance rsq in a family?
   bool bonded(int itype, int jtype, double rsq) const
   {
+    if (!bondless.empty() && bondless(itype, jtype) != 0.0) return false;
     if (pmb) return PMB::in_family(rsq, horizon(itype, jtype));
     const double rc = family_cutoff(itype, jtype);
     return rsq < rc * rc;

@@ -63,7 +63,7 @@ PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k) :
     Pair(lmp), kernel(k), model(BBPD::Model::Solid3D), geom(1.0), spacing(0.0),
     dt_safety(DT_SAFETY_DEFAULT), contact(0), contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
     fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
-    s0_user(nullptr), bonds(nullptr), report_due(0), dt_bound_paper(0.0), dt_bound(0.0), multi_s0(0),
+    s0_user(nullptr), bondless(nullptr), bonds(nullptr), report_due(0), dt_bound_paper(0.0), dt_bound(0.0), multi_s0(0),
     s0_single(0.0), break_margin(0.0),
     compat_pmb(0), lattice_constant(0.0), alpha(nullptr), alpha_any(0),
     nmax_smin(0), smin_new(nullptr), alpha_state(nullptr)
@@ -95,6 +95,7 @@ PairBBPD::~PairBBPD()
     memory->destroy(micromodulus);
     memory->destroy(critical_stretch);
     memory->destroy(s0_user);
+    memory->destroy(bondless);
     memory->destroy(alpha);
   }
 }
@@ -111,11 +112,13 @@ void PairBBPD::allocate()
   memory->create(micromodulus, n, n, "pair:micromodulus");
   memory->create(critical_stretch, n, n, "pair:critical_stretch");
   memory->create(s0_user, n, n, "pair:s0_user");
+  memory->create(bondless, n, n, "pair:bondless");
   memory->create(alpha, n, n, "pair:alpha");
   for (int i = 0; i < n; i++)
     for (int j = 0; j < n; j++) {
       setflag[i][j] = 0;
       s0_user[i][j] = 0;
+      bondless[i][j] = 0;
       alpha[i][j] = 0.0;
     }
 }
@@ -211,9 +214,10 @@ void PairBBPD::settings(int narg, char **arg)
 }
 
 /* ----------------------------------------------------------------------
-   pair_coeff I J E Gc delta [critical_stretch s0]
-   pair_coeff I J FILE MATERIAL delta [critical_stretch s0]
+   pair_coeff I J E Gc delta [critical_stretch s0] [alpha A] [bonds yes|no]
+   pair_coeff I J FILE MATERIAL delta [critical_stretch s0] [alpha A] [bonds yes|no]
    Gc = none: elastic (bonds never break) unless critical_stretch is given
+   bonds no: types I and J form no bonds (two bodies); E and delta set only their contact
 ------------------------------------------------------------------------- */
 
 void PairBBPD::coeff(int narg, char **arg)
@@ -224,10 +228,10 @@ void PairBBPD::coeff(int narg, char **arg)
     coeff_pmb(narg, arg);
     return;
   }
-  if (narg != 5 && narg != 7 && narg != 9)
-    error->all(FLERR, "Pair coeff for {}: expected 'I J E Gc delta [critical_stretch s0] [alpha A]' "
-               "or 'I J file material delta [critical_stretch s0] [alpha A]', got {} arguments",
-               style, narg);
+  if (narg < 5 || narg > 11 || narg % 2 == 0)
+    error->all(FLERR, "Pair coeff for {}: expected 'I J E Gc delta [critical_stretch s0] [alpha A] "
+               "[bonds yes|no]' or 'I J file material delta [critical_stretch s0] [alpha A] "
+               "[bonds yes|no]', got {} arguments", style, narg);
 
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
@@ -246,6 +250,7 @@ void PairBBPD::coeff(int narg, char **arg)
   }
   const double delta = utils::numeric(FLERR, arg[4], false, lmp);
   double s0 = -1.0, a = 0.0;
+  int with_bonds = 1;
   for (int iarg = 5; iarg + 1 < narg; iarg += 2) {
     if (strcmp(arg[iarg], "critical_stretch") == 0) {
       s0 = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -255,10 +260,21 @@ void PairBBPD::coeff(int narg, char **arg)
       if (a < 0.0 || !std::isfinite(a))
         error->all(FLERR, "Pair coeff for {}: alpha must be >= 0 (Silling-Askari: 0.25 is "
                    "typical, 0 turns the rule off)", style);
+    } else if (strcmp(arg[iarg], "bonds") == 0) {
+      with_bonds = utils::logical(FLERR, arg[iarg + 1], false, lmp);
     } else {
-      error->all(FLERR, "Unknown pair_coeff {} keyword: {} (expected critical_stretch or alpha)",
-                 style, arg[iarg]);
+      error->all(FLERR, "Unknown pair_coeff {} keyword: {} (expected critical_stretch, alpha or "
+                 "bonds)", style, arg[iarg]);
     }
+  }
+  if (!with_bonds) {
+    if (s0 > 0.0 || a > 0.0)
+      error->all(FLERR, "Pair coeff for {}: a type pair with 'bonds no' has no bonds to break: "
+                 "drop critical_stretch and alpha", style);
+    if (MAX(ilo, jlo) <= MIN(ihi, jhi))
+      error->all(FLERR, "Pair coeff for {}: 'bonds no' is for two different types (e.g. "
+                 "'pair_coeff 1 2 ... bonds no'); types {} {} include a type paired with itself, "
+                 "and atoms of one type form one body", style, arg[0], arg[1]);
   }
   if (E <= 0.0) error->all(FLERR, "Pair coeff for {}: Young's modulus E must be > 0", style);
   if (Gc <= 0.0)
@@ -278,6 +294,7 @@ void PairBBPD::coeff(int narg, char **arg)
       s0_user[i][j] = s0 > 0.0;
       critical_stretch[i][j] = s0 > 0.0 ? s0 : 0.0;
       alpha[i][j] = a;
+      bondless[i][j] = !with_bonds;
       setflag[i][j] = 1;
       count++;
     }
@@ -372,6 +389,7 @@ void PairBBPD::init_style()
   law.lattice_constant = lattice_constant;
   law.micromodulus = BBPD::TypePairTable(atom->ntypes, micromodulus);
   law.horizon = BBPD::TypePairTable(atom->ntypes, horizon);
+  law.bondless = BBPD::TypePairTable(atom->ntypes, bondless);
   // the Silling-Askari loop (pair_bbpd_pmb.cpp) reads partner indices, the others offsets too
   bonds->set_rules(law, storage, !alpha_any);
   bonds->set_limits(run_limits());
@@ -383,6 +401,7 @@ void PairBBPD::calibrate()
 {
   fracture_any = 0;
   multi_s0 = 0;
+  bool s0_seen = false;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       if (setflag[i][j] == 0)
@@ -390,20 +409,27 @@ void PairBBPD::calibrate()
                    "styles do not mix coefficients)", kernel.name, i, j);
       if (!compat_pmb)
         micromodulus[i][j] = BBPD::micromodulus(kernel, model, youngs[i][j], horizon[i][j], geom);
-      if (!s0_user[i][j])
+      if (bondless[i][j])
+        critical_stretch[i][j] = std::numeric_limits<double>::infinity();    // nothing to break
+      else if (!s0_user[i][j])
         critical_stretch[i][j] = std::isinf(fracture_energy[i][j])
             ? std::numeric_limits<double>::infinity()
             : BBPD::critical_stretch(kernel, model, micromodulus[i][j], fracture_energy[i][j],
                                      horizon[i][j], geom);
       if (std::isfinite(critical_stretch[i][j])) fracture_any = 1;
-      if (i == 1 && j == 1) s0_single = critical_stretch[i][j];
-      else if (critical_stretch[i][j] != s0_single) multi_s0 = 1;
+      // a pair without bonds needs no critical stretch: it does not make the stretches differ
+      if (!bondless[i][j]) {
+        if (!s0_seen) s0_single = critical_stretch[i][j];
+        else if (critical_stretch[i][j] != s0_single) multi_s0 = 1;
+        s0_seen = true;
+      }
       youngs[j][i] = youngs[i][j];
       fracture_energy[j][i] = fracture_energy[i][j];
       horizon[j][i] = horizon[i][j];
       micromodulus[j][i] = micromodulus[i][j];
       critical_stretch[j][i] = critical_stretch[i][j];
       s0_user[j][i] = s0_user[i][j];
+      bondless[j][i] = bondless[i][j];
       alpha[j][i] = alpha[i][j];
     }
 }
@@ -632,12 +658,17 @@ void PairBBPD::report()
           mesg += fmt::format("  types {} {}: compat pmb: c = {:.8g}  horizon = {:.6g}  s00 = {:.8g}  "
                               "alpha = {:.6g}\n", i, j, micromodulus[i][j], horizon[i][j],
                               critical_stretch[i][j], alpha[i][j]);
+        else if (bondless[i][j])
+          mesg += fmt::format("  types {} {}: no bonds (separate bodies); contact stiffness from "
+                              "E = {:.6g}  horizon = {:.6g}  micromodulus c0 = {:.8g}{}\n", i, j,
+                              youngs[i][j], horizon[i][j], micromodulus[i][j],
+                              contact ? "" : " (contact is off: the bodies pass through each other)");
         else
-        mesg += fmt::format("  types {} {}: E = {:.6g}  Gc = {:.6g}  horizon = {:.6g}  "
-                            "micromodulus c0 = {:.8g}  critical_stretch s0 = {:.8g}{}\n",
-                            i, j, youngs[i][j], fracture_energy[i][j], horizon[i][j],
-                            micromodulus[i][j], critical_stretch[i][j],
-                            s0_user[i][j] ? " (given)" : "");
+          mesg += fmt::format("  types {} {}: E = {:.6g}  Gc = {:.6g}  horizon = {:.6g}  "
+                              "micromodulus c0 = {:.8g}  critical_stretch s0 = {:.8g}{}\n",
+                              i, j, youngs[i][j], fracture_energy[i][j], horizon[i][j],
+                              micromodulus[i][j], critical_stretch[i][j],
+                              s0_user[i][j] ? " (given)" : "");
     if (compat_pmb)
       mesg += fmt::format("  compat pmb: families |xi| <= delta, volume ramp and short-range forces "
                           "below min({} |xi|, {} lc), lattice constant lc = {:.6g}\n",
@@ -726,6 +757,7 @@ void PairBBPD::write_restart(FILE *fp)
         fwrite(&critical_stretch[i][j], sizeof(double), 1, fp);
         fwrite(&s0_user[i][j], sizeof(int), 1, fp);
         fwrite(&alpha[i][j], sizeof(double), 1, fp);
+        fwrite(&bondless[i][j], sizeof(int), 1, fp);
       }
     }
 }
@@ -745,9 +777,11 @@ void PairBBPD::read_restart(FILE *fp)
         utils::sfread(FLERR, v, sizeof(double), 5, fp, nullptr, error);
         utils::sfread(FLERR, &s0_user[i][j], sizeof(int), 1, fp, nullptr, error);
         utils::sfread(FLERR, &alpha[i][j], sizeof(double), 1, fp, nullptr, error);
+        utils::sfread(FLERR, &bondless[i][j], sizeof(int), 1, fp, nullptr, error);
       }
       MPI_Bcast(v, 5, MPI_DOUBLE, 0, world);
       MPI_Bcast(&alpha[i][j], 1, MPI_DOUBLE, 0, world);
+      MPI_Bcast(&bondless[i][j], 1, MPI_INT, 0, world);
       MPI_Bcast(&s0_user[i][j], 1, MPI_INT, 0, world);
       youngs[i][j] = v[0];
       fracture_energy[i][j] = v[1];
@@ -760,7 +794,7 @@ void PairBBPD::read_restart(FILE *fp)
 double PairBBPD::memory_usage()
 {
   const int n = atom->ntypes + 1;
-  return Pair::memory_usage() + 6.0 * n * n * sizeof(double);
+  return Pair::memory_usage() + 6.0 * n * n * sizeof(double) + 2.0 * n * n * sizeof(int);
 }
 
 /* extract: "dt_bound" (velocity-Verlet stable step), "dt_bound_paper" (eq. 25) */

@@ -63,6 +63,7 @@ class PairBBPD : public Pair {
   int fracture_any;    // any type pair with finite critical stretch
   double **youngs, **fracture_energy, **horizon, **micromodulus, **critical_stretch;
   int **s0_user;       // 1 if critical_stretch was given directly
+  int **bondless;      // 1 if the type pair forms no bonds (pair_coeff ... bonds no): two bodies
   class FixBBPDBonds *bonds;
   double dt_bound_paper, dt_bound;    // eq. 25 and with the factor 2 (velocity Verlet limit)
 

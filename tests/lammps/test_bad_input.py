@@ -138,6 +138,15 @@ CASES = {
                              "alpha must be >= 0"),
     "coeff-alpha-missing-value": (script(pair_coeff="pair_coeff * * 190.0e9 6.9e4 0.003015 "
                                          "critical_stretch 0.01 alpha"), "got 8 arguments"),
+    # ---- pair_coeff ... bonds no: two bodies, for two different types only
+    "coeff-bonds-no-same-type": (script(pair_coeff="pair_coeff * * 190.0e9 none 0.003015 bonds no"),
+                                 "'bonds no' is for two different types"),
+    "coeff-bonds-no-critical-stretch": (script(**TWO_TYPES, pair_coeff=(
+        "pair_coeff * * 190.0e9 6.9e4 0.003015\n"
+        "pair_coeff 1 2 190.0e9 none 0.003015 critical_stretch 0.01 bonds no")),
+        "has no bonds to break"),
+    "coeff-bonds-not-logical": (script(pair_coeff="pair_coeff * * 190.0e9 6.9e4 0.003015 bonds maybe"),
+                                "Expected boolean parameter instead of 'maybe'"),
     # ---- compat pmb: pair_coeff I J c delta s00 alpha, as peri/pmb
     "compat-not-pmb": (script(BASE_3D, pair_style="pair_style bbpd/constant 3d compat lps"),
                        "compat must be 'pmb'"),

@@ -47,12 +47,15 @@ def pressed():
     return y
 
 
-def run_pair(lmp, tmp_path, distance_keyword=""):
+def run_pair(lmp, tmp_path, distance_keyword="", two_bodies=""):
     ref.write_data(tmp_path / "atoms.data", X0, VOLUMES, DENSITY, BOX)
     ref.write_positions(tmp_path / "pressed.dump", pressed(), BOX)
-    script = peri_preamble(2, "f f p", data="atoms.data") + f"""\
+    data = "atoms.data extra/atom/types 1" if two_bodies else "atoms.data"
+    script = peri_preamble(2, "f f p", data=data) + f"""\
+{"set atom 2 type 2" if two_bodies else ""}
 pair_style bbpd/gaussian plane/stress thickness {THICKNESS!r} contact yes{distance_keyword}
 pair_coeff * * {YOUNGS!r} none {DELTA!r}
+{two_bodies}
 fix notch all bbpd/notch {NOTCH}
 compute pea all pe/atom
 compute sa all stress/atom NULL virial
@@ -82,6 +85,25 @@ def contact_expected(factor):
         w[n] = 0.5 * np.array([d[0] * f[n][0], d[1] * f[n][1], d[2] * f[n][2],
                                d[0] * f[n][1], d[0] * f[n][2], d[1] * f[n][2]])
     return f, e, w
+
+
+def test_bonds_no_makes_two_bodies_that_touch_by_contact(lmp, tmp_path):
+    """Atom 2 of type 2, 'pair_coeff 1 2 ... bonds no' with twice the plate's E: the pair
+    (1, 2), bonded with one type, now feels the contact force only, with c0 of the pair 1 2."""
+    out, got = run_pair(lmp, tmp_path, two_bodies=f"pair_coeff 1 2 {2 * YOUNGS!r} none "
+                                                  f"{DELTA!r} bonds no")
+    assert "types 1 2: no bonds (separate bodies)" in out
+    assert "total bonds 1 (1 broken)" in out        # only the notched pair (3, 4) was bonded
+    force = np.stack([got["fx"], got["fy"], got["fz"]], axis=1)
+    f_c, _, _ = contact_expected(0.9)               # the pair (3, 4), types 1 1
+    np.testing.assert_allclose(force[2:], f_c, rtol=0, atol=RTOL * np.abs(f_c).max())
+    y = pressed()
+    for n, (i, j) in enumerate(((0, 1), (1, 0))):
+        d = y[i] - y[j]
+        r = np.linalg.norm(d)
+        k = CONTACT_STIFFNESS * 2 * C0 * VOLUMES[j] / DELTA      # c0 is proportional to E
+        np.testing.assert_allclose(force[i], k * (0.9 * DX - r) / r * d, rtol=0,
+                                   atol=RTOL * np.abs(f_c).max())
 
 
 def bond_expected():

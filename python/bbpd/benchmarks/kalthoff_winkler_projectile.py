@@ -1,0 +1,402 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Kalthoff-Winkler with the experiment's projectile and the steel's published toughness values.
+
+Runs examples/kalthoff-winkler/in.kalthoff_winkler with `-var loading projectile` (an elastic
+steel body of type 2 hits the plate at v0 and pushes it through contact) and with the paper's
+`prescribed` loading, for several fracture energies Gc, and measures each run with the
+study's definitions (kalthoff_winkler_study.analyse: first bond, damage band, the initial, fit
+and chord angles, crack length, far-edge crack) and, for the projectile, from projectile.dat:
+
+momentum      largest |P_x(t) - P_x(0)| / P_x(0) of projectile + plate over the run, P = sum
+              of density x volume x velocity (no external force acts: conserved to round-off)
+interface     mean x velocity of the two faces in contact (the plate's first column between
+              the notch lines and the projectile's front column), averaged over
+              INTERFACE_WINDOW, against the 1D two-bar impedance estimate
+              v0 Z_p / (Z_p + Z_plate) = v0 r / (r + 1), r = AREA_RATIO
+contact drop  first time the contact force falls below half its mean over INTERFACE_WINDOW
+contact open  first time after that at which the contact force on the projectile is zero
+              (|F| < OPEN_FRACTION x its largest value: round-off of the projectile's own bond
+              forces) and stays zero for OPEN_MIN_US (shorter gaps: the faces chatter), against 2 Lp / c of the projectile: with equal lengths and wave speeds
+              the two 1D bars separate exactly then (the relief from the projectile's rear and
+              the tension from the plate's far edge arrive together)
+
+Command line (from the repository root; the runs are cached in --work):
+  tools/python -m bbpd.benchmarks.kalthoff_winkler_projectile --work /tmp/kw-proj \\
+      --dx 2e-3 --csv examples/kalthoff-winkler/projectile.csv \\
+      --readme examples/kalthoff-winkler/README.md
+"""
+
+import argparse
+import csv
+import json
+import math
+import re
+import time
+from pathlib import Path
+
+import numpy as np
+
+from bbpd.benchmarks import kalthoff_winkler as kw
+from bbpd.benchmarks import kalthoff_winkler_study as study
+from bbpd.runner import run_lammps
+
+# ---------------------------------------------------------------------------- physics
+
+EXAMPLE_3D = kw.EXAMPLE.with_name("in.kalthoff_winkler_3d")
+V0 = 32.0                                   # m/s, the experiment's impact velocity
+# experiment (Kalthoff & Winkler 1988): projectile 50 mm in diameter; plate 9 mm thick, struck
+# between notches 50 mm apart. The 2D projectile's E and rho carry this ratio (input script).
+AREA_RATIO = math.pi * 0.025 ** 2 / (0.050 * 0.009)       # 4.363
+V_INTERFACE = V0 * AREA_RATIO / (AREA_RATIO + 1.0)         # 26.03 m/s (1D two-bar)
+# the projectile's waves: E and rho scaled alike keep the plate's speeds (plane strain, nu = 1/4)
+C_P = study.C_P                                           # 5407 m/s, plane wave
+C_STRIP = math.sqrt(study.E / (1.0 - study.NU ** 2) / study.RHO)   # 5097 m/s, plane-strain strip
+LP_DEFAULT = 0.100                                        # m, the input script's default
+
+# the interface speed is averaged from the end of the contact's rise to the return of the
+# plate's wave from the notch tips (2 x 50 mm / c_p = 18.5 us), where the struck strip widens
+INTERFACE_WINDOW_US = (2.0, 2.0 * 0.050 / C_P * 1e6)
+OPEN_FRACTION = 1.0e-9
+OPEN_MIN_US = 1.0
+GC_VALUES = {"paper": 6.9e4, "KIc90": 4.24e4, "phasefield": 2.213e4}   # J/m^2, issue 28
+TEND = 100.0e-6
+
+
+def two_l_over_c(lp=LP_DEFAULT):
+    """2 Lp / c of the projectile (us) with the plane-wave and the strip speed."""
+    return 2.0 * lp / C_P * 1e6, 2.0 * lp / C_STRIP * 1e6
+
+
+# ---------------------------------------------------------------------------- measurements
+
+def read_projectile(path):
+    """projectile.dat: step, x momentum (plate, projectile, both), y momentum, contact force on
+    the projectile, mean vx and x of the plate's face column and of the projectile's front."""
+    d = np.loadtxt(path, comments="#")
+    names = ("step", "px_plate", "px_proj", "px", "py", "force", "v_plate", "v_proj",
+             "x_plate", "x_proj")
+    return {n: d[:, k] for k, n in enumerate(names)}
+
+
+def measure_contact(d, dt):
+    """The projectile measures of the module docstring from read_projectile's columns."""
+    t = d["step"] * dt * 1e6
+    p0 = d["px"][0]
+    out = {"momentum_drift": float(np.max(np.abs(d["px"] - p0)) / abs(p0)),
+           "momentum_y": float(np.max(np.abs(d["py"])) / abs(p0))}
+    win = (t >= INTERFACE_WINDOW_US[0]) & (t <= INTERFACE_WINDOW_US[1])
+    out["v_plate_face"] = float(d["v_plate"][win].mean())
+    out["v_proj_face"] = float(d["v_proj"][win].mean())
+    out["v_interface"] = 0.5 * (out["v_plate_face"] + out["v_proj_face"])
+    out["v_interface_theory"] = V_INTERFACE
+    f = -d["force"]                                  # the plate pushes the projectile back
+    plateau = float(f[win].mean())
+    out["force_plateau"] = plateau
+    gap = d["x_plate"] - d["x_proj"]
+    out["gap_min"] = float(gap.min())
+    drop = np.nonzero((t > INTERFACE_WINDOW_US[1]) & (f < 0.5 * plateau))[0]
+    out["t_drop_us"] = float(t[drop[0]]) if len(drop) else None
+    # open: the first time the force is zero and stays zero for OPEN_MIN_US (shorter gaps are
+    # the faces chattering); touch again: the first nonzero force after that
+    touching = np.abs(f) >= OPEN_FRACTION * np.abs(f).max()
+    out["t_open_us"], out["t_retouch_us"] = None, None
+    for k in np.nonzero((t > INTERFACE_WINDOW_US[1]) & ~touching)[0]:
+        later = np.nonzero(touching[k:])[0]
+        end = t[k + later[0]] if len(later) else np.inf
+        if end - t[k] >= OPEN_MIN_US or not len(later):
+            out["t_open_us"] = float(t[k])
+            out["t_retouch_us"] = None if not len(later) else float(end)
+            break
+    out["px_plate_end"] = float(d["px_plate"][-1] / p0)
+    return out
+
+
+def read_projectile_log(text):
+    m = re.search(r"^KW projectile: Lp (\S+) \((\d+) columns\)", text, re.M)
+    return None if m is None else {"Lp": float(m[1]), "ncol": int(m[2])}
+
+
+def loop_cpu(text):
+    """CPU seconds of the run's loop, all ranks: LAMMPS's loop (wall) time x its CPU use.
+    On a shared machine the wall time follows the load; the CPU time much less."""
+    loop = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs", text)
+    use = re.search(r"([0-9.]+)% CPU use with (\d+) MPI tasks", text)
+    if not (loop and use):
+        return None
+    return float(loop[1]) * float(use[1]) / 100.0 * int(use[2])
+
+
+def analyse(workdir):
+    """The study's measures plus, for a projectile run, the contact measures."""
+    workdir = Path(workdir)
+    res = study.analyse(workdir)
+    log = (workdir / "log.lammps").read_text()
+    proj = read_projectile_log(log)
+    res["loading"] = "prescribed" if proj is None else "projectile"
+    res["setup"] = "3d" if re.search(r"^KW 3d:", log, re.M) else "2d"
+    res["loop_cpu_s"] = loop_cpu(log)
+    m = re.search(r"types 1 1: E = \S+\s+Gc = (\S+)", log)
+    res["Gc"] = float(m[1]) if m else None
+    if proj is not None:
+        res.update(proj)
+        res["Lp_effective"] = proj["ncol"] * res["dx"]
+        res.update(measure_contact(read_projectile(workdir / "projectile.dat"), res["dt"]))
+        # the contact stress: force over the struck face (width between the notch lines x
+        # thickness: dx in 2D, one layer of cells; the plate's in 3D)
+        m3 = re.search(r"^KW 3d: thickness (\S+)", log, re.M)
+        thick = float(m3[1]) if m3 else res["dx"]
+        res["contact_stress_MPa"] = res["force_plateau"] / ((res["yhi"] - res["ylo"]) * thick) / 1e6
+        # the faces' largest overlap past the contact distance, in grid spacings
+        res["overlap_max_dx"] = (0.9 * res["dx"] - res["gap_min"]) / res["dx"]
+        res["two_l_over_c_us"] = two_l_over_c(res["Lp_effective"])
+    return res
+
+
+# ---------------------------------------------------------------------------- running
+
+def run_case(workdir, kernel, dx, loading, gc, nprocs=1, tend=TEND, lp=None, reuse=False,
+             dim=2):
+    """Run one case in workdir (unless reuse and it has finished) and measure it; dim = 3
+    runs in.kalthoff_winkler_3d."""
+    workdir = Path(workdir)
+    done = workdir / "case.json"
+    if not (reuse and done.is_file()):
+        variables = {"kernel": kernel, "dx": repr(float(dx)), "tend": repr(float(tend)),
+                     "loading": loading, "Gc": repr(float(gc))}
+        if lp is not None:
+            variables["Lp"] = repr(float(lp))
+        start = time.perf_counter()
+        run_lammps(str(kw.EXAMPLE if dim == 2 else EXAMPLE_3D), workdir, nprocs=nprocs,
+                   vars=variables)
+        wall = time.perf_counter() - start
+        done.write_text(json.dumps({"kernel": kernel, "dx": dx, "loading": loading, "Gc": gc,
+                                    "wall_s": wall, "nprocs": nprocs}))
+    res = analyse(workdir)
+    case = json.loads(done.read_text())
+    res["wall_s"], res["nprocs"] = case["wall_s"], case["nprocs"]
+    return res
+
+
+# ---------------------------------------------------------------------------- figures
+
+def plot_contact(workdir, path):
+    """Face velocities and contact force of a projectile run against the two-bar estimate."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    r = analyse(workdir)
+    d = read_projectile(Path(workdir) / "projectile.dat")
+    t = d["step"] * r["dt"] * 1e6
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(6.0, 5.5), sharex=True)
+    try:
+        a1.plot(t, d["v_proj"], lw=0.8, label="projectile front column")
+        a1.plot(t, d["v_plate"], lw=0.8, label="plate's struck column")
+        a1.axhline(V_INTERFACE, color="k", ls="--", lw=1,
+                   label=f"two-bar estimate {V_INTERFACE:.2f} m/s")
+        a1.set_ylabel("x velocity (m/s)")
+        a1.legend(fontsize=7)
+        a2.plot(t, -d["force"] / 1e3, lw=0.8, color="tab:red")
+        for x, name, h in zip(r["two_l_over_c_us"], ("2Lp/c_p", "2Lp/c_strip"), (0.92, 0.82)):
+            a2.axvline(x, color="k", ls=":", lw=1)
+            a2.text(x, a2.get_ylim()[1] * h, " " + name, fontsize=7)
+        if r["t_open_us"] is not None:
+            a2.axvline(r["t_open_us"], color="tab:red", ls="--", lw=1)
+            a2.text(r["t_open_us"], 0.0, f" opens {r['t_open_us']:.1f} us", fontsize=7)
+        a2.set_ylabel("contact force (kN)")
+        a2.set_xlabel("t (us)")
+        a1.set_title(f"projectile, {r['kernel']}, dx = {r['dx'] * 1e3:g} mm, "
+                     f"Gc = {r['Gc']:g} J/m2", fontsize=9)
+        fig.tight_layout()
+        fig.savefig(path, dpi=150)
+    finally:
+        plt.close(fig)
+    return path
+
+
+def plot_paths(workdirs, labels, path, title):
+    """Crack-tip paths of several runs with the 70-degree lines (kalthoff_winkler's frame)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(3.8, 6.0))
+    try:
+        rs = [kw.analyse(w) for w in workdirs]
+        g = rs[0]
+        ax.plot([0, g["Lx"] * 1e3, g["Lx"] * 1e3, 0, 0], [0, 0, g["Ly"] * 1e3, g["Ly"] * 1e3, 0],
+                color="black", linewidth=0.8)
+        for r, name in zip(rs, labels):
+            tr = r["trajectory"]
+            line = None
+            for side, y0 in (("lo", r["ylo"]), ("hi", r["yhi"])):
+                L = np.array(tr["L_" + side])
+                p = np.vstack([[r["a"], y0], np.array(tr[side])[L > 0]]) * 1e3
+                ax.plot([0, r["a"] * 1e3], [y0 * 1e3] * 2, color="grey", linewidth=2)
+                line = ax.plot(p[:, 0], p[:, 1], "-", linewidth=1.1,
+                               color=None if line is None else line[0].get_color(),
+                               label=name if side == "lo" else None)
+        kw.draw_plate_frame(ax, g)
+        ax.legend(fontsize=6, loc="center left")
+        ax.set_title(title, fontsize=8)
+        fig.tight_layout()
+        fig.savefig(path, dpi=150)
+    finally:
+        plt.close(fig)
+    return path
+
+
+# ---------------------------------------------------------------------------- table
+
+COLUMNS = ("setup", "loading", "kernel", "dx_mm", "Gc", "first_bond_us", "band_us", "initial_deg",
+           "fit_deg", "chord_deg", "length_end_mm", "crack_stops", "far_edge_us",
+           "v_interface", "contact_stress_MPa", "overlap_max_dx", "t_drop_us", "t_open_us",
+           "t_retouch_us", "momentum_drift", "tip_mismatch_mm", "loop_cpu_s", "nprocs")
+
+
+def row(r):
+    """One CSV row of a result (numbers as measured; None as empty)."""
+    stops = ("edge %.0f" % r["t_edge_us"] if r.get("t_edge_us") is not None else
+             "arrest %.0f" % r["t_arrest_us"] if r.get("t_arrest_us") is not None else "running")
+    return {"setup": r["setup"], "loading": r["loading"], "kernel": r["kernel"],
+            "dx_mm": r["dx"] * 1e3,
+            "Gc": r["Gc"], "first_bond_us": r["t_init_us"], "band_us": r["t_band_us"],
+            "initial_deg": study.angle(r, "initial"), "fit_deg": study.angle(r, "fit"),
+            "chord_deg": study.angle(r, "chord"), "length_end_mm": r["length_end_mm"],
+            "crack_stops": stops, "far_edge_us": r.get("far_edge_own_us"),
+            "v_interface": r.get("v_interface"), "contact_stress_MPa": r.get("contact_stress_MPa"),
+            "overlap_max_dx": r.get("overlap_max_dx"), "t_drop_us": r.get("t_drop_us"),
+            "t_open_us": r.get("t_open_us"), "t_retouch_us": r.get("t_retouch_us"), "momentum_drift": r.get("momentum_drift"),
+            "tip_mismatch_mm": r["symmetry_tip_mm"],
+            "loop_cpu_s": r["loop_cpu_s"], "nprocs": r["nprocs"]}
+
+
+def write_csv(rows, path):
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=COLUMNS)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: ("" if r[k] is None else r[k]) for k in COLUMNS})
+
+
+def read_csv(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def _num(v):
+    return None if v in ("", None) else float(v)
+
+
+def crosses_plate(r):
+    """The crack reached the plate's boundary (not arrested, not still running inside)."""
+    return r["crack_stops"].startswith("edge")
+
+
+def verdict(rows):
+    """The sentence the README carries, computed from the CSV rows: the setups with an angle of
+    70 +- 2 deg (any of the three definitions) whose cracks cross the plate."""
+    hits = []
+    for r in rows:
+        defs = [d for d in ("initial", "fit", "chord") if _num(r[f"{d}_deg"]) is not None
+                and abs(_num(r[f"{d}_deg"]) - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
+        if defs and crosses_plate(r):
+            hits.append(f"{r['setup'].upper()} {r['loading']} {r['kernel']} {float(r['dx_mm']):g} mm Gc = "
+                        f"{float(r['Gc']):g} ({', '.join(defs)})")
+    return ("Setups with 70 +- 2 deg and cracks that cross the plate: "
+            + ("; ".join(hits) if hits else "none") + ".")
+
+
+def markdown(rows):
+    def f(v, spec):
+        v = _num(v)
+        return "-" if v is None else format(v, spec)
+    head = ("| setup | loading | kernel | dx (mm) | Gc (J/m2) | first bond (us) | damage band (us) | "
+            "initial (deg) | fit (deg) | chord (deg) | crack length at end (mm) | crack stops (us) | "
+            "far-edge crack (us) | interface speed (m/s) | contact force drop (us) | "
+            "contact opens (us) | momentum drift | loop CPU (s) | ranks |")
+    lines = [head, "|" + "---|" * 19]
+    for r in rows:
+        lines.append("| " + " | ".join([
+            r["setup"].upper(), r["loading"], r["kernel"], f"{float(r['dx_mm']):g}", f"{float(r['Gc']):g}",
+            f(r["first_bond_us"], ".1f"), f(r["band_us"], ".1f"), f(r["initial_deg"], ".1f"),
+            f(r["fit_deg"], ".1f"), f(r["chord_deg"], ".1f"), f(r["length_end_mm"], ".0f"),
+            r["crack_stops"], f(r["far_edge_us"], ".0f"), f(r["v_interface"], ".2f"),
+            f(r["t_drop_us"], ".1f"), f(r["t_open_us"], ".1f"), f(r["momentum_drift"], ".1e"),
+            f(r["loop_cpu_s"], ".0f"), r["nprocs"]]) + " |")
+    return "\n".join(lines) + "\n\n" + verdict(rows)
+
+
+def update_readme(path, text, name="kw-projectile"):
+    """Replace what lies between the README's markers of this table."""
+    src = Path(path).read_text()
+    begin, end = f"<!-- bbpd:table {name} -->", "<!-- /bbpd:table -->"
+    i = src.index(begin) + len(begin)
+    j = src.index(end, i)
+    Path(path).write_text(src[:i] + "\n" + text + "\n" + src[j:])
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--kernels", nargs="+", default=["gaussian"], choices=kw.KERNELS)
+    ap.add_argument("--dx", nargs="+", type=float, default=[2e-3])
+    ap.add_argument("--loadings", nargs="+", default=["prescribed", "projectile"])
+    ap.add_argument("--gc", nargs="+", type=float, default=list(GC_VALUES.values()))
+    ap.add_argument("--dim", type=int, default=2, choices=(2, 3))
+    ap.add_argument("--tend", type=float, default=TEND)
+    ap.add_argument("--work", default="/tmp/kw-projectile")
+    ap.add_argument("--np", type=int, default=1, dest="nprocs")
+    ap.add_argument("--reuse", action="store_true")
+    ap.add_argument("--csv", default=None, help="write every finished run in --work here")
+    ap.add_argument("--readme", default=None, help="put the table between its markers here")
+    ap.add_argument("--figures", default=None, help="write the PNGs here")
+    args = ap.parse_args(argv)
+    work = Path(args.work)
+    for dx in args.dx:
+        for kernel in args.kernels:
+            for loading in args.loadings:
+                for gc in args.gc:
+                    wd = work / (f"{'3d-' if args.dim == 3 else ''}{loading}-{kernel}-"
+                                 f"dx{dx * 1e3:g}mm-Gc{gc:g}")
+                    r = run_case(wd, kernel, dx, loading, gc, nprocs=args.nprocs,
+                                 reuse=args.reuse, dim=args.dim, tend=args.tend)
+                    (wd / "results.json").write_text(json.dumps(
+                        {k: v for k, v in r.items() if k not in ("damage_map", "trajectory")},
+                        default=str))
+                    print(f"{wd.name}: fit {r.get('fit_t70_deg')} chord {r.get('chord_t70_deg')} "
+                          f"v_i {r.get('v_interface')} open {r.get('t_open_us')} "
+                          f"wall {r['wall_s']:.0f} s", flush=True)
+    order = {"prescribed": 0, "projectile": 1}
+    rows = []
+    for p in sorted(work.glob("*/case.json")):
+        c = json.loads(p.read_text())
+        rows.append(row(run_case(p.parent, c["kernel"], c["dx"], c["loading"], c["Gc"],
+                                 reuse=True)))
+    rows.sort(key=lambda r: (r["setup"], order[r["loading"]], kw.KERNELS.index(r["kernel"]),
+                             -r["dx_mm"], -r["Gc"]))
+    if args.csv:
+        write_csv(rows, args.csv)
+        rows = read_csv(args.csv)
+        text = markdown(rows)
+        print(text)
+        if args.readme:
+            update_readme(args.readme, text)
+    if args.figures:
+        figs = Path(args.figures)
+        for p in sorted(work.glob("projectile-*-Gc69000/case.json")):
+            plot_contact(p.parent, figs / f"projectile_contact_{p.parent.name.split('-', 1)[1]}.png")
+        for kernel in kw.KERNELS:
+            for dx in (2e-3, 1e-3):
+                tag = f"{kernel}-dx{dx * 1e3:g}mm"
+                dirs, names = [], []
+                for loading in ("prescribed", "projectile"):
+                    for name, gc in GC_VALUES.items():
+                        wd = work / f"{loading}-{tag}-Gc{gc:g}"
+                        if (wd / "case.json").is_file():
+                            dirs.append(wd)
+                            names.append(f"{loading}, Gc {gc:g}")
+                if len(dirs) > 1:
+                    plot_paths(dirs, names, figs / f"projectile_paths_{tag}.png",
+                               f"crack-tip paths, {kernel}, dx = {dx * 1e3:g} mm")
+
+
+if __name__ == "__main__":
+    main()
