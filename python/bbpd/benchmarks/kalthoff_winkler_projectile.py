@@ -58,7 +58,8 @@ LP_DEFAULT = 0.100                                        # m, the input script'
 INTERFACE_WINDOW_US = (2.0, 2.0 * 0.050 / C_P * 1e6)
 OPEN_FRACTION = 1.0e-9
 OPEN_MIN_US = 1.0
-GC_VALUES = {"paper": 6.9e4, "KIc90": 4.24e4, "phasefield": 2.213e4}   # J/m^2: the paper; K_Ic = 90 MPa sqrt(m) with E = 191 GPa; phase-field decks after Borden et al. 2012
+# J/m^2: the paper; K_Ic = 90 MPa sqrt(m) with E = 191 GPa; phase-field decks after Borden et al. 2012
+GC_VALUES = {"paper": 6.9e4, "KIc90": 4.24e4, "phasefield": 2.213e4}
 TEND = 100.0e-6
 
 
