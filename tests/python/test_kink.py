@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from bbpd import kink
+from bbpd import crack_path, kink
 
 TIGHT = 1e-9
 ANGLE_TOL = 1e-5          # deg: a maximiser is found to ~sqrt(machine epsilon) rad
@@ -149,3 +149,47 @@ def test_mixity_and_criteria_table():
     angles = kink.criteria_angles(0.0, 1.0)
     assert angles["hoop_stress"] < angles["hoop_strain"] < 0.0
     assert angles["energy"] < angles["hoop_stress"]
+
+
+# ---------------------------------------------------------------- crack path from a damage field
+def synthetic_crack(alpha, kink_deg, dx=1.0, n=60, width=0.8):
+    """Square grid with damage 0.5 on the atoms within `width` dx of a notch from the left edge
+    to the tip at the origin (direction alpha) and of a straight kink at kink_deg from it, and
+    an unconnected damaged blob."""
+    g = (np.arange(-n, n) + 0.5) * dx
+    x, y = (a.ravel() for a in np.meshgrid(g, g))
+    xt, yt = crack_path.tip_frame(x, y, (0.0, 0.0), alpha)
+    notch = (xt <= 0) & (np.abs(yt) <= width * dx)
+    k = math.radians(kink_deg)
+    along = xt * math.cos(k) + yt * math.sin(k)
+    across = -xt * math.sin(k) + yt * math.cos(k)
+    branch = (along >= 0) & (along <= 30 * dx) & (np.abs(across) <= width * dx)
+    blob = np.hypot(x - 40 * dx, y - 40 * dx) < 3 * dx
+    return x, y, np.where(notch | branch | blob, 0.5, 0.1)
+
+
+@pytest.mark.parametrize("alpha", [0.0, 22.5])
+@pytest.mark.parametrize("kink_deg", [-63.6, -30.0, 0.0, 20.0])
+def test_kink_angle_of_a_synthetic_crack(alpha, kink_deg):
+    x, y, phi = synthetic_crack(alpha, kink_deg)
+    res = crack_path.kink_angles(x, y, phi, (0.0, 0.0), alpha, 1.0, (10.0, 20.0), seed=5.0)
+    for d in (10.0, 20.0):
+        angle, spread, count = res[d]
+        assert angle == pytest.approx(kink_deg, abs=1.5), (d, res)   # grid rounding of the band
+        assert spread < 6.0 and count >= 2
+    assert res["extension"] == pytest.approx(30.0, abs=1.5)
+
+
+def test_unconnected_damage_and_no_crack():
+    x, y, phi = synthetic_crack(0.0, -45.0)
+    mask = crack_path.grown_crack(x, y, phi, (0.0, 0.0), 1.0, seed=5.0)
+    assert not mask[np.hypot(x - 40, y - 40) < 3].any()          # the blob is not the crack
+    res = crack_path.kink_angles(x, y, np.zeros_like(x), (0.0, 0.0), 0.0, 1.0, (10.0,), seed=5.0)
+    assert res[10.0] is None and res["extension"] == 0.0
+
+
+def test_branched_crack_shows_in_the_spread():
+    x, y, a = synthetic_crack(0.0, -40.0)
+    _, _, b = synthetic_crack(0.0, 40.0)
+    res = crack_path.kink_angles(x, y, np.maximum(a, b), (0.0, 0.0), 0.0, 1.0, (15.0,), seed=5.0)
+    assert res[15.0][1] > 30.0
