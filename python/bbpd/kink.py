@@ -8,7 +8,9 @@ Frame and sign convention
     crack would run straight ahead (+x). K_II > 0 is the usual sense: the upper face (theta =
     +pi) slides towards +x relative to the lower one. A positive K_II then kinks the crack to
     NEGATIVE theta (towards the lower face side); every function returns theta_c in degrees
-    with this sign, and theta_c(K_I, -K_II) = -theta_c(K_I, K_II).
+    with this sign, and theta_c(K_I, -K_II) = -theta_c(K_I, K_II). K_I < 0 (faces pressed
+    together) is refused unless closed=True: then the criteria are evaluated for faces that
+    pass through each other, as a peridynamic notch without contact does.
 
 Near-tip stresses (Williams 1957, leading terms; e.g. Anderson, Fracture Mechanics, ch. 2)::
 
@@ -91,11 +93,14 @@ def _check_plane(plane):
         raise ValueError(f"plane must be one of {PLANES}, not {plane!r}")
 
 
-def _check_loads(KI, KII):
+def _check_loads(KI, KII, closed=False):
+    """closed=True admits K_I < 0: the faces of a crack without contact (a peridynamic notch
+    whose faces pass through each other) still see the Williams field of negative K_I."""
     if KI == 0.0 and KII == 0.0:
         raise ValueError("K_I and K_II are both zero: no kink direction")
-    if KI < 0.0:
-        raise ValueError("K_I < 0 closes the crack faces; the criteria here assume an open crack")
+    if KI < 0.0 and not closed:
+        raise ValueError("K_I < 0 closes the crack faces; the criteria here assume an open crack "
+                         "(closed=True evaluates them for faces without contact)")
 
 
 def williams_stresses(theta, KI, KII):
@@ -117,9 +122,9 @@ def _argmax_deg(f):
     return math.degrees(res.x)
 
 
-def hoop_stress_angle(KI, KII):
+def hoop_stress_angle(KI, KII, closed=False):
     """Kink angle (deg) of the maximum hoop stress criterion (Erdogan & Sih 1963)."""
-    _check_loads(KI, KII)
+    _check_loads(KI, KII, closed)
     if KII == 0.0:
         return 0.0
     return math.degrees(2.0 * math.atan((KI - math.sqrt(KI**2 + 8.0 * KII**2)) / (4.0 * KII)))
@@ -134,9 +139,9 @@ def hoop_strain(theta, KI, KII, nu, plane):
     return (1.0 + nu) * ((1.0 - nu) * s_tt - nu * s_rr)
 
 
-def hoop_strain_angle(KI, KII, nu, plane):
+def hoop_strain_angle(KI, KII, nu, plane, closed=False):
     """Kink angle (deg) of the maximum hoop strain criterion for Poisson ratio nu."""
-    _check_loads(KI, KII)
+    _check_loads(KI, KII, closed)
     if not -1.0 < nu < 0.5:
         raise ValueError(f"Poisson ratio {nu} outside (-1, 1/2)")
     if KII == 0.0:
@@ -164,10 +169,10 @@ def energy_release_rate(theta, KI, KII, approximation="hpu"):
     return k1**2 + k2**2
 
 
-def max_energy_release_angle(KI, KII, approximation="hpu"):
+def max_energy_release_angle(KI, KII, approximation="hpu", closed=False):
     """Kink angle (deg) of the maximum energy release rate criterion, among the kinks that
     open (K_I* > 0; for pure Mode II, G is even in theta and this picks the opening side)."""
-    _check_loads(KI, KII)
+    _check_loads(KI, KII, closed)
     if KII == 0.0:
         return 0.0
 
@@ -177,11 +182,11 @@ def max_energy_release_angle(KI, KII, approximation="hpu"):
     return _argmax_deg(opening_g)
 
 
-def criteria_angles(KI, KII, nu=BBPD_POISSON[PLANE_STRESS], plane=PLANE_STRESS):
+def criteria_angles(KI, KII, nu=BBPD_POISSON[PLANE_STRESS], plane=PLANE_STRESS, closed=False):
     """The three criteria's angles (deg) for one mix: {'hoop_stress', 'hoop_strain', 'energy'}."""
-    return {"hoop_stress": hoop_stress_angle(KI, KII),
-            "hoop_strain": hoop_strain_angle(KI, KII, nu, plane),
-            "energy": max_energy_release_angle(KI, KII)}
+    return {"hoop_stress": hoop_stress_angle(KI, KII, closed),
+            "hoop_strain": hoop_strain_angle(KI, KII, nu, plane, closed),
+            "energy": max_energy_release_angle(KI, KII, closed=closed)}
 
 
 def kolosov(nu, plane):

@@ -12,7 +12,7 @@ ANGLE_TOL = 1e-5          # deg: a maximiser is found to ~sqrt(machine epsilon) 
 MIXES_DEG = (0.0, 10.0, 22.5, 45.0, 67.5, 80.0, 90.0)
 # pure Mode II (K_I = 0, K_II > 0), from closed forms or the literature:
 MODE2_HOOP_STRESS = 2.0 * math.degrees(math.atan(-1.0 / math.sqrt(2.0)))   # -70.5288
-MODE2_HOOP_STRAIN_NU_THIRD = -63.6          # issue 27: BBPD's in-plane nu = 1/3
+MODE2_HOOP_STRAIN_NU_THIRD = -63.6          # the value quoted for BBPD's in-plane nu = 1/3
 MODE2_HPU = -75.2                           # Hussain, Pu & Underwood 1974 (quoted to 0.1 deg)
 
 
@@ -100,6 +100,14 @@ def test_bad_arguments():
         kink.hoop_stress_angle(0.0, 0.0)
     with pytest.raises(ValueError, match="closes"):
         kink.max_energy_release_angle(-1.0, 0.5)
+    # faces without contact: negative K_I kinks beyond the pure-Mode-II angle, and the closed
+    # form still marks the stationary tensile direction
+    t = kink.hoop_stress_angle(-0.4, 1.0, closed=True)
+    assert t < kink.hoop_stress_angle(0.0, 1.0)
+    _, s_tt, s_rt = kink.williams_stresses(math.radians(t), -0.4, 1.0)
+    assert abs(s_rt) < TIGHT and s_tt > 0.0
+    assert kink.hoop_strain_angle(-0.4, 1.0, 0.0, kink.PLANE_STRESS, closed=True) == \
+        pytest.approx(t, abs=ANGLE_TOL)
     with pytest.raises(ValueError, match="plane"):
         kink.hoop_strain_angle(1.0, 1.0, 0.3, "3d")
     with pytest.raises(ValueError, match="Poisson"):

@@ -20,6 +20,7 @@ Command line (from the repository root); the committed results came from the fir
 
 import argparse
 import csv
+import json
 import math
 import platform
 import re
@@ -123,6 +124,31 @@ def job(workdir, kernel, psi, alpha, dx, m, ncross=NCROSS):
     return res
 
 
+# the boundary ring's Williams field must produce the intended (K_I, K_II) at the tip: the
+# J-integral (compute bbpd/jintegral, default annulus 2-5 delta, inside the free atoms) of the
+# intact crack after the fast ramp and one transit time of the slow one (K = 0.6 K_c, before the
+# first bond breaks), crack rotated against the grid
+LOADING_CASE = dict(kernel="gaussian", psi=30.0, alpha=22.5)
+LOADING_JSON = FOLDER / "results" / "loading_check.json"
+J_LINES = """compute         J inner bbpd/jintegral tip 0.0 0.0 direction ${ca} ${sa}
+variable        nrun equal ceil((${t1}+2.0*${R}/v_cd)/${dt})
+thermo_style    custom step time v_K c_J[1] c_J[2] c_J[3] c_dtip
+thermo_modify   format float %.10g
+run             ${nrun}
+"""
+
+
+def loading_check(workdir):
+    """K_I, K_II of the J-integral against the prescribed K(t) (in.kink up to K = 0.6 K_c)."""
+    head, _, _ = EXAMPLE.read_text().partition("run             ${nmax}")
+    variables = {k: (v if isinstance(v, str) else repr(v)) for k, v in LOADING_CASE.items()}
+    out = run_lammps(head + J_LINES, workdir, vars=variables).output
+    t = readers.thermo_tables(out)[-1]
+    K, KI, KII = (float(t[c][-1]) for c in ("v_K", "c_J[2]", "c_J[3]"))
+    return dict(LOADING_CASE, K=K, KI=KI, KII=KII, mix=math.degrees(math.atan2(KII, KI)),
+                ratio=math.hypot(KI, KII) / K, intact=bool(t["c_dtip"][-1] == t["c_dtip"][0]))
+
+
 # --------------------------------------------------------------------------- verdict
 
 def rms(values):
@@ -167,6 +193,14 @@ def verdict(rows, dist="2d"):
     return out
 
 
+LOCK_DEG = 1.0     # a kink within this of a lattice direction counts as locked onto it
+
+
+def grid_offset(lab_deg):
+    """Distance (deg) of a lab-frame direction from the nearest multiple of 45 deg."""
+    return abs((lab_deg + 22.5) % 45.0 - 22.5)
+
+
 def consistency(v):
     """Which criteria the mean deviation admits: |mean| <= 2 standard errors."""
     ok = [c for c in CRITERIA if abs(v["bias"][c]) <= 2.0 * v["se"][c]]
@@ -207,6 +241,16 @@ def verdict_sentence(rows):
             f"{v['rms_alpha'][ALPHAS_DEG[1], b]:.1f} deg at {ALPHAS_DEG[1]:g} deg. The three "
             f"kernels differ by {v['kernel_spread_mean']:.1f} deg on average (at most "
             f"{v['kernel_spread_max']:.1f}) at the same mix and crack angle.")
+    locked = [r for r in rows if r["psi"] > 0 and r["angle_2d"] is not None
+              and grid_offset(r["angle_2d"] + r["alpha"]) <= LOCK_DEG
+              and min(abs(r["angle_2d"] - r[c]) for c in CRITERIA) > 2 * LOCK_DEG]
+    parts.append(f"Grid lock: {len(locked)} of {sum(1 for r in rows if r['psi'] > 0)} mixed-mode "
+                 f"runs left the tip within {LOCK_DEG:g} deg of a grid direction (a multiple of "
+                 f"45 deg in the lattice frame) while more than {2 * LOCK_DEG:g} deg from every "
+                 "criterion"
+                 + (": " + "; ".join(f"{r['kernel']} dx {r['dx'] * 1e3:g} mm, crack {r['alpha']:g} "
+                                     f"deg, psi {r['psi']:g} deg: {r['angle_2d']:.1f} deg"
+                                     for r in locked) if locked else "") + ".")
     by = {(r["kernel"], r["psi"], r["alpha"], r["dx"], r["ncross"]): r for r in rows}
     k, p, a, n = RAMP_CHECK
     slow, ref = by.get((k, p, a, COARSE[0], n)), by.get((k, p, a, COARSE[0], NCROSS))
@@ -397,6 +441,10 @@ def main(argv=None):
     print(text)
     sentence = verdict_sentence(rows)
     print(sentence)
+    check = loading_check(Path(args.work) / "loading-check")
+    print(f"J-integral check: {check}")
+    if not args.no_readme:
+        LOADING_JSON.write_text(json.dumps(check, indent=1) + "\n")
     if not args.no_readme and README.is_file():
         doc = README.read_text()
         doc = replace_between(doc, TABLE, text)
