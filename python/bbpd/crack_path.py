@@ -19,7 +19,7 @@ Definitions (distances in the units of the positions)
                   crack, tens of degrees if the crack branched
     extension     the largest distance from the tip of a grown-crack atom ahead of the tip
 
-`compute bbpd/crack/tip` (issue 27, item 1) follows the same connected crack in LAMMPS and
+`compute bbpd/crack/tip` follows the same connected crack in LAMMPS and
 reports its tip, extension and newest direction; its tip position at the moment the
 extension passes d gives angle(d) as atan2 of that position in the tip frame, without a dump.
 """

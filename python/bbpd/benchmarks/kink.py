@@ -266,6 +266,7 @@ def verdict_sentence(rows):
     fine = [r for r in rows if r["dx"] == FINE[0]]
     pairs = [(r, by.get((r["kernel"], r["psi"], r["alpha"], COARSE[0], NCROSS))) for r in fine]
     pairs = [(f, c) for f, c in pairs if c is not None and f["angle_2d"] is not None]
+    mixed = [(f, c) for f, c in pairs if f["psi"] > 0]
     if pairs:
         crit = verdict(rows, "2d")["best"]
         parts.append(f"Finer grid (dx = {FINE[0] * 1e3:g} mm, m = {FINE[1]}, same horizon; "
@@ -274,10 +275,13 @@ def verdict_sentence(rows):
                                  f"{f['angle_4d']:.1f} deg (coarse {c['angle_2d']:.1f} / "
                                  f"{c['angle_4d']:.1f}, {CRITERION_NAMES[crit]} {f[crit]:.1f})"
                                  for f, c in sorted(pairs, key=lambda fc: -fc[0]["psi"]))
-                     + f". RMS deviation from the {CRITERION_NAMES[crit]} criterion at 2 "
-                     f"horizons over these mixes: "
-                     f"{rms([f['angle_2d'] - f[crit] for f, _ in pairs]):.1f} deg fine, "
-                     f"{rms([c['angle_2d'] - c[crit] for _, c in pairs]):.1f} deg coarse.")
+                     + ". RMS deviation at 2 / 4 horizons over the mixed-mode ones, fine (coarse): "
+                     + ", ".join(f"{CRITERION_NAMES[k]} "
+                                 f"{rms([f['angle_2d'] - f[k] for f, _ in mixed]):.1f} / "
+                                 f"{rms([f['angle_4d'] - f[k] for f, _ in mixed]):.1f} "
+                                 f"({rms([c['angle_2d'] - c[k] for _, c in mixed]):.1f} / "
+                                 f"{rms([c['angle_4d'] - c[k] for _, c in mixed]):.1f})"
+                                 for k in CRITERIA) + " deg.")
     return "\n\n".join(parts)
 
 
@@ -335,8 +339,8 @@ def read_rows(path):
                 row[k] = v
             elif k == "halted":
                 row[k] = v == "True"
-            else:
-                row[k] = None if v == "" else float(v)
+            else:    # rounded so that no -0.0 reaches the tables
+                row[k] = None if v == "" else round(float(v), 9) + 0.0
         row["dx"] = row["dx_mm"] * 1e-3
         row["delta"] = row["m"] * row["dx"]
         rows.append(row)
@@ -384,7 +388,7 @@ def plot(rows, path):
                 ax.plot(psi, theory[c], style, label=CRITERION_NAMES[c])
             for r in rows:
                 a = r[f"angle_{dist}"]
-                if a is None:
+                if a is None or r["ncross"] != NCROSS:    # the ramp check is in the text
                     continue
                 fine = r["dx"] != COARSE[0]
                 marker = ("s" if fine else "o") if r["alpha"] == 0 else ("D" if fine else "^")
