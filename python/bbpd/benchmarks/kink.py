@@ -368,7 +368,8 @@ def table(rows):
 
 def replace_between(text, markers, body):
     start, end = markers
-    i, j = text.index(start) + len(start), text.index(end)
+    i = text.index(start) + len(start)
+    j = text.index(end, i)    # the end marker after this start (several tables share it)
     return text[:i] + "\n" + body + "\n" + text[j:]
 
 
