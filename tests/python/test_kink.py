@@ -201,3 +201,14 @@ def test_branched_crack_shows_in_the_spread():
     _, _, b = synthetic_crack(0.0, 40.0)
     res = crack_path.kink_angles(x, y, np.maximum(a, b), (0.0, 0.0), 0.0, 1.0, (15.0,), seed=5.0)
     assert res[15.0][1] > 30.0
+
+
+def test_readme_markers_are_replaced_in_place():
+    """Several tables share the end marker: each body goes between its own pair."""
+    from bbpd.benchmarks import kink as bench
+    text = ("a\n<!-- bbpd:table kink -->\nold1\n<!-- /bbpd:table -->\nb\n"
+            "<!-- bbpd:table kink-kw -->\nold2\n<!-- /bbpd:table -->\nc\n")
+    out = bench.replace_between(text, ("<!-- bbpd:table kink-kw -->", "<!-- /bbpd:table -->"), "new2")
+    out = bench.replace_between(out, bench.TABLE, "new1")
+    assert out == text.replace("old1", "new1").replace("old2", "new2")
+    assert bench.replace_between(out, bench.TABLE, "new1") == out
