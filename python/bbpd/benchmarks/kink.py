@@ -1,0 +1,461 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Quasi-static kink test: the angle at which a straight crack under the
+mixed-mode Williams field kinks in BBPD, against the maximum hoop stress, maximum hoop strain
+and maximum energy release rate criteria (bbpd.kink).
+
+Runs examples/kink-mixed-mode/in.kink for every case and measures, from its outputs only:
+
+initiation   first output step (every 10 steps) at which the damage summed over the atoms
+             within delta of the tip rises above its value at t = 0 (the notch's own
+             damage): a bond near the tip broke; K_init = K(t) there, over K_c = sqrt(E' G_c)
+kink angle   bbpd.crack_path.kink_angles of the last snapshot of final.dump at the distances
+             2 delta and 4 delta from the tip (the centroid direction of the grown crack's atoms
+             within dx of that distance, in the crack-tip frame; theta < 0 for K_II > 0)
+extension    the grown crack's reach from the tip when the run stopped (fix halt at 5 delta)
+
+Command line (from the repository root); the committed results came from the first:
+  tools/python -m bbpd.benchmarks.kink --work /tmp/kink
+  tools/python -m bbpd.benchmarks.kink --work /tmp/kink --reuse      (re-analyse, re-plot)
+"""
+
+import argparse
+import csv
+import json
+import math
+import platform
+import re
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+from bbpd import crack_path, kink, readers
+from bbpd.jobs import Job, run_jobs
+from bbpd.kernels import COLORS, KERNELS
+from bbpd.runner import run_lammps
+
+ROOT = Path(__file__).resolve().parents[3]
+FOLDER = ROOT / "examples" / "kink-mixed-mode"
+EXAMPLE = FOLDER / "in.kink"
+RESULTS = FOLDER / "results" / "kink.csv"
+README = FOLDER / "README.md"
+
+MIXES_DEG = (90.0, 67.5, 45.0, 22.5, 0.0)        # psi = arctan(K_II/K_I)
+ALPHAS_DEG = (0.0, 22.5)                          # crack direction to the grid's rows
+COARSE = (1.0e-3, 5)                              # dx (m), m = delta/dx: delta = 5 mm
+FINE = (0.5e-3, 10)                               # same horizon, half the spacing
+FINE_CASES = ((90.0, 0.0), (45.0, 0.0), (0.0, 0.0))   # (psi, alpha)
+FINE_KERNEL = "gaussian"
+# time step in dx/c_d: 0.64 of the velocity-Verlet limit the pair style prints at m = 5 and
+# 0.70 at m = 10 (the limit is set by the horizon, not by dx)
+DTFACTOR = {5: 0.8, 10: 1.6}
+NCROSS = 10.0              # in.kink's default ramp rate: K_c per 10 transit times
+RAMP_CHECK = ("gaussian", 45.0, 0.0, 20.0)        # the same case at half the rate
+DISTANCES = (2.0, 4.0)                            # where the angle is measured, in horizons
+CRITERIA = ("hoop_stress", "hoop_strain", "energy")
+CRITERION_NAMES = {"hoop_stress": "max. hoop stress", "hoop_strain": "max. hoop strain",
+                   "energy": "max. energy release rate"}
+TABLE = ("<!-- bbpd:table kink -->", "<!-- /bbpd:table -->")
+VERDICT = ("<!-- bbpd:verdict kink -->", "<!-- /bbpd:verdict -->")
+
+
+def cases():
+    """(kernel, psi, alpha, dx, m, ncross) of the sweep: every kernel, mix and angle on the
+    coarse grid; the Gaussian at FINE_CASES on the fine grid; one case at half the ramp rate."""
+    out = [(k, p, a) + COARSE + (NCROSS,) for k in KERNELS for a in ALPHAS_DEG for p in MIXES_DEG]
+    out += [(FINE_KERNEL, p, a) + FINE + (NCROSS,) for p, a in FINE_CASES]
+    k, p, a, n = RAMP_CHECK
+    out.append((k, p, a) + COARSE + (n,))
+    return out
+
+
+# --------------------------------------------------------------------------- one run
+
+def read_log(path):
+    text = Path(path).read_text()
+    m = re.search(r"^KINK: kernel (\S+) model (\S+) psi (\S+) alpha (\S+) dx (\S+) delta (\S+) "
+                  r"R (\S+) dt (\S+) maxsteps (\d+) atoms (\d+) ring (\d+) Kc (\S+) tc (\S+) "
+                  r"t1 (\S+) nu (\S+)", text, re.M)
+    if not m:
+        raise RuntimeError(f"{path}: no 'KINK:' line; was it written by in.kink?")
+    keys = ("kernel", "model", "psi", "alpha", "dx", "delta", "R", "dt", "maxsteps", "atoms",
+            "ring", "Kc", "tc", "t1", "nu")
+    info = {k: (v if k in ("kernel", "model") else float(v)) for k, v in zip(keys, m.groups())}
+    info["steps"] = int(re.search(r"^Loop time of \S+ on \d+ procs for (\d+) steps", text, re.M)[1])
+    info["halted"] = "Fix halt condition" in text
+    info["loop_s"], info["nprocs"] = readers.loop_time(text)
+    return info
+
+
+def analyse(workdir):
+    workdir = Path(workdir)
+    res = read_log(workdir / "log.lammps")
+    data = np.loadtxt(workdir / "tip.dat", comments="#")
+    step, K, dtip = data[:, 0], data[:, 1], data[:, 2]
+    rise = np.nonzero(dtip > dtip[0] * (1.0 + 1e-9) + 1e-12)[0]
+    res["K_init_over_Kc"] = float(K[rise[0]] / res["Kc"]) if len(rise) else None
+    res["K_end_over_Kc"] = float(K[-1] / res["Kc"])
+    snap = readers.dump_snapshots(workdir / "final.dump")[-1][1]
+    delta, dx = res["delta"], res["dx"]
+    dist = [f * delta for f in DISTANCES]
+    meas = crack_path.kink_angles(snap["f_ref[1]"], snap["f_ref[2]"], snap["c_dmg"], (0.0, 0.0),
+                                  res["alpha"], dx, dist, seed=delta)
+    res["extension_over_delta"] = meas["extension"] / delta
+    for f, d in zip(DISTANCES, dist):
+        a = meas[d]
+        res[f"angle_{f:g}d"] = None if a is None else a[0]
+        res[f"spread_{f:g}d"] = None if a is None else a[1]
+    psi = math.radians(res["psi"])
+    KI, KII = (0.0 if res["psi"] == 90.0 else math.cos(psi)), math.sin(psi)
+    res.update(kink.criteria_angles(KI, KII, res["nu"], res["model"]))
+    return res
+
+
+def job(workdir, kernel, psi, alpha, dx, m, ncross=NCROSS):
+    """One case, for bbpd.jobs (one rank)."""
+    variables = {"kernel": kernel, "psi": repr(psi), "alpha": repr(alpha), "dx": repr(dx),
+                 "m": repr(float(m)), "ncross": repr(ncross), "dtfactor": repr(DTFACTOR[m])}
+    start = time.perf_counter()
+    run_lammps(str(EXAMPLE), workdir, nprocs=1, vars=variables)
+    res = analyse(workdir)
+    res["wall_s"] = time.perf_counter() - start
+    res["ncross"] = ncross
+    return res
+
+
+# the boundary ring's Williams field must produce the intended (K_I, K_II) at the tip: the
+# J-integral (compute bbpd/jintegral, default annulus 2-5 delta, inside the free atoms) of the
+# intact crack after the fast ramp and one transit time of the slow one (K = 0.6 K_c, before the
+# first bond breaks), crack rotated against the grid
+LOADING_CASE = dict(kernel="gaussian", psi=30.0, alpha=22.5)
+LOADING_JSON = FOLDER / "results" / "loading_check.json"
+J_LINES = """compute         J inner bbpd/jintegral tip 0.0 0.0 direction ${ca} ${sa}
+variable        nrun equal ceil((${t1}+2.0*${R}/v_cd)/${dt})
+thermo_style    custom step time v_K c_J[1] c_J[2] c_J[3] c_dtip
+thermo_modify   format float %.10g
+run             ${nrun}
+"""
+
+
+def loading_check(workdir):
+    """K_I, K_II of the J-integral against the prescribed K(t) (in.kink up to K = 0.6 K_c)."""
+    head, _, _ = EXAMPLE.read_text().partition("run             ${nmax}")
+    variables = {k: (v if isinstance(v, str) else repr(v)) for k, v in LOADING_CASE.items()}
+    out = run_lammps(head + J_LINES, workdir, vars=variables).output
+    t = readers.thermo_tables(out)[-1]
+    K, KI, KII = (float(t[c][-1]) for c in ("v_K", "c_J[2]", "c_J[3]"))
+    return dict(LOADING_CASE, K=K, KI=KI, KII=KII, mix=math.degrees(math.atan2(KII, KI)),
+                ratio=math.hypot(KI, KII) / K, intact=bool(t["c_dtip"][-1] == t["c_dtip"][0]))
+
+
+# --------------------------------------------------------------------------- verdict
+
+def rms(values):
+    v = np.asarray([x for x in values if x is not None], dtype=float)
+    return float(np.sqrt(np.mean(v**2))) if len(v) else None
+
+
+def verdict(rows, dist="2d"):
+    """Numbers behind the README's sentence, from the coarse-grid mixed-mode rows (psi > 0: in
+    pure Mode I every criterion says 0): RMS and mean (measured - criterion) with its standard
+    error, for all kernels and angles and per kernel and crack angle; the grid's pull = mean
+    |angle(alpha = 22.5) - angle(alpha = 0)| over kernels and mixes; the kernel effect = the
+    spread (max - min) of the angle across the kernels at one (mix, alpha)."""
+    coarse = [r for r in rows if r["dx"] == COARSE[0] and r["ncross"] == NCROSS]
+    key = f"angle_{dist}"
+    mixed = [r for r in coarse if r["psi"] > 0 and r[key] is not None]
+    out = {"n": len(mixed), "rms": {}, "bias": {}, "se": {}, "rms_kernel": {}, "rms_alpha": {}}
+    for c in CRITERIA:
+        d = np.array([r[key] - r[c] for r in mixed])
+        out["rms"][c] = rms(d)
+        out["bias"][c] = float(d.mean())
+        out["se"][c] = float(d.std(ddof=1) / math.sqrt(len(d)))
+        for k in KERNELS:
+            out["rms_kernel"][k, c] = rms([r[key] - r[c] for r in mixed if r["kernel"] == k])
+        for a in ALPHAS_DEG:
+            out["rms_alpha"][a, c] = rms([r[key] - r[c] for r in mixed if r["alpha"] == a])
+    out["best"] = min(CRITERIA, key=lambda c: out["rms"][c])
+    present = [k for k in KERNELS if out["rms_kernel"][k, CRITERIA[0]] is not None]
+    out["best_kernel"] = {k: min(CRITERIA, key=lambda c: out["rms_kernel"][k, c]) for k in present}
+    # how far apart the criteria themselves are over the same runs
+    out["criteria_rms"] = {(a, b): rms([r[a] - r[b] for r in mixed])
+                           for a in CRITERIA for b in CRITERIA if a < b}
+    by = {(r["kernel"], r["psi"], r["alpha"]): r[key] for r in mixed}
+    pulls = [abs(by[k, p, ALPHAS_DEG[1]] - by[k, p, ALPHAS_DEG[0]]) for k in KERNELS
+             for p in MIXES_DEG if (k, p, ALPHAS_DEG[1]) in by and (k, p, ALPHAS_DEG[0]) in by]
+    out["pull_mean"] = float(np.mean(pulls)) if pulls else None
+    out["pull_max"] = float(np.max(pulls)) if pulls else None
+    spreads = [max(v) - min(v) for p in MIXES_DEG for a in ALPHAS_DEG
+               for v in [[by.get((k, p, a)) for k in KERNELS]] if None not in v]
+    out["kernel_spread_mean"] = float(np.mean(spreads)) if spreads else None
+    out["kernel_spread_max"] = float(np.max(spreads)) if spreads else None
+    return out
+
+
+LOCK_DEG = 1.0     # a kink within this of a lattice direction counts as locked onto it
+
+
+def grid_offset(lab_deg):
+    """Distance (deg) of a lab-frame direction from the nearest multiple of 45 deg."""
+    return abs((lab_deg + 22.5) % 45.0 - 22.5)
+
+
+def consistency(v):
+    """Which criteria the mean deviation admits: |mean| <= 2 standard errors."""
+    ok = [c for c in CRITERIA if abs(v["bias"][c]) <= 2.0 * v["se"][c]]
+    out = [c for c in CRITERIA if c not in ok]
+    text = "With |mean| <= 2 standard errors as the test, the runs are consistent with " + (
+        " and ".join(CRITERION_NAMES[c] for c in ok) if ok else "none of the criteria")
+    if out:
+        text += " and exclude " + " and ".join(
+            f"{CRITERION_NAMES[c]} (BBPD kinks {'less' if v['bias'][c] > 0 else 'more'} by "
+            f"{abs(v['bias'][c]):.1f} deg on average)" for c in out)
+    return text + "."
+
+
+def verdict_sentence(rows):
+    parts = []
+    for dist in ("2d", "4d"):
+        v = verdict(rows, dist)
+        b = v["best"]
+        r = ", ".join(f"{CRITERION_NAMES[c]} {v['rms'][c]:.1f} (mean {v['bias'][c]:+.1f} "
+                      f"+- {v['se'][c]:.1f})" for c in CRITERIA)
+        gap = sorted(v["rms"][c] for c in CRITERIA)
+        apart = ", ".join(f"{CRITERION_NAMES[a]} vs {CRITERION_NAMES[c]} {x:.1f}"
+                          for (a, c), x in sorted(v["criteria_rms"].items()))
+        parts.append(
+            f"**At {dist[0]} horizons** from the tip the {v['n']} coarse-grid mixed-mode kink "
+            f"angles lie closest to the **{CRITERION_NAMES[b]}** criterion. RMS deviation "
+            f"(mean of measured - criterion +- its standard error), deg: {r}. The criteria "
+            f"themselves differ by (RMS over the same runs) {apart} deg, and the best and the "
+            f"second-best RMS differ by {gap[1] - gap[0]:.1f} deg. "
+            + consistency(v) + " Per kernel the closest is "
+            + ", ".join(f"{k}: {CRITERION_NAMES[v['best_kernel'][k]]} "
+                        f"({v['rms_kernel'][k, v['best_kernel'][k]]:.1f})"
+                        for k in v["best_kernel"])
+            + f". Rotating the crack from 0 to {ALPHAS_DEG[1]:g} deg against the grid's rows "
+            f"changes the angle by {v['pull_mean']:.1f} deg on average (at most "
+            f"{v['pull_max']:.1f}); the RMS deviation from the {CRITERION_NAMES[b]} criterion "
+            f"is {v['rms_alpha'][ALPHAS_DEG[0], b]:.1f} deg with the crack along the rows and "
+            f"{v['rms_alpha'][ALPHAS_DEG[1], b]:.1f} deg at {ALPHAS_DEG[1]:g} deg. The three "
+            f"kernels differ by {v['kernel_spread_mean']:.1f} deg on average (at most "
+            f"{v['kernel_spread_max']:.1f}) at the same mix and crack angle.")
+    locked = [r for r in rows if r["psi"] > 0 and r["angle_2d"] is not None
+              and grid_offset(r["angle_2d"] + r["alpha"]) <= LOCK_DEG
+              and min(abs(r["angle_2d"] - r[c]) for c in CRITERIA) > 2 * LOCK_DEG]
+    parts.append(f"Grid lock: {len(locked)} of {sum(1 for r in rows if r['psi'] > 0)} mixed-mode "
+                 f"runs left the tip within {LOCK_DEG:g} deg of a grid direction (a multiple of "
+                 f"45 deg in the lattice frame) while more than {2 * LOCK_DEG:g} deg from every "
+                 "criterion"
+                 + (": " + "; ".join(f"{r['kernel']} dx {r['dx'] * 1e3:g} mm, crack {r['alpha']:g} "
+                                     f"deg, psi {r['psi']:g} deg: {r['angle_2d']:.1f} deg"
+                                     for r in locked) if locked else "") + ".")
+    by = {(r["kernel"], r["psi"], r["alpha"], r["dx"], r["ncross"]): r for r in rows}
+    k, p, a, n = RAMP_CHECK
+    slow, ref = by.get((k, p, a, COARSE[0], n)), by.get((k, p, a, COARSE[0], NCROSS))
+    if slow and ref:
+        parts.append(f"Ramp check ({k}, psi = {p:g} deg, crack along the rows): at half the "
+                     f"loading rate the angle is {slow['angle_2d']:.1f} / {slow['angle_4d']:.1f} "
+                     f"deg at 2 / 4 horizons, against {ref['angle_2d']:.1f} / "
+                     f"{ref['angle_4d']:.1f} deg at the default rate: one run's angle moves by "
+                     f"up to {max(abs(slow['angle_2d'] - ref['angle_2d']), abs(slow['angle_4d'] - ref['angle_4d'])):.1f} "
+                     "deg under a change that leaves the physics alone, so single angles are "
+                     "uncertain by that much and the verdict above rests on RMS values over many "
+                     "runs.")
+    fine = [r for r in rows if r["dx"] == FINE[0]]
+    pairs = [(r, by.get((r["kernel"], r["psi"], r["alpha"], COARSE[0], NCROSS))) for r in fine]
+    pairs = [(f, c) for f, c in pairs if c is not None and f["angle_2d"] is not None]
+    mixed = [(f, c) for f, c in pairs if f["psi"] > 0]
+    if pairs:
+        crit = verdict(rows, "2d")["best"]
+        parts.append(f"Finer grid (dx = {FINE[0] * 1e3:g} mm, m = {FINE[1]}, same horizon; "
+                     f"{FINE_KERNEL}, crack along the rows): "
+                     + "; ".join(f"psi = {f['psi']:g} deg: {f['angle_2d']:.1f} / "
+                                 f"{f['angle_4d']:.1f} deg (coarse {c['angle_2d']:.1f} / "
+                                 f"{c['angle_4d']:.1f}, {CRITERION_NAMES[crit]} {f[crit]:.1f})"
+                                 for f, c in sorted(pairs, key=lambda fc: -fc[0]["psi"]))
+                     + ". RMS deviation at 2 / 4 horizons over the mixed-mode ones, fine (coarse): "
+                     + ", ".join(f"{CRITERION_NAMES[k]} "
+                                 f"{rms([f['angle_2d'] - f[k] for f, _ in mixed]):.1f} / "
+                                 f"{rms([f['angle_4d'] - f[k] for f, _ in mixed]):.1f} "
+                                 f"({rms([c['angle_2d'] - c[k] for _, c in mixed]):.1f} / "
+                                 f"{rms([c['angle_4d'] - c[k] for _, c in mixed]):.1f})"
+                                 for k in CRITERIA) + " deg.")
+    return "\n\n".join(parts)
+
+
+# --------------------------------------------------------------------------- outputs
+
+COLUMNS = ("kernel", "dx_mm", "m", "alpha", "psi", "ncross", "K_init_over_Kc", "K_end_over_Kc",
+           "extension_over_delta", "angle_2d", "spread_2d", "angle_4d", "spread_4d",
+           "hoop_stress", "hoop_strain", "energy", "halted", "steps", "atoms", "wall_s")
+
+
+def row_of(res):
+    r = dict(res)
+    r["dx_mm"] = res["dx"] * 1e3
+    r["m"] = round(res["delta"] / res["dx"])
+    return r
+
+
+def cpu_description():
+    """CPU model, family/model numbers and the widest vector ISA, from /proc/cpuinfo."""
+    info = {}
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            key, _, value = line.partition(":")
+            info.setdefault(key.strip(), value.strip())
+    except OSError:
+        return platform.machine()
+    flags = info.get("flags", "").split()
+    isa = "AVX-512" if "avx512f" in flags else "AVX2" if "avx2" in flags else "no AVX2"
+    return (f"{info.get('model name', 'unknown CPU')} (family {info.get('cpu family', '?')} "
+            f"model {info.get('model', '?')}), {isa}")
+
+
+def write_csv(rows, path, command):
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "w", newline="") as fh:
+        fh.write(f"# {command}\n# CPU: {cpu_description()}; one rank per run, two runs at a "
+                 "time on a shared machine (wall_s); angles in degrees (theta < 0 for K_II > 0), "
+                 "extension in horizons\n")
+        w = csv.writer(fh)
+        w.writerow(COLUMNS)
+        for r in rows:
+            w.writerow([("" if r[c] is None else (f"{r[c]:.6g}" if isinstance(r[c], float) else r[c]))
+                        for c in COLUMNS])
+
+
+def read_rows(path):
+    """Rows of a CSV written by write_csv, with numbers as floats and dx in m."""
+    with open(path) as fh:
+        raw = list(csv.DictReader(line for line in fh if not line.startswith("#")))
+    rows = []
+    for r in raw:
+        row = {}
+        for k, v in r.items():
+            if k == "kernel":
+                row[k] = v
+            elif k == "halted":
+                row[k] = v == "True"
+            else:    # rounded so that no -0.0 reaches the tables
+                row[k] = None if v == "" else round(float(v), 9) + 0.0
+        row["dx"] = row["dx_mm"] * 1e-3
+        row["delta"] = row["m"] * row["dx"]
+        rows.append(row)
+    return rows
+
+
+def fmt(v, spec=".1f"):
+    return "-" if v is None else format(v, spec)
+
+
+def table(rows):
+    head = ("| kernel | dx (mm) | m | crack to rows (deg) | psi (deg) | K at 1st break / K_c | "
+            "angle at 2 delta | angle at 4 delta | hoop stress | hoop strain | max G (HPU) | "
+            "extension (delta) | ramp (transits per K_c) | wall (s) |")
+    lines = [head, "|" + "---|" * head.count(" | ") + "---|"]
+    for r in sorted(rows, key=lambda r: (-r["dx"], r["ncross"], KERNELS.index(r["kernel"]),
+                                         r["alpha"], -r["psi"])):
+        lines.append("| " + " | ".join([
+            r["kernel"], f"{r['dx'] * 1e3:g}", f"{round(r['delta'] / r['dx'])}", f"{r['alpha']:g}",
+            f"{r['psi']:g}", fmt(r["K_init_over_Kc"], ".2f"), fmt(r["angle_2d"]), fmt(r["angle_4d"]),
+            f"{r['hoop_stress']:.1f}", f"{r['hoop_strain']:.1f}", f"{r['energy']:.1f}",
+            f"{r['extension_over_delta']:.1f}", f"{r['ncross']:g}", f"{r['wall_s']:.0f}"]) + " |")
+    return "\n".join(lines)
+
+
+def replace_between(text, markers, body):
+    start, end = markers
+    i = text.index(start) + len(start)
+    j = text.index(end, i)    # the end marker after this start (several tables share it)
+    return text[:i] + "\n" + body + "\n" + text[j:]
+
+
+def plot(rows, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    psi = np.linspace(0.0, 90.0, 91)
+    theory = {c: [kink.criteria_angles(0.0 if p == 90 else math.cos(math.radians(p)),
+                                       math.sin(math.radians(p)))[c] for p in psi] for c in CRITERIA}
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2), sharey=True)
+    try:
+        for ax, dist in zip(axes, ("2d", "4d")):
+            for g in (-45.0, -90.0):     # a grid diagonal and column seen from a 0-deg crack
+                ax.axhline(g, color="grey", lw=0.8, alpha=0.5)
+            for c, style in zip(CRITERIA, ("k-", "k--", "k:")):
+                ax.plot(psi, theory[c], style, label=CRITERION_NAMES[c])
+            for r in rows:
+                a = r[f"angle_{dist}"]
+                if a is None or r["ncross"] != NCROSS:    # the ramp check is in the text
+                    continue
+                fine = r["dx"] != COARSE[0]
+                marker = ("s" if fine else "o") if r["alpha"] == 0 else ("D" if fine else "^")
+                off = {"constant": -1.5, "triangular": 0.0, "gaussian": 1.5}[r["kernel"]]
+                ax.plot(r["psi"] + off, a, marker, color=COLORS[r["kernel"]],
+                        mfc="none" if fine else COLORS[r["kernel"]], ms=6)
+            ax.set_xlabel("mode mix arctan(K_II/K_I) (deg)")
+            ax.set_title(f"kink angle at {dist[0]} horizons from the tip", fontsize=10)
+            ax.grid(alpha=0.3)
+        axes[0].set_ylabel("kink angle theta (deg)")
+        from matplotlib.lines import Line2D
+        handles = [Line2D([], [], color=COLORS[k], marker="o", ls="", label=k) for k in KERNELS]
+        handles += [Line2D([], [], color="grey", marker=mk, ls="", mfc=f, label=lab)
+                    for mk, f, lab in (("o", "grey", "crack 0 deg, dx 1 mm"),
+                                       ("^", "grey", "crack 22.5 deg, dx 1 mm"),
+                                       ("s", "none", "crack 0 deg, dx 0.5 mm"))]
+        handles.append(Line2D([], [], color="grey", lw=0.8, alpha=0.5,
+                              label="grid directions (crack 0 deg)"))
+        axes[0].legend(fontsize=7, loc="lower left")
+        axes[1].legend(handles=handles, fontsize=7, loc="lower left")
+        fig.tight_layout()
+        fig.savefig(path, dpi=130)
+    finally:
+        plt.close(fig)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--work", default="/tmp/kink", help="run folders and the job cache")
+    ap.add_argument("--workers", type=int, default=2, help="single-rank runs at a time")
+    ap.add_argument("--coarse-only", action="store_true")
+    ap.add_argument("--no-readme", action="store_true", help="do not rewrite the README table")
+    ap.add_argument("--results", default=str(RESULTS), help="CSV to write")
+    ap.add_argument("--figure", default=str(FOLDER / "kink_angle.png"), help="PNG to write")
+    args = ap.parse_args(argv)
+    todo = [c for c in cases() if not (args.coarse_only and c[3] != COARSE[0])]
+    todo.sort(key=lambda c: (-c[3], c[5]))    # the coarse grid first, the ramp check last
+    jobs = [Job(label=f"{k} psi {p:g} alpha {a:g} dx {dx * 1e3:g} mm ncross {n:g}",
+                func="bbpd.benchmarks.kink:job",
+                kwargs=dict(kernel=k, psi=p, alpha=a, dx=dx, m=m, ncross=n), inputs=(str(EXAMPLE),),
+                estimate_s=20.0 if dx == COARSE[0] else 160.0)
+            for k, p, a, dx, m, n in todo]
+    results = run_jobs(jobs, args.work, workers=args.workers)
+    rows = [row_of(results[j.label]) for j in jobs if "error" not in results[j.label]]
+    failed = [j.label for j in jobs if "error" in results[j.label]]
+    if failed:
+        print("FAILED:", failed)
+    command = "tools/python -m bbpd.benchmarks.kink " + " ".join(
+        sys.argv[1:] if argv is None else argv)
+    write_csv(rows, Path(args.results), command.strip())
+    rows = read_rows(args.results)    # the README's numbers are the CSV's
+    plot(rows, Path(args.figure))
+    text = table(rows)
+    print(text)
+    sentence = verdict_sentence(rows)
+    print(sentence)
+    check = loading_check(Path(args.work) / "loading-check")
+    print(f"J-integral check: {check}")
+    if not args.no_readme:
+        LOADING_JSON.write_text(json.dumps(check, indent=1) + "\n")
+    if not args.no_readme and README.is_file():
+        doc = README.read_text()
+        doc = replace_between(doc, TABLE, text)
+        doc = replace_between(doc, VERDICT, sentence)
+        README.write_text(doc)
+
+
+if __name__ == "__main__":
+    main()
