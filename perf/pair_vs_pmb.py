@@ -2,25 +2,46 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Side-by-side cost of our bbpd/* pair styles and LAMMPS's peri/pmb on the same scene.
 
-Scene: 2D plate 200 x 100 spacing 1 mm (20,301 atoms), elastic, a small impact
-on the left layer, 200 steps. peri/pmb's family is |xi| <= delta_pmb = 5.001 mm; ours is
-|xi| < delta + dx/2, so delta = 4.5011 mm gives the same bonds. peri/pmb's c is set to our
-constant-kernel c0 (same force law up to the partial-volume weights).
+Scenes (peri/pmb's family is |xi| <= delta_pmb; ours is |xi| < delta + dx/2, so
+delta = delta_pmb - dx/2 + a round-off guard gives the same bonds; peri/pmb's c is set to our
+constant-kernel c0, the same force law up to the partial-volume weights):
+  plate    2D plate 200 x 100, spacing 1 mm (20,301 atoms), elastic, a small impact on the left
+           layer, 200 steps; delta_pmb = 5.001 mm
+  block    3D block 41^3, spacing 1 mm, the same impact, 50 steps
+  bench    the scene of LAMMPS's peridynamics benchmark: a periodic 16^3 simple-cubic block,
+           spacing 0.5 mm, delta_pmb = 0.0015001 (3 spacings, 122 bonds per atom), 200 steps
+           from the reference configuration (atoms at rest on the lattice)
+  cylinder examples/peri-pmb-dropin: LAMMPS's peri/pmb example and its 'compat pmb' port,
+           1000 steps
+  memory   the maximum resident set of our block at 41^3 and 51^3 atoms (2 steps each):
+           the bytes per bond at the margin, (RSS_51 - RSS_41) / (bonds_51 - bonds_41)
+  (and plate variants: contact, kernels, compact storage, 2 MPI ranks)
 
 Usage (from the repository root): tools/python perf/pair_vs_pmb.py [--steps 200] [--nprocs 1]
-    [--reps 3] [--scenes plate,block]
-Prints the CPU model, then per scene ms/step of the whole loop and of the pair computation,
-undirected bond updates per second, bytes per bond of our bond storage, and the ratio pmb/ours
-of loop times. Each figure is the minimum over --reps repetitions, ours and peri/pmb run in turn
-(A B A B ...), so that both see the same drift of a shared machine.
+    [--reps 3] [--scenes plate,block,bench,cylinder,memory] [--csv perf/results/NAME.csv]
+Prints the CPU (model, family/model numbers) and the vector instruction set of the plugin
+build, then per scene ms/step of the whole loop and of the pair computation, undirected bond
+updates per second, bytes per bond of our bond storage, and the ratio pmb/ours of loop times.
+Each figure is the minimum over --reps repetitions, ours and peri/pmb run in turn
+(A B A B ...), so that both see the same drift of a shared machine; the load average before and
+after is printed with them. --csv writes the same rows with the CPU, the ISA and the command.
 """
 import argparse
+import csv
+import datetime
+import os
 import platform
 import re
+import shlex
+import subprocess
+import sys
 import tempfile
 from pathlib import Path
 
-from bbpd.runner import run_lammps
+from bbpd.runner import LMP, run_lammps
+
+ROOT = Path(__file__).resolve().parent.parent
+VERSION = os.environ.get("BBPD_LAMMPS_VERSION", "20260704")
 
 E = 190e9
 RHO = 7800.0
@@ -76,15 +97,49 @@ run {steps}
 """
 
 
-def ours(kernel, model, extra=""):
+# LAMMPS's peridynamics benchmark scene (see the module doc), in the units of the other scenes
+BENCH = """
+units si
+dimension 3
+boundary p p p
+atom_style peri
+atom_modify map array
+lattice sc {dx}
+region box block 0 {nx} 0 {ny} 0 {nz}
+create_box 1 box
+create_atoms 1 box
+set group all density {rho}
+set group all volume {vol}
+{pair}
+fix 1 all nve
+timestep {dt}
+thermo {steps}
+run {steps}
+"""
+BENCH_DX = 0.5e-3
+BENCH_DELTA_PMB = 0.0015001
+BENCH_DIMS = {"nx": 16, "ny": 16, "nz": 16, "dx": BENCH_DX, "vol": BENCH_DX ** 3,
+              "dt": DT * BENCH_DX / DX}    # the stable step scales with the spacing
+CYLINDER = ROOT / "examples" / "peri-pmb-dropin"
+CYLINDER_STEPS = 1000
+MEMORY_SIZES = (40, 50)    # block edges in spacings: 41^3 and 51^3 atoms
+MEMORY_STEPS = 2
+
+
+def ours(kernel, model, extra="", delta=DELTA_OURS):
     geom = "thickness {}".format(DX) if model.startswith("plane") else ""
     return ("plugin load bbpdplugin.so\n"
             f"pair_style bbpd/{kernel} {model} {geom} {extra}\n"
-            f"pair_coeff 1 1 {E} none {DELTA_OURS}")
+            f"pair_coeff 1 1 {E} none {delta}")
 
 
-def pmb(c0, s00=1.0):
-    return f"pair_style peri/pmb\npair_coeff 1 1 {c0} {DELTA_PMB} {s00} 0.0"
+def pmb(c0, s00=1.0, delta=DELTA_PMB):
+    return f"pair_style peri/pmb\npair_coeff 1 1 {c0} {delta} {s00} 0.0"
+
+
+def same_bonds_delta(delta_pmb, dx):
+    """our delta for peri/pmb's family |xi| <= delta_pmb (ours: |xi| < delta + dx/2)"""
+    return delta_pmb - 0.5 * dx + 1e-4 * dx
 
 
 def cpu_model():
@@ -96,6 +151,43 @@ def cpu_model():
     except OSError:
         pass
     return platform.processor() or platform.machine()
+
+
+def cpu_numbers():
+    """(family, model) from /proc/cpuinfo, or (None, None)"""
+    fields = {}
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            key, _, value = line.partition(":")
+            fields.setdefault(key.strip(), value.strip())
+    except OSError:
+        pass
+    return fields.get("cpu family"), fields.get("model")
+
+
+def build_isa(builddir=None):
+    """the vector instruction set of the plugin's force kernels: src/bbpd_row.h picks AVX-512
+    (__AVX512F__ and __AVX512VL__), else AVX2 (__AVX2__), else the portable loop, from the
+    compiler's macros under the build's flags (BBPD_NATIVE adds -march=native)"""
+    builddir = Path(builddir or ROOT / "build" / f"lammps-{VERSION}")
+    cache = (builddir / "CMakeCache.txt").read_text()
+
+    def entry(key, default=""):
+        m = re.search(rf"^{key}:[A-Z]+=(.*)$", cache, re.M)
+        return m.group(1) if m else default
+    flags = shlex.split(entry("CMAKE_CXX_FLAGS"))
+    if entry("BBPD_NATIVE", "ON").upper() in ("ON", "TRUE", "1", "YES"):
+        flags.append("-march=native")
+    macros = subprocess.run([entry("CMAKE_CXX_COMPILER", "c++")] + flags + ["-dM", "-E", "-x", "c++", "-"],
+                            input="", capture_output=True, text=True, check=True).stdout
+    has = lambda m: re.search(rf"^#define {m} ", macros, re.M) is not None    # noqa: E731
+    if has("__AVX512F__") and has("__AVX512VL__"):
+        return "AVX-512"
+    return "AVX2" if has("__AVX2__") else "portable"
+
+
+def load_average():
+    return " ".join(Path("/proc/loadavg").read_text().split()[:3])
 
 
 def parse(out, steps):
@@ -114,11 +206,44 @@ def parse(out, steps):
 
 
 def run_once(template, pair, steps, nprocs, dims, workdir):
-    vol = DX ** 3
-    script = template.format(dx=DX, rho=RHO, vol=vol, pair=pair, v=V_IMPACT, dt=DT, steps=steps,
-                             **dims)
+    """template: a scene above, formatted with pair and dims (over the plate's spacing and
+    step); or pair: the path of a whole input file that takes the variable 'steps'"""
+    if isinstance(pair, Path):
+        template = pair
+        out = run_lammps(str(template), workdir=workdir, nprocs=nprocs, vars={"steps": steps}).output
+        return parse(out, steps)
+    params = {"dx": DX, "rho": RHO, "vol": DX ** 3, "v": V_IMPACT, "dt": DT}
+    params.update(dims)
+    script = template.format(pair=pair, steps=steps, **params)
     out = run_lammps(script, workdir=workdir, nprocs=nprocs).output
     return parse(out, steps)
+
+
+def max_rss(script, workdir):
+    """(maximum resident set in bytes, LAMMPS output) of one serial run of script"""
+    workdir.mkdir(parents=True, exist_ok=True)
+    (workdir / "in.lammps").write_text(script)
+    with open(workdir / "out.txt", "w") as out:
+        proc = subprocess.Popen([str(LMP), "-in", "in.lammps"], cwd=workdir, stdout=out,
+                                stderr=subprocess.STDOUT)
+        _, status, usage = os.wait4(proc.pid, 0)
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    text = (workdir / "out.txt").read_text()
+    if proc.returncode:
+        sys.exit(f"pair_vs_pmb: the memory run failed:\n{text[-2000:]}")
+    return usage.ru_maxrss * 1024, text    # Linux reports kilobytes
+
+
+def memory_margin(workdir):
+    """max RSS of our block at the two MEMORY_SIZES: [(edge, rss, bonds)] and bytes per bond"""
+    runs = []
+    for n in MEMORY_SIZES:
+        script = BLOCK.format(dx=DX, rho=RHO, vol=DX ** 3, pair=ours("constant", "3d"), v=V_IMPACT,
+                              dt=DT, steps=MEMORY_STEPS, nx=n, ny=n, nz=n)
+        rss, out = max_rss(script, workdir / f"m{n}")
+        runs.append((n + 1, rss, parse(out, MEMORY_STEPS)["bonds"], parse(out, MEMORY_STEPS)["bytes_per_bond"]))
+    (_, r1, b1, _), (_, r2, b2, _) = runs
+    return runs, (r2 - r1) / (b2 - b1)
 
 
 def fastest(results):
@@ -149,9 +274,12 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--steps", type=int, default=200)
     ap.add_argument("--nprocs", type=int, default=1)
-    ap.add_argument("--scenes", default="plate,contact,kernels,compact,block,mpi")
+    ap.add_argument("--scenes", default="plate,contact,kernels,compact,block,bench,cylinder,memory,mpi")
     ap.add_argument("--reps", type=int, default=REPS, help="repetitions of each run (minimum kept)")
+    ap.add_argument("--csv", help="also write the rows to this CSV file")
     args = ap.parse_args()
+    load_before = load_average()
+    memory = None
     REPS = args.reps
     scenes = args.scenes.split(",")
     rows = []
@@ -188,7 +316,24 @@ def main():
             r_ours, r_pmb = run_pair(BLOCK, ours("constant", "3d"), pmb_of, args.steps // 4,
                                      args.nprocs, block, tmp / "c")
             rows.append(("block 3D 68,921 atoms", r_ours, r_pmb))
-    print(f"CPU: {cpu_model()}; minimum of {REPS} alternating repetitions; ratio = pmb/ours loop time")
+        if "bench" in scenes:
+            delta = BENCH_DELTA_PMB
+            r_ours, r_pmb = run_pair(BENCH, ours("constant", "3d", delta=same_bonds_delta(delta, BENCH_DX)),
+                                     lambda r: pmb(r["c0"], delta=delta), args.steps, args.nprocs,
+                                     BENCH_DIMS, tmp / "b")
+            rows.append(("LAMMPS bench: periodic 16^3, 4,096 atoms", r_ours, r_pmb))
+        if "cylinder" in scenes:
+            r_ours, r_pmb = run_pair(None, CYLINDER / "in.bbpd.pmb", CYLINDER / "in.peri.pmb",
+                                     CYLINDER_STEPS, args.nprocs, {}, tmp / "y")
+            rows.append(("cylinder (peri-pmb-dropin), compat pmb", r_ours, r_pmb))
+        if "memory" in scenes:
+            memory = memory_margin(tmp / "mem")
+    load_after = load_average()
+    family, model = cpu_numbers()
+    isa = build_isa()
+    print(f"CPU: {cpu_model()} (family {family}, model {model}); plugin build: {isa}")
+    print(f"load average (1/5/15 min) before {load_before}, after {load_after}")
+    print(f"minimum of {REPS} alternating repetitions; ratio = pmb/ours loop time")
     print(f"{'scene':45s} {'ours loop':>10s} {'ours pair':>10s} {'pmb loop':>9s} {'pmb pair':>9s} "
           f"{'ratio':>6s} {'ours Mbond/s':>13s} {'B/bond':>7s}   (times in ms/step)")
     for name, a, b in rows:
@@ -206,6 +351,47 @@ def main():
     for name, one, two in speedups:
         print(f"{name}: loop {one['loop_ms_per_step']:.3f} -> {two['loop_ms_per_step']:.3f} ms/step, "
               f"ratio {one['loop_ms_per_step'] / two['loop_ms_per_step']:.2f}")
+    if memory:
+        runs, margin = memory
+        for edge, rss, bonds, reported in runs:
+            print(f"memory: block {edge}^3, {bonds} bonds: max RSS {rss / 1e6:.1f} MB "
+                  f"(setup report: {reported} bytes per bond)")
+        print(f"memory: {margin:.1f} bytes per bond at the margin (max RSS, {runs[0][0]}^3 -> {runs[1][0]}^3)")
+    if args.csv:
+        write_csv(args.csv, rows, memory, {"cpu": cpu_model(), "family": family, "model": model,
+                                           "isa": isa, "load_before": load_before,
+                                           "load_after": load_after, "reps": REPS})
+
+
+def write_csv(path, rows, memory, machine):
+    """one line per scene (times in ms/step) and per memory run, with the machine and the
+    command that made the file"""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    command = "tools/python perf/pair_vs_pmb.py " + " ".join(shlex.quote(a) for a in sys.argv[1:])
+    fields = ["scene", "ours_loop_ms", "ours_pair_ms", "pmb_loop_ms", "pmb_pair_ms", "ratio",
+              "bonds", "bytes_per_bond", "max_rss_mb", "cpu", "family", "model", "isa", "reps",
+              "load_before", "load_after", "date", "command"]
+    date = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        common = dict(machine, date=date, command=command)
+        for name, a, b in rows:
+            w.writerow(dict(common, scene=name, ours_loop_ms=f"{a['loop_ms_per_step']:.4f}",
+                            ours_pair_ms=f"{a['ms_per_step']:.4f}",
+                            pmb_loop_ms=f"{b['loop_ms_per_step']:.4f}" if b else "",
+                            pmb_pair_ms=f"{b['ms_per_step']:.4f}" if b else "",
+                            ratio=f"{b['loop_ms_per_step'] / a['loop_ms_per_step']:.2f}" if b else "",
+                            bonds=a["bonds"], bytes_per_bond=a["bytes_per_bond"] or ""))
+        if memory:
+            runs, margin = memory
+            for edge, rss, bonds, reported in runs:
+                w.writerow(dict(common, scene=f"memory: block {edge}^3, max RSS", bonds=bonds,
+                                bytes_per_bond=reported, max_rss_mb=f"{rss / 1e6:.1f}"))
+            w.writerow(dict(common, scene="memory: bytes per bond at the margin (max RSS)",
+                            bytes_per_bond=f"{margin:.1f}"))
+    print(f"written: {path}")
 
 
 if __name__ == "__main__":

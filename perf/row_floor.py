@@ -1,22 +1,28 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""What bounds the AVX-512 force loop: the 3D block timed with parts of the kernel taken out.
+"""What bounds each force loop (AVX-512, AVX2, portable): the 3D block timed with parts of the kernel taken out.
 
 The 3D block of pair_vs_pmb.py (41^3 atoms, m = 4.5, 15.4 M bonds), held still (no time
 integration: the probes compute wrong forces on purpose), pair time of `--steps` force
 evaluations. Each variant is the plugin built from HEAD with perf/probes/row_floor.patch applied
-and one of its switches on (bbpd_row.h, AVX-512 kernel only):
+and one of its switches on (bbpd_row.h; the portable loop's table reads in pair_bbpd_row.cpp),
+for the path chosen with --path: the build's own (native: -march=native, AVX-512 or AVX2 by the
+CPU), avx2 (-march=native -mno-avx512f) or portable (no -march=native):
   baseline          the kernel as it is (the patch with no switch is the same code)
   no_sqrt_div       multiplications in place of the square root and the division
   no_memory         no partner-offset or class stream and no gathers: partners i+1.., positions
-                    and table entries loaded contiguously (square root and division kept)
+                    and table entries loaded contiguously (square root and division kept):
+                    the floor of the path, its arithmetic with the data in the L1 cache
   no_memory_no_sqrt_div   both: the loop's arithmetic alone
-  rsqrt14_fma       square root and 1/r from the 14-bit estimate, Newton steps and an FMA
-                    correction (no divider instruction)
-  float_guess       1/sqrt in single precision, two Newton steps in double
+  rsqrt14_fma       (AVX-512 only) square root and 1/r from the 14-bit estimate, Newton steps
+                    and an FMA correction (no divider instruction)
+  float_guess       (AVX-512 only) 1/sqrt in single precision, two Newton steps in double
 Usage (from the repository root, after tools/bootstrap):
-  tools/python perf/row_floor.py [--steps 20] [--reps 2] [--variants baseline,no_sqrt_div]
-Prints the CPU model and, per variant, the minimum pair time over --reps alternating rounds.
+  tools/python perf/row_floor.py [--path native|avx2|portable] [--steps 20] [--reps 2]
+      [--variants baseline,no_memory]
+Prints the CPU model and family/model, the vector instruction set each build holds and, per
+variant, the minimum pair time over --reps alternating rounds and its ratio to the baseline;
+the baseline over no_memory is the path's distance from its floor.
 The plugins are built in a temporary worktree of HEAD; the checkout is not touched.
 """
 import argparse
@@ -50,6 +56,8 @@ VARIANTS = {
     "rsqrt14_fma": ["RSQRT14_FMA"],
     "float_guess": ["FLOAT_GUESS"],
 }
+AVX512_ONLY = ("rsqrt14_fma", "float_guess")
+PATHS = {"native": [], "avx2": ["-mno-avx512f"], "portable": None}    # extra flags; None: no -march=native
 
 
 def cache_entry(cache, name):
@@ -59,11 +67,13 @@ def cache_entry(cache, name):
     return m.group(1)
 
 
-def build(src, builddir, switches, lammps_dir, lammps_source):
-    flags = " ".join(f"-DBBPD_PROBE_{s}=1" for s in switches)
+def build(src, builddir, switches, lammps_dir, lammps_source, path):
+    flags = " ".join([f"-DBBPD_PROBE_{s}=1" for s in switches] + (PATHS[path] or []))
+    native = "OFF" if PATHS[path] is None else "ON"
     subprocess.run(["cmake", "-S", str(src), "-B", str(builddir), f"-DLAMMPS_DIR={lammps_dir}",
                     f"-DLAMMPS_SOURCE_DIR={lammps_source}", "-DBBPD_BUILD_TESTS=OFF",
-                    f"-DCMAKE_CXX_FLAGS={flags}"], check=True, capture_output=True)
+                    f"-DBBPD_NATIVE={native}", f"-DCMAKE_CXX_FLAGS={flags}"], check=True,
+                   capture_output=True)
     subprocess.run(["cmake", "--build", str(builddir), "--target", "bbpdplugin", "-j",
                     str(os.cpu_count() or 1)], check=True, capture_output=True)
     return builddir / "bbpdplugin.so"
@@ -73,9 +83,11 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--steps", type=int, default=20)
     ap.add_argument("--reps", type=int, default=2)
-    ap.add_argument("--variants", default=",".join(VARIANTS))
+    ap.add_argument("--variants", help="default: all the path has")
+    ap.add_argument("--path", default="native", choices=list(PATHS))
     args = ap.parse_args()
-    names = args.variants.split(",")
+    names = (args.variants.split(",") if args.variants else
+             [n for n in VARIANTS if n not in AVX512_ONLY or args.path == "native"])
     for n in names:
         if n not in VARIANTS:
             sys.exit(f"row_floor: unknown variant {n}: choose from {', '.join(VARIANTS)}")
@@ -97,8 +109,12 @@ def main():
             if subprocess.run(["git", "-C", str(src), "apply", str(PATCH)]).returncode:
                 sys.exit("row_floor: perf/probes/row_floor.patch no longer applies to "
                          "src/bbpd_row.h: update the patch")
-            plugins = {n: build(src, tmp / f"build-{n}", VARIANTS[n], lammps_dir, lammps_source)
-                       for n in names}
+            plugins = {n: build(src, tmp / f"build-{n}", VARIANTS[n], lammps_dir, lammps_source,
+                                args.path) for n in names}
+            isa = {n: PVP.build_isa(tmp / f"build-{n}") for n in names}
+            if any(n in AVX512_ONLY for n in names) and isa[names[0]] != "AVX-512":
+                sys.exit(f"row_floor: {', '.join(AVX512_ONLY)} probe the AVX-512 kernel; "
+                         f"this build holds {isa[names[0]]}")
             best = {n: float("inf") for n in names}
             for rep in range(args.reps):
                 for n in names:
@@ -112,12 +128,16 @@ def main():
         finally:
             subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(src)],
                            capture_output=True)
-    print(f"CPU: {PVP.cpu_model()}; 3D block 41^3 held still, pair time in ms/step, "
-          f"minimum of {args.reps} alternating rounds")
+    family, model = PVP.cpu_numbers()
+    print(f"CPU: {PVP.cpu_model()} (family {family}, model {model}); path {args.path}, "
+          f"kernel {'/'.join(sorted(set(isa.values())))}; load average {PVP.load_average()}")
+    print(f"3D block 41^3 held still, pair time in ms/step, minimum of {args.reps} alternating rounds")
     base = best.get("baseline")
     for n in names:
         rel = f"{best[n] / base:6.2f} x baseline" if base else ""
         print(f"{n:24s} {best[n]:8.2f}  {rel}")
+    if base and "no_memory" in best:
+        print(f"baseline / floor (no_memory): {base / best['no_memory']:.2f}")
 
 
 if __name__ == "__main__":

@@ -14,8 +14,10 @@
 #include "bbpd_pmb_rules.h"
 #include "bbpd_row.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace BBPD {
 
@@ -79,6 +81,82 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const int *bj, con
   lanes.store(ax, ay, az, tally);
   return broken != 0;
 }
+#define row_force_stretch_simd BBPD::row_force_stretch_avx512
+#endif
+
+#ifdef BBPD_AVX2
+/* row_force_stretch_avx512 in two 4-wide halves, as row_force_avx2 (bbpd_row.h) computes the
+   force: the same bits (the smallest stretch is a minimum, exact in any order) */
+template <int EV, bool PMB, bool CLAMP, class Values>
+inline bool row_force_stretch_avx2(const double *xx, int i, const int *bj, const Values &vals,
+                                   int n, const double *smin, double s00, double alpha,
+                                   double margin, double *smin_row, double *ax, double *ay,
+                                   double *az, RowTally *tally)
+{
+  const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
+                zi = _mm256_set1_pd(xx[3 * i + 2]), all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+  const __m256d vs00 = _mm256_set1_pd(s00), valpha = _mm256_set1_pd(alpha),
+                vsmin_i = _mm256_set1_pd(smin[i]), zero = _mm256_setzero_pd(),
+                near_zero = _mm256_set1_pd(BBPD::PMB::NEAR_ZERO), one = _mm256_set1_pd(1.0),
+                vmargin = _mm256_set1_pd(margin), sign = _mm256_set1_pd(-0.0);
+  Avx2Lanes<0, EV> lanes(0.0, 0.0);
+  __m256d vmin = _mm256_set1_pd(std::numeric_limits<double>::max()), broken = zero;
+  // the stretch of 4 lanes (m: in the row) with the partners' smallest stretches smin_j
+  auto stretch = [&](__m256d m, bool masked, __m256d elong, __m256d xi0, __m256d smin_j) {
+    __m256d es = elong;
+    if (PMB) es = _mm256_blendv_pd(es, zero, _mm256_cmp_pd(_mm256_andnot_pd(sign, es), near_zero, _CMP_LT_OQ));
+    const __m256d s = _mm256_div_pd(es, masked ? _mm256_blendv_pd(one, xi0, m) : xi0);
+    vmin = masked ? _mm256_blendv_pd(vmin, _mm256_min_pd(s, vmin), m) : _mm256_min_pd(s, vmin);
+    __m256d smax = _mm256_max_pd(smin_j, vsmin_i);
+    if (CLAMP) smax = _mm256_min_pd(smax, zero);
+    const __m256d s0 = _mm256_sub_pd(vs00, _mm256_mul_pd(valpha, smax));
+    broken = _mm256_or_pd(broken, _mm256_and_pd(m, _mm256_cmp_pd(_mm256_add_pd(s, vmargin), s0, _CMP_GT_OQ)));
+  };
+  auto full = [&](auto half, int k) {
+    const int j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};
+    __m256d x, y, z, xi0, coef;
+    load_positions(xx, j, x, y, z);
+    load_values_full(vals, bj, i, k, xi0, coef);
+    const __m256d elong = lanes.template add<decltype(half)::value, false>(
+        all, _mm256_sub_pd(x, xi), _mm256_sub_pd(y, yi), _mm256_sub_pd(z, zi), xi0, coef);
+    stretch(all, false, elong, xi0, _mm256_setr_pd(smin[j[0]], smin[j[1]], smin[j[2]], smin[j[3]]));
+  };
+  auto tail = [&](auto half, int k) {
+    const __m128i m32 = _mm_cmpgt_epi32(_mm_set1_epi32(n - k), _mm_setr_epi32(0, 1, 2, 3));
+    const __m256d m = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(m32));
+    const __m128i j1 = load_partners(bj, m32, i, k);
+    const __m128i j3 = _mm_mullo_epi32(j1, _mm_set1_epi32(3));
+    const __m256d dx = _mm256_sub_pd(_mm256_mask_i32gather_pd(xi, xx, j3, m, 8), xi);
+    const __m256d dy = _mm256_sub_pd(_mm256_mask_i32gather_pd(yi, xx + 1, j3, m, 8), yi);
+    const __m256d dz = _mm256_sub_pd(_mm256_mask_i32gather_pd(zi, xx + 2, j3, m, 8), zi);
+    __m256d xi0, coef;
+    load_values(vals, m, m32, k, j1, xi0, coef);
+    const __m256d elong = lanes.template add<decltype(half)::value, true>(m, dx, dy, dz, xi0, coef);
+    stretch(m, true, elong, xi0, _mm256_mask_i32gather_pd(vsmin_i, smin, j1, m, 8));
+  };
+  using H0 = std::integral_constant<int, 0>;
+  using H1 = std::integral_constant<int, 1>;
+  int k = 0;
+  for (; k + 8 <= n; k += 8) {
+    full(H0(), k);
+    full(H1(), k + 4);
+  }
+  if (k + 4 <= n) {
+    full(H0(), k);
+    k += 4;
+  }
+  if (k < n) {
+    if ((k / 4) & 1)
+      tail(H1(), k);
+    else
+      tail(H0(), k);
+  }
+  const __m128d m2 = _mm_min_pd(_mm256_castpd256_pd128(vmin), _mm256_extractf128_pd(vmin, 1));
+  *smin_row = std::min(_mm_cvtsd_f64(m2), _mm_cvtsd_f64(_mm_unpackhi_pd(m2, m2)));
+  lanes.store(ax, ay, az, tally);
+  return _mm256_movemask_pd(broken) != 0;
+}
+#define row_force_stretch_simd BBPD::row_force_stretch_avx2
 #endif
 
 /* the stretch pass without the force (the force then comes from row_force); bxi0 = null

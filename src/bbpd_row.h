@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #if defined(__AVX512F__) && defined(__AVX512VL__)
@@ -458,66 +459,163 @@ inline __m128i load_partners(const PartnerOffset *bj, __m128i m32, int i, int k)
   return _mm_and_si128(_mm_add_epi32(d, _mm_set1_epi32(i)), m32);
 }
 
+/* Full groups of 4 bonds (no lane off) read the partner positions and the class entries with
+   plain loads: on AMD Zen 3 a 4-wide gather costs more than the loads and unpacks that give the
+   same values (doc/performance.md). The masked tail of a row keeps the gathers. */
+
+// x, y and z of the partners j[0..3]: (x, y) and (y, z) of each partner, 16 bytes each, paired
+// in 32-byte registers and unpacked
+inline void load_positions(const double *xx, const int *j, __m256d &x, __m256d &y, __m256d &z)
+{
+  const double *p0 = xx + 3 * j[0], *p1 = xx + 3 * j[1], *p2 = xx + 3 * j[2], *p3 = xx + 3 * j[3];
+  auto pair = [](const double *lo, const double *hi) {
+    return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(lo)), _mm_loadu_pd(hi), 1);
+  };
+  const __m256d a02 = pair(p0, p2), a13 = pair(p1, p3);            // x0 y0 x2 y2, x1 y1 x3 y3
+  const __m256d b02 = pair(p0 + 1, p2 + 1), b13 = pair(p1 + 1, p3 + 1);    // y z of the same
+  x = _mm256_unpacklo_pd(a02, a13);
+  y = _mm256_unpackhi_pd(a02, a13);
+  z = _mm256_unpackhi_pd(b02, b13);
+}
+
+// reference lengths and coefficients of the full group k..k+3
+template <class Idx>
+inline void load_values_full(const PerBondValues &v, const Idx *, int, int k, __m256d &xi0, __m256d &coef)
+{
+  xi0 = _mm256_loadu_pd(v.xi0 + k);
+  coef = _mm256_loadu_pd(v.coef + k);
+}
+template <class Idx>
+inline void load_values_full(const ClassValues &v, const Idx *, int, int k, __m256d &xi0, __m256d &coef)
+{
+  const int c0 = v.cls[k], c1 = v.cls[k + 1], c2 = v.cls[k + 2], c3 = v.cls[k + 3];
+  xi0 = _mm256_setr_pd(v.xi0[c0], v.xi0[c1], v.xi0[c2], v.xi0[c3]);
+  coef = _mm256_setr_pd(v.coef[c0], v.coef[c1], v.coef[c2], v.coef[c3]);
+}
+template <class CoefFn, bool UNIFORM, class Idx>
+inline void load_values_full(const RecomputedValues<CoefFn, UNIFORM> &v, const Idx *bj, int i, int k,
+                             __m256d &xi0, __m256d &coef)
+{
+  const __m128i all = _mm_set1_epi32(-1);
+  load_values(v, _mm256_castsi256_pd(_mm256_set1_epi64x(-1)), all, k, load_partners(bj, all, i, k),
+              xi0, coef);
+}
+
+/* the force lanes (and with EV the energy and virial lanes) of a row in two 4-wide halves,
+   lanes 0-3 and 4-7, and the breaking test: the operations of row_force_portable */
+template <int FRACTURE, int EV> struct Avx2Lanes {
+  __m256d fx[2], fy[2], fz[2], eacc[2], vacc[6][2];
+  __m256d broken = _mm256_setzero_pd();
+  __m256d vs0, vmargin;
+  Avx2Lanes(double s0, double margin) : vs0(_mm256_set1_pd(s0)), vmargin(_mm256_set1_pd(margin))
+  {
+    for (int h = 0; h < 2; h++) {
+      fx[h] = fy[h] = fz[h] = eacc[h] = _mm256_setzero_pd();
+      for (auto &v : vacc) v[h] = _mm256_setzero_pd();
+    }
+  }
+  // acc + v in the lanes of m, or everywhere if not MASKED
+  template <bool MASKED> static __m256d masked_add(__m256d acc, __m256d v, __m256d m)
+  {
+    return MASKED ? _mm256_blendv_pd(acc, _mm256_add_pd(acc, v), m) : _mm256_add_pd(acc, v);
+  }
+  // the bonds of 4 lanes into half H; returns their elongations
+  template <int H, bool MASKED>
+  __m256d add(__m256d m, __m256d dx, __m256d dy, __m256d dz, __m256d xi0, __m256d coef)
+  {
+    const __m256d rsq =
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
+    const __m256d r = _mm256_sqrt_pd(rsq);
+    const __m256d elong = _mm256_sub_pd(r, xi0);
+    if (FRACTURE) {
+      __m256d past = _mm256_cmp_pd(_mm256_add_pd(elong, vmargin), _mm256_mul_pd(vs0, xi0), _CMP_GT_OQ);
+      if (MASKED) past = _mm256_and_pd(m, past);
+      broken = _mm256_or_pd(broken, past);
+    }
+    const __m256d fbond = _mm256_div_pd(_mm256_mul_pd(coef, elong), r);
+    fx[H] = masked_add<MASKED>(fx[H], _mm256_mul_pd(fbond, dx), m);
+    fy[H] = masked_add<MASKED>(fy[H], _mm256_mul_pd(fbond, dy), m);
+    fz[H] = masked_add<MASKED>(fz[H], _mm256_mul_pd(fbond, dz), m);
+    if (EV) {
+      const __m256d quarter = _mm256_set1_pd(0.25), half = _mm256_set1_pd(0.5);
+      const __m256d e = _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(quarter, coef), elong), elong);
+      eacc[H] = masked_add<MASKED>(eacc[H], e, m);
+      const __m256d hf = _mm256_mul_pd(half, fbond);
+      const __m256d d[3] = {dx, dy, dz};
+      const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
+      for (int c = 0; c < 6; c++) {
+        const __m256d v = _mm256_mul_pd(_mm256_mul_pd(hf, d[pa[c]]), d[pb[c]]);
+        vacc[c][H] = MASKED ? _mm256_blendv_pd(vacc[c][H], _mm256_sub_pd(vacc[c][H], v), m)
+                            : _mm256_sub_pd(vacc[c][H], v);
+      }
+    }
+    return elong;
+  }
+  void store(double *ax, double *ay, double *az, RowTally *tally) const
+  {
+    for (int h = 0; h < 2; h++) {
+      _mm256_storeu_pd(ax + 4 * h, fx[h]);
+      _mm256_storeu_pd(ay + 4 * h, fy[h]);
+      _mm256_storeu_pd(az + 4 * h, fz[h]);
+      if (EV) {
+        _mm256_storeu_pd(tally->eng + 4 * h, eacc[h]);
+        for (int c = 0; c < 6; c++) _mm256_storeu_pd(tally->vir[c] + 4 * h, vacc[c][h]);
+      }
+    }
+  }
+};
+
 /* the same as row_force_avx512 with two 4-wide halves: lanes 0-3 and 4-7 */
 template <int FRACTURE, int EV, class Values, class Idx>
 inline bool row_force_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                            double s0, double margin, double *ax, double *ay, double *az,
                            RowTally *tally)
 {
-  const __m256d quarter = _mm256_set1_pd(0.25), half = _mm256_set1_pd(0.5);
-  __m256d eacc[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()}, vacc[6][2];
-  for (auto &v : vacc) v[0] = v[1] = _mm256_setzero_pd();
   const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
-                zi = _mm256_set1_pd(xx[3 * i + 2]), vs0 = _mm256_set1_pd(s0),
-                vmargin = _mm256_set1_pd(margin);
-  const __m128i three = _mm_set1_epi32(3), iota = _mm_setr_epi32(0, 1, 2, 3);
-  __m256d fx[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()}, fy[2] = {fx[0], fx[0]},
-          fz[2] = {fx[0], fx[0]};
-  __m256d broken = _mm256_setzero_pd();
-  for (int k = 0; k < n; k += 4) {
-    const int h = (k / 4) & 1;    // which half of the 8 lanes
-    const __m128i m32 = _mm_cmpgt_epi32(_mm_set1_epi32(n - k), iota);
+                zi = _mm256_set1_pd(xx[3 * i + 2]), all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+  Avx2Lanes<FRACTURE, EV> lanes(s0, margin);
+  // bonds k..k+3, every lane in the row, into half H
+  auto full = [&](auto half, int k) {
+    const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
+                      partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
+    __m256d x, y, z, xi0, coef;
+    load_positions(xx, j, x, y, z);
+    load_values_full(vals, bj, i, k, xi0, coef);
+    lanes.template add<decltype(half)::value, false>(all, _mm256_sub_pd(x, xi), _mm256_sub_pd(y, yi),
+                                                     _mm256_sub_pd(z, zi), xi0, coef);
+  };
+  // the last n - k < 4 bonds, masked, into half H
+  auto tail = [&](auto half, int k) {
+    const __m128i m32 = _mm_cmpgt_epi32(_mm_set1_epi32(n - k), _mm_setr_epi32(0, 1, 2, 3));
     const __m256d m = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(m32));
     const __m128i j1 = load_partners(bj, m32, i, k);
-    const __m128i j3 = _mm_mullo_epi32(j1, three);
+    const __m128i j3 = _mm_mullo_epi32(j1, _mm_set1_epi32(3));
     const __m256d dx = _mm256_sub_pd(_mm256_mask_i32gather_pd(xi, xx, j3, m, 8), xi);
     const __m256d dy = _mm256_sub_pd(_mm256_mask_i32gather_pd(yi, xx + 1, j3, m, 8), yi);
     const __m256d dz = _mm256_sub_pd(_mm256_mask_i32gather_pd(zi, xx + 2, j3, m, 8), zi);
-    const __m256d rsq =
-        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
-    const __m256d r = _mm256_sqrt_pd(rsq);
     __m256d xi0, coef;
     load_values(vals, m, m32, k, j1, xi0, coef);
-    const __m256d elong = _mm256_sub_pd(r, xi0);
-    if (FRACTURE)
-      broken = _mm256_or_pd(broken, _mm256_and_pd(m, _mm256_cmp_pd(_mm256_add_pd(elong, vmargin),
-                                                                   _mm256_mul_pd(vs0, xi0), _CMP_GT_OQ)));
-    const __m256d fbond = _mm256_div_pd(_mm256_mul_pd(coef, elong), r);
-    fx[h] = _mm256_blendv_pd(fx[h], _mm256_add_pd(fx[h], _mm256_mul_pd(fbond, dx)), m);
-    fy[h] = _mm256_blendv_pd(fy[h], _mm256_add_pd(fy[h], _mm256_mul_pd(fbond, dy)), m);
-    fz[h] = _mm256_blendv_pd(fz[h], _mm256_add_pd(fz[h], _mm256_mul_pd(fbond, dz)), m);
-    if (EV) {
-      const __m256d e = _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(quarter, coef), elong), elong);
-      eacc[h] = _mm256_blendv_pd(eacc[h], _mm256_add_pd(eacc[h], e), m);
-      const __m256d hf = _mm256_mul_pd(half, fbond);
-      const __m256d d[3] = {dx, dy, dz};
-      const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
-      for (int c = 0; c < 6; c++) {
-        const __m256d v = _mm256_mul_pd(_mm256_mul_pd(hf, d[pa[c]]), d[pb[c]]);
-        vacc[c][h] = _mm256_blendv_pd(vacc[c][h], _mm256_sub_pd(vacc[c][h], v), m);
-      }
-    }
+    lanes.template add<decltype(half)::value, true>(m, dx, dy, dz, xi0, coef);
+  };
+  using H0 = std::integral_constant<int, 0>;
+  using H1 = std::integral_constant<int, 1>;
+  int k = 0;
+  for (; k + 8 <= n; k += 8) {
+    full(H0(), k);
+    full(H1(), k + 4);
   }
-  if (FRACTURE && _mm256_movemask_pd(broken)) return true;
-  for (int h = 0; h < 2; h++) {
-    _mm256_storeu_pd(ax + 4 * h, fx[h]);
-    _mm256_storeu_pd(ay + 4 * h, fy[h]);
-    _mm256_storeu_pd(az + 4 * h, fz[h]);
-    if (EV) {
-      _mm256_storeu_pd(tally->eng + 4 * h, eacc[h]);
-      for (int c = 0; c < 6; c++) _mm256_storeu_pd(tally->vir[c] + 4 * h, vacc[c][h]);
-    }
+  if (k + 4 <= n) {
+    full(H0(), k);
+    k += 4;
   }
+  if (k < n) {
+    if ((k / 4) & 1)
+      tail(H1(), k);
+    else
+      tail(H0(), k);
+  }
+  if (FRACTURE && _mm256_movemask_pd(lanes.broken)) return true;
+  lanes.store(ax, ay, az, tally);
   return false;
 }
 #define row_force_simd BBPD::row_force_avx2

@@ -12,6 +12,7 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "my_page.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair.h"
@@ -297,35 +298,58 @@ void FixBBPDBonds::build_families()
   // tag order, only for partners that share a reference position): the summation order then
   // depends on the geometry alone, not on how atoms are numbered (create_atoms numbers them
   // rank by rank). x varies fastest, as in LAMMPS's spatial sort of the atoms in memory.
-  const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
-  std::vector<std::pair<std::array<double, 3>, tagint>> family;
-  std::vector<tagint> tags;
-  for (int i = 0; i < nlocal; i++) npartner[i] = 0;
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
-    family.clear();
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = list->firstneigh[i][jj] & NEIGHMASK;
-      if (!in_family(i, j)) continue;
-      double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-      if (periodic) BBPDCompat::minimum_image(domain, d);
-      family.push_back({{d[2], d[1], d[0]}, tag[j]});
+  {    // scoped: the vectors are freed before the list's pages, which may lie below them
+    const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
+    std::vector<std::pair<std::array<double, 3>, tagint>> family;
+    std::vector<tagint> tags;
+    for (int i = 0; i < nlocal; i++) npartner[i] = 0;
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      family.clear();
+      for (int jj = 0; jj < list->numneigh[i]; jj++) {
+        const int j = list->firstneigh[i][jj] & NEIGHMASK;
+        if (!in_family(i, j)) continue;
+        double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+        if (periodic) BBPDCompat::minimum_image(domain, d);
+        family.push_back({{d[2], d[1], d[0]}, tag[j]});
+      }
+      std::sort(family.begin(), family.end());
+      tags.clear();
+      for (const auto &p : family) {
+        partner[i][npartner[i]++] = p.second;
+        tags.push_back(p.second);
+      }
+      std::sort(tags.begin(), tags.end());
+      if (std::adjacent_find(tags.begin(), tags.end()) != tags.end())
+        error->one(FLERR, "Atom {} bonds twice to the same partner: the periodic box is smaller "
+                   "than two horizons", tag[i]);
     }
-    std::sort(family.begin(), family.end());
-    tags.clear();
-    for (const auto &p : family) {
-      partner[i][npartner[i]++] = p.second;
-      tags.push_back(p.second);
-    }
-    std::sort(tags.begin(), tags.end());
-    if (std::adjacent_find(tags.begin(), tags.end()) != tags.end())
-      error->one(FLERR, "Atom {} bonds twice to the same partner: the periodic box is smaller "
-                 "than two horizons", tag[i]);
   }
   first = 0;
   extent0 = local_extent();
+  release_family_list();
   refresh_cache();
   for (int i = 0; i < nlocal; i++) vinit[i] = vintact[i];
+}
+
+/* The families are in the partner tags now: the list's pages go back before the bond cache is
+   allocated, so that the two never take memory at the same time (4 bytes per listed neighbour;
+   with LAMMPS's skin a 3D list holds about 1.7 neighbours per bond end). MyPage::init frees
+   every page but a first one, of each of the list's page sets (one per thread); a later
+   build_one() refills the list. */
+void FixBBPDBonds::release_family_list()
+{
+  // only pages of the list's own: a copy of another list (with 'contact yes' the pair's list
+  // may be the parent) points at the parent's pages, and a list derived from this one would
+  // still read them
+  if (list->copy || list->listcopy || !list->ipage) return;
+  for (int m = 0; m < neighbor->nlist; m++) {
+    const NeighList *other = neighbor->lists[m];
+    if (other != list && (other->listcopy == list || other->listskip == list || other->listfull == list))
+      return;
+  }
+  list->inum = list->gnum = 0;    // firstneigh pointed into the pages
+  for (int t = 0; t < comm->nthreads; t++) list->ipage[t].init(neighbor->oneatom, neighbor->pgsize);
 }
 
 /* local indices and bond coefficients after every reneighboring */

@@ -161,6 +161,7 @@ class FixBBPDBonds : public Fix {
   void store_bond_values(int m, double xi, double coef);
 
   void build_families();
+  void release_family_list();
   void refresh_cache();
   double intact_volume(int i) const;
 };

@@ -49,7 +49,7 @@ using BBPD::lane_sum;
 // most break_margin / xi0, plus the rounding of the division: twice that bounds both
 static constexpr double STRETCH_MARGIN_FACTOR = 2.0;
 
-#ifdef BBPD_AVX512
+#ifdef BBPD_SIMD
 static constexpr bool FUSED_KERNEL = true;    // force and stretch of a row in one pass
 #else
 static constexpr bool FUSED_KERNEL = false;
@@ -180,7 +180,7 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
     double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     BBPD::CoefCache *cache = thread_coef_cache();
     // a row's reference lengths and coefficients, looked up from their classes (the fused
-    // AVX-512 kernel gathers them itself)
+    // SIMD kernel reads them itself)
     std::vector<double> class_xi0, class_coef;
     if (bonds->bclass && (multi || !FUSED_KERNEL)) {
       class_xi0.resize(bonds->maxpartner);
@@ -236,16 +236,16 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         double snew = std::numeric_limits<double>::max();
         bool broken = false;
         const int n = bonds->nbond[i];
-#ifdef BBPD_AVX512
+#ifdef BBPD_SIMD
         if (!multi && (bonds->bclass || row_xi0)) {
           double ax[LANES], ay[LANES], az[LANES];
           RowTally tally;
           // the reference lengths and coefficients by class or per bond: same kernel
           auto fused = [&](const auto &vals) {
-            return pmb ? BBPD::row_force_stretch_avx512<EVFLAG, true, false>(
+            return pmb ? row_force_stretch_simd<EVFLAG, true, false>(
                              xx, i, bj + beg, vals, n, smin, s00_one, alpha_one, margin, &snew,
                              ax, ay, az, &tally)
-                       : BBPD::row_force_stretch_avx512<EVFLAG, false, true>(
+                       : row_force_stretch_simd<EVFLAG, false, true>(
                              xx, i, bj + beg, vals, n, smin, s00_one, alpha_one, margin, &snew,
                              ax, ay, az, &tally);
           };
