@@ -17,7 +17,8 @@ bbpd.benchmarks run and analyse each case.
 
 Modules: runs (which runs, as bbpd.jobs jobs), tables (results -> rows and CSV), prose (the
 paragraphs), figures, sections (one per benchmark), provenance (LAMMPS, plugin, git, machine),
-document (REPORT.md), make (reproduce: the runs, then the document); __main__ is the command.
+document (REPORT.md), results (the numbers as CSV, for bbpd.claims), make (reproduce: the runs,
+then the document); __main__ is the command.
 """
 # The public names, here so that "bbpd.report:run_job" (part of every run's cache key) and the
 # callers of bbpd.report.X keep working.

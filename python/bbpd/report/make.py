@@ -9,6 +9,7 @@ from pathlib import Path
 from bbpd import jobs as jobmod
 from bbpd import work_precision
 
+from . import results as result_files
 from .document import write_report
 from .provenance import git_revision, lammps_build, machine, plugin_version
 from .runs import ESTIMATES_ENV, benchmark_specs
@@ -44,6 +45,10 @@ def reproduce(out, specs, workers, full=False, log=None):
             "plugin": plugin_version(), "git": git_revision(), "machine": machine(),
             "load": load, "new": new, "workers": workers, "runs_s": runs_s}
     path = write_report(out, specs, results, meta, start)
+    try:    # the numbers the READMEs are generated from (python -m bbpd.claims)
+        result_files.write(out, specs, results, meta)
+    except Exception as exc:  # the report itself stands without them
+        log(f"reproduce: results/*.csv not written: {type(exc).__name__}: {exc}")
     n_failed = sum(failed(results.get(s.job.label)) for s in specs)
     log(f"reproduce: wrote {path} in {jobmod._fmt(time.perf_counter() - start)}"
         + (f"; {n_failed} run(s) FAILED (see the report)" if n_failed else ""))
