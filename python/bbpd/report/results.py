@@ -44,13 +44,21 @@ def mode1_row(res):
     from bbpd.benchmarks import mode1
     exact, _ = mode1.reference("consistent", res.get("model", "plane/stress"))
     j = (res.get("jintegral") or {}).get("consistent") or {}
+    jp = (res.get("jintegral") or {}).get("paper") or {}
+    kii_j = None
+    if "kii_j" in res:    # K_II/K_I of the interaction integral over the window: 0 by symmetry
+        t = np.asarray(res["t"], dtype=float)
+        w = t <= 3.0 * res["consistent"]["t_c"]
+        kii_j = float(np.max(np.abs(np.asarray(res["kii_j"], dtype=float)[w]))
+                      / np.max(np.abs(np.asarray(res["k_j"], dtype=float)[w])))
     return {"paper_peak": res["paper"]["peak"], "paper_l2": res["paper"]["l2"],
             "consistent_peak": res["consistent"]["peak"],
             "consistent_l2": res["consistent"]["l2"],
             "j_peak": j.get("peak"), "j_l2": j.get("l2"),
             "kmax_ratio": _kmax_ratio(res, "k_consistent", exact),
             "kmax_ratio_j": _kmax_ratio(res, "k_j", exact) if "k_j" in res else None,
-            "kii_over_ki": res.get("kii_over_ki"), "dt_s": res["dt"], "atoms": res.get("atoms")}
+            "j_paper_peak": jp.get("peak"), "j_paper_l2": jp.get("l2"),
+            "kii_over_ki": res.get("kii_over_ki"), "kii_j_over_k_j": kii_j, "dt_s": res["dt"], "atoms": res.get("atoms")}
 
 
 def mode2_row(res):
