@@ -16,14 +16,15 @@ from .runs import ESTIMATES_ENV, benchmark_specs
 from .tables import _plain, failed
 
 
-def job_list(full=False):
+def job_list(full=False, finer=False):
     """Every run of the report: the benchmarks' runs at default resolutions (or the paper's full
-    ones with full=True), then the runs and timing repeats of the work-precision diagrams."""
-    specs = benchmark_specs(full)
+    ones with full=True, or with finer=True the finer grids of the benchmarks' tables alone),
+    then the runs and timing repeats of the work-precision diagrams."""
+    specs = benchmark_specs(full or finer, study=full)
     return specs + work_precision.extra_specs(specs, work_precision.plan(full))
 
 
-def reproduce(out, specs, workers, full=False, log=None):
+def reproduce(out, specs, workers, full=False, log=None, finer=False):
     """Run (or reuse) the jobs of specs and write out/REPORT.md; returns (path, failed runs)."""
     log = log or (lambda msg: print(msg, flush=True))
     start = time.perf_counter()
@@ -35,13 +36,14 @@ def reproduce(out, specs, workers, full=False, log=None):
     os.environ[ESTIMATES_ENV] = json.dumps({s.job.label: s.job.estimate_s for s in specs})
     cache = out / "runs"
     new = sum(not (cache / f"{s.job.key(jobmod.plugin_path())}.json").is_file() for s in specs)
-    log(f"reproduce: {len(specs)} runs ({'full' if full else 'default'} resolutions), "
+    log(f"reproduce: {len(specs)} runs "
+        f"({'full' if full else 'finer' if finer else 'default'} resolutions), "
         f"results in {out}")
     results = jobmod.run_jobs([s.job for s in specs], cache, workers=workers, log=log)
     results = {label: _plain(r) for label, r in results.items()}
     runs_s = time.perf_counter() - start
     log("reproduce: writing the report and figures")
-    meta = {"full": full, "date": time.strftime("%Y-%m-%d %H:%M"), "lammps": lammps_build(),
+    meta = {"full": full, "finer": finer, "date": time.strftime("%Y-%m-%d %H:%M"), "lammps": lammps_build(),
             "plugin": plugin_version(), "git": git_revision(), "machine": machine(),
             "load": load, "new": new, "workers": workers, "runs_s": runs_s}
     path = write_report(out, specs, results, meta, start)

@@ -125,7 +125,8 @@ def tables(specs, results):
 
 def provenance_lines(meta):
     """The '#' lines at the top of every file."""
-    return [f"made by: tools/reproduce{' --full' if meta.get('full') else ''} "
+    option = " --full" if meta.get("full") else " --finer" if meta.get("finer") else ""
+    return [f"made by: tools/reproduce{option} "
             f"on {meta.get('date', '?')}",
             f"LAMMPS: {meta.get('lammps', '?')}; plugin {meta.get('plugin', '?')}, "
             f"source {meta.get('git', '?')}",

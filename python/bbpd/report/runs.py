@@ -130,9 +130,11 @@ def make_spec(bench, kernel, dx, target, args, inputs, estimate):
     return Spec(bench, kernel, dx, job)
 
 
-def benchmark_specs(full=False):
+def benchmark_specs(full=False, study=None):
     """The benchmarks' runs of the report: default resolutions, or the paper's full ones with
-    full=True (make.job_list adds the work-precision runs)."""
+    full=True, with the loading study unless study=False (make.job_list adds the
+    work-precision runs)."""
+    study = full if study is None else study
     specs = []
     disp_in = bench_inputs("dispersion")
     for k in KERNELS:
@@ -162,7 +164,7 @@ def benchmark_specs(full=False):
         specs.append(make_spec("kw", k, dx, "bbpd.benchmarks.kalthoff_winkler:run",
                                {"kernel": k, "dx": dx, "nprocs": 1}, kw_in,
                                ESTIMATE_S.get(("kw", dx), 600.0)))
-    if full:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
+    if study:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
         from bbpd.benchmarks import kalthoff_winkler_study
         specs += kalthoff_winkler_study.jobs()
     return specs
