@@ -99,10 +99,11 @@ def benchmarks(data):
 
 def quickstart_times(data):
     rows = data.rows("quickstart_times")
-    notes = [c for c in data.comments("quickstart_times") if not c.startswith("made by:")]
     table = md_table(["command", "step", "wall time (s)"],
                      [[f"`{r['command']}`", r["step"], f"{r['wall_s']:.0f}"] for r in rows])
-    return ("Measured: " + " ".join(notes) + "\n\n" + table)
+    return (f"Wall time of each step as the commands print it ({data.source('quickstart_times')})"
+            ": " + "; ".join(c for c in data.comments("quickstart_times")
+                             if not c.startswith("made by:")) + ".\n\n" + table)
 
 
 def reproduce_runs(data):
