@@ -13,8 +13,8 @@ def steps(output):
     """[(step, seconds)] of one command's output, its total last."""
     out = []
     for m in STEP.finditer(output):
-        if m.group("step"):
-            out.append((m.group("step"), int(m.group("s"))))
+        if m.group("step"):    # without the machine's cache path
+            out.append((re.sub(r" \(in /[^)]*\)", "", m.group("step")), int(m.group("s"))))
         else:
             out.append(("total (" + m.group("total") + ")", int(m.group("t"))))
     return out
