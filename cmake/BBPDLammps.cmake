@@ -12,7 +12,7 @@
 set(LAMMPS_SOURCE_DIR "" CACHE PATH "LAMMPS source tree (the folder holding src/)")
 if(NOT EXISTS "${LAMMPS_SOURCE_DIR}/src/lammps.h")
   message(FATAL_ERROR "LAMMPS_SOURCE_DIR='${LAMMPS_SOURCE_DIR}' holds no src/lammps.h: "
-                      "run tools/bootstrap, or pass -D LAMMPS_SOURCE_DIR=/path/to/lammps")
+                      "run tools/bootstrap --for reproduce, or pass -D LAMMPS_SOURCE_DIR=/path/to/lammps")
 endif()
 
 set(BBPD_LAMMPS_SIZES_VALUES smallbig bigbig smallsmall)

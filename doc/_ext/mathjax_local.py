@@ -3,7 +3,7 @@
 
 Sphinx's mathjax extension loads MathJax from a CDN by default.  This extension points
 ``mathjax_path`` at ``_static/mathjax/`` and copies there the part of Debian's MathJax 2
-(packages ``libjs-mathjax`` and ``fonts-mathjax``, installed by ``tools/bootstrap``) that the
+(packages ``libjs-mathjax`` and ``fonts-mathjax``, installed by ``tools/test``) that the
 TeX input and CommonHTML output need.  ``BBPD_MATHJAX_DIR`` selects another MathJax 2 tree.
 """
 
@@ -24,7 +24,7 @@ def source_dir():
     path = os.environ.get("BBPD_MATHJAX_DIR", DEBIAN_MATHJAX)
     if not os.path.isfile(os.path.join(path, "MathJax.js")):
         raise ConfigError(f"MathJax 2 not found in {path}: install Debian's libjs-mathjax and "
-                          "fonts-mathjax (tools/bootstrap does), or set BBPD_MATHJAX_DIR")
+                          "fonts-mathjax (tools/test does), or set BBPD_MATHJAX_DIR")
     return path
 
 

@@ -8,7 +8,7 @@ never parsed as RST, so nothing a Markdown author writes can make the build
 warn. Supported: ``#`` headings (as rubrics), paragraphs, ``-``/``*`` and
 ``1.`` lists (one level), pipe tables, fenced and indented code blocks, ``>``
 quotes; inline ```code```, ``**strong**``, ``*emphasis*``, ``[text](url)`` and
-``![alt](image)``. Relative links to files become download links (a
+``![alt](image)``; one-line ``<!-- comments -->`` are dropped. Relative links to files become download links (a
 ``figure.png`` code span naming a file beside the Markdown is one too); a relative
 link to a missing file or a folder is shown as its text with the path.
 
@@ -34,6 +34,7 @@ TABLE_RULE = re.compile(r"^\s*\|?\s*:?-{3,}:?\s*(\|\s*:?-{3,}:?\s*)*\|?\s*$")
 LIST_ITEM = re.compile(r"^(?P<indent>\s{0,3})(?P<mark>[-*]|\d+[.)])\s+(?P<rest>.*)$")
 HEADING = re.compile(r"^(?P<level>#{1,6})\s+(?P<text>.*?)\s*#*\s*$")
 FENCE = re.compile(r"^\s*(```|~~~)")
+COMMENT_LINE = re.compile(r"^\s*<!--.*-->\s*$")
 IMAGE_FILE = re.compile(r"[\w./-]+\.(png|jpg|jpeg|svg)", re.IGNORECASE)
 
 
@@ -57,7 +58,8 @@ class MarkdownInclude(Directive):
             raise self.error(f"markdown-include: no file {path}")
         env.note_dependency(rel)
         with open(path, encoding="utf-8") as fh:
-            lines = fh.read().splitlines()
+            # one-line HTML comments (the markers of generated blocks) are not shown
+            lines = [ln for ln in fh.read().splitlines() if not COMMENT_LINE.match(ln)]
         if "skip-title" in self.options:
             for k, line in enumerate(lines):
                 if line.strip():

@@ -40,7 +40,7 @@ from bbpd.benchmarks.kalthoff_winkler import PAPER_INITIATION_US
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.report.figures import _figure
-from bbpd.report.provenance import machine
+from bbpd.provenance import machine
 from bbpd.report.runs import ESTIMATE_S, bench_inputs, make_spec
 from bbpd.report.tables import failed, md_table
 

@@ -21,7 +21,7 @@ TIMEOUT = 900
 def asan():
     version = os.environ.get("BBPD_LAMMPS_VERSION", "20260704")
     build = ROOT / "build" / f"asan-{version}"
-    assert (build / "bbpd-env.sh").is_file(), f"{build} is missing: run tools/bootstrap (it builds it)"
+    assert (build / "bbpd-env.sh").is_file(), f"{build} is missing: run tools/test (tools/bootstrap --for test builds it)"
     # recompiled here too, so that a direct pytest run after a source edit tests the edit
     proc = subprocess.run(["cmake", "--build", str(build), "--target", "bbpdplugin", "-j2"],
                           capture_output=True, text=True, timeout=1800)

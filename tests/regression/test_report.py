@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from bbpd import report
+from bbpd import csvfile, report
 from bbpd.benchmarks import mode1
 from bbpd.report import make
 
@@ -111,6 +111,29 @@ def test_tables_hold_the_runs_numbers(calls):
     assert len(table_rows(kw, "gaussian")) == 1 and "21.7" in kw   # paper's initiation time
     disp = section(text, "Wave dispersion")
     assert len(table_rows(disp, "gaussian")) == 1
+
+
+def test_result_files_hold_the_runs_numbers(calls):
+    # report/results/*.csv: what the READMEs are generated from (python -m bbpd.claims)
+    from bbpd.report import results
+    out, logs = calls
+    res = logs[0][3]
+    comments, rows = csvfile.read_csv(out / "results" / "mode2.csv")
+    assert comments[0].startswith("made by: tools/reproduce") and "machine: " in comments[2]
+    by = {(r["kernel"], r["dx_m"]): r for r in rows}
+    for kernel in ("constant", "gaussian"):
+        r, row = res[(kernel, 2e-3)], by[(kernel, 2e-3)]
+        assert row["peak"] == pytest.approx(r["peak"], rel=1e-5)
+        assert row["ratio_end"] == pytest.approx(r["k_end"] / r["k_end_exact"], rel=1e-5)
+        assert row["run_time_s"] > 0    # (the third call reran these: another wall time)
+    _, rows = csvfile.read_csv(out / "results" / "mode1.csv")
+    assert [(r["kernel"], r["dx_m"]) for r in rows] == [("gaussian", 0.2)]    # the failed one: no row
+    r = res[("gaussian", 0.2)]
+    assert rows[0]["consistent_l2"] == pytest.approx(r["consistent"]["l2"], rel=1e-5)
+    assert rows[0]["j_peak"] == pytest.approx(r["jintegral"]["consistent"]["peak"], rel=1e-5)
+    _, rows = csvfile.read_csv(out / "results" / "kalthoff_winkler.csv")
+    assert rows[0]["angle_deg"] == pytest.approx(res[("gaussian", 4e-3)]["angle_deg"], rel=1e-5)
+    assert (out / "results" / "dispersion.csv").is_file()
 
 
 def test_failed_run_is_reported_and_the_others_go_on(calls):

@@ -22,13 +22,16 @@ Command line (from the repository root):
 """
 
 import argparse
+import sys
 import time
 from pathlib import Path
 
 import numpy as np
 
 from bbpd import freund, metrics, readers
+from bbpd.csvfile import write_csv
 from bbpd.kernels import KERNELS
+from bbpd.provenance import machine
 from bbpd.plots import plot_k_histories
 from bbpd.runner import run_lammps
 
@@ -180,6 +183,17 @@ def tip_study(work, dx=0.05, kernel="gaussian", nprocs=1):
     return out
 
 
+def write_tips_csv(path, study, command):
+    """tip_study's rows as CSV, with the command and machine that made them."""
+    rows = [{"tipshift_dx": shift, "r1_dx": r1, "r2_dx": r2, "kmax_ratio": ratio,
+             "consistent_peak": res["consistent"]["peak"], "consistent_l2": res["consistent"]["l2"],
+             "paper_peak": res["paper"]["peak"], "paper_l2": res["paper"]["l2"],
+             "run_time_s": res["wall_time"]} for shift, r1, r2, ratio, res in study]
+    write_csv(path, rows, [f"made by: {command} on {time.strftime('%Y-%m-%d %H:%M')}",
+                           "Gaussian kernel, dx = 0.05 m, plane/stress",
+                           f"machine: {machine()}"])
+
+
 def figures(rows2, rows3, folder):
     folder = Path(folder)
     norm = SIGMA0 * np.sqrt(H)
@@ -206,12 +220,18 @@ def main(argv=None):
     ap.add_argument("--dx", type=float, nargs="+", default=[0.1, 0.05, 0.025])
     ap.add_argument("--table3", action="store_true")
     ap.add_argument("--tips", action="store_true", help="tip position / r1, r2 study")
+    ap.add_argument("--tips-csv", metavar="PATH",
+                    help="write the tip study to PATH as CSV (the README's table is generated "
+                         "from examples/mode1-semi-infinite/results/tips.csv)")
     ap.add_argument("--figures", help="folder for Fig. 9 and Fig. 10 PNGs")
     args = ap.parse_args(argv)
     rows2 = table2(args.work, args.dx, args.nprocs, args.model) if args.table2 else {}
     rows3 = table3(args.work, 0.05, args.nprocs, args.model) if args.table3 else {}
-    if args.tips:
-        tip_study(args.work, nprocs=args.nprocs)
+    if args.tips or args.tips_csv:
+        out = tip_study(args.work, nprocs=args.nprocs)
+        if args.tips_csv:
+            write_tips_csv(args.tips_csv, out, " ".join(["tools/python -m bbpd.benchmarks.mode1",
+                                                         *(argv or sys.argv[1:])]))
     if args.figures:
         figures(rows2, rows3, args.figures)
 

@@ -17,8 +17,9 @@ bbpd.benchmarks run and analyse each case.
 
 Modules: runs (which runs, as bbpd.jobs jobs), tables (results -> rows and CSV), prose (the
 paragraphs), figures, sections (one per benchmark), provenance (LAMMPS, plugin, git, machine),
-then bbpd.work_precision (built on these), and on top document (REPORT.md) and make
-(reproduce: the runs, then the document); __main__ is the command.
+then bbpd.work_precision (built on these), and on top document (REPORT.md), results (the
+numbers as CSV, for bbpd.claims) and make (reproduce: the runs, then the document); __main__ is
+the command.
 """
 # The public names of the building blocks, here so that "bbpd.report:run_job" (part of every
 # run's cache key) and the callers of bbpd.report.X keep working. document and make are not
@@ -29,7 +30,7 @@ from bbpd.kernels import COLORS, KERNELS
 
 from .figures import RESOLUTION_COLORS, _figure, plot_k
 from .prose import ANGLE_TIE_DEG, MODE2_FIELD_SHARE, NEGATIVE_VG, mode2_j_verdict, ranking
-from .provenance import git_revision, lammps_build, machine, plugin_version
+from bbpd.provenance import git_revision, lammps_build, machine, plugin_version
 from .runs import (BENCH, ESTIMATE_S, ESTIMATES_ENV, FREUND_PY, HEARTBEAT_S, KW_DX,
                    KW_GAUSSIAN_DX_FULL, METRICS_PY, MODE1_TABLE2_DX, MODE1_TABLE3_DX, MODE2_DX,
                    MODE2_DX_FULL, READERS_PY, Spec, _tools, benchmark_specs, build_of_run,

@@ -42,7 +42,8 @@ def write_report(out, specs, results, meta, start):
     lines = [
         "# BBPD: reproduction of Bouaraquia & Mabssout (2026)",
         "",
-        "Written by `tools/reproduce" + (" --full" if meta["full"] else "") + "` "
+        "Written by `tools/reproduce" + (" --full" if meta["full"] else " --finer"
+                                         if meta.get("finer") else "") + "` "
         f"on {meta['date']}. Every number below comes from the runs of this report.",
         "",
         f"- LAMMPS: {meta['lammps']} (`tools/lmp -h`); the runs' logs: "

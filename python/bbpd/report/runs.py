@@ -138,9 +138,11 @@ def make_spec(bench, kernel, dx, target, args, inputs, estimate):
     return Spec(bench, kernel, dx, job)
 
 
-def benchmark_specs(full=False):
+def benchmark_specs(full=False, study=None):
     """The benchmarks' runs of the report: default resolutions, or the paper's full ones with
-    full=True (make.job_list adds the work-precision runs)."""
+    full=True, with the loading study unless study=False (make.job_list adds the
+    work-precision runs)."""
+    study = full if study is None else study
     specs = []
     disp_in = bench_inputs("dispersion")
     for k in KERNELS:
@@ -171,11 +173,11 @@ def benchmark_specs(full=False):
                                {"kernel": k, "dx": dx, "nprocs": 1}, kw_in,
                                ESTIMATE_S.get(("kw", dx), 600.0)))
     prop_in = bench_inputs("mode1prop")
-    for dx in (MODE1PROP_DX_FULL if full else MODE1PROP_DX):
+    for dx in (MODE1PROP_DX_FULL if study else MODE1PROP_DX):
         for k in KERNELS:
             specs.append(make_spec("mode1prop", k, dx, "bbpd.benchmarks.mode1_propagation:run",
                                    {"kernel": k, "dx": dx, "nprocs": 1}, prop_in,
                                    ESTIMATE_S.get(("mode1prop", dx), 160.0)))
-    if full:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
+    if study:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
         specs += kalthoff_winkler_study.jobs()
     return specs

@@ -37,15 +37,25 @@ def git_revision():
         return "unknown"
 
 
+def vector_isa(flags):
+    """The widest vector instruction set of the CPU flags (what the plugin's -march=native
+    build uses: its force loops have AVX-512, AVX2 and portable forms)."""
+    return "AVX-512" if "avx512f" in flags else "AVX2" if "avx2" in flags else "no AVX2"
+
+
 def machine():
-    cpu = "unknown CPU"
+    """'CPU model (vector ISA), N cores, OS': timings depend on all three."""
+    cpu, flags = "unknown CPU", set()
     try:
         for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
+            if line.startswith("model name") and cpu == "unknown CPU":
                 cpu = line.split(":", 1)[1].strip()
-                break
+            if line.startswith("flags") and not flags:
+                flags = set(line.split(":", 1)[1].split())
     except OSError:
         pass
+    if flags:
+        cpu = f"{cpu} ({vector_isa(flags)})"
     osname = platform.platform()
     try:
         rel = dict(re.findall(r'^(\w+)="?([^"\n]*)"?', Path("/etc/os-release").read_text(), re.M))

@@ -1,0 +1,24 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The numbers of the READMEs and docs, generated from result files and checked against them.
+
+  tools/python -m bbpd.claims                  check: exit 1 and list every mismatch
+  tools/python -m bbpd.claims --write          regenerate the blocks from the data
+  tools/python -m bbpd.claims --from report/   take the result CSVs of a tools/reproduce call
+                                               as the new references, then regenerate
+
+Data: the reference CSVs committed under examples/<benchmark>/results/ (copies of what
+tools/reproduce writes to report/results/, whose first lines name the command, builds and
+CPU that made them) and doc/results/ (the quick start's step times).  Text: blocks between
+markers, ``<!-- bbpd:table NAME -->`` ... ``<!-- /bbpd:table -->`` (tables) and
+``<!-- bbpd:text NAME -->`` ... ``<!-- /bbpd:text -->`` (sentences) in Markdown,
+``.. bbpd:text NAME`` ... ``.. /bbpd:text`` in reStructuredText; every block is rendered from
+the data by a function of blocks.BLOCKS, so a block whose text and data disagree is reported.
+Outside the blocks, checks.py asks every speed ratio to name its CPU.
+
+Modules: markers (find and replace blocks), data (the reference CSVs), text (number formats,
+ranges, rankings), blocks (which block lives where, rendered by mode1, mode2, kw, readme),
+checks (check and write a file's text).
+"""
+from .checks import check, check_text, write
+
+__all__ = ["check", "check_text", "write"]

@@ -1,0 +1,31 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Which generated block lives in which file, and the function that renders it from the data."""
+from . import crack, kw, mode1, mode2, perf, readme
+
+README = "README.md"
+MODE1 = "examples/mode1-semi-infinite/README.md"
+MODE2 = "examples/mode2-central-crack/README.md"
+KW = "examples/kalthoff-winkler/README.md"
+JDOC = "doc/compute_bbpd_jintegral.rst"
+PROPAGATION = "examples/mode1-propagation/README.md"
+KINK = "examples/kink-mixed-mode/README.md"
+
+# file -> {block name: render(data) -> text}
+BLOCKS = {
+    README: {"benchmarks": readme.benchmarks, "quickstart-times": readme.quickstart_times,
+             "reproduce-runs": readme.reproduce_runs, "zen3-avx2-readme": perf.zen3_readme},
+    MODE1: {"mode1-table2": mode1.table2, "mode1-table3": mode1.table3,
+            "mode1-findings": mode1.findings, "mode1-jtable": mode1.jtable,
+            "mode1-jfindings": mode1.jfindings, "mode1-tips": mode1.tips_table,
+            "mode1-tips-text": mode1.tips_text,
+            "mode1-wrong-micromodulus": mode1.wrong_micromodulus},
+    MODE2: {"mode2-table": mode2.table, "mode2-findings": mode2.findings,
+            "mode2-symmetry": mode2.symmetry, "mode2-jtable": mode2.jtable,
+            "mode2-conclusion": mode2.conclusion, "mode2-paper-verdict": mode2.paper_verdict},
+    KW: {"kw-table": kw.table, "kw-initiation": kw.initiation, "kw-angle": kw.angle,
+         "kw-speed": kw.speed, "kw-far-edge": kw.far_edge, "kw-other-far": kw.other_far,
+         "kw-projectile": crack.projectile_table},
+    JDOC: {"jintegral-benchmarks": mode2.jintegral_doc},
+    PROPAGATION: {"mode1-propagation": crack.propagation_table},
+    KINK: {"kink": crack.kink_table, "kink-kw": crack.kink_kw_table},
+}

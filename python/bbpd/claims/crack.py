@@ -1,0 +1,38 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Blocks of the crack-growth examples (examples/mode1-propagation, examples/kink-mixed-mode,
+the projectile part of examples/kalthoff-winkler), each rendered by its benchmark module from
+the results it committed."""
+import json
+
+from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
+from bbpd.benchmarks import kink, kink_kalthoff_winkler, mode1_propagation
+from bbpd.jobs import ROOT
+
+PROPAGATION_CSV = ROOT / "examples" / "mode1-propagation" / "results" / "mode1_propagation.csv"
+PROJECTILE_CSV = ROOT / "examples" / "kalthoff-winkler" / "projectile.csv"
+MADE_BY = "# made by: "
+
+
+def _made_by(path):
+    """The command on the CSV's 'made by' line."""
+    for line in path.read_text().splitlines():
+        if line.startswith(MADE_BY):
+            return line[len(MADE_BY):]
+    return None
+
+
+def propagation_table(data):
+    return mode1_propagation.table_markdown(mode1_propagation.read_rows(PROPAGATION_CSV),
+                                            _made_by(PROPAGATION_CSV))
+
+
+def kink_table(data):
+    return kink.table(kink.read_rows(kink.RESULTS))
+
+
+def kink_kw_table(data):
+    return kink_kalthoff_winkler.table(json.loads(kink_kalthoff_winkler.SUMMARY.read_text()))
+
+
+def projectile_table(data):
+    return projectile.markdown(projectile.read_csv(PROJECTILE_CSV))

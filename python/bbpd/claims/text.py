@@ -1,0 +1,52 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Number formats of the generated text: ranges, rankings, tables."""
+from bbpd.kernels import KERNELS
+
+DASH = "–"
+
+
+def f(v, spec=".2f"):
+    return "-" if v is None else format(v, spec)
+
+
+def span(values, spec=".1f", unit=""):
+    """'a–b' over the values (rounded first), or 'a' when they round alike."""
+    vals = [v for v in values if v is not None]
+    lo, hi = format(min(vals), spec), format(max(vals), spec)
+    return (lo if lo == hi else f"{lo}{DASH}{hi}") + unit
+
+
+def name(kernel):
+    """A kernel as the prose writes it."""
+    return {"gaussian": "Gaussian"}.get(kernel, kernel)
+
+
+def ranking(values):
+    """'a < b < c' by value (None left out)."""
+    ok = sorted((v, k) for k, v in values.items() if v is not None)
+    return " < ".join(name(k) for _, k in ok)
+
+
+def sci(v):
+    """6e-06 -> 6e-6"""
+    mant, exp = f"{v:.0e}".split("e")
+    return f"{mant}e{int(exp)}"
+
+
+def by_kernel(rows):
+    return sorted(rows, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx_m"]))
+
+
+def md_table(header, rows):
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    return "\n".join(lines)
+
+
+def mm(dx):
+    return f"{dx * 1e3:g}"
+
+
+def joined(words):
+    words = list(words)
+    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]

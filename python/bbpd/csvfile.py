@@ -1,0 +1,52 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Result CSV files: '#' comment lines saying what made them (command, date, builds, machine),
+then a header and one row per run. The report writes them and the READMEs are generated from
+them (bbpd.claims)."""
+import csv
+import math
+from pathlib import Path
+
+import numpy as np
+
+
+def _num(v, digits=6):
+    """A cell: numbers to `digits` significant digits, None and NaN as empty."""
+    if v is None or (isinstance(v, float) and math.isnan(v)):
+        return ""
+    if isinstance(v, (bool, str)):
+        return str(v)
+    if isinstance(v, (int, np.integer)):
+        return str(int(v))
+    return f"{float(v):.{digits}g}"
+
+
+def write_csv(path, rows, comments=()):
+    columns = list(rows[0])
+    with open(path, "w", newline="") as fh:
+        for line in comments:
+            fh.write(f"# {line}\n")
+        w = csv.writer(fh, lineterminator="\n")
+        w.writerow(columns)
+        for r in rows:
+            w.writerow([_num(r.get(c)) for c in columns])
+
+
+def read_csv(path):
+    """(comment lines, [row dict of floats / strings / None])"""
+    comments, body = [], []
+    for line in Path(path).read_text().splitlines():
+        (comments if line.startswith("#") else body).append(line.lstrip("# ") if
+                                                            line.startswith("#") else line)
+    rows = []
+    for r in csv.DictReader(body):
+        rows.append({k: _value(v) for k, v in r.items()})
+    return comments, rows
+
+
+def _value(text):
+    if text == "":
+        return None
+    try:
+        return float(text)
+    except ValueError:
+        return text
