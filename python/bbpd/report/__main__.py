@@ -15,8 +15,10 @@ def main(argv=None):
     ap.add_argument("--full", action="store_true",
                     help="finer grids as well: Mode II 0.25 mm, Kalthoff-Winkler 0.5 mm, and "
                          "for the work-precision diagrams Mode I 0.0125 m and dispersion m = 20 "
-                         "(about 12 more minutes on 2 cores), and the Kalthoff-Winkler "
-                         "loading study (32 runs, about 1 h of single-core run time)")
+                         "(about 12 more minutes on 2 cores), the Kalthoff-Winkler "
+                         "loading study (32 runs, about 1 h of single-core run time), "
+                         "Kalthoff-Winkler Gaussian at 0.25 mm (one run of about 20 min) "
+                         "and the Mode-I propagation at 0.025 m")
     ap.add_argument("--finer", action="store_true",
                     help="the finer grids of the benchmarks' tables alone (Mode II 0.25 mm, "
                          "Kalthoff-Winkler Gaussian 0.5 mm: 4 runs more than the default), "

@@ -33,6 +33,7 @@ MODE2_DX = (1.0e-3, 0.5e-3)                 # m, three kernels (Fig. 12; the pap
 MODE2_DX_FULL = (1.0e-3, 0.5e-3, 0.25e-3)
 KW_DX = (2.0e-3, 1.0e-3)                    # m, three kernels (1 mm: the paper's, Figs. 14-15)
 KW_GAUSSIAN_DX_FULL = (0.5e-3,)             # m, Gaussian only
+KW_GAUSSIAN_DX_STUDY = (0.25e-3,)           # m, Gaussian only, --full: 320,000 atoms, one rank
 MODE1PROP_DX = (0.1, 0.05)                  # m, three kernels (crack growth)
 MODE1PROP_DX_FULL = (0.1, 0.05, 0.025)
 
@@ -42,7 +43,7 @@ ESTIMATE_S = {
     "dispersion": 6.0,
     ("mode1", 0.1): 2.0, ("mode1", 0.05): 6.0, ("mode1", 0.025): 60.0,
     ("mode2", 1.0e-3): 2.0, ("mode2", 0.5e-3): 8.0, ("mode2", 0.25e-3): 30.0,
-    ("kw", 2.0e-3): 8.0, ("kw", 1.0e-3): 75.0, ("kw", 0.5e-3): 200.0,
+    ("kw", 2.0e-3): 8.0, ("kw", 1.0e-3): 75.0, ("kw", 0.5e-3): 200.0, ("kw", 0.25e-3): 1200.0,
     ("mode1prop", 0.1): 3.0, ("mode1prop", 0.05): 15.0, ("mode1prop", 0.025): 160.0,
 }
 
@@ -168,6 +169,8 @@ def benchmark_specs(full=False, study=None):
     kw = [(k, dx) for dx in KW_DX for k in KERNELS]
     if full:
         kw += [("gaussian", dx) for dx in KW_GAUSSIAN_DX_FULL]
+    if study:    # where the Gaussian angle converges (examples/kalthoff-winkler/README.md)
+        kw += [("gaussian", dx) for dx in KW_GAUSSIAN_DX_STUDY]
     for k, dx in kw:
         specs.append(make_spec("kw", k, dx, "bbpd.benchmarks.kalthoff_winkler:run",
                                {"kernel": k, "dx": dx, "nprocs": 1}, kw_in,
