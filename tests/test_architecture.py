@@ -179,7 +179,7 @@ PYTHON_LAYERS = [
     {"bbpd", "bbpd.inprocess", "bbpd.jobs", "bbpd.kernels", "bbpd.readers", "bbpd.reference",
      "bbpd.runner", "bbpd.freund", "bbpd.metrics", "bbpd.dsif", "bbpd.plots",
      "bbpd.crack_tip", "bbpd.crack_motion", "bbpd.kink", "bbpd.crack_path",
-     "bbpd.provenance", "bbpd.csvfile"},
+     "bbpd.provenance", "bbpd.csvfile", "bbpd.markers"},
     {"bbpd.benchmarks", "bbpd.benchmarks.dispersion", "bbpd.benchmarks.kalthoff_winkler",
      "bbpd.benchmarks.kalthoff_winkler_study", "bbpd.benchmarks.mode1", "bbpd.benchmarks.mode2",
      "bbpd.benchmarks.stability", "bbpd.benchmarks.mode1_propagation",
@@ -190,7 +190,7 @@ PYTHON_LAYERS = [
     {"bbpd.work_precision"},
     {"bbpd.report.document", "bbpd.report.make", "bbpd.report.__main__"},
     {"bbpd.claims", "bbpd.claims.__main__", "bbpd.claims.blocks", "bbpd.claims.checks",
-     "bbpd.claims.data", "bbpd.claims.kw", "bbpd.claims.markers", "bbpd.claims.mode1",
+     "bbpd.claims.data", "bbpd.claims.kw", "bbpd.claims.mode1",
      "bbpd.claims.mode2", "bbpd.claims.readme", "bbpd.claims.text", "bbpd.claims.times",
      "bbpd.claims.crack", "bbpd.claims.perf"},
 ]

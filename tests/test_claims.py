@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from bbpd import claims
-from bbpd.claims import markers
+from bbpd import markers
 from bbpd.claims.blocks import BLOCKS, JDOC, KW, MODE1, MODE2, README
 from bbpd.claims.data import OTHERS, REFERENCES, STEP_TIMES, Data, import_report
 from bbpd.csvfile import read_csv, write_csv

@@ -36,6 +36,7 @@ from pathlib import Path
 
 import numpy as np
 
+from bbpd import markers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.runner import run_lammps
@@ -327,12 +328,9 @@ def markdown(rows):
 
 
 def update_readme(path, text, name="kw-projectile"):
-    """Replace what lies between the README's markers of this table."""
-    src = Path(path).read_text()
-    begin, end = f"<!-- bbpd:table {name} -->", "<!-- /bbpd:table -->"
-    i = src.index(begin) + len(begin)
-    j = src.index(end, i)
-    Path(path).write_text(src[:i] + "\n" + text + "\n" + src[j:])
+    """Replace the body of the README's block called name (bbpd.markers)."""
+    path = Path(path)
+    path.write_text(markers.replace_block(path, path.read_text(), name, text))
 
 
 def main(argv=None):

@@ -37,7 +37,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import crack_motion, crack_tip, freund, readers
+from bbpd import crack_motion, crack_tip, freund, markers, readers
 from bbpd.benchmarks import mode1
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.runner import run_lammps
@@ -244,12 +244,9 @@ def table_markdown(rows, command=None):
 
 
 def update_readme(readme, text, name=TABLE_NAME):
-    """Replace the lines between <!-- bbpd:table name --> and <!-- /bbpd:table -->."""
+    """Replace the body of the README's block called name (bbpd.markers)."""
     readme = Path(readme)
-    src = readme.read_text()
-    start, end = f"<!-- bbpd:table {name} -->", "<!-- /bbpd:table -->"
-    i, j = src.index(start) + len(start), src.index(end, src.index(start))
-    readme.write_text(src[:i] + "\n" + text + "\n" + src[j:])
+    readme.write_text(markers.replace_block(readme, readme.read_text(), name, text))
 
 
 FIGURE_NAMES = ("crack_extension.png", "crack_speed.png", "work_precision.png")

@@ -15,8 +15,9 @@ markers, ``<!-- bbpd:table NAME -->`` ... ``<!-- /bbpd:table -->`` (tables) and
 the data by a function of blocks.BLOCKS, so a block whose text and data disagree is reported.
 Outside the blocks, checks.py asks every speed ratio to name its CPU.
 
-Modules: markers (find and replace blocks), data (the reference CSVs), text (number formats,
-ranges, rankings), blocks (which block lives where, rendered by mode1, mode2, kw, readme),
+Modules: bbpd.markers (find and replace blocks, below the benchmarks that write them too),
+data (the reference CSVs), text (number formats, ranges, rankings), blocks (which block lives
+where, rendered by mode1, mode2, kw, readme, crack, perf),
 checks (check and write a file's text).
 """
 from .checks import check, check_text, write

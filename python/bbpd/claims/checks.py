@@ -4,9 +4,9 @@ CPU), and write the blocks."""
 import re
 import textwrap
 
+from bbpd import markers
 from bbpd.jobs import ROOT
 
-from . import markers
 from .blocks import BLOCKS
 from .data import Data
 
