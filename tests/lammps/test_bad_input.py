@@ -8,6 +8,7 @@ import re
 
 import pytest
 
+from bbpd.jobs import ROOT
 from bbpd.runner import run_lammps
 
 # A valid 2D plate (10 x 10 atoms, 1 mm) and a valid 3D block (6 x 6 x 6 atoms, 1 mm):
@@ -335,6 +336,13 @@ def run_case(tmp_path, text, nprocs=1):
 @pytest.mark.parametrize("text,expected", params())
 def test_bad_input_stops_with_error(tmp_path, text, expected):
     check_error_exit(run_case(tmp_path, text), expected)
+
+
+def test_readme_counts_these_cases():
+    """README's 'Verified against theory' list states how many bad-input cases there are"""
+    readme = (ROOT / "README.md").read_text()
+    stated = re.search(r"(\d+) bad-input cases each end in a LAMMPS `ERROR:`", readme)
+    assert stated and int(stated.group(1)) == len(params())
 
 
 # errors raised on rank 0 only (file reading) or collectively (settings, init) under MPI:
