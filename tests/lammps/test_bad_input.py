@@ -342,7 +342,7 @@ def test_readme_counts_these_cases():
     """README's 'Verified against theory' list states how many bad-input cases there are"""
     readme = (ROOT / "README.md").read_text()
     stated = re.search(r"(\d+) bad-input cases each end in a LAMMPS `ERROR:`", readme)
-    assert stated and int(stated.group(1)) == len(params())
+    assert stated and int(stated.group(1)) == len(list(params()))
 
 
 # errors raised on rank 0 only (file reading) or collectively (settings, init) under MPI:
