@@ -11,6 +11,7 @@ import pytest
 
 from bbpd.runner import ROOT
 
+import test_crack_tip as ct
 import test_mpi_restart as mr  # the scenes of those tests (tests/lammps is on pytest's pythonpath)
 import test_reliability as rel
 
@@ -88,3 +89,10 @@ def test_scenes_two_ranks(sanitized, tmp_path, scene):
 @pytest.mark.slow
 def test_periodic_breaking(sanitized, lmp, tmp_path):
     clean(lmp(rel.straddling_pairs(tmp_path), nprocs=2, timeout=TIMEOUT).output)
+
+
+def test_crack_tip_two_ranks(sanitized, lmp, tmp_path):
+    """compute bbpd/crack/tip gathers the crack atoms of every rank and searches them while the
+    crack grows"""
+    clean(lmp(ct.scene(dump=False), nprocs=2, timeout=TIMEOUT).output)
+    assert (tmp_path / "tip.dat").is_file()
