@@ -134,23 +134,7 @@ inline bool row_force_stretch_avx2(const double *xx, int i, const int *bj, const
     const __m256d elong = lanes.template add<decltype(half)::value, true>(m, dx, dy, dz, xi0, coef);
     stretch(m, true, elong, xi0, _mm256_mask_i32gather_pd(vsmin_i, smin, j1, m, 8));
   };
-  using H0 = std::integral_constant<int, 0>;
-  using H1 = std::integral_constant<int, 1>;
-  int k = 0;
-  for (; k + 8 <= n; k += 8) {
-    full(H0(), k);
-    full(H1(), k + 4);
-  }
-  if (k + 4 <= n) {
-    full(H0(), k);
-    k += 4;
-  }
-  if (k < n) {
-    if ((k / 4) & 1)
-      tail(H1(), k);
-    else
-      tail(H0(), k);
-  }
+  for_each_group4(n, full, tail);
   const __m128d m2 = _mm_min_pd(_mm256_castpd256_pd128(vmin), _mm256_extractf128_pd(vmin, 1));
   *smin_row = std::min(_mm_cvtsd_f64(m2), _mm_cvtsd_f64(_mm_unpackhi_pd(m2, m2)));
   lanes.store(ax, ay, az, tally);

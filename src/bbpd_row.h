@@ -565,6 +565,30 @@ template <int FRACTURE, int EV> struct Avx2Lanes {
   }
 };
 
+/* A row of n bonds in groups of 4 for the AVX2 kernels: full(half, k) takes bonds k..k+3 and
+   tail(half, k) the last n - k < 4, masked; groups alternate between the two 4-wide halves of
+   the 8-wide accumulators (half 0, 1, 0, ...), so the sums match the AVX-512 kernel's lanes. */
+template <class Full, class Tail> inline void for_each_group4(int n, Full &&full, Tail &&tail)
+{
+  using H0 = std::integral_constant<int, 0>;
+  using H1 = std::integral_constant<int, 1>;
+  int k = 0;
+  for (; k + 8 <= n; k += 8) {
+    full(H0(), k);
+    full(H1(), k + 4);
+  }
+  if (k + 4 <= n) {
+    full(H0(), k);
+    k += 4;
+  }
+  if (k < n) {
+    if ((k / 4) & 1)
+      tail(H1(), k);
+    else
+      tail(H0(), k);
+  }
+}
+
 /* the same as row_force_avx512 with two 4-wide halves: lanes 0-3 and 4-7 */
 template <int FRACTURE, int EV, class Values, class Idx>
 inline bool row_force_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
@@ -597,23 +621,7 @@ inline bool row_force_avx2(const double *xx, int i, const Idx *bj, const Values 
     load_values(vals, m, m32, k, j1, xi0, coef);
     lanes.template add<decltype(half)::value, true>(m, dx, dy, dz, xi0, coef);
   };
-  using H0 = std::integral_constant<int, 0>;
-  using H1 = std::integral_constant<int, 1>;
-  int k = 0;
-  for (; k + 8 <= n; k += 8) {
-    full(H0(), k);
-    full(H1(), k + 4);
-  }
-  if (k + 4 <= n) {
-    full(H0(), k);
-    k += 4;
-  }
-  if (k < n) {
-    if ((k / 4) & 1)
-      tail(H1(), k);
-    else
-      tail(H0(), k);
-  }
+  for_each_group4(n, full, tail);
   if (FRACTURE && _mm256_movemask_pd(lanes.broken)) return true;
   lanes.store(ax, ay, az, tally);
   return false;
