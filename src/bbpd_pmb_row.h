@@ -34,9 +34,10 @@ inline bool row_stretch_portable(const double *xx, int i, const int *bj, const d
     const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
     double elong = std::sqrt(dx * dx + dy * dy + dz * dz) - bxi0[k];
     if (PMB && std::fabs(elong) < BBPD::PMB::NEAR_ZERO) elong = 0.0;
-    const double s = elong / bxi0[k];
+    const double s = SillingAskariRule<CLAMP>::stretch(elong, bxi0[k]);
     snew = std::min(snew, s);
-    broken |= s + margin > BBPD::PMB::critical_stretch(s00, alpha, smin[i], smin[j], CLAMP);
+    broken |= SillingAskariRule<CLAMP>::past_critical(
+        s, SillingAskariRule<CLAMP>::critical_stretch(s00, alpha, smin[i], smin[j]), margin);
   }
   *smin_row = snew;
   return broken;
@@ -55,27 +56,27 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const int *bj, con
 {
   const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
                 zi = _mm512_set1_pd(xx[3 * i + 2]);
+  using Rule = SillingAskariRule<CLAMP>;
   const __m512d vs00 = _mm512_set1_pd(s00), valpha = _mm512_set1_pd(alpha),
                 vsmin_i = _mm512_set1_pd(smin[i]), zero = _mm512_setzero_pd(),
                 near_zero = _mm512_set1_pd(BBPD::PMB::NEAR_ZERO), one = _mm512_set1_pd(1.0),
                 vmargin = _mm512_set1_pd(margin);
-  RowLanes<EV> lanes;
+  RowLanes<EV, CriticalStretchBond> lanes;
   __m512d vmin = _mm512_set1_pd(std::numeric_limits<double>::max());
   __mmask8 broken = 0;
   for (int k = 0; k < n; k += LANES) {
     const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
     const __m256i j1 = load_partners(bj, m, i, k);
-    const BondLanes b = bond_lanes(xx, xi, yi, zi, j1, m, vals, k);
+    const BondLanes b = bond_lanes<CriticalStretchBond>(xx, xi, yi, zi, j1, m, vals, k);
     lanes.add(m, b);    // the force: as row_force_avx512
     // the stretch: as row_stretch_portable
     __m512d es = b.elong;
     if (PMB) es = _mm512_mask_mov_pd(es, _mm512_cmp_pd_mask(_mm512_abs_pd(es), near_zero, _CMP_LT_OQ), zero);
-    const __m512d s = _mm512_div_pd(es, _mm512_mask_mov_pd(one, m, b.xi0));
+    const __m512d s = Rule::stretch(Vec8(es), Vec8(_mm512_mask_mov_pd(one, m, b.xi0))).v;
     vmin = _mm512_mask_min_pd(vmin, m, s, vmin);
-    __m512d smax = _mm512_max_pd(_mm512_mask_i32gather_pd(vsmin_i, m, j1, smin, 8), vsmin_i);
-    if (CLAMP) smax = _mm512_min_pd(smax, zero);
-    const __m512d s0 = _mm512_sub_pd(vs00, _mm512_mul_pd(valpha, smax));
-    broken |= _mm512_mask_cmp_pd_mask(m, _mm512_add_pd(s, vmargin), s0, _CMP_GT_OQ);
+    const Vec8 s0 = Rule::critical_stretch(Vec8(vs00), Vec8(valpha), Vec8(vsmin_i),
+                                           Vec8(_mm512_mask_i32gather_pd(vsmin_i, m, j1, smin, 8)));
+    broken |= m & Rule::past_critical(Vec8(s), s0, Vec8(vmargin));
   }
   *smin_row = _mm512_reduce_min_pd(vmin);
   lanes.store(ax, ay, az, tally);
@@ -99,18 +100,17 @@ inline bool row_force_stretch_avx2(const double *xx, int i, const int *bj, const
                 vsmin_i = _mm256_set1_pd(smin[i]), zero = _mm256_setzero_pd(),
                 near_zero = _mm256_set1_pd(BBPD::PMB::NEAR_ZERO), one = _mm256_set1_pd(1.0),
                 vmargin = _mm256_set1_pd(margin), sign = _mm256_set1_pd(-0.0);
-  Avx2Lanes<0, EV> lanes(0.0, 0.0);
+  using Rule = SillingAskariRule<CLAMP>;
+  Avx2Lanes<0, EV, CriticalStretchBond> lanes(0.0, 0.0);
   __m256d vmin = _mm256_set1_pd(std::numeric_limits<double>::max()), broken = zero;
   // the stretch of 4 lanes (m: in the row) with the partners' smallest stretches smin_j
   auto stretch = [&](__m256d m, bool masked, __m256d elong, __m256d xi0, __m256d smin_j) {
     __m256d es = elong;
     if (PMB) es = _mm256_blendv_pd(es, zero, _mm256_cmp_pd(_mm256_andnot_pd(sign, es), near_zero, _CMP_LT_OQ));
-    const __m256d s = _mm256_div_pd(es, masked ? _mm256_blendv_pd(one, xi0, m) : xi0);
+    const __m256d s = Rule::stretch(Vec4(es), Vec4(masked ? _mm256_blendv_pd(one, xi0, m) : xi0)).v;
     vmin = masked ? _mm256_blendv_pd(vmin, _mm256_min_pd(s, vmin), m) : _mm256_min_pd(s, vmin);
-    __m256d smax = _mm256_max_pd(smin_j, vsmin_i);
-    if (CLAMP) smax = _mm256_min_pd(smax, zero);
-    const __m256d s0 = _mm256_sub_pd(vs00, _mm256_mul_pd(valpha, smax));
-    broken = _mm256_or_pd(broken, _mm256_and_pd(m, _mm256_cmp_pd(_mm256_add_pd(s, vmargin), s0, _CMP_GT_OQ)));
+    const Vec4 s0 = Rule::critical_stretch(Vec4(vs00), Vec4(valpha), Vec4(vsmin_i), Vec4(smin_j));
+    broken = _mm256_or_pd(broken, _mm256_and_pd(m, Rule::past_critical(Vec4(s), s0, Vec4(vmargin)).v));
   };
   auto full = [&](auto half, int k) {
     const int j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};

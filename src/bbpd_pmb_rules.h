@@ -10,6 +10,8 @@
 #ifndef LMP_BBPD_PMB_RULES_H
 #define LMP_BBPD_PMB_RULES_H
 
+#include "bbpd_bond_model.h"
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -55,8 +57,8 @@ namespace PMB {
      a body in pure tension keeps the calibrated s00. */
   inline double critical_stretch(double s00, double alpha, double smin_i, double smin_j, bool clamp)
   {
-    const double smin = std::max(smin_i, smin_j);
-    return s00 - alpha * (clamp ? std::min(0.0, smin) : smin);
+    return clamp ? SillingAskariRule<true>::critical_stretch(s00, alpha, smin_i, smin_j)
+                 : SillingAskariRule<false>::critical_stretch(s00, alpha, smin_i, smin_j);
   }
 
 }    // namespace PMB

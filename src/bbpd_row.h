@@ -6,14 +6,18 @@
    Bond k of a row goes to lane k % LANES; lanes are summed in one fixed order
    (lane_sum). The AVX-512 and AVX2 kernels compute each bond with the same
    operations in the same order as the portable loop (row_force_portable; no FMA
-   contraction), so all three give identical bits.
+   contraction), so all three give identical bits. What a bond does (elongation, force,
+   energy, virial, breaking) comes from the Model parameter (bbpd_bond_model.h), written
+   once for the three widths.
 ------------------------------------------------------------------------- */
 
 #ifndef BBPD_ROW_H
 #define BBPD_ROW_H
 
+#include "bbpd_bond_model.h"
 #include "bbpd_bond_table.h"
 #include "bbpd_partner_index.h"
+#include "bbpd_simd.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,16 +26,6 @@
 #include <limits>
 #include <type_traits>
 #include <vector>
-
-#if defined(__AVX512F__) && defined(__AVX512VL__)
-#define BBPD_AVX512
-#define BBPD_SIMD
-#include <immintrin.h>
-#elif defined(__AVX2__)
-#define BBPD_AVX2
-#define BBPD_SIMD
-#include <immintrin.h>
-#endif
 
 namespace BBPD {
 
@@ -177,7 +171,8 @@ inline void lane_sum(const double *ax, const double *ay, const double *az, doubl
    stretch s0_of(j) come from callables (cached or recomputed, one s0 or per type). With
    FRACTURE it returns true if a bond is past s0 or within margin of it, and the lanes are then
    incomplete. */
-template <int FRACTURE, int EV, class Idx, class Xi0, class Coef, class S0>
+template <int FRACTURE, int EV, class Model = CriticalStretchBond, class Idx, class Xi0,
+          class Coef, class S0>
 inline bool row_force_portable(const double *xx, int i, const Idx *bj, int n, Xi0 xi0_of,
                                Coef coef_of, S0 s0_of, double margin, double *ax, double *ay,
                                double *az, RowTally *tally)
@@ -191,22 +186,21 @@ inline bool row_force_portable(const double *xx, int i, const Idx *bj, int n, Xi
     const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
     const double xi0 = xi0_of(k);
     const double coef = coef_of(k, xi0);
-    const double elong = r - xi0;
-    if (FRACTURE) broken |= elong + margin > s0_of(j) * xi0;
-    const double fbond = coef * elong / r;
+    const double elong = Model::elongation(r, xi0);
+    if (FRACTURE) broken |= Model::past_critical(elong, xi0, s0_of(j), margin);
+    const double fbond = Model::force_per_length(coef, elong, r);
     ax[l] += fbond * dx;
     ay[l] += fbond * dy;
     az[l] += fbond * dz;
     if (EV) {
-      // half of the bond's micropotential (eq. 6) and of its virial (x_i - x_j) (x) f_i, with
-      // f_i = fbond (x_j - x_i): the other end tallies the rest
-      tally->eng[l] += 0.25 * coef * elong * elong;
-      tally->vir[0][l] -= 0.5 * fbond * dx * dx;
-      tally->vir[1][l] -= 0.5 * fbond * dy * dy;
-      tally->vir[2][l] -= 0.5 * fbond * dz * dz;
-      tally->vir[3][l] -= 0.5 * fbond * dx * dy;
-      tally->vir[4][l] -= 0.5 * fbond * dx * dz;
-      tally->vir[5][l] -= 0.5 * fbond * dy * dz;
+      // the row's shares of the bond's energy and virial: the other end tallies the rest
+      tally->eng[l] += Model::energy_share(coef, elong);
+      tally->vir[0][l] -= Model::virial_share(fbond, dx, dx);
+      tally->vir[1][l] -= Model::virial_share(fbond, dy, dy);
+      tally->vir[2][l] -= Model::virial_share(fbond, dz, dz);
+      tally->vir[3][l] -= Model::virial_share(fbond, dx, dy);
+      tally->vir[4][l] -= Model::virial_share(fbond, dx, dz);
+      tally->vir[5][l] -= Model::virial_share(fbond, dy, dz);
     }
   }
   return FRACTURE && broken;
@@ -292,7 +286,7 @@ inline __m256i load_partners(const PartnerOffset *bj, __mmask8 m, int i, int k)
 struct BondLanes {
   __m512d dx, dy, dz, r, xi0, coef, elong;
 };
-template <class Values>
+template <class Model, class Values>
 inline BondLanes bond_lanes(const double *xx, __m512d xi, __m512d yi, __m512d zi, __m256i j1,
                             __mmask8 m, const Values &vals, int k)
 {
@@ -305,33 +299,31 @@ inline BondLanes bond_lanes(const double *xx, __m512d xi, __m512d yi, __m512d zi
                                     _mm512_mul_pd(b.dz, b.dz));
   b.r = _mm512_sqrt_pd(rsq);
   load_values(vals, m, k, j1, b.xi0, b.coef);
-  b.elong = _mm512_sub_pd(b.r, b.xi0);
+  b.elong = Model::elongation(Vec8(b.r), Vec8(b.xi0)).v;
   return b;
 }
 
 /* the force lanes of a row and, with EV, its energy and virial lanes (RowTally) */
-template <int EV> struct RowLanes {
+template <int EV, class Model> struct RowLanes {
   __m512d fx = _mm512_setzero_pd(), fy = _mm512_setzero_pd(), fz = _mm512_setzero_pd();
   __m512d eacc = _mm512_setzero_pd();
   __m512d vacc[6] = {_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd(),
                      _mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()};
   void add(__mmask8 m, const BondLanes &b)
   {
-    const __m512d fbond = _mm512_maskz_div_pd(m, _mm512_mul_pd(b.coef, b.elong), b.r);
+    // lanes off in m hold no bond (and may divide 0 by 0): masked out of every sum
+    const __m512d fbond = Model::force_per_length(Vec8(b.coef), Vec8(b.elong), Vec8(b.r)).v;
     fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fbond, b.dx));
     fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fbond, b.dy));
     fz = _mm512_mask_add_pd(fz, m, fz, _mm512_mul_pd(fbond, b.dz));
     if (EV) {
-      // as row_force_portable: a quarter of coef elong^2, and half of -fbond d (x) d
-      const __m512d quarter = _mm512_set1_pd(0.25), half = _mm512_set1_pd(0.5);
-      eacc = _mm512_mask_add_pd(
-          eacc, m, eacc, _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(quarter, b.coef), b.elong), b.elong));
-      const __m512d hf = _mm512_mul_pd(half, fbond);
-      const __m512d d[3] = {b.dx, b.dy, b.dz};
+      // as row_force_portable
+      eacc = _mm512_mask_add_pd(eacc, m, eacc, Model::energy_share(Vec8(b.coef), Vec8(b.elong)).v);
+      const Vec8 d[3] = {b.dx, b.dy, b.dz};
       const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
       for (int c = 0; c < 6; c++)
         vacc[c] = _mm512_mask_sub_pd(vacc[c], m, vacc[c],
-                                     _mm512_mul_pd(_mm512_mul_pd(hf, d[pa[c]]), d[pb[c]]));
+                                     Model::virial_share(Vec8(fbond), d[pa[c]], d[pb[c]]).v);
     }
   }
   void store(double *ax, double *ay, double *az, RowTally *tally) const
@@ -349,7 +341,7 @@ template <int EV> struct RowLanes {
 /* lanes of the force density on atom i from n bonds (partner bj, reference length and
    coefficient from vals); with FRACTURE returns true if a bond is past s0 or within
    margin of it (elong + margin > s0 xi0; margin is 0 except in periodic boxes) */
-template <int FRACTURE, int EV, class Values, class Idx>
+template <int FRACTURE, int EV, class Model = CriticalStretchBond, class Values, class Idx>
 inline bool row_force_avx512(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                              double s0, double margin, double *ax, double *ay, double *az,
                              RowTally *tally)
@@ -357,14 +349,12 @@ inline bool row_force_avx512(const double *xx, int i, const Idx *bj, const Value
   const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
                 zi = _mm512_set1_pd(xx[3 * i + 2]), vs0 = _mm512_set1_pd(s0),
                 vmargin = _mm512_set1_pd(margin);
-  RowLanes<EV> lanes;
+  RowLanes<EV, Model> lanes;
   __mmask8 broken = 0;
   for (int k = 0; k < n; k += LANES) {
     const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
-    const BondLanes b = bond_lanes(xx, xi, yi, zi, load_partners(bj, m, i, k), m, vals, k);
-    if (FRACTURE)
-      broken |= _mm512_mask_cmp_pd_mask(m, _mm512_add_pd(b.elong, vmargin),
-                                        _mm512_mul_pd(vs0, b.xi0), _CMP_GT_OQ);
+    const BondLanes b = bond_lanes<Model>(xx, xi, yi, zi, load_partners(bj, m, i, k), m, vals, k);
+    if (FRACTURE) broken |= m & Model::past_critical(Vec8(b.elong), Vec8(b.xi0), Vec8(vs0), Vec8(vmargin));
     lanes.add(m, b);
   }
   if (FRACTURE && broken) return true;
@@ -503,7 +493,7 @@ inline void load_values_full(const RecomputedValues<CoefFn, UNIFORM> &v, const I
 
 /* the force lanes (and with EV the energy and virial lanes) of a row in two 4-wide halves,
    lanes 0-3 and 4-7, and the breaking test: the operations of row_force_portable */
-template <int FRACTURE, int EV> struct Avx2Lanes {
+template <int FRACTURE, int EV, class Model> struct Avx2Lanes {
   __m256d fx[2], fy[2], fz[2], eacc[2], vacc[6][2];
   __m256d broken = _mm256_setzero_pd();
   __m256d vs0, vmargin;
@@ -526,25 +516,22 @@ template <int FRACTURE, int EV> struct Avx2Lanes {
     const __m256d rsq =
         _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
     const __m256d r = _mm256_sqrt_pd(rsq);
-    const __m256d elong = _mm256_sub_pd(r, xi0);
+    const __m256d elong = Model::elongation(Vec4(r), Vec4(xi0)).v;
     if (FRACTURE) {
-      __m256d past = _mm256_cmp_pd(_mm256_add_pd(elong, vmargin), _mm256_mul_pd(vs0, xi0), _CMP_GT_OQ);
+      __m256d past = Model::past_critical(Vec4(elong), Vec4(xi0), Vec4(vs0), Vec4(vmargin)).v;
       if (MASKED) past = _mm256_and_pd(m, past);
       broken = _mm256_or_pd(broken, past);
     }
-    const __m256d fbond = _mm256_div_pd(_mm256_mul_pd(coef, elong), r);
+    const __m256d fbond = Model::force_per_length(Vec4(coef), Vec4(elong), Vec4(r)).v;
     fx[H] = masked_add<MASKED>(fx[H], _mm256_mul_pd(fbond, dx), m);
     fy[H] = masked_add<MASKED>(fy[H], _mm256_mul_pd(fbond, dy), m);
     fz[H] = masked_add<MASKED>(fz[H], _mm256_mul_pd(fbond, dz), m);
     if (EV) {
-      const __m256d quarter = _mm256_set1_pd(0.25), half = _mm256_set1_pd(0.5);
-      const __m256d e = _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(quarter, coef), elong), elong);
-      eacc[H] = masked_add<MASKED>(eacc[H], e, m);
-      const __m256d hf = _mm256_mul_pd(half, fbond);
-      const __m256d d[3] = {dx, dy, dz};
+      eacc[H] = masked_add<MASKED>(eacc[H], Model::energy_share(Vec4(coef), Vec4(elong)).v, m);
+      const Vec4 d[3] = {dx, dy, dz};
       const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
       for (int c = 0; c < 6; c++) {
-        const __m256d v = _mm256_mul_pd(_mm256_mul_pd(hf, d[pa[c]]), d[pb[c]]);
+        const __m256d v = Model::virial_share(Vec4(fbond), d[pa[c]], d[pb[c]]).v;
         vacc[c][H] = MASKED ? _mm256_blendv_pd(vacc[c][H], _mm256_sub_pd(vacc[c][H], v), m)
                             : _mm256_sub_pd(vacc[c][H], v);
       }
@@ -590,14 +577,14 @@ template <class Full, class Tail> inline void for_each_group4(int n, Full &&full
 }
 
 /* the same as row_force_avx512 with two 4-wide halves: lanes 0-3 and 4-7 */
-template <int FRACTURE, int EV, class Values, class Idx>
+template <int FRACTURE, int EV, class Model = CriticalStretchBond, class Values, class Idx>
 inline bool row_force_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                            double s0, double margin, double *ax, double *ay, double *az,
                            RowTally *tally)
 {
   const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
                 zi = _mm256_set1_pd(xx[3 * i + 2]), all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-  Avx2Lanes<FRACTURE, EV> lanes(s0, margin);
+  Avx2Lanes<FRACTURE, EV, Model> lanes(s0, margin);
   // bonds k..k+3, every lane in the row, into half H
   auto full = [&](auto half, int k) {
     const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),

@@ -519,7 +519,8 @@ double FixBBPDBonds::intact_volume(int i) const
   return v;
 }
 
-/* break bond k of local atom i: flag its partner tag, then close the gap in the row */
+/* break bond k of local atom i: flag its partner tag, then close the gap in the row (vintact is
+   summed again by remove_bonds_if, once per row) */
 void FixBBPDBonds::remove_bond(int i, int k)
 {
   const tagint t = atom->tag[partner_of(i, k)];
@@ -543,8 +544,6 @@ void FixBBPDBonds::remove_bond(int i, int k)
       bcoef[m] = bcoef[m + 1];
     }
   nbond[i]--;
-  // summed again rather than decremented: the same bits as after the next reneighboring
-  vintact[i] = intact_volume(i);
 }
 
 /* the same operations as refresh_cache(), so compact storage gives the same bits */

@@ -117,7 +117,24 @@ class FixBBPDBonds : public Fix {
   int uniform_type;
   double uniform_vfrac;
 
-  void remove_bond(int i, int k);
+  /* the one way bonds break (the pair styles' breaking rules, fix bbpd/notch): remove every
+     bond k of local atom i for which broken(k) is true, in row order, for good; returns how
+     many. broken(k) sees the row as it is then: the bonds before k are the kept ones. */
+  template <class Broken> int remove_bonds_if(int i, Broken &&broken)
+  {
+    int k = bond_start[i], removed = 0;
+    while (k < bond_start[i] + nbond[i]) {
+      if (broken(k)) {
+        remove_bond(i, k);
+        removed++;
+      } else {
+        k++;
+      }
+    }
+    // summed again rather than decremented: the same bits as after the next reneighboring
+    if (removed) vintact[i] = intact_volume(i);
+    return removed;
+  }
   double xi0_of(int i, int k) const;                // reference length of bond k of atom i
   double coef_of(int i, int k, double xi0) const;    // its coefficient
   bigint count_broken() const;
@@ -160,6 +177,7 @@ class FixBBPDBonds : public Fix {
   void widen_partners(int i, int m);
   void store_bond_values(int m, double xi, double coef);
 
+  void remove_bond(int i, int k);
   void build_families();
   void release_family_list();
   void refresh_cache();

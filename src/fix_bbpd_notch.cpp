@@ -154,18 +154,11 @@ void FixBBPDNotch::setup_pre_force(int)
     }
     return false;
   };
-  for (int i = 0; i < atom->nlocal; i++) {
-    int k = bonds->bond_start[i];
-    while (k < bonds->bond_start[i] + bonds->nbond[i]) {
+  for (int i = 0; i < atom->nlocal; i++)
+    n += bonds->remove_bonds_if(i, [&](int k) {
       const int j = bonds->partner_of(i, k);
-      if (((mask[i] & groupbit) || (mask[j] & groupbit)) && bond_cut(i, j)) {
-        bonds->remove_bond(i, k);
-        n++;
-      } else {
-        k++;
-      }
-    }
-  }
+      return ((mask[i] & groupbit) || (mask[j] & groupbit)) && bond_cut(i, j);
+    });
   bigint all = 0;
   MPI_Allreduce(&n, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (comm->me == 0 && all > 0)

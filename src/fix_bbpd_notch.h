@@ -11,7 +11,7 @@
    cuts that row from the negative side instead of leaking.
 
    The cut is made at every run setup (setup_pre_force: the families exist and
-   their cache is fresh), through the interface of fix bbpd/bonds (remove_bond);
+   their cache is fresh), through the interface of fix bbpd/bonds (remove_bonds_if);
    cutting is idempotent.
 ------------------------------------------------------------------------- */
 

@@ -567,15 +567,10 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
       } else if (row_force<EVFLAG, 1, MULTI>(i, fi, s0row, acc, cache)) {
         // a bond of the row is (near) past its critical stretch: remove such bonds
         // (irreversibly, in row order), then sum the row again
-        int k = bonds->bond_start[i];
-        while (k < bonds->bond_start[i] + bonds->nbond[i]) {
+        bonds->remove_bonds_if(i, [&](int k) {
           const int j = bonds->partner_of(i, k);
-          const double s0 = MULTI ? s0row[type[j]] : s0_single;
-          if (past_critical(i, j, bonds->xi0_of(i, k), s0))
-            bonds->remove_bond(i, k);
-          else
-            k++;
-        }
+          return past_critical(i, j, bonds->xi0_of(i, k), MULTI ? s0row[type[j]] : s0_single);
+        });
         row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc, cache);
       }
       add_row_force(i, fi, bad);

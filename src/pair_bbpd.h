@@ -8,7 +8,7 @@
    s0 in init_style() (calibrate()) and then hands the storage the bond law
    with the calibrated values (by value), the storage policy and the run
    limits; init_one() only reports the cutoffs. It evaluates the
-   forces over the storage's rows and breaks bonds through remove_bond(); the
+   forces over the storage's rows and breaks bonds through remove_bonds_if(); the
    storage never calls back (doc/architecture.rst).
 ------------------------------------------------------------------------- */
 
@@ -16,6 +16,7 @@
 #define LMP_PAIR_BBPD_H
 
 #include "bbpd_bond_law.h"
+#include "bbpd_bond_model.h"
 #include "bbpd_bond_storage.h"
 #include "bbpd_kernel.h"
 #include "pair.h"
@@ -70,6 +71,8 @@ class PairBBPD : public Pair {
   int report_due;    // setup() was called: report once the setup's notches are cut
   void report();
   BBPD::BondLaw law;    // what the bond fix builds and caches with, filled in init_style()
+  // what one bond does (elongation, force, energy, breaking): every loop of the style uses it
+  using BondModel = BBPD::CriticalStretchBond;
   void calibrate();     // c0 and s0 of every type pair (init_style)
   BBPD::RunLimits run_limits() const
   {

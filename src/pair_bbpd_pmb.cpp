@@ -209,9 +209,9 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
       // stretch of bond k at current length r (peri/pmb zeroes round-off elongations)
       auto stretch_at = [&](int k, double r) {
         const double xi0 = bonds->xi0_of(i, k);
-        double elong = r - xi0;
+        double elong = BondModel::elongation(r, xi0);
         if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
-        return elong / xi0;
+        return BBPD::SillingAskariRule<false>::stretch(elong, xi0);
       };
       auto stretch_of = [&](int k) {
         const int j = bj[k];
@@ -267,23 +267,19 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
           for (int k = beg; k < beg + n; k++) {
             const double s = stretch_of(k);
             snew = std::min(snew, s);
-            broken |= s + margin > s0_of(k);
+            broken |= BBPD::SillingAskariRule<false>::past_critical(s, s0_of(k), margin);
           }
         }
         smin_new[i] = n > 0 ? snew : NO_BOND_STRETCH;
         double fb[3] = {0.0, 0.0, 0.0};
-        if (broken) {
-          int k = beg;
-          while (k < beg + bonds->nbond[i]) {
-            if (!(breaking_stretch(k) > s0_of(k))) {
-              k++;
-              continue;
-            }
+        if (broken)
+          bonds->remove_bonds_if(i, [&](int k) {
+            if (!BBPD::SillingAskariRule<false>::past_critical(breaking_stretch(k), s0_of(k), 0.0))
+              return false;
             // peri/pmb applies the force of a bond in the step it breaks; bbpd drops it at once
             if (pmb) broken_bond_force<EVFLAG>(i, k, fb, acc);
-            bonds->remove_bond(i, k);
-          }
-        }
+            return true;
+          });
         if (pmb)
           for (int m = 0; m < 3; m++) fbroken[i][m] = fb[m];
       }
@@ -311,15 +307,16 @@ template <int EVFLAG> void PairBBPD::broken_bond_force(int i, int k, double *fb,
   const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
   const double xi0 = bonds->xi0_of(i, k);
   const double coef = bonds->coef_of(i, k, xi0);
-  const double elong = r - xi0;
-  const double fbond = coef * elong / r;
+  const double elong = BondModel::elongation(r, xi0);
+  const double fbond = BondModel::force_per_length(coef, elong, r);
   fb[0] += fbond * dx;
   fb[1] += fbond * dy;
   fb[2] += fbond * dz;
   if (EVFLAG) {
-    const double eng = 0.25 * coef * elong * elong;
-    const double vir[6] = {-0.5 * fbond * dx * dx, -0.5 * fbond * dy * dy, -0.5 * fbond * dz * dz,
-                           -0.5 * fbond * dx * dy, -0.5 * fbond * dx * dz, -0.5 * fbond * dy * dz};
+    const double eng = BondModel::energy_share(coef, elong);
+    const double vir[6] = {-BondModel::virial_share(fbond, dx, dx), -BondModel::virial_share(fbond, dy, dy),
+                           -BondModel::virial_share(fbond, dz, dz), -BondModel::virial_share(fbond, dx, dy),
+                           -BondModel::virial_share(fbond, dx, dz), -BondModel::virial_share(fbond, dy, dz)};
     acc[0] += eng;
     if (eflag_atom) eatom[i] += eng;
     for (int m = 0; m < 6; m++) {

@@ -111,10 +111,10 @@ bool PairBBPD::row_force(int i, const Idx *bj, double *fi, const double *s0row, 
   if (!MULTI && !compact) {
     RowTally tally;
     const bool broken = classed
-        ? row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, by_class, n, s0_single, break_margin, ax,
-                                           ay, az, &tally)
-        : row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, per_bond, n, s0_single, break_margin, ax,
-                                           ay, az, &tally);
+        ? row_force_simd<FRACTURE, EVFLAG, BondModel>(xx, i, bj, by_class, n, s0_single,
+                                                      break_margin, ax, ay, az, &tally)
+        : row_force_simd<FRACTURE, EVFLAG, BondModel>(xx, i, bj, per_bond, n, s0_single,
+                                                      break_margin, ax, ay, az, &tally);
     if (broken) return true;
     lane_sum(ax, ay, az, fi);
     if (EVFLAG) tally_lanes(i, tally, acc);
@@ -128,10 +128,10 @@ bool PairBBPD::row_force(int i, const Idx *bj, double *fi, const double *s0row, 
         recomputed.x0, i, atom->vfrac, type, &cache, coef_fn, bonds->uniform_type,
         bonds->uniform_vfrac};
     const bool broken = uniform
-        ? row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, recomputed_uniform, n, s0_single,
-                                           break_margin, ax, ay, az, &tally)
-        : row_force_simd<FRACTURE, EVFLAG>(xx, i, bj, recomputed, n, s0_single, break_margin,
-                                           ax, ay, az, &tally);
+        ? row_force_simd<FRACTURE, EVFLAG, BondModel>(xx, i, bj, recomputed_uniform, n, s0_single,
+                                                      break_margin, ax, ay, az, &tally)
+        : row_force_simd<FRACTURE, EVFLAG, BondModel>(xx, i, bj, recomputed, n, s0_single,
+                                                      break_margin, ax, ay, az, &tally);
     if (broken) return true;
     lane_sum(ax, ay, az, fi);
     if (EVFLAG) tally_lanes(i, tally, acc);
@@ -151,8 +151,8 @@ bool PairBBPD::row_force(int i, const Idx *bj, double *fi, const double *s0row, 
                    : per_bond.coef_of(k);
   };
   auto s0_of = [&](int j) { return MULTI ? s0row[type[j]] : s0_single; };
-  const bool broken = BBPD::row_force_portable<FRACTURE, EVFLAG>(xx, i, bj, n, xi0_of, coef_of, s0_of,
-                                                                 break_margin, ax, ay, az, &lanes);
+  const bool broken = BBPD::row_force_portable<FRACTURE, EVFLAG, BondModel>(
+      xx, i, bj, n, xi0_of, coef_of, s0_of, break_margin, ax, ay, az, &lanes);
 
   if (broken) return true;
   lane_sum(ax, ay, az, fi);
@@ -214,7 +214,7 @@ void PairBBPD::finish_eval(int bad, bool evflag_on, const double *totals)
 /* is bond i-j past its critical stretch? Decided from breaking_length(), the same at both ends */
 bool PairBBPD::past_critical(int i, int j, double xi0, double s0) const
 {
-  return breaking_length(i, j) - xi0 > s0 * xi0;
+  return BondModel::past_critical(BondModel::elongation(breaking_length(i, j), xi0), xi0, s0, 0.0);
 }
 
 /* the current length of bond i-j from which breaking is decided: in a periodic box from the
