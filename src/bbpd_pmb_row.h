@@ -21,8 +21,8 @@
 
 namespace BBPD {
 
-template <bool PMB, bool CLAMP>
-inline bool row_stretch_portable(const double *xx, int i, const int *bj, const double *bxi0, int n,
+template <bool PMB, bool CLAMP, class Idx, class Values>
+inline bool row_stretch_portable(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                                  const double *smin, double s00, double alpha, double margin,
                                  double *smin_row)
 {
@@ -30,11 +30,12 @@ inline bool row_stretch_portable(const double *xx, int i, const int *bj, const d
   double snew = std::numeric_limits<double>::max();
   bool broken = false;
   for (int k = 0; k < n; k++) {
-    const int j = bj[k];
+    const int j = partner_index(bj, i, k);
     const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
-    double elong = std::sqrt(dx * dx + dy * dy + dz * dz) - bxi0[k];
+    const double xi0 = vals.xi0_at(k, j);
+    double elong = CriticalStretchBond::elongation(std::sqrt(dx * dx + dy * dy + dz * dz), xi0);
     if (PMB && std::fabs(elong) < BBPD::PMB::NEAR_ZERO) elong = 0.0;
-    const double s = SillingAskariRule<CLAMP>::stretch(elong, bxi0[k]);
+    const double s = SillingAskariRule<CLAMP>::stretch(elong, xi0);
     snew = std::min(snew, s);
     broken |= SillingAskariRule<CLAMP>::past_critical(
         s, SillingAskariRule<CLAMP>::critical_stretch(s00, alpha, smin[i], smin[j]), margin);
@@ -48,8 +49,8 @@ inline bool row_stretch_portable(const double *xx, int i, const int *bj, const d
    lengths and coefficients from vals, as row_force_avx512 takes them): the force lanes and
    tallies are those of row_force_avx512, bit for bit (same operations in the same order), the
    smallest stretch and the breaking flag those of row_stretch_portable */
-template <int EV, bool PMB, bool CLAMP, class Values>
-inline bool row_force_stretch_avx512(const double *xx, int i, const int *bj, const Values &vals,
+template <int EV, bool PMB, bool CLAMP, class Values, class Idx>
+inline bool row_force_stretch_avx512(const double *xx, int i, const Idx *bj, const Values &vals,
                                      int n, const double *smin, double s00, double alpha,
                                      double margin, double *smin_row, double *ax, double *ay,
                                      double *az, RowTally *tally)
@@ -88,8 +89,8 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const int *bj, con
 #ifdef BBPD_AVX2
 /* row_force_stretch_avx512 in two 4-wide halves, as row_force_avx2 (bbpd_row.h) computes the
    force: the same bits (the smallest stretch is a minimum, exact in any order) */
-template <int EV, bool PMB, bool CLAMP, class Values>
-inline bool row_force_stretch_avx2(const double *xx, int i, const int *bj, const Values &vals,
+template <int EV, bool PMB, bool CLAMP, class Values, class Idx>
+inline bool row_force_stretch_avx2(const double *xx, int i, const Idx *bj, const Values &vals,
                                    int n, const double *smin, double s00, double alpha,
                                    double margin, double *smin_row, double *ax, double *ay,
                                    double *az, RowTally *tally)
@@ -113,7 +114,8 @@ inline bool row_force_stretch_avx2(const double *xx, int i, const int *bj, const
     broken = _mm256_or_pd(broken, _mm256_and_pd(m, Rule::past_critical(Vec4(s), s0, Vec4(vmargin)).v));
   };
   auto full = [&](auto half, int k) {
-    const int j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};
+    const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
+                      partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
     __m256d x, y, z, xi0, coef;
     load_positions(xx, j, x, y, z);
     load_values_full(vals, bj, i, k, xi0, coef);
@@ -143,15 +145,6 @@ inline bool row_force_stretch_avx2(const double *xx, int i, const int *bj, const
 #define row_force_stretch_simd BBPD::row_force_stretch_avx2
 #endif
 
-/* the stretch pass without the force (the force then comes from row_force); bxi0 = null
-   (compact storage) is handled by the caller */
-template <bool PMB, bool CLAMP>
-inline bool row_stretch(const double *xx, int i, const int *bj, const double *bxi0, int n,
-                        const double *smin, double s00, double alpha, double margin,
-                        double *smin_row)
-{
-  return row_stretch_portable<PMB, CLAMP>(xx, i, bj, bxi0, n, smin, s00, alpha, margin, smin_row);
-}
 
 }    // namespace BBPD
 

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -517,6 +518,14 @@ double FixBBPDBonds::intact_volume(int i) const
     v += law.partner_volume(atom->type[i], atom->type[j], xi0_of(i, k), atom->vfrac[j]);
   }
   return v;
+}
+
+/* a new generation of the compact coefficients, distinct across every bond fix of the process:
+   a thread's cache (bbpd_bond_values.h) may have served another pair style */
+unsigned FixBBPDBonds::next_coef_epoch()
+{
+  static std::atomic<unsigned> epochs{0};
+  return ++epochs;
 }
 
 /* break bond k of local atom i: flag its partner tag, then close the gap in the row (vintact is

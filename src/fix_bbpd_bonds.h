@@ -45,6 +45,7 @@
 #include "bbpd_bond_law.h"
 #include "bbpd_bond_storage.h"
 #include "bbpd_bond_table.h"
+#include "bbpd_bond_values.h"
 #include "bbpd_partner_index.h"
 #include "fix.h"
 
@@ -91,6 +92,7 @@ class FixBBPDBonds : public Fix {
     policy = s;
     offsets_allowed = offsets;
     have_rules = true;
+    coef_epoch = next_coef_epoch();    // coefficients recomputed with the old law are stale
   }
   void set_limits(const BBPD::RunLimits &r) { limits = r; }
   BBPD::BondStorage storage() const { return policy; }
@@ -116,6 +118,35 @@ class FixBBPDBonds : public Fix {
   // (uniform_type 0 if not)
   int uniform_type;
   double uniform_vfrac;
+
+  /* Row i of the cache as the bond loops read it, whatever the layout: returns
+     fn(partners, values), the partners as 2-byte offsets or 4-byte indices
+     (bbpd_partner_index.h), the reference lengths and coefficients by class, per bond, or
+     (compact storage) recomputed from x0 with this fix's bond law through 'cache', the calling
+     thread's (bbpd_bond_values.h): the same doubles in every layout. */
+  template <class Fn> auto visit_row(int i, BBPD::CoefCache &cache, Fn &&fn) const
+  {
+    const int beg = bond_start[i];
+    auto with_values = [&](const auto *row_partners) {
+      if (bclass)
+        return fn(row_partners, BBPD::ClassValues{bclass + beg, classes.xi0.data(), classes.coef.data()});
+      if (bxi0) return fn(row_partners, BBPD::PerBondValues{bxi0 + beg, bcoef + beg});
+      const int itype = atom->type[i];
+      auto coef_fn = [this, itype](int jtype, double xi0, double vj) {
+        return law.coefficient(itype, jtype, xi0, vj);
+      };
+      cache.start(coef_epoch);
+      const int t_uniform = uniform_type * BBPD::CoefCache::TYPE_STRIDE + uniform_type;
+      const double *x0 = atom->x0 ? atom->x0[0] : nullptr;
+      // every atom in reach of one type and volume, and so every cache entry: lengths alone key it
+      if (uniform_type > 0 && cache.holds_only(uniform_vfrac, t_uniform))
+        return fn(row_partners, BBPD::RecomputedValues<decltype(coef_fn), true>{
+                                    x0, i, atom->vfrac, atom->type, &cache, coef_fn, uniform_type, uniform_vfrac});
+      return fn(row_partners, BBPD::RecomputedValues<decltype(coef_fn)>{
+                                  x0, i, atom->vfrac, atom->type, &cache, coef_fn, uniform_type, uniform_vfrac});
+    };
+    return bdelta ? with_values(bdelta + beg) : with_values(bj + beg);
+  }
 
   /* the one way bonds break (the pair styles' breaking rules, fix bbpd/notch): remove every
      bond k of local atom i for which broken(k) is true, in row order, for good; returns how
@@ -178,6 +209,8 @@ class FixBBPDBonds : public Fix {
   void store_bond_values(int m, double xi, double coef);
 
   void remove_bond(int i, int k);
+  unsigned coef_epoch = 0;    // of the law the compact coefficients are computed with
+  static unsigned next_coef_epoch();
   void build_families();
   void release_family_list();
   void refresh_cache();

@@ -30,7 +30,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
@@ -53,9 +52,6 @@ static constexpr double CONTACT_STIFFNESS_FACTOR = 15.0;
 // margin of the quick bond-failure test in periodic boxes, in units of DBL_EPSILON x the largest
 // coordinate: covers the round-off of x + L and of the minimum image (2 ulps each) per component
 static constexpr double BREAK_MARGIN_ULPS = 16.0;
-// settings generations of all bbpd pair styles: a thread's coefficient memo (bond/storage
-// compact) belongs to one
-static std::atomic<unsigned> memo_epochs{0};
 
 /* ---------------------------------------------------------------------- */
 
@@ -366,9 +362,6 @@ void PairBBPD::init_style()
                    style, horizon[i][j], i, j, spacing,
                    spacing_user ? "given by the spacing keyword"
                                 : "derived from the atom volumes: check 'set ... volume' and thickness/area");
-
-  // coefficients memoised with the settings before this init are stale
-  memo_epoch = ++memo_epochs;
 
   bonds = dynamic_cast<FixBBPDBonds *>(modify->get_fix_by_id(BONDS_FIX_ID));
   if (!bonds)

@@ -56,7 +56,6 @@ class PairBBPD : public Pair {
   double dt_safety;  // warn when timestep > dt_safety * stable bound
   int contact;       // short-range repulsion between non-bonded close atoms
   BBPD::BondStorage storage;    // what the bond cache keeps per bond (bond/storage keyword)
-  unsigned memo_epoch = 0;    // settings generation of the compact-storage coefficient memo
   double contact_factor;    // contact distance = contact_factor * spacing
 
  protected:
@@ -95,9 +94,6 @@ class PairBBPD : public Pair {
   // the row force of atom i; cache: the calling thread's coefficient cache (compact storage)
   template <int EVFLAG, int FRACTURE, int MULTI>
   bool row_force(int i, double *fi, const double *s0row, double *acc, BBPD::CoefCache *cache);
-  template <int EVFLAG, int FRACTURE, int MULTI, class Idx>
-  bool row_force(int i, const Idx *bj, double *fi, const double *s0row, double *acc,
-                 BBPD::CoefCache *cache);
   static BBPD::CoefCache *thread_coef_cache();
   void coeff_from_file(const char *file, const char *material, double &E, double &Gc);
 

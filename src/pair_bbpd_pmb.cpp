@@ -49,11 +49,6 @@ using BBPD::lane_sum;
 // most break_margin / xi0, plus the rounding of the division: twice that bounds both
 static constexpr double STRETCH_MARGIN_FACTOR = 2.0;
 
-#ifdef BBPD_SIMD
-static constexpr bool FUSED_KERNEL = true;    // force and stretch of a row in one pass
-#else
-static constexpr bool FUSED_KERNEL = false;
-#endif
 
 /* ----------------------------------------------------------------------
    compat pmb: pair_coeff I J c delta s00 alpha (peri/pmb's four numbers)
@@ -151,7 +146,6 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
   }
   const bool pmb = compat_pmb;
   const bool clamp = !pmb;
-  const double *bxi0 = bonds->bxi0;    // null unless reference lengths are kept per bond
   // one s00 and alpha for every type pair: no per-bond lookups
   bool multi = false;
   const double s00_one = critical_stretch[1][1], alpha_one = alpha[1][1];
@@ -179,32 +173,12 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
   {
     double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     BBPD::CoefCache *cache = thread_coef_cache();
-    // a row's reference lengths and coefficients, looked up from their classes (the fused
-    // SIMD kernel reads them itself)
-    std::vector<double> class_xi0, class_coef;
-    if (bonds->bclass && (multi || !FUSED_KERNEL)) {
-      class_xi0.resize(bonds->maxpartner);
-      class_coef.resize(bonds->maxpartner);
-    }
 #if defined(_OPENMP)
 #pragma omp for schedule(static, 512)
 #endif
     for (int i = 0; i < nlocal; i++) {
       const int itype = type[i];
-      const int beg = bonds->bond_start[i];
-      const int *bj = bonds->bj;    // indices, never offsets, in this loop (init_style)
-      // reference lengths and coefficients of the row (null with bond/storage compact)
-      const double *row_xi0 = bxi0 ? bxi0 + beg : nullptr;
-      const double *row_coef = bxi0 ? bonds->bcoef + beg : nullptr;
-      if (bonds->bclass && (multi || !FUSED_KERNEL)) {
-        for (int k = 0; k < bonds->nbond[i]; k++) {
-          class_xi0[k] = bonds->classes.xi0[bonds->bclass[beg + k]];
-          class_coef[k] = bonds->classes.coef[bonds->bclass[beg + k]];
-        }
-        row_xi0 = class_xi0.data();
-        row_coef = class_coef.data();
-      }
-      const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
+      const double *xi = atom->x[i];
       const double smin_i = smin[i];
       // stretch of bond k at current length r (peri/pmb zeroes round-off elongations)
       auto stretch_at = [&](int k, double r) {
@@ -214,16 +188,16 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         return BBPD::SillingAskariRule<false>::stretch(elong, xi0);
       };
       auto stretch_of = [&](int k) {
-        const int j = bj[k];
-        const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
+        const double *xj = atom->x[bonds->partner_of(i, k)];
+        const double dx = xj[0] - xi[0], dy = xj[1] - xi[1], dz = xj[2] - xi[2];
         return stretch_at(k, std::sqrt(dx * dx + dy * dy + dz * dz));
       };
       // the stretch that decides breaking: the same at both ends of the bond
       auto breaking_stretch = [&](int k) {
-        return canonical ? stretch_at(k, breaking_length(i, bj[k])) : stretch_of(k);
+        return canonical ? stretch_at(k, breaking_length(i, bonds->partner_of(i, k))) : stretch_of(k);
       };
       auto s0_of = [&](int k) {
-        const int j = bj[k];
+        const int j = bonds->partner_of(i, k);
         if (!multi) return BBPD::PMB::critical_stretch(s00_one, alpha_one, smin_i, smin[j], clamp);
         return BBPD::PMB::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
                                            smin_i, smin[j], clamp);
@@ -236,35 +210,33 @@ template <int EVFLAG> void PairBBPD::eval_alpha()
         double snew = std::numeric_limits<double>::max();
         bool broken = false;
         const int n = bonds->nbond[i];
+        if (!multi) {
+          // the row in whatever layout the storage keeps it (FixBBPDBonds::visit_row)
+          broken = bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
 #ifdef BBPD_SIMD
-        if (!multi && (bonds->bclass || row_xi0)) {
-          double ax[LANES], ay[LANES], az[LANES];
-          RowTally tally;
-          // the reference lengths and coefficients by class or per bond: same kernel
-          auto fused = [&](const auto &vals) {
-            return pmb ? row_force_stretch_simd<EVFLAG, true, false>(
-                             xx, i, bj + beg, vals, n, smin, s00_one, alpha_one, margin, &snew,
-                             ax, ay, az, &tally)
-                       : row_force_stretch_simd<EVFLAG, false, true>(
-                             xx, i, bj + beg, vals, n, smin, s00_one, alpha_one, margin, &snew,
-                             ax, ay, az, &tally);
-          };
-          broken = bonds->bclass
-              ? fused(BBPD::ClassValues{bonds->bclass + beg, bonds->classes.xi0.data(),
-                                        bonds->classes.coef.data()})
-              : fused(BBPD::PerBondValues{row_xi0, row_coef});
-          if (!broken) {
-            lane_sum(ax, ay, az, fi);
-            if (EVFLAG) tally_lanes(i, tally, acc);
-            done = true;
-          }
-        } else
+            // force and stretch in one pass
+            double ax[LANES], ay[LANES], az[LANES];
+            RowTally tally;
+            const bool past = pmb
+                ? row_force_stretch_simd<EVFLAG, true, false>(xx, i, bj, vals, n, smin, s00_one,
+                                                              alpha_one, margin, &snew, ax, ay, az, &tally)
+                : row_force_stretch_simd<EVFLAG, false, true>(xx, i, bj, vals, n, smin, s00_one,
+                                                              alpha_one, margin, &snew, ax, ay, az, &tally);
+            if (!past) {
+              lane_sum(ax, ay, az, fi);
+              if (EVFLAG) tally_lanes(i, tally, acc);
+              done = true;
+            }
+            return past;
+#else
+            return pmb ? BBPD::row_stretch_portable<true, false>(xx, i, bj, vals, n, smin, s00_one,
+                                                                 alpha_one, margin, &snew)
+                       : BBPD::row_stretch_portable<false, true>(xx, i, bj, vals, n, smin, s00_one,
+                                                                 alpha_one, margin, &snew);
 #endif
-        if (!multi && row_xi0) {
-          broken = pmb ? BBPD::row_stretch<true, false>(xx, i, bj + beg, row_xi0, n, smin, s00_one, alpha_one, margin, &snew)
-                       : BBPD::row_stretch<false, true>(xx, i, bj + beg, row_xi0, n, smin, s00_one, alpha_one, margin, &snew);
+          });
         } else {
-          for (int k = beg; k < beg + n; k++) {
+          for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + n; k++) {
             const double s = stretch_of(k);
             snew = std::min(snew, s);
             broken |= BBPD::SillingAskariRule<false>::past_critical(s, s0_of(k), margin);

@@ -53,6 +53,14 @@ void PairBBPD::nonfinite_error(int i)
   error->one(FLERR, "Non-finite force on atom {} at step {} ({})", tag[i], update->ntimestep, cause);
 }
 
+/* compact storage: a cache per thread of the coefficients (bbpd_bond_values.h), taken once per
+   thread and force evaluation (a thread-local variable of a plugin costs a call at every access) */
+BBPD::CoefCache *PairBBPD::thread_coef_cache()
+{
+  static thread_local BBPD::CoefCache cache;
+  return &cache;
+}
+
 /* Force density on atom i from its intact bonds (eq. 21). The sum runs in
    LANES fixed partial sums (bond k goes to lane k % LANES) combined in a fixed
    order, in the SIMD (AVX-512, AVX2) and portable paths alike: the result depends
@@ -63,97 +71,24 @@ template <int EVFLAG, int FRACTURE, int MULTI>
 bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc,
                          BBPD::CoefCache *cache)
 {
-  const int beg = bonds->bond_start[i];
-  // partners as offsets from i or as indices (bbpd_partner_index.h): the same atoms
-  return bonds->bdelta
-      ? row_force<EVFLAG, FRACTURE, MULTI>(i, bonds->bdelta + beg, fi, s0row, acc, cache)
-      : row_force<EVFLAG, FRACTURE, MULTI>(i, bonds->bj + beg, fi, s0row, acc, cache);
-}
-
-/* compact storage: a cache per thread of the coefficients (bbpd_row.h), taken once per thread
-   and force evaluation (a thread-local variable of a plugin costs a call at every access) */
-BBPD::CoefCache *PairBBPD::thread_coef_cache()
-{
-  static thread_local BBPD::CoefCache cache;
-  return &cache;
-}
-
-template <int EVFLAG, int FRACTURE, int MULTI, class Idx>
-bool PairBBPD::row_force(int i, const Idx *bj, double *fi, const double *s0row, double *acc,
-                         BBPD::CoefCache *cache_ptr)
-{
   const double *xx = atom->x[0];
-  const int beg = bonds->bond_start[i], n = bonds->nbond[i];
-  // reference lengths and coefficients: by class (the default), per bond (a rank with too many
-  // distinct pairs for the class table), or recomputed (bond/storage compact)
-  const BBPD::ClassValues by_class = {bonds->bclass ? bonds->bclass + beg : nullptr,
-                                      bonds->classes.xi0.data(), bonds->classes.coef.data()};
-  const BBPD::PerBondValues per_bond = {bonds->bxi0 ? bonds->bxi0 + beg : nullptr,
-                                        bonds->bcoef ? bonds->bcoef + beg : nullptr};
-  const bool classed = by_class.cls != nullptr;
-  const bool compact = !classed && per_bond.xi0 == nullptr;
-  double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
-  // compact: the thread's cache of the coefficients, computed from the bond law
-  BBPD::CoefCache &cache = *cache_ptr;
   const int *type = atom->type;
-  auto coef_fn = [this, type, i](int jtype, double xi0, double vj) {
-    return law.coefficient(type[i], jtype, xi0, vj);
-  };
-  if (compact) cache.start(memo_epoch);
-  const int t_uniform = bonds->uniform_type * BBPD::CoefCache::TYPE_STRIDE + bonds->uniform_type;
-  const bool uniform = compact && bonds->uniform_type > 0 &&
-      cache.holds_only(bonds->uniform_vfrac, t_uniform);
-  const BBPD::RecomputedValues<decltype(coef_fn)> recomputed = {
-      atom->x0 ? atom->x0[0] : nullptr, i, atom->vfrac, type, &cache, coef_fn,
-      bonds->uniform_type, bonds->uniform_vfrac};
-
+  const int n = bonds->nbond[i];
+  double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
+  RowTally lanes = {};    // energy and virial in the same lanes in every kernel
+  // the row in whatever layout the storage keeps it (FixBBPDBonds::visit_row)
+  const bool broken = bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
 #ifdef BBPD_SIMD
-  if (!MULTI && !compact) {
-    RowTally tally;
-    const bool broken = classed
-        ? row_force_simd<FRACTURE, EVFLAG, BondModel>(xx, i, bj, by_class, n, s0_single,
-                                                      break_margin, ax, ay, az, &tally)
-        : row_force_simd<FRACTURE, EVFLAG, BondModel>(xx, i, bj, per_bond, n, s0_single,
-                                                      break_margin, ax, ay, az, &tally);
-    if (broken) return true;
-    lane_sum(ax, ay, az, fi);
-    if (EVFLAG) tally_lanes(i, tally, acc);
-    return false;
-  }
+    if (!MULTI)
+      return row_force_simd<FRACTURE, EVFLAG, BondModel>(xx, i, bj, vals, n, s0_single,
+                                                         break_margin, ax, ay, az, &lanes);
 #endif
-#ifdef BBPD_SIMD
-  if (!MULTI && compact) {
-    RowTally tally;
-    const BBPD::RecomputedValues<decltype(coef_fn), true> recomputed_uniform = {
-        recomputed.x0, i, atom->vfrac, type, &cache, coef_fn, bonds->uniform_type,
-        bonds->uniform_vfrac};
-    const bool broken = uniform
-        ? row_force_simd<FRACTURE, EVFLAG, BondModel>(xx, i, bj, recomputed_uniform, n, s0_single,
-                                                      break_margin, ax, ay, az, &tally)
-        : row_force_simd<FRACTURE, EVFLAG, BondModel>(xx, i, bj, recomputed, n, s0_single,
-                                                      break_margin, ax, ay, az, &tally);
-    if (broken) return true;
-    lane_sum(ax, ay, az, fi);
-    if (EVFLAG) tally_lanes(i, tally, acc);
-    return false;
-  }
-#endif
-
-  RowTally lanes = {};    // energy and virial in the same lanes as the SIMD kernels
-  auto xi0_of = [&](int k) {
-    return classed ? by_class.xi0_of(k)
-        : compact  ? recomputed.xi0_of(BBPD::partner_index(bj, i, k))
-                   : per_bond.xi0_of(k);
-  };
-  auto coef_of = [&](int k, double xi0) {
-    return classed ? by_class.coef_of(k)
-        : compact  ? recomputed.coef_of(BBPD::partner_index(bj, i, k))
-                   : per_bond.coef_of(k);
-  };
-  auto s0_of = [&](int j) { return MULTI ? s0row[type[j]] : s0_single; };
-  const bool broken = BBPD::row_force_portable<FRACTURE, EVFLAG, BondModel>(
-      xx, i, bj, n, xi0_of, coef_of, s0_of, break_margin, ax, ay, az, &lanes);
-
+    auto xi0_of = [&](int k) { return vals.xi0_at(k, BBPD::partner_index(bj, i, k)); };
+    auto coef_of = [&](int k, double) { return vals.coef_at(k, BBPD::partner_index(bj, i, k)); };
+    auto s0_of = [&](int j) { return MULTI ? s0row[type[j]] : s0_single; };
+    return BBPD::row_force_portable<FRACTURE, EVFLAG, BondModel>(
+        xx, i, bj, n, xi0_of, coef_of, s0_of, break_margin, ax, ay, az, &lanes);
+  });
   if (broken) return true;
   lane_sum(ax, ay, az, fi);
   if (EVFLAG) tally_lanes(i, lanes, acc);
