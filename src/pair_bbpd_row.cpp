@@ -75,7 +75,7 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc,
   const int *type = atom->type;
   const int n = bonds->nbond[i];
   double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
-  RowTally lanes = {};    // energy and virial in the same lanes in every kernel
+  RowTally lanes;    // energy and virial in the same lanes in every kernel (filled with EVFLAG)
   // the row in whatever layout the storage keeps it (FixBBPDBonds::visit_row)
   const bool broken = bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
 #ifdef BBPD_SIMD
@@ -86,6 +86,7 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc,
     auto xi0_of = [&](int k) { return vals.xi0_at(k, BBPD::partner_index(bj, i, k)); };
     auto coef_of = [&](int k, double) { return vals.coef_at(k, BBPD::partner_index(bj, i, k)); };
     auto s0_of = [&](int j) { return MULTI ? s0row[type[j]] : s0_single; };
+    if (EVFLAG) lanes = {};    // the portable loop adds to the lanes, the SIMD kernels store them
     return BBPD::row_force_portable<FRACTURE, EVFLAG, BondModel>(
         xx, i, bj, n, xi0_of, coef_of, s0_of, break_margin, ax, ay, az, &lanes);
   });
