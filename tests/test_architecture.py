@@ -90,6 +90,50 @@ def circles(graph):
     return found
 
 
+# the arithmetic of one bond, as the loops wrote it before the bond model (bbpd_bond_model.h)
+# held it: force c elong / r, energy 1/4 c elong^2, the test elong + margin > s0 xi0, their
+# intrinsics forms, and the Silling-Askari s00 - alpha smax
+BOND_ARITHMETIC = re.compile(
+    r"coef\s*\*\s*elong|0\.25\s*\*\s*coef|elong\s*\+\s*margin\s*>|>\s*s0\s*\*\s*xi0"
+    r"|_div_pd\(\s*_mm(?:256|512)_mul_pd\(\s*\w*coef|_mul_pd\(\s*\w*quarter"
+    r"|_sub_pd\(\s*vs00\s*,\s*_mm(?:256|512)_mul_pd\(\s*valpha")
+BOND_MODEL = "bbpd_bond_model.h"
+
+
+def bond_arithmetic(text):
+    """lines of code (comments dropped) that compute a bond's force, energy or breaking test"""
+    code = re.sub(r"/\*.*?\*/", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S)
+    code = re.sub(r"//[^\n]*", "", code)
+    return [n + 1 for n, line in enumerate(code.splitlines()) if BOND_ARITHMETIC.search(line)]
+
+
+@pytest.mark.parametrize("name", sorted(p.name for p in SRC.glob("*.[hc]*") if p.name != BOND_MODEL))
+def test_bond_arithmetic_lives_in_the_bond_model(name):
+    lines = bond_arithmetic((SRC / name).read_text())
+    assert not lines, f"{name}:{lines}: what a bond does belongs in {BOND_MODEL} (doc/architecture.rst)"
+
+
+def test_bond_arithmetic_is_found():
+    """negative control: the loops as they were before the bond model"""
+    assert bond_arithmetic("    const double fbond = coef * elong / r;\n") == [1]
+    assert bond_arithmetic("    if (FRACTURE) broken |= elong + margin > s0_of(j) * xi0;\n") == [1]
+    assert bond_arithmetic("  return breaking_length(i, j) - xi0 > s0 * xi0;\n") == [1]
+    assert bond_arithmetic("x;\nconst __m256d fbond = _mm256_div_pd(_mm256_mul_pd(coef, elong), r);") == [2]
+    assert bond_arithmetic("const __m256d s0 = _mm256_sub_pd(vs00, _mm256_mul_pd(valpha, smax));") == [1]
+    assert bond_arithmetic("// coef * elong / r in a comment\n/* elong + margin > s0 xi0 */\n") == []
+    assert bond_arithmetic((SRC / BOND_MODEL).read_text())    # the model itself has them
+
+
+def test_architecture_doc_shows_the_tested_toy_model():
+    """the bond model of the walkthrough is the one the unit test runs through every width"""
+    doc = (SRC.parent / "doc" / "architecture.rst").read_text()
+    block = re.search(r"\.\. code-block:: c\+\+\n\n(.*?)\n\n", doc, re.S).group(1)
+    test = (SRC.parent / "tests" / "unit" / "test_bond_model.cpp").read_text()
+    squeeze = lambda t: " ".join(t.split())
+    assert "struct SymmetricStretchBond" in block
+    assert squeeze(block) in squeeze(test)
+
+
 def test_src_includes_have_no_circle():
     assert circles(include_graph()) == []
 
