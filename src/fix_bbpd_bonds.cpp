@@ -95,9 +95,10 @@ int FixBBPDBonds::setmask()
 void FixBBPDBonds::init()
 {
   if (!have_rules) error->all(FLERR, "Fix bbpd/bonds requires a bbpd/* pair style");
-  // the occasional full list is only needed to build the families once
+  // the occasional half list (newton off: a pair of a local and a ghost atom at its local atom)
+  // is only needed to build the families once
   if (first) {
-    neighbor->add_request(this, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
+    neighbor->add_request(this, NeighConst::REQ_NEWTON_OFF | NeighConst::REQ_OCCASIONAL);
     size_family_neighbor_list();
   }
   // in a periodic box the two ends of a bond see different images of each other (x + L rounds
@@ -280,45 +281,58 @@ void FixBBPDBonds::build_families()
     return law.bonded(type[i], type[j], dx * dx + dy * dy + dz * dz);
   };
 
+  // the list is half (each pair of local atoms once, a local-ghost pair at its local atom): a
+  // listed pair joins the family of each local end
+  std::vector<int> count(nlocal, 0);
+  auto for_each_pair = [&](auto &&add) {
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      for (int jj = 0; jj < list->numneigh[i]; jj++) {
+        const int j = list->firstneigh[i][jj] & NEIGHMASK;
+        if (!in_family(i, j)) continue;
+        add(i, tag[j]);
+        if (j < nlocal) add(j, tag[i]);
+      }
+    }
+  };
+  for_each_pair([&](int i, tagint) { count[i]++; });
   int mymax = 0;
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
-    int n = 0;
-    for (int jj = 0; jj < list->numneigh[i]; jj++)
-      if (in_family(i, list->firstneigh[i][jj] & NEIGHMASK)) n++;
-    mymax = MAX(mymax, n);
-  }
+  for (int i = 0; i < nlocal; i++) mymax = MAX(mymax, count[i]);
+  std::vector<int>().swap(count);
   MPI_Allreduce(&mymax, &maxpartner, 1, MPI_INT, MPI_MAX, world);
   maxpartner = MAX(maxpartner, 1);
   set_maxexchange();
   memory->destroy(partner);
   partner = nullptr;
   grow_arrays(atom->nmax);
+  for (int i = 0; i < nlocal; i++) npartner[i] = 0;
+  for_each_pair([&](int i, tagint t) { partner[i][npartner[i]++] = t; });
+  // the tags hold the families: the list's pages go back before the sort below and the cache
+  release_family_list();
 
   // partners in the order of their reference offset (z, then y, then x, compared exactly; ties:
   // tag order, only for partners that share a reference position): the summation order then
   // depends on the geometry alone, not on how atoms are numbered (create_atoms numbers them
-  // rank by rank). x varies fastest, as in LAMMPS's spatial sort of the atoms in memory.
-  {    // scoped: the vectors are freed before the list's pages, which may lie below them
+  // rank by rank) or listed. x varies fastest, as in LAMMPS's spatial sort of the atoms in
+  // memory. A partner's offset is the minimum image in a periodic box, the same for any of
+  // its images.
+  {
     const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
     std::vector<std::pair<std::array<double, 3>, tagint>> family;
     std::vector<tagint> tags;
-    for (int i = 0; i < nlocal; i++) npartner[i] = 0;
-    for (int ii = 0; ii < list->inum; ii++) {
-      const int i = list->ilist[ii];
+    for (int i = 0; i < nlocal; i++) {
       family.clear();
-      for (int jj = 0; jj < list->numneigh[i]; jj++) {
-        const int j = list->firstneigh[i][jj] & NEIGHMASK;
-        if (!in_family(i, j)) continue;
+      for (int k = 0; k < npartner[i]; k++) {
+        const int j = atom->map(partner[i][k]);
         double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
         if (periodic) BBPDCompat::minimum_image(domain, d);
-        family.push_back({{d[2], d[1], d[0]}, tag[j]});
+        family.push_back({{d[2], d[1], d[0]}, partner[i][k]});
       }
       std::sort(family.begin(), family.end());
       tags.clear();
-      for (const auto &p : family) {
-        partner[i][npartner[i]++] = p.second;
-        tags.push_back(p.second);
+      for (int k = 0; k < npartner[i]; k++) {
+        partner[i][k] = family[k].second;
+        tags.push_back(family[k].second);
       }
       std::sort(tags.begin(), tags.end());
       if (std::adjacent_find(tags.begin(), tags.end()) != tags.end())
@@ -328,16 +342,15 @@ void FixBBPDBonds::build_families()
   }
   first = 0;
   extent0 = local_extent();
-  release_family_list();
   refresh_cache();
   for (int i = 0; i < nlocal; i++) vinit[i] = vintact[i];
 }
 
-/* The families are in the partner tags now: the list's pages go back before the bond cache is
-   allocated, so that the two never take memory at the same time (4 bytes per listed neighbour;
-   with LAMMPS's skin a 3D list holds about 1.7 neighbours per bond end). MyPage::init frees
-   every page but a first one, of each of the list's page sets (one per thread); a later
-   build_one() refills the list. */
+/* The families are in the partner tags now: the list's pages go back before the families are
+   sorted and the bond cache is allocated, so that the two never take memory at the same time (4
+   bytes per listed pair; the list is half, and with LAMMPS's skin holds about 0.7-0.9 pairs
+   per bond). MyPage::init frees every page but a first one, of each of the list's page sets
+   (one per thread); a later build_one() refills the list. */
 void FixBBPDBonds::release_family_list()
 {
   // only pages of the list's own: a copy of another list (with 'contact yes' the pair's list
