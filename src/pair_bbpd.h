@@ -71,7 +71,13 @@ class PairBBPD : public Pair {
   void report();
   BBPD::BondLaw law;    // what the bond fix builds and caches with, filled in init_style()
   // what one bond does (elongation, force, energy, breaking): every loop of the style uses it
+  // (doc/architecture.rst, "Adding a bond model"); a test build may put another in its place
+  // (cmake -D BBPD_TEST_BOND_MODEL=NAME: tests/unit/toy_bond_models.h)
+#ifdef BBPD_BOND_MODEL
+  using BondModel = BBPD_BOND_MODEL;
+#else
   using BondModel = BBPD::CriticalStretchBond;
+#endif
   void calibrate();     // c0 and s0 of every type pair (init_style)
   BBPD::RunLimits run_limits() const
   {

@@ -125,12 +125,13 @@ def test_bond_arithmetic_is_found():
 
 
 def test_architecture_doc_shows_the_tested_toy_model():
-    """the bond model of the walkthrough is the one the unit test runs through every width"""
+    """the bond model of the walkthrough is the one the unit test runs through every width and
+    the test build puts in the plugin (tests/unit/toy_bond_models.h)"""
     doc = (SRC.parent / "doc" / "architecture.rst").read_text()
     block = re.search(r"\.\. code-block:: c\+\+\n\n(.*?)\n\n", doc, re.S).group(1)
-    test = (SRC.parent / "tests" / "unit" / "test_bond_model.cpp").read_text()
+    test = (SRC.parent / "tests" / "unit" / "toy_bond_models.h").read_text()
     squeeze = lambda t: " ".join(t.split())
-    assert "struct SymmetricStretchBond" in block
+    assert "struct SymmetricStretchBond : BBPD::CriticalStretchBond" in block
     assert squeeze(block) in squeeze(test)
 
 

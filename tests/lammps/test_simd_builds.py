@@ -39,13 +39,14 @@ def cache_value(key):
     return re.search(rf"^{key}:\w+=(.*)$", text, re.M).group(1)
 
 
-def build_variant(name):
-    """Configure and build the plugin alone into build/<name>-VERSION; returns the .so path."""
+def build_variant(name, flags=None):
+    """Configure and build the plugin alone into build/<name>-VERSION with the cmake flags of
+    VARIANTS[name] (or the flags given); returns the .so path."""
     folder = ROOT / "build" / f"{name}-{VERSION}"
     configure = ["cmake", "-S", str(ROOT), "-B", str(folder),
                  "-D", f"LAMMPS_SOURCE_DIR={cache_value('LAMMPS_SOURCE_DIR')}",
                  "-D", f"LAMMPS_DIR={cache_value('LAMMPS_DIR')}",
-                 "-D", "BBPD_BUILD_TESTS=OFF"] + VARIANTS[name]
+                 "-D", "BBPD_BUILD_TESTS=OFF"] + (VARIANTS[name] if flags is None else flags)
     for cmd in (configure, ["cmake", "--build", str(folder), "--target", "bbpdplugin", "-j",
                             str(os.cpu_count() or 1)]):
         proc = subprocess.run(cmd, capture_output=True, text=True)

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* bbpd_bond_model.h: a bond model is the one place that says what a bond does. Two toy
-   models, each a struct of a few lines, go through the portable loop and this build's SIMD
+   models (toy_bond_models.h), each a struct of a few lines, go through the portable loop and this build's SIMD
    kernel (AVX-512 or AVX2) unchanged: a breaking rule that also breaks bonds in compression,
    and a bond twice as stiff. The loops need no edit, and the widths agree bit for bit. */
 
 #include "bbpd_bond_model.h"
 #include "bbpd_row.h"
+#include "toy_bond_models.h"
 
 #include <gtest/gtest.h>
 
@@ -18,21 +19,8 @@ namespace {
 using BBPD::LANES;
 using BBPD::RowTally;
 
-// a toy breaking rule: the critical stretch holds in compression as in tension
-struct SymmetricStretchBond : BBPD::CriticalStretchBond {
-  template <class V> static auto past_critical(V elong, V xi0, V s0, V margin)
-  {
-    return BBPD::vabs(elong) + margin > s0 * xi0;
-  }
-};
-
-// a toy force: every bond twice as stiff
-struct DoubleStiffnessBond : BBPD::CriticalStretchBond {
-  template <class V> static V force_per_length(V coef, V elong, V r)
-  {
-    return V(2.0) * coef * elong / r;
-  }
-};
+using BBPDToy::DoubleStiffnessBond;
+using BBPDToy::SymmetricStretchBond;
 
 constexpr int NB = 29;    // partners of atom 0: 3 full groups of 8 and a tail
 
