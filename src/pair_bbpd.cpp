@@ -22,9 +22,6 @@
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
-#include "neigh_list.h"
-#include "neigh_request.h"
-#include "neighbor.h"
 #include "potential_file_reader.h"
 #include "update.h"
 
@@ -49,6 +46,9 @@ static constexpr const char *BONDS_FIX_ID = "BBPD_BONDS";
 // Phys. Commun. 179 (2008) 777) and stiffness 15 c0 (Silling, EMU theory manual, 2005, p. 18)
 static constexpr double CONTACT_FACTOR_DEFAULT = 0.9;
 static constexpr double CONTACT_STIFFNESS_FACTOR = 15.0;
+// skin of the contact candidates' search, in grid spacings: the search runs again when an atom
+// has moved half of it (a performance choice: any value > 0 gives the same forces)
+static constexpr double CONTACT_CANDIDATE_SKIN = 0.6;
 // margin of the quick bond-failure test in periodic boxes, in units of DBL_EPSILON x the largest
 // coordinate: covers the round-off of x + L and of the minimum image (2 ulps each) per component
 static constexpr double BREAK_MARGIN_ULPS = 16.0;
@@ -368,8 +368,6 @@ void PairBBPD::init_style()
     bonds = dynamic_cast<FixBBPDBonds *>(
         modify->add_fix(std::string(BONDS_FIX_ID) + " all bbpd/bonds"));
   if (!bonds) error->all(FLERR, "Pair style {} could not create its bond-family fix", style);
-  // a neighbour list only when contact is asked for: bonds need none
-  if (contact) neighbor->add_request(this, NeighConst::REQ_FULL)->set_cutoff(contact_factor * spacing);
   init_pmb();
 
   calibrate();
@@ -482,8 +480,22 @@ bool PairBBPD::bonded(int i, tagint jtag) const
   return false;
 }
 
-/* repulsion between atoms closer than the contact distance that share no intact
-   bond; full list, so each atom sums its own contacts and ghosts get no force */
+/* the candidates of the short-range forces, searched again when the bond cache was rebuilt
+   (atoms moved to other indices) or an atom has moved half the search's skin */
+void PairBBPD::update_close_pairs(double max_distance, double skin,
+                                  const std::function<double(int, int)> &distance)
+{
+  const double *xx = atom->x[0];
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  if (close_generation == bonds->cache_generation() && close_pairs.current(xx, nlocal, nall)) return;
+  close_generation = bonds->cache_generation();
+  if (!close_pairs.build(xx, nlocal, nall, max_distance, skin, distance))
+    error->one(FLERR, "Pair style {}: non-finite atom positions at step {}: the run is unstable, "
+               "reduce the timestep", force->pair_style, update->ntimestep);
+}
+
+/* repulsion between atoms closer than the contact distance that share no intact bond; each
+   atom sums its own contacts and ghosts get no force */
 void PairBBPD::compute_contact()
 {
   double **x = atom->x;
@@ -492,13 +504,18 @@ void PairBBPD::compute_contact()
   const tagint *tag = atom->tag;
   const double *vfrac = atom->vfrac;
   const double dc = contact_factor * spacing;
+  // candidates within dc and a skin that the ghost atoms cover (they reach every family cutoff)
+  double cut_min = std::numeric_limits<double>::infinity();
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j]) cut_min = MIN(cut_min, law.family_cutoff(i, j));
+  update_close_pairs(dc, MIN(CONTACT_CANDIDATE_SKIN * spacing, cut_min - dc),
+                     [dc](int, int) { return dc; });
   std::vector<std::pair<std::array<double, 4>, int>> close;
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
-    const int *jlist = list->firstneigh[i];
+  for (int i = 0; i < atom->nlocal; i++) {
     close.clear();
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
+    for (int m = close_pairs.first[i]; m < close_pairs.first[i + 1]; m++) {
+      const int j = close_pairs.pairs[m];
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
       const double rsq = dx * dx + dy * dy + dz * dz;
       if (rsq < dc * dc && rsq > 0.0 && !bonded(i, tag[j]))

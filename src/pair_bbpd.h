@@ -18,9 +18,11 @@
 #include "bbpd_bond_law.h"
 #include "bbpd_bond_model.h"
 #include "bbpd_bond_storage.h"
+#include "bbpd_close_pairs.h"
 #include "bbpd_kernel.h"
 #include "pair.h"
 
+#include <functional>
 #include <vector>
 
 namespace BBPD {
@@ -118,12 +120,13 @@ class PairBBPD : public Pair {
   template <int EVFLAG> void eval_alpha();
   template <int EVFLAG> void broken_bond_force(int i, int k, double *fb, double *acc);
   void compute_short_range();
-  // short-range candidates: pairs that can come in range before the atoms move half a
-  // candidate skin (atom i's partners: sr_pairs[sr_first[i] .. sr_first[i + 1]])
-  std::vector<int> sr_first, sr_pairs;
-  std::vector<double> sr_dist, sr_xhold;    // short-range distance of each candidate pair
-  bigint sr_generation = -1;    // of the bond cache the candidates' indices belong to
-  void short_range_candidates(double skin);
+ protected:
+  // candidates of the short-range forces ('contact', 'compat pmb'): pairs that can come in
+  // range before the atoms move half the search's skin, searched again when stale
+  BBPD::ClosePairs close_pairs;
+  bigint close_generation = -1;    // of the bond cache the candidates' indices belong to
+  void update_close_pairs(double max_distance, double skin,
+                          const std::function<double(int, int)> &distance);
 };
 
 }    // namespace LAMMPS_NS

@@ -317,30 +317,30 @@ void PairBBPD::compute_short_range()
   const double rmax = SHORT_RANGE_LATTICE_FACTOR * lc;
 
   const double *xx = x[0];
+  double **x0 = atom->x0;
   double horizon_min = std::numeric_limits<double>::infinity();
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) horizon_min = std::min(horizon_min, horizon[i][j]);
   // candidate pairs must stay within the horizon, which the ghost atoms cover
   const double skin = std::min(SHORT_RANGE_CANDIDATE_SKIN * lc, horizon_min - rmax);
-  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  // the candidates hold local indices: rebuilt whenever the bond cache was (atoms moved to
-  // other indices), or when an atom has moved far enough to bring a new pair in range
-  bool rebuild = sr_generation != bonds->cache_generation() || sr_xhold.size() != 3 * (size_t) nall ||
-      sr_first.size() != (size_t) nlocal + 1;
-  for (int i = 0; !rebuild && i < nall; i++) {
-    const double dx = xx[3 * i] - sr_xhold[3 * i], dy = xx[3 * i + 1] - sr_xhold[3 * i + 1],
-                 dz = xx[3 * i + 2] - sr_xhold[3 * i + 2];
-    rebuild = dx * dx + dy * dy + dz * dz > 0.2 * skin * skin;    // under half the skin, with room for round-off
-  }
-  if (rebuild) short_range_candidates(std::max(skin, 0.0));
+  const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
+  // a pair's short-range distance, from its reference distance
+  update_close_pairs(rmax, std::max(skin, 0.0), [&](int i, int j) {
+    double d0[3] = {x0[i][0] - x0[j][0], x0[i][1] - x0[j][1], x0[i][2] - x0[j][2]};
+    if (periodic) BBPDCompat::minimum_image(domain, d0);
+    return short_range_distance(std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), lc);
+  });
+  const std::vector<int> &first = close_pairs.first, &pairs = close_pairs.pairs;
+  const std::vector<double> &dist = close_pairs.dist;
+  const int nlocal = atom->nlocal;
 
   std::vector<std::pair<tagint, int>> close;
   for (int i = 0; i < nlocal; i++) {
     const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
     close.clear();
-    for (int m = sr_first[i]; m < sr_first[i + 1]; m++) {
-      const int j = sr_pairs[m];
-      const double d = sr_dist[m];
+    for (int m = first[i]; m < first[i + 1]; m++) {
+      const int j = pairs[m];
+      const double d = dist[m];
       const double dx = xi - xx[3 * j], dy = yi - xx[3 * j + 1], dz = zi - xx[3 * j + 2];
       const double rsq = dx * dx + dy * dy + dz * dz;
       if (rsq >= d * d * (1.0 + 1.0e-12)) continue;    // the exact test follows
@@ -349,11 +349,11 @@ void PairBBPD::compute_short_range()
     // sum in tag order: the candidates' order depends on the domain decomposition
     std::sort(close.begin(), close.end());
     for (const auto &c : close) {
-      const int j = sr_pairs[c.second];
+      const int j = pairs[c.second];
       const double dx = xi - xx[3 * j], dy = yi - xx[3 * j + 1], dz = zi - xx[3 * j + 2];
       const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
       const int itype = type[i], jtype = type[j];
-      const double dr = r - sr_dist[c.second];
+      const double dr = r - dist[c.second];
       // written as in peri/pmb
       const double rk = (SHORT_RANGE_STIFFNESS_FACTOR * micromodulus[itype][jtype] * vfrac[j]) *
           (dr / horizon[itype][jtype]);
@@ -374,84 +374,4 @@ void PairBBPD::compute_short_range()
       }
     }
   }
-}
-
-/* candidates for the short-range force: the pairs of a local atom and a local or ghost
-   atom within their short-range distance plus 'skin', found by binning. No atom moves half
-   the skin before the next rebuild, so every pair in range is a candidate. */
-void PairBBPD::short_range_candidates(double skin)
-{
-  const double *xx = atom->x[0];
-  double **x0 = atom->x0;
-  const double lc = lattice_constant;
-  const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
-  const double reach = SHORT_RANGE_LATTICE_FACTOR * lc + skin;
-  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  sr_xhold.assign(xx, xx + 3 * nall);
-  sr_generation = bonds->cache_generation();
-  sr_first.assign(nlocal + 1, 0);
-  sr_pairs.clear();
-  sr_dist.clear();
-  if (nall == 0) return;
-
-  // bins of at least the reach, coarser if the atoms are spread out (flying fragments)
-  double lo[3], hi[3];
-  for (int m = 0; m < 3; m++) lo[m] = hi[m] = xx[m];
-  for (int i = 0; i < nall; i++)
-    for (int m = 0; m < 3; m++) {
-      lo[m] = std::min(lo[m], xx[3 * i + m]);
-      hi[m] = std::max(hi[m], xx[3 * i + m]);
-    }
-  for (int m = 0; m < 3; m++)
-    if (!std::isfinite(hi[m] - lo[m]))
-      error->one(FLERR, "Pair bbpd/constant compat pmb: non-finite atom positions at step {}: "
-                 "the run is unstable, reduce the timestep", update->ntimestep);
-  double b = reach;
-  int nb[3];
-  auto nbins = [&]() {
-    for (int m = 0; m < 3; m++) nb[m] = static_cast<int>(std::min((hi[m] - lo[m]) / b, 1.0e6)) + 1;
-    return (double) nb[0] * nb[1] * nb[2];
-  };
-  while (nbins() > 4.0 * nall + 64.0) b *= 1.5;
-  auto cell = [&](int i, int m) {
-    return std::min(nb[m] - 1, static_cast<int>((xx[3 * i + m] - lo[m]) / b));
-  };
-  std::vector<int> start((size_t) nb[0] * nb[1] * nb[2] + 1, 0), bin_of(nall), atoms(nall);
-  for (int i = 0; i < nall; i++) {
-    bin_of[i] = (cell(i, 0) * nb[1] + cell(i, 1)) * nb[2] + cell(i, 2);
-    start[bin_of[i] + 1]++;
-  }
-  for (size_t c = 1; c < start.size(); c++) start[c] += start[c - 1];
-  std::vector<int> fill(start.begin(), start.end() - 1);
-  for (int i = 0; i < nall; i++) atoms[fill[bin_of[i]]++] = i;
-  // positions in bin order: the bins of a row of the search below are one contiguous run
-  std::vector<double> xbin(3 * atoms.size());
-  for (int a = 0; a < nall; a++)
-    for (int m = 0; m < 3; m++) xbin[3 * a + m] = xx[3 * atoms[a] + m];
-
-  for (int i = 0; i < nlocal; i++) {
-    sr_first[i] = (int) sr_pairs.size();
-    const int c[3] = {cell(i, 0), cell(i, 1), cell(i, 2)};
-    const int zlo = std::max(c[2] - 1, 0), zhi = std::min(c[2] + 1, nb[2] - 1);
-    for (int ax = std::max(c[0] - 1, 0); ax <= std::min(c[0] + 1, nb[0] - 1); ax++)
-      for (int ay = std::max(c[1] - 1, 0); ay <= std::min(c[1] + 1, nb[1] - 1); ay++) {
-        const int row = (ax * nb[1] + ay) * nb[2];
-        for (int a = start[row + zlo]; a < start[row + zhi + 1]; a++) {
-          const double dx = xx[3 * i] - xbin[3 * a], dy = xx[3 * i + 1] - xbin[3 * a + 1],
-                       dz = xx[3 * i + 2] - xbin[3 * a + 2];
-          const double rsq = dx * dx + dy * dy + dz * dz;
-          if (rsq >= reach * reach) continue;
-          const int j = atoms[a];
-          if (j == i) continue;
-          double d0[3] = {x0[i][0] - x0[j][0], x0[i][1] - x0[j][1], x0[i][2] - x0[j][2]};
-          if (periodic) BBPDCompat::minimum_image(domain, d0);
-          const double d =
-              short_range_distance(std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), lc);
-          if (std::sqrt(rsq) >= d + skin) continue;
-          sr_pairs.push_back(j);
-          sr_dist.push_back(d);
-        }
-      }
-  }
-  sr_first[nlocal] = (int) sr_pairs.size();
 }

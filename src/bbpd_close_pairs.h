@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* -*- c++ -*- ----------------------------------------------------------
+   BBPD: candidate pairs of the short-range forces between atoms, with no LAMMPS
+   dependency: the one search behind 'contact' and the short-range forces of
+   'compat pmb'.
+
+   The candidates of local atom i are the atoms j (local or ghost) within their pair's
+   distance d(i, j) <= max_distance plus a skin, found by binning all positions once.
+   While no atom has moved half the skin, every pair closer than its distance is a
+   candidate, so the force loops test the candidates alone at every step and the search
+   runs again only when an atom has moved that far (or the atoms changed indices). The
+   candidates' order depends on the binning: the loops sum their forces in an order of
+   their own (by tag or by offset), which depends on the pairs alone.
+------------------------------------------------------------------------- */
+
+#ifndef BBPD_CLOSE_PAIRS_H
+#define BBPD_CLOSE_PAIRS_H
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace BBPD {
+
+class ClosePairs {
+ public:
+  // candidates of local atom i: pairs[first[i] .. first[i + 1]], each with its distance dist[]
+  std::vector<int> first, pairs;
+  std::vector<double> dist;
+
+  // do the candidates still hold every pair in range? (the same atoms at the same nall
+  // positions xx, 3 per atom, none of which has moved half the skin since the search)
+  bool current(const double *xx, int nlocal, int nall) const
+  {
+    if (xhold.size() != 3 * (size_t) nall || first.size() != (size_t) nlocal + 1) return false;
+    for (int i = 0; i < nall; i++) {
+      const double dx = xx[3 * i] - xhold[3 * i], dy = xx[3 * i + 1] - xhold[3 * i + 1],
+                   dz = xx[3 * i + 2] - xhold[3 * i + 2];
+      // under half the skin, with room for round-off
+      if (dx * dx + dy * dy + dz * dz > 0.2 * skin * skin) return false;
+    }
+    return true;
+  }
+
+  /* search the candidates of local atoms 0..nlocal-1 among the nall atoms at xx: every j != i
+     with |x_i - x_j| < distance(i, j) + skin, where distance(i, j) <= max_distance; false
+     (and no candidates) if the positions are not finite */
+  template <class Distance>
+  bool build(const double *xx, int nlocal, int nall, double max_distance, double search_skin,
+             Distance distance)
+  {
+    skin = search_skin;
+    const double reach = max_distance + skin;
+    xhold.assign(xx, xx + 3 * nall);
+    first.assign(nlocal + 1, 0);
+    pairs.clear();
+    dist.clear();
+    if (nall == 0) return true;
+
+    // bins of at least the reach, coarser if the atoms are spread out (flying fragments)
+    double lo[3], hi[3];
+    for (int m = 0; m < 3; m++) lo[m] = hi[m] = xx[m];
+    for (int i = 0; i < nall; i++)
+      for (int m = 0; m < 3; m++) {
+        lo[m] = std::min(lo[m], xx[3 * i + m]);
+        hi[m] = std::max(hi[m], xx[3 * i + m]);
+      }
+    for (int m = 0; m < 3; m++)
+      if (!std::isfinite(hi[m] - lo[m])) {
+        xhold.clear();
+        first.assign(nlocal + 1, 0);
+        return false;
+      }
+    double b = reach;
+    int nb[3];
+    auto nbins = [&]() {
+      for (int m = 0; m < 3; m++) nb[m] = static_cast<int>(std::min((hi[m] - lo[m]) / b, 1.0e6)) + 1;
+      return (double) nb[0] * nb[1] * nb[2];
+    };
+    while (nbins() > 4.0 * nall + 64.0) b *= 1.5;
+    auto cell = [&](int i, int m) {
+      return std::min(nb[m] - 1, static_cast<int>((xx[3 * i + m] - lo[m]) / b));
+    };
+    std::vector<int> start((size_t) nb[0] * nb[1] * nb[2] + 1, 0), bin_of(nall), atoms(nall);
+    for (int i = 0; i < nall; i++) {
+      bin_of[i] = (cell(i, 0) * nb[1] + cell(i, 1)) * nb[2] + cell(i, 2);
+      start[bin_of[i] + 1]++;
+    }
+    for (size_t c = 1; c < start.size(); c++) start[c] += start[c - 1];
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (int i = 0; i < nall; i++) atoms[fill[bin_of[i]]++] = i;
+    // positions in bin order: the bins of a row of the search below are one contiguous run
+    std::vector<double> xbin(3 * atoms.size());
+    for (int a = 0; a < nall; a++)
+      for (int m = 0; m < 3; m++) xbin[3 * a + m] = xx[3 * atoms[a] + m];
+
+    for (int i = 0; i < nlocal; i++) {
+      first[i] = (int) pairs.size();
+      const int c[3] = {cell(i, 0), cell(i, 1), cell(i, 2)};
+      const int zlo = std::max(c[2] - 1, 0), zhi = std::min(c[2] + 1, nb[2] - 1);
+      for (int ax = std::max(c[0] - 1, 0); ax <= std::min(c[0] + 1, nb[0] - 1); ax++)
+        for (int ay = std::max(c[1] - 1, 0); ay <= std::min(c[1] + 1, nb[1] - 1); ay++) {
+          const int row = (ax * nb[1] + ay) * nb[2];
+          for (int a = start[row + zlo]; a < start[row + zhi + 1]; a++) {
+            const double dx = xx[3 * i] - xbin[3 * a], dy = xx[3 * i + 1] - xbin[3 * a + 1],
+                         dz = xx[3 * i + 2] - xbin[3 * a + 2];
+            const double rsq = dx * dx + dy * dy + dz * dz;
+            if (rsq >= reach * reach) continue;
+            const int j = atoms[a];
+            if (j == i) continue;
+            const double d = distance(i, j);
+            if (std::sqrt(rsq) >= d + skin) continue;
+            pairs.push_back(j);
+            dist.push_back(d);
+          }
+        }
+    }
+    first[nlocal] = (int) pairs.size();
+    return true;
+  }
+
+ private:
+  std::vector<double> xhold;    // positions at the search
+  double skin = 0.0;
+};
+
+}    // namespace BBPD
+
+#endif
