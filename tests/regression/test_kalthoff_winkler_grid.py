@@ -5,8 +5,9 @@ At dx = 2 mm (default suite): `-var grid square` gives the default's bits; the p
 perturb x dx, by different amounts, the same on 1 and 2 ranks, and become the reference
 configuration (no point far from the impact moves in the first steps: with stale reference
 positions every bond would start stretched); the rotated grid's rows run at gridangle; on both
-grids no notch face touches the other at t = 0 under contact (negative control: with the
-perturbed points moved across the notches they do); and one grid-pull case reproduces its committed CSV row. The pull
+grids no notch face touches the other at t = 0 under contact, and the perturbed grid's
+reference positions are the moved points (negative control: without the data-file round trip
+they are not); and one grid-pull case reproduces its committed CSV row. The pull
 arithmetic is checked on made-up rows.
 """
 import math
@@ -129,18 +130,30 @@ def test_rotated_grid_rows_run_at_the_angle(tmp_path):
     assert moved_beyond_the_wave(work) == 0.0
 
 
-def test_perturbed_notch_rows_moved_across_would_push_each_other(tmp_path):
-    """Negative control of test_perturbed_grid_is_the_reference_configuration: with the points
-    next to the notches moved across them too, faces closer than the contact distance repel
-    from t = 0 and move at once."""
+def test_without_the_round_trip_the_perturbed_bonds_start_stretched(tmp_path):
+    """Negative control of test_perturbed_grid_is_the_reference_configuration: without the
+    write_data / read_data round trip the reference positions stay on the square grid, every
+    bond of a moved point starts stretched, and points move everywhere at once."""
     text = kw.EXAMPLE.read_text()
-    old = "displace_atoms  pnotchonly random ${pmax} 0.0 0.0 ${seed} units box"
-    assert old in text
-    script = tmp_path / "in.across"
-    script.write_text(text.replace(old, old.replace("${pmax} 0.0 0.0", "${pmax} ${pmax} 0.0")))
-    work = run(tmp_path / "across", script=str(script), tend=SHORT, loading="projectile",
+    trip = ("write_data      perturbed_grid.data nocoeff\ndelete_atoms    group all\n"
+            "read_data       perturbed_grid.data add append\n")
+    assert trip in text
+    script = tmp_path / "in.stale"
+    script.write_text(text.replace(trip, ""))
+    work = run(tmp_path / "stale", script=str(script), tend=SHORT, loading="projectile",
                grid="perturbed")
     assert moved_beyond_the_wave(work) > 1e-9
+
+
+def test_perturbed_projectile_touches_at_the_smaller_contact_distance(perturbed):
+    """The perturbed grid's contact distance is 0.9 (1 - 2 perturb) dx = 0.54 dx (its points
+    can be 0.6 dx apart), and the projectile's front column starts that far from the plate."""
+    square, one, _ = perturbed
+    for work, dc in ((square, 0.9), (one, 0.54)):
+        assert f"contact: on, distance {dc * DX:g}" in (work / "log.lammps").read_text()
+        d = np.loadtxt(work / "projectile.dat")
+        assert d[0, 8] - d[0, 9] == pytest.approx(dc * DX, rel=1e-9)     # plate face - front
+        assert abs(d[0, 5]) < 1e-9 * abs(d[1, 5])                         # no force at t = 0
 
 
 def made_up_row(grid, lo, hi, kernel="gaussian", loading="prescribed"):

@@ -111,8 +111,9 @@ def notch_cracks(x, y, phi, g):
     labels = clusters(np.column_stack([x[idx], y[idx]]), LINK * g["dx"])
     out = {}
     for side, yn, outer in (("lo", g["ylo"], y < g["ylo"]), ("hi", g["yhi"], y > g["yhi"])):
-        # flank seeds: crack atoms on the two rows along the notch, well behind its tip
-        flank = crack & (x < g["a"] - g["delta"]) & (np.abs(y - yn) < g["dx"])
+        # flank seeds: crack atoms within dx of the notch line, up to its tip (on a rotated
+        # grid the band along the cut can have gaps wider than LINK far from the tip)
+        flank = crack & (x <= g["a"]) & (np.abs(y - yn) < g["dx"])
         seeds = set(labels[np.isin(idx, np.nonzero(flank)[0])])
         linked = np.zeros_like(crack)
         linked[idx[np.isin(labels, list(seeds))]] = True
