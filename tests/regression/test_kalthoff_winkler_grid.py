@@ -156,6 +156,36 @@ def test_perturbed_projectile_touches_at_the_smaller_contact_distance(perturbed)
         assert abs(d[0, 5]) < 1e-9 * abs(d[1, 5])                         # no force at t = 0
 
 
+CASES = [pytest.param("rotated-30", "prescribed", 2.0e-3, id="rotated-30-prescribed-2mm"),
+         pytest.param("perturbed-1", "projectile", 1.0e-3, id="perturbed-1-projectile-1mm",
+                      marks=pytest.mark.slow)]
+
+
+@pytest.mark.parametrize("grid,loading,dx", CASES)
+def test_a_grid_pull_case_gives_its_committed_row(tmp_path, grid, loading, dx):
+    """A grid-pull case (Gaussian, to 100 us; the 2 mm one a few seconds, the 1 mm one about a
+    minute of CPU) gives the committed CSV's angles to its printed precision (the runs are
+    deterministic); its two cracks differ, which on the square grid they cannot (mirror
+    images); and the damage stays in crack bands (with the projectile and a contact distance
+    above the perturbed grid's closest spacing the plate shattered)."""
+    _, rows = kwg.read_rows()
+
+    def find(g):
+        return next(r for r in rows if r["grid"] == g and r["loading"] == loading
+                    and r["kernel"] == "gaussian" and r["dx_mm"] == dx * 1e3)
+    ref, square = find(grid), find("square")
+    work = tmp_path / grid
+    got = kwg.row(kwg.run_case(work, "gaussian", dx, loading, grid), grid)
+    for d in kwg.ANGLES:
+        for s in kwg.SIDES:
+            assert got[f"{d}_{s}_deg"] == pytest.approx(ref[f"{d}_{s}_deg"], abs=1e-3), (d, s)
+        assert square[f"{d}_lo_deg"] == pytest.approx(square[f"{d}_hi_deg"], abs=1e-9)
+    assert abs(got["fit_lo_deg"] - got["fit_hi_deg"]) > 0.5
+    assert got["first_bond_us"] == pytest.approx(ref["first_bond_us"], abs=1e-3)
+    _, end = snapshots(work)
+    assert (end["c_dmg"] >= kw.PHI_CRACK).mean() < 0.1
+
+
 def made_up_row(grid, lo, hi, kernel="gaussian", loading="prescribed"):
     r = {"grid": grid, "loading": loading, "kernel": kernel, "dx_mm": 2.0}
     for d in kwg.ANGLES:
