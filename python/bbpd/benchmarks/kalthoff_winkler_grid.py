@@ -200,7 +200,7 @@ def pull_sentence(rows):
                 parts.append(f"{kernel} {min(v):+.1f} to {max(v):+.1f}°")
         head.append(f"at {dx:g} mm " + ", ".join(parts))
     text = ["The square grid moves the angle, against the mean of the perturbed and rotated "
-            "grids' cracks (both loadings, the three angle definitions), by " + "; ".join(head)
+            "grids' cracks (both loadings, the three angle definitions): " + "; ".join(head)
             + "."] if head else []
     for dx in sorted({k[2] for k in p}, reverse=True):
         for loading in LOADINGS:
