@@ -111,8 +111,9 @@ def notch_cracks(x, y, phi, g):
     labels = clusters(np.column_stack([x[idx], y[idx]]), LINK * g["dx"])
     out = {}
     for side, yn, outer in (("lo", g["ylo"], y < g["ylo"]), ("hi", g["yhi"], y > g["yhi"])):
-        # flank seeds: crack atoms on the two rows along the notch, well behind its tip
-        flank = crack & (x < g["a"] - g["delta"]) & (np.abs(y - yn) < g["dx"])
+        # flank seeds: crack atoms within dx of the notch line, up to its tip (on a rotated
+        # grid the band along the cut can have gaps wider than LINK far from the tip)
+        flank = crack & (x <= g["a"]) & (np.abs(y - yn) < g["dx"])
         seeds = set(labels[np.isin(idx, np.nonzero(flank)[0])])
         linked = np.zeros_like(crack)
         linked[idx[np.isin(labels, list(seeds))]] = True
@@ -182,6 +183,20 @@ def far_damage(x, y, phi, phi0, cracks, g):
     return out
 
 
+def mirror_damage_difference(x, y, phi, dx, Ly):
+    """Largest damage difference between mirror atoms about y = Ly/2, or None if the grid has
+    no mirror image of every atom (a perturbed or rotated grid: -var grid)."""
+    def key(a, b):
+        return round(a / dx * 2), round(b / dx * 2)
+    mirror = {key(a, b): p for a, b, p in zip(x, y, phi)}
+    pos = {key(a, b): (a, b) for a, b in zip(x, y)}
+    pairs = [(key(a, Ly - b), p) for a, b, p in zip(x, y, phi)]
+    exact = len(mirror) == len(x) and all(
+        k in pos and abs(pos[k][0] - a) + abs(pos[k][1] - (Ly - b)) < 1e-6 * dx
+        for (k, _), a, b in zip(pairs, x, y))
+    return float(max(abs(p - mirror[k]) for k, p in pairs)) if exact else None
+
+
 def analyse(workdir):
     """All measurements of one run directory (the files the input script writes)."""
     workdir = Path(workdir)
@@ -243,9 +258,7 @@ def analyse(workdir):
         res[f"angle_{side}_deg"] = crack_angle(x, y, cr[side], tips[side], sign)
         res[f"crack_{side}"] = np.column_stack([x[cr[side]], y[cr[side]]]).tolist()
     res["damage_map"] = {"x": x.tolist(), "y": y.tolist(), "phi": phi.tolist()}
-    mirror = {(round(a / dx * 2), round(b / dx * 2)): p for a, b, p in zip(x, y, phi)}
-    res["symmetry_phi"] = float(max(abs(p - mirror[(round(a / dx * 2), round((g["Ly"] - b) / dx * 2))])
-                                    for a, b, p in zip(x, y, phi)))
+    res["symmetry_phi"] = mirror_damage_difference(x, y, phi, dx, g["Ly"])
     for key in ("angle_{}_deg", "speed_{}"):
         vals = [res[key.format(s)] for s in ("lo", "hi") if res[key.format(s)] is not None]
         res[key.replace("_{}", "")] = float(np.mean(vals)) if vals else None

@@ -39,6 +39,7 @@ import numpy as np
 from bbpd import markers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as study
+from bbpd.jobs import Job, Spec
 from bbpd.runner import run_lammps
 
 # ---------------------------------------------------------------------------- physics
@@ -331,6 +332,93 @@ def update_readme(path, text, name="kw-projectile"):
     """Replace the body of the README's block called name (bbpd.markers)."""
     path = Path(path)
     path.write_text(markers.replace_block(path, path.read_text(), name, text))
+
+
+# ---------------------------------------------------------------------------- report
+
+# tools/reproduce: the Gaussian at 2 mm by default; --full adds the other kernels and 1 mm
+REPORT_CASES = (("gaussian", 2.0e-3),)
+REPORT_CASES_FULL = tuple((k, 2.0e-3) for k in kw.KERNELS) + (("gaussian", 1.0e-3),)
+REPORT_TITLE = "Kalthoff-Winkler struck by the projectile (the experiment's loading)"
+
+
+def report_run(workdir, kernel, dx, nprocs=1):
+    """One projectile run of the report (paper's G_c, to TEND): its CSV row, the run folder
+    and 2 Lp / c."""
+    res = run_case(workdir, kernel, dx, "projectile", GC_VALUES["paper"], nprocs=nprocs)
+    out = row(res)
+    out.update(workdir=str(workdir), two_l_over_c_us=list(res["two_l_over_c_us"]),
+               v_interface_theory=res["v_interface_theory"],
+               px_plate_end=res["px_plate_end"])
+    return out
+
+
+def jobs(full=False, nprocs=1):
+    """The report's projectile runs as bbpd.report specs."""
+    inputs = (kw.EXAMPLE, Path(kw.__file__), Path(study.__file__), Path(__file__),
+              kw.ROOT / "potentials" / "kalthoff_winkler_steel.bbpd")
+    specs = []
+    for kernel, dx in (REPORT_CASES_FULL if full else REPORT_CASES):
+        label = f"Kalthoff-Winkler projectile {kernel} dx = {dx * 1e3:g} mm"
+        job = Job(label=label, func="bbpd.report:run_job",
+                  kwargs={"target": "bbpd.benchmarks.kalthoff_winkler_projectile:report_run",
+                          "args": {"kernel": kernel, "dx": dx, "nprocs": nprocs},
+                          "label": label},
+                  inputs=tuple(str(p) for p in inputs),
+                  estimate_s=25.0 if dx > 1.5e-3 else 200.0)
+        specs.append(Spec("kwprojectile", kernel, dx, job))
+    return specs
+
+
+def report_text(rows):
+    """Sentences computed from the report's projectile rows."""
+    out = []
+    for r in rows:
+        lo, hi = r["two_l_over_c_us"]
+        dv = (r["v_interface"] / r["v_interface_theory"] - 1.0) * 100.0
+        opens = ("the contact is still closed at the end" if r["t_open_us"] is None else
+                 f"the contact opens at {r['t_open_us']:.1f} us, {r['t_open_us'] / hi:.2f}-"
+                 f"{r['t_open_us'] / lo:.2f} x 2 Lp/c ({lo:.1f}-{hi:.1f} us)")
+        out.append(
+            f"{r['kernel']} {r['dx_mm']:g} mm: momentum of projectile + plate kept to "
+            f"{r['momentum_drift']:.1e} of its start; interface speed {r['v_interface']:.2f} m/s "
+            f"against the two-bar estimate {r['v_interface_theory']:.2f} m/s ({dv:+.1f} %); "
+            f"{opens}; first bond {f(r['first_bond_us'], '.1f')} us, damage band "
+            f"{f(r['band_us'], '.1f')} us, angles initial / fit / chord "
+            f"{f(r['initial_deg'], '.1f')} / {f(r['fit_deg'], '.1f')} / "
+            f"{f(r['chord_deg'], '.1f')} deg (experiment 70), crack {r['crack_stops']} us.")
+    return out
+
+
+def section(specs, results, figdir, notes):
+    """The projectile's section of report/REPORT.md (bbpd.report.write_report)."""
+    done = [s for s in specs if results.get(s.job.label) and "error" not in results[s.job.label]]
+    rows = [results[s.job.label] for s in done]
+    bad = [s.job.label for s in specs if s not in done]
+    text = report_text(rows)
+    if bad:
+        text.append("Not measured (failed or not run): " + ", ".join(bad) + ".")
+    names = []
+    for r in rows:
+        try:
+            name = f"kw_projectile_contact_{r['kernel']}_dx{r['dx_mm']:g}mm.png"
+            plot_contact(r["workdir"], Path(figdir) / name)
+            names.append(name)
+        except Exception as exc:  # the report must still be written
+            notes.append(f"projectile figure not made: {type(exc).__name__}: {exc}")
+    table = markdown([{k: ("" if v is None else str(v)) for k, v in r.items()} for r in rows])
+    return {"title": REPORT_TITLE,
+            "setup": "The paper's plate (plane strain, m = 5, G_c = 6.9e4 J/m2) struck at 32 m/s "
+                     "by an elastic steel projectile 100 mm long of type 2 atoms, pushing through "
+                     "contact (no bonds between the bodies), its E and rho scaled by the "
+                     f"experiment's area ratio {AREA_RATIO:.3f}; to {TEND * 1e6:.0f} us. Angles "
+                     "as in the loading study (initial; fit and chord at 70 us). See "
+                     "examples/kalthoff-winkler/README.md, 'Projectile and toughness'.",
+            "table": table if rows else "", "text": " ".join(text), "figures": names}
+
+
+def f(v, spec):
+    return "-" if v is None else format(v, spec)
 
 
 def main(argv=None):

@@ -197,6 +197,7 @@ def analyse(workdir):
                                        sign, fit_range=INITIAL_RANGE)
         when[side] = times[k]
     res["initial_deg"] = mean_or_none(list(initial.values()))
+    res["initial_side_deg"] = initial      # each crack's own: they differ off the square grid
     res["t_initial_us"] = min(when.values())
 
     # when a crack tip first comes within delta of the plate boundary

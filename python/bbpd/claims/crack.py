@@ -1,9 +1,10 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Blocks of the crack-growth examples (examples/mode1-propagation, examples/kink-mixed-mode,
-the projectile part of examples/kalthoff-winkler), each rendered by its benchmark module from
-the results it committed."""
+the projectile, grid-pull and summary parts of examples/kalthoff-winkler), each rendered by its
+benchmark module from the results it committed."""
 import json
 
+from bbpd.benchmarks import kalthoff_winkler_grid as grid
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
 from bbpd.benchmarks import kink, kink_kalthoff_winkler, mode1_propagation
 from bbpd.jobs import ROOT
@@ -36,3 +37,14 @@ def kink_kw_table(data):
 
 def projectile_table(data):
     return projectile.markdown(projectile.read_csv(PROJECTILE_CSV))
+
+
+def grid_pull_table(data):
+    comments, rows = grid.read_rows(grid.CSV)
+    return grid.markdown(rows, comments)
+
+
+def kw_summary(data):
+    return grid.summary(projectile.read_csv(PROJECTILE_CSV), grid.read_rows(grid.CSV)[1],
+                        kink.read_rows(kink.RESULTS),
+                        json.loads(kink_kalthoff_winkler.SUMMARY.read_text()))

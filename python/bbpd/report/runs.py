@@ -13,7 +13,8 @@ from pathlib import Path
 
 from bbpd import jobs as jobmod
 from bbpd import readers
-from bbpd.benchmarks import dispersion, kalthoff_winkler_study
+from bbpd.benchmarks import (dispersion, kalthoff_winkler_grid, kalthoff_winkler_projectile,
+                             kalthoff_winkler_study)
 from bbpd.jobs import ROOT, Job, Spec
 from bbpd.kernels import KERNELS
 
@@ -181,6 +182,9 @@ def benchmark_specs(full=False, study=None):
             specs.append(make_spec("mode1prop", k, dx, "bbpd.benchmarks.mode1_propagation:run",
                                    {"kernel": k, "dx": dx, "nprocs": 1}, prop_in,
                                    ESTIMATE_S.get(("mode1prop", dx), 160.0)))
+    # the experiment's projectile: the Gaussian at 2 mm; --full adds the other kernels and 1 mm
+    specs += kalthoff_winkler_projectile.jobs(full=study)
     if study:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
         specs += kalthoff_winkler_study.jobs()
+        specs += kalthoff_winkler_grid.jobs()    # the grid's pull (44 runs)
     return specs
