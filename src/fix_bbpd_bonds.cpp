@@ -20,6 +20,9 @@
 #include "update.h"
 
 #include <algorithm>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <array>
 #include <atomic>
 #include <cmath>
@@ -309,6 +312,11 @@ void FixBBPDBonds::build_families()
   for_each_pair([&](int i, tagint t) { partner[i][npartner[i]++] = t; });
   // the tags hold the families: the list's pages go back before the sort below and the cache
   release_family_list();
+#if defined(__GLIBC__)
+  // the pages are small blocks inside the heap, which glibc keeps resident once freed: hand the
+  // free memory back, so that the resident set peaks at the tags and the cache alone
+  malloc_trim(0);
+#endif
 
   // partners in the order of their reference offset (z, then y, then x, compared exactly; ties:
   // tag order, only for partners that share a reference position): the summation order then
