@@ -13,9 +13,11 @@ kink angle   bbpd.crack_path.kink_angles of the last snapshot of final.dump at t
              within dx of that distance, in the crack-tip frame; theta < 0 for K_II > 0)
 extension    the grown crack's reach from the tip when the run stopped (fix halt at 5 delta)
 
-Command line (from the repository root); the committed results came from the first:
+Command line (from the repository root); the committed results came from the first two:
   tools/python -m bbpd.benchmarks.kink --work /tmp/kink
-  tools/python -m bbpd.benchmarks.kink --work /tmp/kink --reuse      (re-analyse, re-plot)
+  tools/python -m bbpd.benchmarks.kink --work /tmp/kink-fine --fine-only --add-missing \
+      --nprocs 2 --workers 1                  (the fine-grid cases the CSV lacks, added to it)
+  tools/python -m bbpd.benchmarks.kink --from-csv   (figure, README table and verdict only)
 """
 
 import argparse
@@ -162,15 +164,17 @@ def rms(values):
     return float(np.sqrt(np.mean(v**2))) if len(v) else None
 
 
-def verdict(rows, dist="2d"):
-    """Numbers behind the README's sentence, from the coarse-grid mixed-mode rows (psi > 0: in
-    pure Mode I every criterion says 0): RMS and mean (measured - criterion) with its standard
-    error, for all kernels and angles and per kernel and crack angle; the grid's pull = mean
-    |angle(alpha = 22.5) - angle(alpha = 0)| over kernels and mixes; the kernel effect = the
-    spread (max - min) of the angle across the kernels at one (mix, alpha)."""
-    coarse = [r for r in rows if r["dx"] == COARSE[0] and r["ncross"] == NCROSS]
+def verdict(rows, dist="2d", dx=COARSE[0], cases=None):
+    """Numbers behind the README's sentence, from the mixed-mode rows of one grid (psi > 0: in
+    pure Mode I every criterion says 0; cases: only these (kernel, psi, alpha)): RMS and mean
+    (measured - criterion) with its standard error, for all kernels and angles and per kernel
+    and crack angle; the grid's pull = mean |angle(alpha = 22.5) - angle(alpha = 0)| over
+    kernels and mixes; the kernel effect = the spread (max - min) of the angle across the
+    kernels at one (mix, alpha)."""
+    grid = [r for r in rows if r["dx"] == dx and r["ncross"] == NCROSS]
     key = f"angle_{dist}"
-    mixed = [r for r in coarse if r["psi"] > 0 and r[key] is not None]
+    mixed = [r for r in grid if r["psi"] > 0 and r[key] is not None
+             and (cases is None or (r["kernel"], r["psi"], r["alpha"]) in cases)]
     out = {"n": len(mixed), "rms": {}, "bias": {}, "se": {}, "rms_kernel": {}, "rms_alpha": {}}
     for c in CRITERIA:
         d = np.array([r[key] - r[c] for r in mixed])
@@ -188,12 +192,17 @@ def verdict(rows, dist="2d"):
     out["criteria_rms"] = {(a, b): rms([r[a] - r[b] for r in mixed])
                            for a in CRITERIA for b in CRITERIA if a < b}
     by = {(r["kernel"], r["psi"], r["alpha"]): r[key] for r in mixed}
-    pulls = [abs(by[k, p, ALPHAS_DEG[1]] - by[k, p, ALPHAS_DEG[0]]) for k in KERNELS
-             for p in MIXES_DEG if (k, p, ALPHAS_DEG[1]) in by and (k, p, ALPHAS_DEG[0]) in by]
+    pairs = [(k, p) for k in KERNELS for p in MIXES_DEG
+             if (k, p, ALPHAS_DEG[1]) in by and (k, p, ALPHAS_DEG[0]) in by]
+    pulls = [abs(by[k, p, ALPHAS_DEG[1]] - by[k, p, ALPHAS_DEG[0]]) for k, p in pairs]
+    out["pull_cases"] = {(k, p, a) for k, p in pairs for a in ALPHAS_DEG}
     out["pull_mean"] = float(np.mean(pulls)) if pulls else None
     out["pull_max"] = float(np.max(pulls)) if pulls else None
-    spreads = [max(v) - min(v) for p in MIXES_DEG for a in ALPHAS_DEG
-               for v in [[by.get((k, p, a)) for k in KERNELS]] if None not in v]
+    groups = [(p, a) for p in MIXES_DEG for a in ALPHAS_DEG
+              if all((k, p, a) in by for k in KERNELS)]
+    spreads = [max(by[k, p, a] for k in KERNELS) - min(by[k, p, a] for k in KERNELS)
+               for p, a in groups]
+    out["spread_cases"] = {(k, p, a) for p, a in groups for k in KERNELS}
     out["kernel_spread_mean"] = float(np.mean(spreads)) if spreads else None
     out["kernel_spread_max"] = float(np.max(spreads)) if spreads else None
     return out
@@ -220,18 +229,16 @@ def consistency(v):
     return text + "."
 
 
-def verdict_sentence(rows):
-    parts = []
-    for dist in ("2d", "4d"):
-        v = verdict(rows, dist)
-        b = v["best"]
-        r = ", ".join(f"{CRITERION_NAMES[c]} {v['rms'][c]:.1f} (mean {v['bias'][c]:+.1f} "
-                      f"+- {v['se'][c]:.1f})" for c in CRITERIA)
-        gap = sorted(v["rms"][c] for c in CRITERIA)
-        apart = ", ".join(f"{CRITERION_NAMES[a]} vs {CRITERION_NAMES[c]} {x:.1f}"
-                          for (a, c), x in sorted(v["criteria_rms"].items()))
-        parts.append(
-            f"**At {dist[0]} horizons** from the tip the {v['n']} coarse-grid mixed-mode kink "
+def grid_paragraph(rows, dist, dx, label):
+    """The verdict at one distance from the runs on one grid (label: 'coarse-grid', ...)."""
+    v = verdict(rows, dist, dx)
+    b = v["best"]
+    r = ", ".join(f"{CRITERION_NAMES[c]} {v['rms'][c]:.1f} (mean {v['bias'][c]:+.1f} "
+                  f"+- {v['se'][c]:.1f})" for c in CRITERIA)
+    gap = sorted(v["rms"][c] for c in CRITERIA)
+    apart = ", ".join(f"{CRITERION_NAMES[a]} vs {CRITERION_NAMES[c]} {x:.1f}"
+                      for (a, c), x in sorted(v["criteria_rms"].items()))
+    text = (f"**At {dist[0]} horizons** from the tip the {v['n']} {label} mixed-mode kink "
             f"angles lie closest to the **{CRITERION_NAMES[b]}** criterion. RMS deviation "
             f"(mean of measured - criterion +- its standard error), deg: {r}. The criteria "
             f"themselves differ by (RMS over the same runs) {apart} deg, and the best and the "
@@ -239,14 +246,68 @@ def verdict_sentence(rows):
             + consistency(v) + " Per kernel the closest is "
             + ", ".join(f"{k}: {CRITERION_NAMES[v['best_kernel'][k]]} "
                         f"({v['rms_kernel'][k, v['best_kernel'][k]]:.1f})"
-                        for k in v["best_kernel"])
-            + f". Rotating the crack from 0 to {ALPHAS_DEG[1]:g} deg against the grid's rows "
-            f"changes the angle by {v['pull_mean']:.1f} deg on average (at most "
-            f"{v['pull_max']:.1f}); the RMS deviation from the {CRITERION_NAMES[b]} criterion "
-            f"is {v['rms_alpha'][ALPHAS_DEG[0], b]:.1f} deg with the crack along the rows and "
-            f"{v['rms_alpha'][ALPHAS_DEG[1], b]:.1f} deg at {ALPHAS_DEG[1]:g} deg. The three "
-            f"kernels differ by {v['kernel_spread_mean']:.1f} deg on average (at most "
-            f"{v['kernel_spread_max']:.1f}) at the same mix and crack angle.")
+                        for k in v["best_kernel"]) + ".")
+    coarse = None if dx == COARSE[0] else verdict(rows, dist, COARSE[0], v["pull_cases"])
+    if v["pull_mean"] is not None:
+        text += (f" Rotating the crack from 0 to {ALPHAS_DEG[1]:g} deg against the grid's rows "
+                 f"changes the angle by {v['pull_mean']:.1f} deg on average (at most "
+                 f"{v['pull_max']:.1f}"
+                 + (f"; the same {len(v['pull_cases']) // 2} pairs on the coarse grid: "
+                    f"{coarse['pull_mean']:.1f}, at most {coarse['pull_max']:.1f}"
+                    if coarse and coarse["pull_mean"] is not None else "") + ")")
+        if all(v["rms_alpha"][a, b] is not None for a in ALPHAS_DEG):
+            text += (f"; the RMS deviation from the {CRITERION_NAMES[b]} criterion is "
+                     f"{v['rms_alpha'][ALPHAS_DEG[0], b]:.1f} deg with the crack along the rows "
+                     f"and {v['rms_alpha'][ALPHAS_DEG[1], b]:.1f} deg at {ALPHAS_DEG[1]:g} deg")
+        text += "."
+    if v["kernel_spread_mean"] is not None:
+        coarse = None if dx == COARSE[0] else verdict(rows, dist, COARSE[0], v["spread_cases"])
+        text += (f" The three kernels differ by {v['kernel_spread_mean']:.1f} deg on average (at "
+                 f"most {v['kernel_spread_max']:.1f}) at the same mix and crack angle"
+                 + (f" (the same cases on the coarse grid: {coarse['kernel_spread_mean']:.1f}, at "
+                    f"most {coarse['kernel_spread_max']:.1f})"
+                    if coarse and coarse["kernel_spread_mean"] is not None else "") + ".")
+    return text
+
+
+def fine_paragraphs(rows):
+    """The fine grid's runs beside the same cases on the coarse grid, and its verdict."""
+    by = {(r["kernel"], r["psi"], r["alpha"], r["dx"], r["ncross"]): r for r in rows}
+    fine = [r for r in rows if r["dx"] == FINE[0] and r["ncross"] == NCROSS
+            and r["angle_2d"] is not None]
+    if not fine:
+        return []
+    order = {k: n for n, k in enumerate(KERNELS)}
+    per_mix = []
+    for psi in sorted({r["psi"] for r in fine}, reverse=True):
+        mine = sorted((r for r in fine if r["psi"] == psi),
+                      key=lambda r: (r["alpha"], order[r["kernel"]]))
+        runs = []
+        for f in mine:
+            c = by.get((f["kernel"], psi, f["alpha"], COARSE[0], NCROSS))
+            runs.append(f"{f['kernel']}, crack {f['alpha']:g} deg: {f['angle_2d']:.1f} / "
+                        f"{fmt(f['angle_4d'])}"
+                        + (f" ({c['angle_2d']:.1f} / {fmt(c['angle_4d'])})" if c else ""))
+        per_mix.append(f"psi = {psi:g} deg (" + ", ".join(
+            f"{CRITERION_NAMES[c]} {mine[0][c]:.1f}" for c in CRITERIA) + "): " + "; ".join(runs))
+    parts = [f"**Finer grid** (dx = {FINE[0] * 1e3:g} mm, m = {FINE[1]}, same horizon), angle "
+             "at 2 / 4 horizons in deg (the same case on the coarse grid in parentheses): "
+             + ". ".join(per_mix) + "."]
+    label = f"fine-grid (dx = {FINE[0] * 1e3:g} mm)"
+    if sum(1 for r in fine if r["psi"] > 0) > 2:
+        for dist in ("2d", "4d"):
+            text = grid_paragraph(rows, dist, FINE[0], label)
+            cases = {(r["kernel"], r["psi"], r["alpha"]) for r in fine}
+            c = verdict(rows, dist, COARSE[0], cases)
+            text += (f" The same {c['n']} cases on the coarse grid: RMS deviation "
+                     + ", ".join(f"{CRITERION_NAMES[k]} {c['rms'][k]:.1f}" for k in CRITERIA)
+                     + f" deg, closest {CRITERION_NAMES[c['best']]}.")
+            parts.append(text)
+    return parts
+
+
+def verdict_sentence(rows):
+    parts = [grid_paragraph(rows, dist, COARSE[0], "coarse-grid") for dist in ("2d", "4d")]
     locked = [r for r in rows if r["psi"] > 0 and r["angle_2d"] is not None
               and grid_offset(r["angle_2d"] + r["alpha"]) <= LOCK_DEG
               and min(abs(r["angle_2d"] - r[c]) for c in CRITERIA) > 2 * LOCK_DEG]
@@ -269,25 +330,7 @@ def verdict_sentence(rows):
                      "deg under a change that leaves the physics alone, so single angles are "
                      "uncertain by that much and the verdict above rests on RMS values over many "
                      "runs.")
-    fine = [r for r in rows if r["dx"] == FINE[0]]
-    pairs = [(r, by.get((r["kernel"], r["psi"], r["alpha"], COARSE[0], NCROSS))) for r in fine]
-    pairs = [(f, c) for f, c in pairs if c is not None and f["angle_2d"] is not None]
-    mixed = [(f, c) for f, c in pairs if f["psi"] > 0]
-    if pairs:
-        crit = verdict(rows, "2d")["best"]
-        parts.append(f"Finer grid (dx = {FINE[0] * 1e3:g} mm, m = {FINE[1]}, same horizon; "
-                     f"{FINE_KERNEL}, crack along the rows): "
-                     + "; ".join(f"psi = {f['psi']:g} deg: {f['angle_2d']:.1f} / "
-                                 f"{f['angle_4d']:.1f} deg (coarse {c['angle_2d']:.1f} / "
-                                 f"{c['angle_4d']:.1f}, {CRITERION_NAMES[crit]} {f[crit]:.1f})"
-                                 for f, c in sorted(pairs, key=lambda fc: -fc[0]["psi"]))
-                     + ". RMS deviation at 2 / 4 horizons over the mixed-mode ones, fine (coarse): "
-                     + ", ".join(f"{CRITERION_NAMES[k]} "
-                                 f"{rms([f['angle_2d'] - f[k] for f, _ in mixed]):.1f} / "
-                                 f"{rms([f['angle_4d'] - f[k] for f, _ in mixed]):.1f} "
-                                 f"({rms([c['angle_2d'] - c[k] for _, c in mixed]):.1f} / "
-                                 f"{rms([c['angle_4d'] - c[k] for _, c in mixed]):.1f})"
-                                 for k in CRITERIA) + " deg.")
+    parts += fine_paragraphs(rows)
     return "\n\n".join(parts)
 
 
@@ -549,9 +592,14 @@ def main(argv=None):
                     help="run only the selected cases that --results lacks and add their rows "
                          "to it (the loading check is not repeated)")
     ap.add_argument("--no-readme", action="store_true", help="do not rewrite the README table")
+    ap.add_argument("--from-csv", action="store_true",
+                    help="run nothing: the figure and the README's table and verdict from "
+                         "--results as it is")
     ap.add_argument("--results", default=str(RESULTS), help="CSV to write")
     ap.add_argument("--figure", default=str(FOLDER / "kink_angle.png"), help="PNG to write")
     args = ap.parse_args(argv)
+    if args.from_csv:
+        return write_outputs(read_rows(args.results), Path(args.figure), not args.no_readme)
     todo = [c for c in cases() if not (args.coarse_only and c[3] != COARSE[0])
             and not (args.fine_only and c[3] != FINE[0]) and c[0] in args.kernels]
     todo.sort(key=lambda c: (-c[3], c[5]))    # the coarse grid first, the ramp check last
@@ -577,17 +625,22 @@ def main(argv=None):
         command = f"{first_line(path)}; rows added by {command.strip()}"
         rows = merged(rows, path)
     write_csv(rows, path, command.strip())
-    rows = read_rows(args.results)    # the README's numbers are the CSV's
-    plot(rows, Path(args.figure))
-    text = table(rows)
-    print(text)
-    sentence = verdict_sentence(rows)
-    print(sentence)
     if not args.no_readme and not args.add_missing:
         check = loading_check(Path(args.work) / "loading-check")
         print(f"J-integral check: {check}")
         LOADING_JSON.write_text(json.dumps(check, indent=1) + "\n")
-    if not args.no_readme and README.is_file():
+    write_outputs(read_rows(args.results), Path(args.figure), not args.no_readme)
+
+
+def write_outputs(rows, figure, readme=True):
+    """The figure, and the README's table and verdict, from rows (read from the CSV: the
+    README's numbers are the CSV's)."""
+    plot(rows, figure)
+    text = table(rows)
+    print(text)
+    sentence = verdict_sentence(rows)
+    print(sentence)
+    if readme and README.is_file():
         doc = README.read_text()
         doc = replace_between(doc, TABLE, text)
         doc = replace_between(doc, VERDICT, sentence)
