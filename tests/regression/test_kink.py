@@ -5,6 +5,8 @@ about 2,000 steps of 7,860 atoms on one rank: the mix psi = 45 deg must kink whe
 the sweep was made (examples/kink-mixed-mode/results/kink.csv), and pure Mode I must run
 straight ahead, far from any Mode-II angle (the negative control: a loading or sign error that
 swaps the modes, or a field that is not rotated with the crack, fails it).
+The same two runs make the kink section of REPORT.md (bbpd.report), which must hold their
+numbers, sentences computed from them and the figure.
 Slow: the whole sweep against the committed CSV, and the README's verdict recomputed from it.
 """
 import csv
@@ -14,6 +16,7 @@ import pytest
 
 from bbpd import kink
 from bbpd.benchmarks import kink as bench
+from bbpd.report import runs, sections
 
 CSV = bench.RESULTS
 
@@ -133,3 +136,35 @@ def test_kalthoff_winkler_mix(tmp_path):
     assert res["KI"] < 0.0 < res["KII"]
     assert res["mirror_KII"] == pytest.approx(-1.0, abs=1e-9)
     assert res["mirror_KI"] == pytest.approx(1.0, abs=1e-9)
+
+
+def test_report_section_holds_the_runs(coarse_runs, tmp_path):
+    """The kink section of REPORT.md (tools/reproduce) from the two coarse runs as report
+    specs, and one spec whose run is missing: the table holds the runs' own angles, the
+    sentences are computed from them, the figure is written."""
+    assert ("kink", sections.kink_section) in sections.BUILDERS
+    default = runs.kink_specs()
+    assert [s.job.kwargs["args"]["psi"] for s in default] == list(bench.MIXES_DEG)
+    assert len(runs.kink_specs(full=True)) == len(bench.cases())
+    by_psi = {s.job.kwargs["args"]["psi"]: s for s in default}
+    specs = [by_psi[45.0], by_psi[0.0], by_psi[90.0]]
+    results = {by_psi[p].job.label: coarse_runs[p] for p in (45.0, 0.0)}
+    sec = sections.kink_section(specs, results, tmp_path, [])
+    for psi in (45.0, 0.0):
+        res = coarse_runs[psi]
+        row = [ln for ln in sec["table"].splitlines() if ln.startswith(
+            f"| gaussian | 1 | 5 | 0 | {psi:g} | ")]
+        assert len(row) == 1
+        cells = [c.strip() for c in row[0].split("|")[1:-1]]
+        assert cells[6:8] == [f"{res['angle_2d']:.1f}", f"{res['angle_4d']:.1f}"]
+        assert cells[8] == f"{res['hoop_stress']:.1f}"
+    mixed = coarse_runs[45.0]
+    best = min(bench.CRITERIA, key=lambda c: abs(mixed["angle_2d"] - mixed[c]))
+    assert (f"over 1 mixed-mode run the angles lie closest to the "
+            f"{bench.CRITERION_NAMES[best]} criterion") in sec["text"]
+    assert f"Pure Mode I at dx = 1 mm: gaussian, crack 0 deg: {coarse_runs[0.0]['angle_2d']:.1f}" \
+        in sec["text"]
+    assert "Too few runs for a verdict" in sec["text"]
+    assert "Not measured (failed or not run): " + by_psi[90.0].job.label in sec["text"]
+    assert sec["figures"] == ["kink_angle.png"]
+    assert (tmp_path / "kink_angle.png").stat().st_size > 10_000

@@ -13,9 +13,11 @@ kink angle   bbpd.crack_path.kink_angles of the last snapshot of final.dump at t
              within dx of that distance, in the crack-tip frame; theta < 0 for K_II > 0)
 extension    the grown crack's reach from the tip when the run stopped (fix halt at 5 delta)
 
-Command line (from the repository root); the committed results came from the first:
+Command line (from the repository root); the committed results came from the first two:
   tools/python -m bbpd.benchmarks.kink --work /tmp/kink
-  tools/python -m bbpd.benchmarks.kink --work /tmp/kink --reuse      (re-analyse, re-plot)
+  tools/python -m bbpd.benchmarks.kink --work /tmp/kink-fine --fine-only --add-missing \
+      --nprocs 2 --workers 1                  (the fine-grid cases the CSV lacks, added to it)
+  tools/python -m bbpd.benchmarks.kink --from-csv   (figure, README table and verdict only)
 """
 
 import argparse
@@ -47,6 +49,11 @@ COARSE = (1.0e-3, 5)                              # dx (m), m = delta/dx: delta 
 FINE = (0.5e-3, 10)                               # same horizon, half the spacing
 FINE_CASES = ((90.0, 0.0), (45.0, 0.0), (0.0, 0.0))   # (psi, alpha)
 FINE_KERNEL = "gaussian"
+# the fine grid for the other kernels and for the crack at 22.5 deg, in the order they are run
+# (the budget may stop the list early: pure Mode II first, where the criteria differ most)
+FINE_MORE = tuple((k, p, a) for p in (90.0, 45.0, 0.0)
+                  for k, a in (("constant", 0.0), ("triangular", 0.0), (FINE_KERNEL, 22.5),
+                               ("constant", 22.5), ("triangular", 22.5)))
 # time step in dx/c_d: 0.64 of the velocity-Verlet limit the pair style prints at m = 5 and
 # 0.70 at m = 10 (the limit is set by the horizon, not by dx)
 DTFACTOR = {5: 0.8, 10: 1.6}
@@ -65,6 +72,7 @@ def cases():
     coarse grid; the Gaussian at FINE_CASES on the fine grid; one case at half the ramp rate."""
     out = [(k, p, a) + COARSE + (NCROSS,) for k in KERNELS for a in ALPHAS_DEG for p in MIXES_DEG]
     out += [(FINE_KERNEL, p, a) + FINE + (NCROSS,) for p, a in FINE_CASES]
+    out += [(k, p, a) + FINE + (NCROSS,) for k, p, a in FINE_MORE]
     k, p, a, n = RAMP_CHECK
     out.append((k, p, a) + COARSE + (n,))
     return out
@@ -112,12 +120,12 @@ def analyse(workdir):
     return res
 
 
-def job(workdir, kernel, psi, alpha, dx, m, ncross=NCROSS):
-    """One case, for bbpd.jobs (one rank)."""
+def job(workdir, kernel, psi, alpha, dx, m, ncross=NCROSS, nprocs=1):
+    """One case, for bbpd.jobs (one rank unless nprocs: the run's bits do not depend on it)."""
     variables = {"kernel": kernel, "psi": repr(psi), "alpha": repr(alpha), "dx": repr(dx),
                  "m": repr(float(m)), "ncross": repr(ncross), "dtfactor": repr(DTFACTOR[m])}
     start = time.perf_counter()
-    run_lammps(str(EXAMPLE), workdir, nprocs=1, vars=variables)
+    run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=variables)
     res = analyse(workdir)
     res["wall_s"] = time.perf_counter() - start
     res["ncross"] = ncross
@@ -156,15 +164,17 @@ def rms(values):
     return float(np.sqrt(np.mean(v**2))) if len(v) else None
 
 
-def verdict(rows, dist="2d"):
-    """Numbers behind the README's sentence, from the coarse-grid mixed-mode rows (psi > 0: in
-    pure Mode I every criterion says 0): RMS and mean (measured - criterion) with its standard
-    error, for all kernels and angles and per kernel and crack angle; the grid's pull = mean
-    |angle(alpha = 22.5) - angle(alpha = 0)| over kernels and mixes; the kernel effect = the
-    spread (max - min) of the angle across the kernels at one (mix, alpha)."""
-    coarse = [r for r in rows if r["dx"] == COARSE[0] and r["ncross"] == NCROSS]
+def verdict(rows, dist="2d", dx=COARSE[0], cases=None):
+    """Numbers behind the README's sentence, from the mixed-mode rows of one grid (psi > 0: in
+    pure Mode I every criterion says 0; cases: only these (kernel, psi, alpha)): RMS and mean
+    (measured - criterion) with its standard error, for all kernels and angles and per kernel
+    and crack angle; the grid's pull = mean |angle(alpha = 22.5) - angle(alpha = 0)| over
+    kernels and mixes; the kernel effect = the spread (max - min) of the angle across the
+    kernels at one (mix, alpha)."""
+    grid = [r for r in rows if r["dx"] == dx and r["ncross"] == NCROSS]
     key = f"angle_{dist}"
-    mixed = [r for r in coarse if r["psi"] > 0 and r[key] is not None]
+    mixed = [r for r in grid if r["psi"] > 0 and r[key] is not None
+             and (cases is None or (r["kernel"], r["psi"], r["alpha"]) in cases)]
     out = {"n": len(mixed), "rms": {}, "bias": {}, "se": {}, "rms_kernel": {}, "rms_alpha": {}}
     for c in CRITERIA:
         d = np.array([r[key] - r[c] for r in mixed])
@@ -182,12 +192,17 @@ def verdict(rows, dist="2d"):
     out["criteria_rms"] = {(a, b): rms([r[a] - r[b] for r in mixed])
                            for a in CRITERIA for b in CRITERIA if a < b}
     by = {(r["kernel"], r["psi"], r["alpha"]): r[key] for r in mixed}
-    pulls = [abs(by[k, p, ALPHAS_DEG[1]] - by[k, p, ALPHAS_DEG[0]]) for k in KERNELS
-             for p in MIXES_DEG if (k, p, ALPHAS_DEG[1]) in by and (k, p, ALPHAS_DEG[0]) in by]
+    pairs = [(k, p) for k in KERNELS for p in MIXES_DEG
+             if (k, p, ALPHAS_DEG[1]) in by and (k, p, ALPHAS_DEG[0]) in by]
+    pulls = [abs(by[k, p, ALPHAS_DEG[1]] - by[k, p, ALPHAS_DEG[0]]) for k, p in pairs]
+    out["pull_cases"] = {(k, p, a) for k, p in pairs for a in ALPHAS_DEG}
     out["pull_mean"] = float(np.mean(pulls)) if pulls else None
     out["pull_max"] = float(np.max(pulls)) if pulls else None
-    spreads = [max(v) - min(v) for p in MIXES_DEG for a in ALPHAS_DEG
-               for v in [[by.get((k, p, a)) for k in KERNELS]] if None not in v]
+    groups = [(p, a) for p in MIXES_DEG for a in ALPHAS_DEG
+              if all((k, p, a) in by for k in KERNELS)]
+    spreads = [max(by[k, p, a] for k in KERNELS) - min(by[k, p, a] for k in KERNELS)
+               for p, a in groups]
+    out["spread_cases"] = {(k, p, a) for p, a in groups for k in KERNELS}
     out["kernel_spread_mean"] = float(np.mean(spreads)) if spreads else None
     out["kernel_spread_max"] = float(np.max(spreads)) if spreads else None
     return out
@@ -214,18 +229,16 @@ def consistency(v):
     return text + "."
 
 
-def verdict_sentence(rows):
-    parts = []
-    for dist in ("2d", "4d"):
-        v = verdict(rows, dist)
-        b = v["best"]
-        r = ", ".join(f"{CRITERION_NAMES[c]} {v['rms'][c]:.1f} (mean {v['bias'][c]:+.1f} "
-                      f"+- {v['se'][c]:.1f})" for c in CRITERIA)
-        gap = sorted(v["rms"][c] for c in CRITERIA)
-        apart = ", ".join(f"{CRITERION_NAMES[a]} vs {CRITERION_NAMES[c]} {x:.1f}"
-                          for (a, c), x in sorted(v["criteria_rms"].items()))
-        parts.append(
-            f"**At {dist[0]} horizons** from the tip the {v['n']} coarse-grid mixed-mode kink "
+def grid_paragraph(rows, dist, dx, label):
+    """The verdict at one distance from the runs on one grid (label: 'coarse-grid', ...)."""
+    v = verdict(rows, dist, dx)
+    b = v["best"]
+    r = ", ".join(f"{CRITERION_NAMES[c]} {v['rms'][c]:.1f} (mean {v['bias'][c]:+.1f} "
+                  f"+- {v['se'][c]:.1f})" for c in CRITERIA)
+    gap = sorted(v["rms"][c] for c in CRITERIA)
+    apart = ", ".join(f"{CRITERION_NAMES[a]} vs {CRITERION_NAMES[c]} {x:.1f}"
+                      for (a, c), x in sorted(v["criteria_rms"].items()))
+    text = (f"**At {dist[0]} horizons** from the tip the {v['n']} {label} mixed-mode kink "
             f"angles lie closest to the **{CRITERION_NAMES[b]}** criterion. RMS deviation "
             f"(mean of measured - criterion +- its standard error), deg: {r}. The criteria "
             f"themselves differ by (RMS over the same runs) {apart} deg, and the best and the "
@@ -233,14 +246,68 @@ def verdict_sentence(rows):
             + consistency(v) + " Per kernel the closest is "
             + ", ".join(f"{k}: {CRITERION_NAMES[v['best_kernel'][k]]} "
                         f"({v['rms_kernel'][k, v['best_kernel'][k]]:.1f})"
-                        for k in v["best_kernel"])
-            + f". Rotating the crack from 0 to {ALPHAS_DEG[1]:g} deg against the grid's rows "
-            f"changes the angle by {v['pull_mean']:.1f} deg on average (at most "
-            f"{v['pull_max']:.1f}); the RMS deviation from the {CRITERION_NAMES[b]} criterion "
-            f"is {v['rms_alpha'][ALPHAS_DEG[0], b]:.1f} deg with the crack along the rows and "
-            f"{v['rms_alpha'][ALPHAS_DEG[1], b]:.1f} deg at {ALPHAS_DEG[1]:g} deg. The three "
-            f"kernels differ by {v['kernel_spread_mean']:.1f} deg on average (at most "
-            f"{v['kernel_spread_max']:.1f}) at the same mix and crack angle.")
+                        for k in v["best_kernel"]) + ".")
+    coarse = None if dx == COARSE[0] else verdict(rows, dist, COARSE[0], v["pull_cases"])
+    if v["pull_mean"] is not None:
+        text += (f" Rotating the crack from 0 to {ALPHAS_DEG[1]:g} deg against the grid's rows "
+                 f"changes the angle by {v['pull_mean']:.1f} deg on average (at most "
+                 f"{v['pull_max']:.1f}"
+                 + (f"; the same {len(v['pull_cases']) // 2} pairs on the coarse grid: "
+                    f"{coarse['pull_mean']:.1f}, at most {coarse['pull_max']:.1f}"
+                    if coarse and coarse["pull_mean"] is not None else "") + ")")
+        if all(v["rms_alpha"][a, b] is not None for a in ALPHAS_DEG):
+            text += (f"; the RMS deviation from the {CRITERION_NAMES[b]} criterion is "
+                     f"{v['rms_alpha'][ALPHAS_DEG[0], b]:.1f} deg with the crack along the rows "
+                     f"and {v['rms_alpha'][ALPHAS_DEG[1], b]:.1f} deg at {ALPHAS_DEG[1]:g} deg")
+        text += "."
+    if v["kernel_spread_mean"] is not None:
+        coarse = None if dx == COARSE[0] else verdict(rows, dist, COARSE[0], v["spread_cases"])
+        text += (f" The three kernels differ by {v['kernel_spread_mean']:.1f} deg on average (at "
+                 f"most {v['kernel_spread_max']:.1f}) at the same mix and crack angle"
+                 + (f" (the same cases on the coarse grid: {coarse['kernel_spread_mean']:.1f}, at "
+                    f"most {coarse['kernel_spread_max']:.1f})"
+                    if coarse and coarse["kernel_spread_mean"] is not None else "") + ".")
+    return text
+
+
+def fine_paragraphs(rows):
+    """The fine grid's runs beside the same cases on the coarse grid, and its verdict."""
+    by = {(r["kernel"], r["psi"], r["alpha"], r["dx"], r["ncross"]): r for r in rows}
+    fine = [r for r in rows if r["dx"] == FINE[0] and r["ncross"] == NCROSS
+            and r["angle_2d"] is not None]
+    if not fine:
+        return []
+    order = {k: n for n, k in enumerate(KERNELS)}
+    per_mix = []
+    for psi in sorted({r["psi"] for r in fine}, reverse=True):
+        mine = sorted((r for r in fine if r["psi"] == psi),
+                      key=lambda r: (r["alpha"], order[r["kernel"]]))
+        runs = []
+        for f in mine:
+            c = by.get((f["kernel"], psi, f["alpha"], COARSE[0], NCROSS))
+            runs.append(f"{f['kernel']}, crack {f['alpha']:g} deg: {f['angle_2d']:.1f} / "
+                        f"{fmt(f['angle_4d'])}"
+                        + (f" ({c['angle_2d']:.1f} / {fmt(c['angle_4d'])})" if c else ""))
+        per_mix.append(f"psi = {psi:g} deg (" + ", ".join(
+            f"{CRITERION_NAMES[c]} {mine[0][c]:.1f}" for c in CRITERIA) + "): " + "; ".join(runs))
+    parts = [f"**Finer grid** (dx = {FINE[0] * 1e3:g} mm, m = {FINE[1]}, same horizon), angle "
+             "at 2 / 4 horizons in deg (the same case on the coarse grid in parentheses): "
+             + ". ".join(per_mix) + "."]
+    label = f"fine-grid (dx = {FINE[0] * 1e3:g} mm)"
+    if sum(1 for r in fine if r["psi"] > 0) > 2:
+        for dist in ("2d", "4d"):
+            text = grid_paragraph(rows, dist, FINE[0], label)
+            cases = {(r["kernel"], r["psi"], r["alpha"]) for r in fine}
+            c = verdict(rows, dist, COARSE[0], cases)
+            text += (f" The same {c['n']} cases on the coarse grid: RMS deviation "
+                     + ", ".join(f"{CRITERION_NAMES[k]} {c['rms'][k]:.1f}" for k in CRITERIA)
+                     + f" deg, closest {CRITERION_NAMES[c['best']]}.")
+            parts.append(text)
+    return parts
+
+
+def verdict_sentence(rows):
+    parts = [grid_paragraph(rows, dist, COARSE[0], "coarse-grid") for dist in ("2d", "4d")]
     locked = [r for r in rows if r["psi"] > 0 and r["angle_2d"] is not None
               and grid_offset(r["angle_2d"] + r["alpha"]) <= LOCK_DEG
               and min(abs(r["angle_2d"] - r[c]) for c in CRITERIA) > 2 * LOCK_DEG]
@@ -263,25 +330,7 @@ def verdict_sentence(rows):
                      "deg under a change that leaves the physics alone, so single angles are "
                      "uncertain by that much and the verdict above rests on RMS values over many "
                      "runs.")
-    fine = [r for r in rows if r["dx"] == FINE[0]]
-    pairs = [(r, by.get((r["kernel"], r["psi"], r["alpha"], COARSE[0], NCROSS))) for r in fine]
-    pairs = [(f, c) for f, c in pairs if c is not None and f["angle_2d"] is not None]
-    mixed = [(f, c) for f, c in pairs if f["psi"] > 0]
-    if pairs:
-        crit = verdict(rows, "2d")["best"]
-        parts.append(f"Finer grid (dx = {FINE[0] * 1e3:g} mm, m = {FINE[1]}, same horizon; "
-                     f"{FINE_KERNEL}, crack along the rows): "
-                     + "; ".join(f"psi = {f['psi']:g} deg: {f['angle_2d']:.1f} / "
-                                 f"{f['angle_4d']:.1f} deg (coarse {c['angle_2d']:.1f} / "
-                                 f"{c['angle_4d']:.1f}, {CRITERION_NAMES[crit]} {f[crit]:.1f})"
-                                 for f, c in sorted(pairs, key=lambda fc: -fc[0]["psi"]))
-                     + ". RMS deviation at 2 / 4 horizons over the mixed-mode ones, fine (coarse): "
-                     + ", ".join(f"{CRITERION_NAMES[k]} "
-                                 f"{rms([f['angle_2d'] - f[k] for f, _ in mixed]):.1f} / "
-                                 f"{rms([f['angle_4d'] - f[k] for f, _ in mixed]):.1f} "
-                                 f"({rms([c['angle_2d'] - c[k] for _, c in mixed]):.1f} / "
-                                 f"{rms([c['angle_4d'] - c[k] for _, c in mixed]):.1f})"
-                                 for k in CRITERIA) + " deg.")
+    parts += fine_paragraphs(rows)
     return "\n\n".join(parts)
 
 
@@ -289,7 +338,8 @@ def verdict_sentence(rows):
 
 COLUMNS = ("kernel", "dx_mm", "m", "alpha", "psi", "ncross", "K_init_over_Kc", "K_end_over_Kc",
            "extension_over_delta", "angle_2d", "spread_2d", "angle_4d", "spread_4d",
-           "hoop_stress", "hoop_strain", "energy", "halted", "steps", "atoms", "wall_s")
+           "hoop_stress", "hoop_strain", "energy", "halted", "steps", "atoms", "nprocs",
+           "wall_s")
 
 
 def row_of(res):
@@ -317,14 +367,14 @@ def cpu_description():
 def write_csv(rows, path, command):
     path.parent.mkdir(parents=True, exist_ok=True)
     with open(path, "w", newline="") as fh:
-        fh.write(f"# {command}\n# CPU: {cpu_description()}; one rank per run, two runs at a "
-                 "time on a shared machine (wall_s); angles in degrees (theta < 0 for K_II > 0), "
+        fh.write(f"# {command}\n# CPU: {cpu_description()}; nprocs MPI ranks per run (empty: "
+                 "one), on a shared machine (wall_s); angles in degrees (theta < 0 for K_II > 0), "
                  "extension in horizons\n")
         w = csv.writer(fh)
         w.writerow(COLUMNS)
         for r in rows:
-            w.writerow([("" if r[c] is None else (f"{r[c]:.6g}" if isinstance(r[c], float) else r[c]))
-                        for c in COLUMNS])
+            w.writerow([("" if r.get(c) is None else
+                         (f"{r[c]:.6g}" if isinstance(r[c], float) else r[c])) for c in COLUMNS])
 
 
 def read_rows(path):
@@ -351,6 +401,12 @@ def fmt(v, spec=".1f"):
     return "-" if v is None else format(v, spec)
 
 
+def wall_cell(r):
+    """The run's wall time (s), with its MPI ranks when more than one."""
+    ranks = int(r.get("nprocs") or 1)
+    return f"{r['wall_s']:.0f}" + (f" ({ranks} ranks)" if ranks > 1 else "")
+
+
 def table(rows):
     head = ("| kernel | dx (mm) | m | crack to rows (deg) | psi (deg) | K at 1st break / K_c | "
             "angle at 2 delta | angle at 4 delta | hoop stress | hoop strain | max G (HPU) | "
@@ -362,7 +418,7 @@ def table(rows):
             r["kernel"], f"{r['dx'] * 1e3:g}", f"{round(r['delta'] / r['dx'])}", f"{r['alpha']:g}",
             f"{r['psi']:g}", fmt(r["K_init_over_Kc"], ".2f"), fmt(r["angle_2d"]), fmt(r["angle_4d"]),
             f"{r['hoop_stress']:.1f}", f"{r['hoop_strain']:.1f}", f"{r['energy']:.1f}",
-            f"{r['extension_over_delta']:.1f}", f"{r['ncross']:g}", f"{r['wall_s']:.0f}"]) + " |")
+            f"{r['extension_over_delta']:.1f}", f"{r['ncross']:g}", wall_cell(r)]) + " |")
     return "\n".join(lines)
 
 
@@ -405,7 +461,8 @@ def plot(rows, path):
         handles += [Line2D([], [], color="grey", marker=mk, ls="", mfc=f, label=lab)
                     for mk, f, lab in (("o", "grey", "crack 0 deg, dx 1 mm"),
                                        ("^", "grey", "crack 22.5 deg, dx 1 mm"),
-                                       ("s", "none", "crack 0 deg, dx 0.5 mm"))]
+                                       ("s", "none", "crack 0 deg, dx 0.5 mm"),
+                                       ("D", "none", "crack 22.5 deg, dx 0.5 mm"))]
         handles.append(Line2D([], [], color="grey", lw=0.8, alpha=0.5,
                               label="grid directions (crack 0 deg)"))
         axes[0].legend(fontsize=7, loc="lower left")
@@ -416,21 +473,146 @@ def plot(rows, path):
         plt.close(fig)
 
 
+# --------------------------------------------------------------------------- report
+
+REPORT_TITLE = "Quasi-static kink under mixed-mode loading (kink angle against the mode mix)"
+REPORT_SETUP = ("A straight crack from the edge to the centre of a disk (R = 50 mm, plane "
+                "stress, glass-like, G_c = 8 J/m^2) whose boundary ring follows the leading "
+                "Williams field of (K_I, K_II) = K(t) (cos psi, sin psi), K ramped slowly with "
+                "damping until the crack has grown 5 horizons; the kink angle is the direction "
+                "of the grown crack's centroid at 2 and 4 horizons from the tip (theta < 0 for "
+                "K_II > 0), against the maximum hoop stress (Erdogan-Sih), maximum hoop strain "
+                "(the model's nu = 1/3) and maximum energy release rate (Hussain-Pu-Underwood) "
+                "criteria; delta = 5 mm, dx = 1 mm (m = 5) or 0.5 mm (m = 10); see "
+                "examples/kink-mixed-mode/README.md.")
+FULL_COVERAGE = (len(KERNELS), len(ALPHAS_DEG))    # kernels and crack angles of the verdict
+
+
+def summary_text(rows):
+    """The report's sentences from the rows at hand (any subset of the sweep): per distance the
+    RMS deviation of the mixed-mode angles from each criterion and the closest, the pure Mode II
+    and Mode I angles, the runs locked onto a grid direction; with the whole coarse sweep, the
+    README's verdict as well."""
+    main = [r for r in rows if r["ncross"] == NCROSS]
+    text = []
+    for grid in sorted({r["dx"] for r in main}, reverse=True):
+        on = [r for r in main if r["dx"] == grid]
+        what = (f"dx = {grid * 1e3:g} mm ({', '.join(sorted({r['kernel'] for r in on}))}; crack "
+                f"at {' and '.join(f'{a:g}' for a in sorted({r['alpha'] for r in on}))} deg to "
+                "the rows)")
+        for dist in ("2d", "4d"):
+            mixed = [r for r in on if r["psi"] > 0 and r[f"angle_{dist}"] is not None]
+            if not mixed:
+                continue
+            dev = {c: rms([r[f"angle_{dist}"] - r[c] for r in mixed]) for c in CRITERIA}
+            best = min(CRITERIA, key=dev.get)
+            text.append(f"At {dist[0]} horizons, {what}: over {len(mixed)} mixed-mode "
+                        f"run{'s' if len(mixed) > 1 else ''} the angles lie closest to the "
+                        f"{CRITERION_NAMES[best]} criterion; RMS deviation "
+                        + ", ".join(f"{CRITERION_NAMES[c]} {dev[c]:.1f}" for c in CRITERIA)
+                        + " deg.")
+        for psi, name in ((90.0, "Pure Mode II"), (0.0, "Pure Mode I")):
+            pure = [r for r in on if r["psi"] == psi and r["angle_2d"] is not None]
+            if pure:
+                text.append(f"{name} at dx = {grid * 1e3:g} mm: "
+                            + "; ".join(f"{r['kernel']}, crack {r['alpha']:g} deg: "
+                                        f"{r['angle_2d']:.1f} / {fmt(r['angle_4d'])} deg"
+                                        for r in pure)
+                            + f" at 2 / 4 horizons (criteria: "
+                            + ", ".join(f"{CRITERION_NAMES[c]} {pure[0][c]:.1f}"
+                                        for c in CRITERIA) + " deg).")
+    locked = [r for r in main if r["psi"] > 0 and r["angle_2d"] is not None
+              and grid_offset(r["angle_2d"] + r["alpha"]) <= LOCK_DEG
+              and min(abs(r["angle_2d"] - r[c]) for c in CRITERIA) > 2 * LOCK_DEG]
+    if locked:
+        text.append("On a grid direction (within 1 deg of a multiple of 45 deg in the lattice "
+                    "frame, more than 2 deg from every criterion): "
+                    + "; ".join(f"{r['kernel']} dx {r['dx'] * 1e3:g} mm, crack {r['alpha']:g} "
+                                f"deg, psi {r['psi']:g} deg: {r['angle_2d']:.1f} deg"
+                                for r in locked) + ".")
+    coarse = [r for r in main if r["dx"] == COARSE[0]]
+    if (len({r["kernel"] for r in coarse}), len({r["alpha"] for r in coarse})) == FULL_COVERAGE:
+        text.append("The whole sweep, as in the README: " + verdict_sentence(rows))
+    else:
+        text.append("Too few runs for a verdict between the criteria: `tools/reproduce --full` "
+                    "runs the whole sweep, whose verdict is in "
+                    "examples/kink-mixed-mode/README.md.")
+    return text
+
+
+def section(specs, results, figdir, notes):
+    """The section of REPORT.md (bbpd.report.write_report) from the report's kink runs."""
+    done = [s for s in specs if results.get(s.job.label) and "error" not in results[s.job.label]]
+    rows = [row_of(results[s.job.label]) for s in done]
+    bad = [s.job.label for s in specs if s not in done]
+    text = summary_text(rows) if rows else []
+    if bad:
+        text.append("Not measured (failed or not run): " + ", ".join(bad) + ".")
+    names = []
+    if rows:
+        path = Path(figdir) / "kink_angle.png"
+        try:
+            plot(rows, path)
+            names = [path.name]
+        except Exception as exc:  # the report must still be written
+            notes.append(f"kink figure not made: {type(exc).__name__}: {exc}")
+    return {"title": REPORT_TITLE, "setup": REPORT_SETUP, "table": table(rows) if rows else "",
+            "text": " ".join(text), "figures": names}
+
+
+def case_key(r):
+    """What identifies a row: kernel, mix, crack angle, grid and ramp."""
+    return (r["kernel"], float(r["psi"]), float(r["alpha"]), round(float(r["dx_mm"]), 9),
+            float(r["ncross"]))
+
+
+def merged(rows, path):
+    """rows, and the rows of the CSV at path that are not among them (same case_key)."""
+    mine = {case_key(r) for r in rows}
+    return [r for r in read_rows(path) if case_key(r) not in mine] + rows
+
+
+def first_line(path):
+    """The command in the first line of a CSV written by write_csv."""
+    with open(path) as fh:
+        return fh.readline().lstrip("# ").strip()
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--work", default="/tmp/kink", help="run folders and the job cache")
-    ap.add_argument("--workers", type=int, default=2, help="single-rank runs at a time")
-    ap.add_argument("--coarse-only", action="store_true")
+    ap.add_argument("--workers", type=int, default=2, help="runs at a time")
+    ap.add_argument("--nprocs", type=int, default=1, help="MPI ranks per run (same bits)")
+    grids = ap.add_mutually_exclusive_group()
+    grids.add_argument("--coarse-only", action="store_true")
+    grids.add_argument("--fine-only", action="store_true")
+    ap.add_argument("--kernels", nargs="+", choices=KERNELS, default=list(KERNELS))
+    ap.add_argument("--max-runs", type=int, help="the first N cases of the selection only")
+    ap.add_argument("--add-missing", action="store_true",
+                    help="run only the selected cases that --results lacks and add their rows "
+                         "to it (the loading check is not repeated)")
     ap.add_argument("--no-readme", action="store_true", help="do not rewrite the README table")
+    ap.add_argument("--from-csv", action="store_true",
+                    help="run nothing: the figure and the README's table and verdict from "
+                         "--results as it is")
     ap.add_argument("--results", default=str(RESULTS), help="CSV to write")
     ap.add_argument("--figure", default=str(FOLDER / "kink_angle.png"), help="PNG to write")
     args = ap.parse_args(argv)
-    todo = [c for c in cases() if not (args.coarse_only and c[3] != COARSE[0])]
+    if args.from_csv:
+        return write_outputs(read_rows(args.results), Path(args.figure), not args.no_readme)
+    todo = [c for c in cases() if not (args.coarse_only and c[3] != COARSE[0])
+            and not (args.fine_only and c[3] != FINE[0]) and c[0] in args.kernels]
     todo.sort(key=lambda c: (-c[3], c[5]))    # the coarse grid first, the ramp check last
+    path = Path(args.results)
+    if args.add_missing and path.is_file():
+        have = {case_key(r) for r in read_rows(path)}
+        todo = [c for c in todo if (c[0], c[1], c[2], round(c[3] * 1e3, 9), c[5]) not in have]
+    todo = todo[:args.max_runs]
+    extra = {"nprocs": args.nprocs} if args.nprocs > 1 else {}
     jobs = [Job(label=f"{k} psi {p:g} alpha {a:g} dx {dx * 1e3:g} mm ncross {n:g}",
                 func="bbpd.benchmarks.kink:job",
-                kwargs=dict(kernel=k, psi=p, alpha=a, dx=dx, m=m, ncross=n), inputs=(str(EXAMPLE),),
-                estimate_s=20.0 if dx == COARSE[0] else 160.0)
+                kwargs=dict(kernel=k, psi=p, alpha=a, dx=dx, m=m, ncross=n, **extra),
+                inputs=(str(EXAMPLE),), estimate_s=20.0 if dx == COARSE[0] else 160.0)
             for k, p, a, dx, m, n in todo]
     results = run_jobs(jobs, args.work, workers=args.workers)
     rows = [row_of(results[j.label]) for j in jobs if "error" not in results[j.label]]
@@ -439,18 +621,26 @@ def main(argv=None):
         print("FAILED:", failed)
     command = "tools/python -m bbpd.benchmarks.kink " + " ".join(
         sys.argv[1:] if argv is None else argv)
-    write_csv(rows, Path(args.results), command.strip())
-    rows = read_rows(args.results)    # the README's numbers are the CSV's
-    plot(rows, Path(args.figure))
+    if args.add_missing and path.is_file():
+        command = f"{first_line(path)}; rows added by {command.strip()}"
+        rows = merged(rows, path)
+    write_csv(rows, path, command.strip())
+    if not args.no_readme and not args.add_missing:
+        check = loading_check(Path(args.work) / "loading-check")
+        print(f"J-integral check: {check}")
+        LOADING_JSON.write_text(json.dumps(check, indent=1) + "\n")
+    write_outputs(read_rows(args.results), Path(args.figure), not args.no_readme)
+
+
+def write_outputs(rows, figure, readme=True):
+    """The figure, and the README's table and verdict, from rows (read from the CSV: the
+    README's numbers are the CSV's)."""
+    plot(rows, figure)
     text = table(rows)
     print(text)
     sentence = verdict_sentence(rows)
     print(sentence)
-    check = loading_check(Path(args.work) / "loading-check")
-    print(f"J-integral check: {check}")
-    if not args.no_readme:
-        LOADING_JSON.write_text(json.dumps(check, indent=1) + "\n")
-    if not args.no_readme and README.is_file():
+    if readme and README.is_file():
         doc = README.read_text()
         doc = replace_between(doc, TABLE, text)
         doc = replace_between(doc, VERDICT, sentence)

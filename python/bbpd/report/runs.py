@@ -14,7 +14,7 @@ from pathlib import Path
 from bbpd import jobs as jobmod
 from bbpd import readers
 from bbpd.benchmarks import (dispersion, kalthoff_winkler_grid, kalthoff_winkler_projectile,
-                             kalthoff_winkler_study)
+                             kalthoff_winkler_study, kink)
 from bbpd.jobs import ROOT, Job, Spec
 from bbpd.kernels import KERNELS
 
@@ -37,6 +37,10 @@ KW_GAUSSIAN_DX_FULL = (0.5e-3,)             # m, Gaussian only
 KW_GAUSSIAN_DX_STUDY = (0.25e-3,)           # m, Gaussian only, --full: 320,000 atoms, one rank
 MODE1PROP_DX = (0.1, 0.05)                  # m, three kernels (crack growth)
 MODE1PROP_DX_FULL = (0.1, 0.05, 0.025)
+# the kink test: by default the Gaussian kernel on the coarse grid with the crack along the
+# rows at the five mixes (the cheapest set that draws the angle against the mix); --full runs
+# the sweep of examples/kink-mixed-mode (bbpd.benchmarks.kink.cases)
+KINK_DEFAULT = ("gaussian", 0.0)     # kernel, crack angle to the grid's rows (deg)
 
 # Expected wall time of each single-rank run here, 2 at a time on 2 shared cores (s); only
 # the time-left estimate and the job order (longest first) use them.
@@ -46,6 +50,7 @@ ESTIMATE_S = {
     ("mode2", 1.0e-3): 2.0, ("mode2", 0.5e-3): 8.0, ("mode2", 0.25e-3): 30.0,
     ("kw", 2.0e-3): 8.0, ("kw", 1.0e-3): 75.0, ("kw", 0.5e-3): 200.0, ("kw", 0.25e-3): 1200.0,
     ("mode1prop", 0.1): 3.0, ("mode1prop", 0.05): 15.0, ("mode1prop", 0.025): 160.0,
+    ("kink", 1.0e-3): 20.0, ("kink", 0.5e-3): 600.0,
 }
 
 
@@ -123,17 +128,28 @@ def bench_inputs(bench):
                           BENCH / "mode1_propagation.py", BENCH / "mode1.py",
                           ROOT / "python" / "bbpd" / "crack_motion.py",
                           ROOT / "python" / "bbpd" / "crack_tip.py", FREUND_PY,
-                          READERS_PY)}[bench]
+                          READERS_PY),
+            "kink": (kink.EXAMPLE, BENCH / "kink.py", ROOT / "python" / "bbpd" / "kink.py",
+                     ROOT / "python" / "bbpd" / "crack_path.py", READERS_PY)}[bench]
+
+
+def label_of(bench, kernel, dx, args):
+    """The run's name in the log and the report (part of its cache key)."""
+    if bench == "kink":
+        return (f"kink {kernel} dx = {dx * 1e3:g} mm psi = {args['psi']:g} crack at "
+                f"{args['alpha']:g} deg" + ("" if args["ncross"] == kink.NCROSS else
+                                            f" ramp {args['ncross']:g} transits per K_c"))
+    return {"dispersion": f"dispersion {kernel}",
+            "mode1": f"Mode I {kernel} dx = {dx:g} m",
+            "mode2": f"Mode II {kernel} dx = {dx * 1e3:g} mm",
+            "kw": f"Kalthoff-Winkler {kernel} dx = {dx * 1e3:g} mm",
+            "mode1prop": f"Mode I propagation {kernel} dx = {dx:g} m"}[bench]
 
 
 def make_spec(bench, kernel, dx, target, args, inputs, estimate):
     """One run of the report: target(workdir, **args) as a cached job whose key covers the
     files in inputs (input script, analysis code)."""
-    label = {"dispersion": f"dispersion {kernel}",
-             "mode1": f"Mode I {kernel} dx = {dx:g} m",
-             "mode2": f"Mode II {kernel} dx = {dx * 1e3:g} mm",
-             "kw": f"Kalthoff-Winkler {kernel} dx = {dx * 1e3:g} mm",
-             "mode1prop": f"Mode I propagation {kernel} dx = {dx:g} m"}[bench]
+    label = label_of(bench, kernel, dx, args)
     job = Job(label=label, func="bbpd.report:run_job",
               kwargs={"target": target, "args": args, "label": label},
               inputs=tuple(str(p) for p in inputs), estimate_s=estimate)
@@ -184,7 +200,20 @@ def benchmark_specs(full=False, study=None):
                                    ESTIMATE_S.get(("mode1prop", dx), 160.0)))
     # the experiment's projectile: the Gaussian at 2 mm; --full adds the other kernels and 1 mm
     specs += kalthoff_winkler_projectile.jobs(full=study)
+    specs += kink_specs(study)
     if study:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
         specs += kalthoff_winkler_study.jobs()
         specs += kalthoff_winkler_grid.jobs()    # the grid's pull (44 runs)
     return specs
+
+
+def kink_specs(full=False):
+    """The kink test's runs: KINK_DEFAULT's five mixes, or with full=True the whole sweep."""
+    kernel, alpha = KINK_DEFAULT
+    cases = [c for c in kink.cases() if full or (c[0], c[2], c[3], c[5]) ==
+             (kernel, alpha, kink.COARSE[0], kink.NCROSS)]
+    inputs = bench_inputs("kink")
+    return [make_spec("kink", k, dx, "bbpd.benchmarks.kink:job",
+                      {"kernel": k, "psi": p, "alpha": a, "dx": dx, "m": m, "ncross": n},
+                      inputs, ESTIMATE_S.get(("kink", dx), 600.0))
+            for k, p, a, dx, m, n in cases]
