@@ -482,16 +482,21 @@ bool PairBBPD::bonded(int i, tagint jtag) const
 
 /* the candidates of the short-range forces, searched again when the bond cache was rebuilt
    (atoms moved to other indices) or an atom has moved half the search's skin */
-void PairBBPD::update_close_pairs(double max_distance, double skin,
-                                  const std::function<double(int, int)> &distance)
+const double *PairBBPD::stale_close_pairs(int &nlocal, int &nall)
 {
   const double *xx = atom->x[0];
-  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  if (close_generation == bonds->cache_generation() && close_pairs.current(xx, nlocal, nall)) return;
+  nlocal = atom->nlocal;
+  nall = nlocal + atom->nghost;
+  if (close_generation == bonds->cache_generation() && close_pairs.current(xx, nlocal, nall))
+    return nullptr;
   close_generation = bonds->cache_generation();
-  if (!close_pairs.build(xx, nlocal, nall, max_distance, skin, distance))
-    error->one(FLERR, "Pair style {}: non-finite atom positions at step {}: the run is unstable, "
-               "reduce the timestep", force->pair_style, update->ntimestep);
+  return xx;
+}
+
+void PairBBPD::nonfinite_positions_error()
+{
+  error->one(FLERR, "Pair style {}: non-finite atom positions at step {}: the run is unstable, "
+             "reduce the timestep", force->pair_style, update->ntimestep);
 }
 
 /* repulsion between atoms closer than the contact distance that share no intact bond; each

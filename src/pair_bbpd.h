@@ -22,7 +22,6 @@
 #include "bbpd_kernel.h"
 #include "pair.h"
 
-#include <functional>
 #include <vector>
 
 namespace BBPD {
@@ -125,8 +124,18 @@ class PairBBPD : public Pair {
   // range before the atoms move half the search's skin, searched again when stale
   BBPD::ClosePairs close_pairs;
   bigint close_generation = -1;    // of the bond cache the candidates' indices belong to
-  void update_close_pairs(double max_distance, double skin,
-                          const std::function<double(int, int)> &distance);
+  // distance(i, j): the pair's distance, called for every pair the search meets (inlined)
+  template <class Distance>
+  void update_close_pairs(double max_distance, double skin, Distance distance)
+  {
+    int nlocal, nall;
+    const double *xx = stale_close_pairs(nlocal, nall);
+    if (xx && !close_pairs.build(xx, nlocal, nall, max_distance, skin, distance))
+      nonfinite_positions_error();
+  }
+  // the positions to search the candidates at, or null while they are current
+  const double *stale_close_pairs(int &nlocal, int &nall);
+  [[noreturn]] void nonfinite_positions_error();
 };
 
 }    // namespace LAMMPS_NS
