@@ -46,6 +46,18 @@ class Spec:
     job: Job
 
 
+def finished(specs, results):
+    """(the specs whose run finished without an error, the labels of the others): what a
+    report section can show and what it must name as not measured"""
+    done = [s for s in specs if results.get(s.job.label) and "error" not in results[s.job.label]]
+    return done, [s.job.label for s in specs if s not in done]
+
+
+def not_measured(labels):
+    """the report's sentence for runs that failed or did not run"""
+    return "Not measured (failed or not run): " + ", ".join(labels) + "."
+
+
 def plugin_path():
     version = os.environ.get("BBPD_LAMMPS_VERSION", "20260704")
     return ROOT / "build" / f"lammps-{version}" / "bbpdplugin.so"

@@ -377,11 +377,10 @@ def section(specs, results, figdir, notes):
                          "examples/kalthoff-winkler/README.md, 'The grid's pull'.",
                 "table": "", "text": "", "figures": []}
     rows = collect(specs, results)
-    bad = [s.job.label for s in specs
-           if s.job.label not in results or "error" in results[s.job.label]]
+    bad = jobmod.finished(specs, results)[1]
     text = pull_sentence(rows) if rows else []
     if bad:
-        text.append("Not measured (failed or not run): " + ", ".join(bad) + ".")
+        text.append(jobmod.not_measured(bad))
     return {"title": REPORT_TITLE,
             "setup": "The Kalthoff-Winkler plate (paper's G_c, to 100 us) on the square grid, on "
                      "a perturbed grid (points moved by up to 0.2 dx, three seeds) and on grids "

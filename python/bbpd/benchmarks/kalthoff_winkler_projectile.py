@@ -36,6 +36,7 @@ from pathlib import Path
 
 import numpy as np
 
+from bbpd import jobs as jobmod
 from bbpd import markers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as study
@@ -392,12 +393,11 @@ def report_text(rows):
 
 def section(specs, results, figdir, notes):
     """The projectile's section of report/REPORT.md (bbpd.report.write_report)."""
-    done = [s for s in specs if results.get(s.job.label) and "error" not in results[s.job.label]]
+    done, bad = jobmod.finished(specs, results)
     rows = [results[s.job.label] for s in done]
-    bad = [s.job.label for s in specs if s not in done]
     text = report_text(rows)
     if bad:
-        text.append("Not measured (failed or not run): " + ", ".join(bad) + ".")
+        text.append(jobmod.not_measured(bad))
     names = []
     for r in rows:
         try:

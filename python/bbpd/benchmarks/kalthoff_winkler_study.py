@@ -535,7 +535,7 @@ def section(specs, results, figdir, notes):
         notes.append(f"study figures not made: {type(exc).__name__}: {exc}")
     text = conclusion(done) if done else []
     if failed:
-        text.append("Not measured (failed or not run): " + ", ".join(failed) + ".")
+        text.append(jobmod.not_measured(failed))
     return {"title": title,
             "setup": cases_table() + "\n\nEvery run to 100 us. Angles from the notch direction "
                      "towards the outer side at 70 us unless 'at end' (100 us): initial = "

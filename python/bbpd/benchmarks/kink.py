@@ -33,6 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from bbpd import crack_path, kink, readers
+from bbpd import jobs as jobmod
 from bbpd.jobs import Job, run_jobs
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.runner import run_lammps
@@ -100,7 +101,7 @@ def analyse(workdir):
     workdir = Path(workdir)
     res = read_log(workdir / "log.lammps")
     data = np.loadtxt(workdir / "tip.dat", comments="#")
-    step, K, dtip = data[:, 0], data[:, 1], data[:, 2]
+    K, dtip = data[:, 1], data[:, 2]    # columns: step, K, tip distance
     rise = np.nonzero(dtip > dtip[0] * (1.0 + 1e-9) + 1e-12)[0]
     res["K_init_over_Kc"] = float(K[rise[0]] / res["Kc"]) if len(rise) else None
     res["K_end_over_Kc"] = float(K[-1] / res["Kc"])
@@ -518,7 +519,7 @@ def summary_text(rows):
                             + "; ".join(f"{r['kernel']}, crack {r['alpha']:g} deg: "
                                         f"{r['angle_2d']:.1f} / {fmt(r['angle_4d'])} deg"
                                         for r in pure)
-                            + f" at 2 / 4 horizons (criteria: "
+                            + " at 2 / 4 horizons (criteria: "
                             + ", ".join(f"{CRITERION_NAMES[c]} {pure[0][c]:.1f}"
                                         for c in CRITERIA) + " deg).")
     locked = [r for r in main if r["psi"] > 0 and r["angle_2d"] is not None
@@ -542,12 +543,11 @@ def summary_text(rows):
 
 def section(specs, results, figdir, notes):
     """The section of REPORT.md (bbpd.report.write_report) from the report's kink runs."""
-    done = [s for s in specs if results.get(s.job.label) and "error" not in results[s.job.label]]
+    done, bad = jobmod.finished(specs, results)
     rows = [row_of(results[s.job.label]) for s in done]
-    bad = [s.job.label for s in specs if s not in done]
     text = summary_text(rows) if rows else []
     if bad:
-        text.append("Not measured (failed or not run): " + ", ".join(bad) + ".")
+        text.append(jobmod.not_measured(bad))
     names = []
     if rows:
         path = Path(figdir) / "kink_angle.png"

@@ -38,6 +38,7 @@ from pathlib import Path
 import numpy as np
 
 from bbpd import crack_motion, crack_tip, freund, markers, readers
+from bbpd import jobs as jobmod
 from bbpd.benchmarks import mode1
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.runner import run_lammps
@@ -372,12 +373,11 @@ def summary_text(rows):
 
 def section(specs, results, figdir, notes):
     """The section of REPORT.md (bbpd.report.write_report) from the report's runs."""
-    done = [s for s in specs if results.get(s.job.label) and "error" not in results[s.job.label]]
+    done, bad = jobmod.finished(specs, results)
     rows = [results[s.job.label] for s in done]
-    bad = [s.job.label for s in specs if s not in done]
     text = summary_text(rows) if rows else []
     if bad:
-        text.append("Not measured (failed or not run): " + ", ".join(bad) + ".")
+        text.append(jobmod.not_measured(bad))
     names = []
     if rows:
         try:
