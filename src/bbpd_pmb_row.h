@@ -124,17 +124,11 @@ inline bool row_force_stretch_avx2(const double *xx, int i, const Idx *bj, const
     stretch(all, false, elong, xi0, _mm256_setr_pd(smin[j[0]], smin[j[1]], smin[j[2]], smin[j[3]]));
   };
   auto tail = [&](auto half, int k) {
-    const __m128i m32 = _mm_cmpgt_epi32(_mm_set1_epi32(n - k), _mm_setr_epi32(0, 1, 2, 3));
-    const __m256d m = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(m32));
-    const __m128i j1 = load_partners(bj, m32, i, k);
-    const __m128i j3 = _mm_mullo_epi32(j1, _mm_set1_epi32(3));
-    const __m256d dx = _mm256_sub_pd(_mm256_mask_i32gather_pd(xi, xx, j3, m, 8), xi);
-    const __m256d dy = _mm256_sub_pd(_mm256_mask_i32gather_pd(yi, xx + 1, j3, m, 8), yi);
-    const __m256d dz = _mm256_sub_pd(_mm256_mask_i32gather_pd(zi, xx + 2, j3, m, 8), zi);
+    const TailGroup4 g(xx, bj, i, n, k, xi, yi, zi);
     __m256d xi0, coef;
-    load_values(vals, m, m32, k, j1, xi0, coef);
-    const __m256d elong = lanes.template add<decltype(half)::value, true>(m, dx, dy, dz, xi0, coef);
-    stretch(m, true, elong, xi0, _mm256_mask_i32gather_pd(vsmin_i, smin, j1, m, 8));
+    load_values(vals, g.m, g.m32, k, g.j1, xi0, coef);
+    const __m256d elong = lanes.template add<decltype(half)::value, true>(g.m, g.dx, g.dy, g.dz, xi0, coef);
+    stretch(g.m, true, elong, xi0, _mm256_mask_i32gather_pd(vsmin_i, smin, g.j1, g.m, 8));
   };
   for_each_group4(n, full, tail);
   const __m128d m2 = _mm_min_pd(_mm256_castpd256_pd128(vmin), _mm256_extractf128_pd(vmin, 1));

@@ -461,6 +461,23 @@ template <class Full, class Tail> inline void for_each_group4(int n, Full &&full
   }
 }
 
+/* the last n - k < 4 bonds of the row of atom i (at xi, yi, zi), masked: their lanes (m, and
+   m32 for 32-bit data), partners j1 and partner differences d*, gathered */
+struct TailGroup4 {
+  __m128i m32, j1;
+  __m256d m, dx, dy, dz;
+  template <class Idx>
+  TailGroup4(const double *xx, const Idx *bj, int i, int n, int k, __m256d xi, __m256d yi, __m256d zi) :
+      m32(_mm_cmpgt_epi32(_mm_set1_epi32(n - k), _mm_setr_epi32(0, 1, 2, 3))),
+      j1(load_partners(bj, m32, i, k)), m(_mm256_castsi256_pd(_mm256_cvtepi32_epi64(m32)))
+  {
+    const __m128i j3 = _mm_mullo_epi32(j1, _mm_set1_epi32(3));
+    dx = _mm256_sub_pd(_mm256_mask_i32gather_pd(xi, xx, j3, m, 8), xi);
+    dy = _mm256_sub_pd(_mm256_mask_i32gather_pd(yi, xx + 1, j3, m, 8), yi);
+    dz = _mm256_sub_pd(_mm256_mask_i32gather_pd(zi, xx + 2, j3, m, 8), zi);
+  }
+};
+
 /* the same as row_force_avx512 with two 4-wide halves: lanes 0-3 and 4-7 */
 template <int FRACTURE, int EV, class Model = CriticalStretchBond, class Values, class Idx>
 inline bool row_force_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
@@ -482,16 +499,10 @@ inline bool row_force_avx2(const double *xx, int i, const Idx *bj, const Values 
   };
   // the last n - k < 4 bonds, masked, into half H
   auto tail = [&](auto half, int k) {
-    const __m128i m32 = _mm_cmpgt_epi32(_mm_set1_epi32(n - k), _mm_setr_epi32(0, 1, 2, 3));
-    const __m256d m = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(m32));
-    const __m128i j1 = load_partners(bj, m32, i, k);
-    const __m128i j3 = _mm_mullo_epi32(j1, _mm_set1_epi32(3));
-    const __m256d dx = _mm256_sub_pd(_mm256_mask_i32gather_pd(xi, xx, j3, m, 8), xi);
-    const __m256d dy = _mm256_sub_pd(_mm256_mask_i32gather_pd(yi, xx + 1, j3, m, 8), yi);
-    const __m256d dz = _mm256_sub_pd(_mm256_mask_i32gather_pd(zi, xx + 2, j3, m, 8), zi);
+    const TailGroup4 g(xx, bj, i, n, k, xi, yi, zi);
     __m256d xi0, coef;
-    load_values(vals, m, m32, k, j1, xi0, coef);
-    lanes.template add<decltype(half)::value, true>(m, dx, dy, dz, xi0, coef);
+    load_values(vals, g.m, g.m32, k, g.j1, xi0, coef);
+    lanes.template add<decltype(half)::value, true>(g.m, g.dx, g.dy, g.dz, xi0, coef);
   };
   for_each_group4(n, full, tail);
   if (FRACTURE && _mm256_movemask_pd(lanes.broken)) return true;
