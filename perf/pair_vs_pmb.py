@@ -11,7 +11,7 @@ constant-kernel c0, the same force law up to the partial-volume weights):
   bench    the scene of LAMMPS's peridynamics benchmark: a periodic 16^3 simple-cubic block,
            spacing 0.5 mm, delta_pmb = 0.0015001 (3 spacings, 122 bonds per atom), 200 steps
            from the reference configuration (atoms at rest on the lattice)
-  cylinder examples/peri-pmb-dropin: LAMMPS's peri/pmb example and its 'compat pmb' port,
+  cylinder examples/peri-pmb-dropin: LAMMPS's peri/pmb example and its bbpd/pmb port,
            1000 steps
   memory   the maximum resident set of our block at 41^3 and 51^3 atoms (2 steps each):
            the bytes per bond at the margin, (RSS_51 - RSS_41) / (bonds_51 - bonds_41)
@@ -325,7 +325,7 @@ def main():
         if "cylinder" in scenes:
             r_ours, r_pmb = run_pair(None, CYLINDER / "in.bbpd.pmb", CYLINDER / "in.peri.pmb",
                                      CYLINDER_STEPS, args.nprocs, {}, tmp / "y")
-            rows.append(("cylinder (peri-pmb-dropin), compat pmb", r_ours, r_pmb))
+            rows.append(("cylinder (peri-pmb-dropin), bbpd/pmb", r_ours, r_pmb))
         if "memory" in scenes:
             memory = memory_margin(tmp / "mem")
     load_after = load_average()

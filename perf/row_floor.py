@@ -5,7 +5,7 @@
 The 3D block of pair_vs_pmb.py (41^3 atoms, m = 4.5, 15.4 M bonds), held still (no time
 integration: the probes compute wrong forces on purpose), pair time of `--steps` force
 evaluations. Each variant is the plugin built from HEAD with perf/probes/row_floor.patch applied
-and one of its switches on (bbpd_row.h; the portable loop's table reads in pair_bbpd_row.cpp),
+and one of its switches on (bbpd_row.h; the portable loop's table reads in pair_bbpd.cpp),
 for the path chosen with --path: the build's own (native: -march=native, AVX-512 or AVX2 by the
 CPU), avx2 (-march=native -mno-avx512f) or portable (no -march=native):
   baseline          the kernel as it is (the patch with no switch is the same code)

@@ -6,8 +6,8 @@ build and keep their logs and full-precision dumps; compare two such folders fil
 The scenes are the inputs of the LAMMPS tests (tests/lammps), at their test sizes (1-5 s each,
 about a minute in all on the 2-core machine): fracture in 2D and 3D on 1 and 2 ranks, contact,
 write_restart/read_restart (1 -> 2 ranks, also with compact storage and two types), compact
-storage and the per-bond loop, the ported peri/pmb cylinder (compat pmb, compact, two types,
-the Silling-Askari rule 'alpha' on the kernel loop, 2 ranks, restart, a periodic box), bonds
+storage and the per-bond loop, the ported peri/pmb cylinder (bbpd/pmb, compact, two types,
+the Silling-Askari rule of bbpd/gaussian/alpha, 2 ranks, restart, a periodic box), bonds
 breaking across a periodic boundary, and the computes bbpd/dsif and bbpd/jintegral with E and
 nu inverted from c0. Each run ends with a `run 0` that prints pe, ke and pressure at %.17g.
 

@@ -4,7 +4,7 @@
 
    Which pairs of atoms are bonded (the family), and per bond the partner
    volume C_v V_j (eq. 19) and the force density per unit elongation
-   c(xi0) C_v V_j / xi0 (eqs. 9, 19, 21); with 'compat pmb' the rules of
+   c(xi0) C_v V_j / xi0 (eqs. 9, 19, 21); with bbpd/pmb the rules of
    LAMMPS's peri/pmb (bbpd_pmb_rules.h). The pair style fills one BondLaw with
    copies of its calibrated per-type-pair values once it has calibrated them,
    and hands a copy to the bond storage (fix bbpd/bonds), which builds and

@@ -7,7 +7,7 @@
    force, share of the energy and virial, and whether it breaks. Every bond loop
    calls these and nothing else for it: the portable loop with V = double, the
    AVX2 and AVX-512 kernels with Vec4 and Vec8 (bbpd_simd.h), the canonical test
-   both ends of a bond agree on, and the compat pmb loop. A new bond model or
+   both ends of a bond agree on, and the Silling-Askari loop. A new bond model or
    breaking rule is a new struct with these members, passed to the loops as their
    Model parameter (doc/architecture.rst, "Adding a bond model"); the unit test
    tests/unit/test_bond_model.cpp runs a toy one through every width.
@@ -38,7 +38,7 @@ struct CriticalStretchBond {
   }
 };
 
-/* the Silling-Askari critical stretch of peri/pmb and of the 'alpha' keyword: bond i-j breaks
+/* the Silling-Askari critical stretch of peri/pmb and of the bbpd/KERNEL/alpha styles: bond i-j breaks
    when its stretch exceeds min(s0_i, s0_j), s0_a = s00 - alpha smin_a, smin_a the smallest
    stretch of atom a's bonds at the previous step; with CLAMP only compression counts
    (s0_a = s00 - alpha min(0, smin_a)), so a body in pure tension keeps the calibrated s00 */

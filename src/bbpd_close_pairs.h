@@ -2,7 +2,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    BBPD: candidate pairs of the short-range forces between atoms, with no LAMMPS
    dependency: the one search behind 'contact' and the short-range forces of
-   'compat pmb'.
+   pair style bbpd/pmb.
 
    The candidates of local atom i are the atoms j (local or ghost) within their pair's
    distance d(i, j) <= max_distance plus a skin, found by binning all positions once.

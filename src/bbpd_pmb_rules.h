@@ -2,9 +2,9 @@
 /* -*- c++ -*- ----------------------------------------------------------
    BBPD plugin: the rules of LAMMPS's pair style peri/pmb (src/PERI/pair_peri_pmb.cpp,
    fix_peri_neigh.cpp; Parks et al., Comput. Phys. Commun. 179 (2008) 777), used by
-   'pair_style bbpd/constant ... compat pmb', and the Silling-Askari critical stretch
+   pair style bbpd/pmb (pair_bbpd_pmb.h), and the Silling-Askari critical stretch
    (Silling & Askari, Comput. Struct. 83 (2005) 1526, eq. 40) that also backs the
-   'alpha' keyword of every bbpd kernel. Free of LAMMPS so unit tests can use it.
+   styles bbpd/KERNEL/alpha (pair_bbpd_alpha.h). Free of LAMMPS so unit tests can use it.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_BBPD_PMB_RULES_H

@@ -17,6 +17,8 @@
 #include "info.h"
 #include "lammps.h"
 #include "pair_bbpd.h"
+#include "pair_bbpd_alpha.h"
+#include "pair_bbpd_pmb.h"
 #include "utils.h"
 #include "version.h"
 
@@ -34,6 +36,14 @@ const char *AUTHOR = "BBPD developers";
 template <class K> Pair *pair_creator(LAMMPS *lmp)
 {
   return new PairBBPD(lmp, BBPD::kernel_info<K>());
+}
+template <class K> Pair *alpha_pair_creator(LAMMPS *lmp)
+{
+  return new PairBBPDAlpha(lmp, BBPD::kernel_info<K>());
+}
+Pair *pmb_pair_creator(LAMMPS *lmp)
+{
+  return new PairBBPDPMB(lmp);
 }
 Fix *bonds_creator(LAMMPS *lmp, int narg, char **arg)
 {
@@ -99,6 +109,22 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "bbpd/gaussian";
   plugin.info = "BBPD pair style, Gaussian kernel, v" BBPD_VERSION;
   plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_creator<BBPD::GaussianKernel>;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/constant/alpha";
+  plugin.info = "BBPD pair style, constant kernel, Silling-Askari critical stretch, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &alpha_pair_creator<BBPD::ConstantKernel>;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/triangular/alpha";
+  plugin.info = "BBPD pair style, triangular kernel, Silling-Askari critical stretch, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &alpha_pair_creator<BBPD::TriangularKernel>;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/gaussian/alpha";
+  plugin.info = "BBPD pair style, Gaussian kernel, Silling-Askari critical stretch, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &alpha_pair_creator<BBPD::GaussianKernel>;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/pmb";
+  plugin.info = "BBPD pair style, the rules of peri/pmb, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &pmb_pair_creator;
   (*register_plugin)(&plugin, lmp);
 
   plugin.style = "fix";

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
-   BBPD plugin: what the Silling-Askari bond loop (compat pmb, alpha) needs to evaluate
+   BBPD plugin: what the Silling-Askari bond loop (bbpd/pmb, bbpd/KERNEL/alpha) needs to evaluate
    a time step again, e.g. at the setup after read_restart or of a second 'run'.
 
    Created by the pair style (ID BBPD_ALPHA); not meant for input scripts.
      last_step      time step of the last force evaluation (global, in restart files)
-     fbroken[i]     with compat pmb: force density on atom i from the bonds that broke
+     fbroken[i]     with bbpd/pmb:  force density on atom i from the bonds that broke
                     at that step (they act in the step they break, as in peri/pmb)
    A second evaluation of the same step neither breaks bonds nor updates the smallest
    stretches, and adds fbroken: the forces, and so the run, are bitwise those of a run

@@ -11,8 +11,8 @@
 ------------------------------------------------------------------------- */
 
 #include "pair_bbpd.h"
+#include "bbpd_compat.h"
 #include "bbpd_row.h"
-#include "bbpd_pmb_rules.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -55,14 +55,12 @@ static constexpr double BREAK_MARGIN_ULPS = 16.0;
 
 /* ---------------------------------------------------------------------- */
 
-PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k) :
-    Pair(lmp), kernel(k), model(BBPD::Model::Solid3D), geom(1.0), spacing(0.0),
+PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name) :
+    Pair(lmp), kernel(k), style(style_name ? style_name : std::string("bbpd/") + k.name), model(BBPD::Model::Solid3D), geom(1.0), spacing(0.0),
     dt_safety(DT_SAFETY_DEFAULT), contact(0), contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
     fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
     s0_user(nullptr), bondless(nullptr), bonds(nullptr), report_due(0), dt_bound_paper(0.0), dt_bound(0.0), multi_s0(0),
-    s0_single(0.0), break_margin(0.0),
-    compat_pmb(0), lattice_constant(0.0), alpha(nullptr), alpha_any(0),
-    nmax_smin(0), smin_new(nullptr), alpha_state(nullptr)
+    alpha(nullptr), s0_single(0.0), break_margin(0.0)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -79,8 +77,6 @@ PairBBPD::~PairBBPD()
 {
   if (copymode) return;
   delete[] pvector;
-  memory->destroy(smin_new);
-  if (alpha_state && modify->get_fix_by_id("BBPD_ALPHA")) modify->delete_fix("BBPD_ALPHA");
   if (bonds && modify->get_fix_by_id(BONDS_FIX_ID)) modify->delete_fix(BONDS_FIX_ID);
   if (allocated) {
     memory->destroy(setflag);
@@ -125,7 +121,6 @@ void PairBBPD::allocate()
 
 void PairBBPD::settings(int narg, char **arg)
 {
-  const std::string style = std::string("bbpd/") + kernel.name;
   int iarg = 0;
   if (iarg < narg && strcmp(arg[iarg], "model") == 0) iarg++;
   if (iarg >= narg)
@@ -145,21 +140,12 @@ void PairBBPD::settings(int narg, char **arg)
   contact = 0;
   contact_factor = CONTACT_FACTOR_DEFAULT;
   storage = BBPD::BondStorage::FAST;
-  compat_pmb = 0;
   while (iarg < narg) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style " + style + " " + key, error);
-    if (key == "compat") {
-      if (strcmp(arg[iarg + 1], "pmb") != 0)
-        error->all(FLERR, "Pair style {}: compat must be 'pmb' (the rules of pair style peri/pmb)",
-                   style);
-      if (strcmp(kernel.name, "constant") != 0)
-        error->all(FLERR, "Pair style {}: compat pmb needs the constant kernel, as peri/pmb: use "
-                   "bbpd/constant", style);
-      compat_pmb = 1;
-      iarg += 2;
-      continue;
-    }
+    if (key == "compat")
+      error->all(FLERR, "Pair style {}: 'compat pmb' is now its own style: write 'pair_style "
+                 "bbpd/pmb {}' (same keywords and pair_coeff numbers)", style, m);
     if (key == "contact") {
       contact = utils::logical(FLERR, arg[iarg + 1], false, lmp);
       iarg += 2;
@@ -198,7 +184,7 @@ void PairBBPD::settings(int narg, char **arg)
       dt_safety = value;
     } else {
       error->all(FLERR, "Unknown pair_style {} keyword: {} (expected thickness, area, spacing, "
-                 "dt/safety, contact, contact/distance, bond/storage or compat)", style, key);
+                 "dt/safety, contact, contact/distance or bond/storage)", style, key);
     }
     iarg += 2;
   }
@@ -218,12 +204,7 @@ void PairBBPD::settings(int narg, char **arg)
 
 void PairBBPD::coeff(int narg, char **arg)
 {
-  const std::string style = std::string("bbpd/") + kernel.name;
   if (!allocated) allocate();
-  if (compat_pmb) {
-    coeff_pmb(narg, arg);
-    return;
-  }
   if (narg < 5 || narg > 11 || narg % 2 == 0)
     error->all(FLERR, "Pair coeff for {}: expected 'I J E Gc delta [critical_stretch s0] [alpha A] "
                "[bonds yes|no]' or 'I J file material delta [critical_stretch s0] [alpha A] "
@@ -252,6 +233,9 @@ void PairBBPD::coeff(int narg, char **arg)
       s0 = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (s0 <= 0.0) error->all(FLERR, "Pair coeff for {}: critical_stretch must be > 0", style);
     } else if (strcmp(arg[iarg], "alpha") == 0) {
+      if (!silling_askari())
+        error->all(FLERR, "Pair coeff for {}: alpha is the Silling-Askari critical stretch, a "
+                   "rule of pair style {}/alpha: use that style", style, style);
       a = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (a < 0.0 || !std::isfinite(a))
         error->all(FLERR, "Pair coeff for {}: alpha must be >= 0 (Silling-Askari: 0.25 is "
@@ -330,7 +314,6 @@ void PairBBPD::coeff_from_file(const char *file, const char *material, double &E
 
 void PairBBPD::init_style()
 {
-  const std::string style = std::string("bbpd/") + kernel.name;
   if (!atom->peri_flag)
     error->all(FLERR, "Pair style {} requires atom_style peri (per-atom volume and density)", style);
   if (atom->map_style == Atom::MAP_NONE)
@@ -368,7 +351,7 @@ void PairBBPD::init_style()
     bonds = dynamic_cast<FixBBPDBonds *>(
         modify->add_fix(std::string(BONDS_FIX_ID) + " all bbpd/bonds"));
   if (!bonds) error->all(FLERR, "Pair style {} could not create its bond-family fix", style);
-  init_pmb();
+  init_rules();
 
   calibrate();
   // the bond fix builds and caches with the bond law: the calibrated values, by value
@@ -376,18 +359,17 @@ void PairBBPD::init_style()
   law.model = model;
   law.geom = geom;
   law.spacing = spacing;
-  law.pmb = compat_pmb;
-  law.lattice_constant = lattice_constant;
+  law.pmb = pmb_rules();    // a style with them sets law.lattice_constant in init_rules()
   law.micromodulus = BBPD::TypePairTable(atom->ntypes, micromodulus);
   law.horizon = BBPD::TypePairTable(atom->ntypes, horizon);
   law.bondless = BBPD::TypePairTable(atom->ntypes, bondless);
-  // the Silling-Askari loop (pair_bbpd_pmb.cpp) reads partner indices, the others offsets too
-  bonds->set_rules(law, storage, !alpha_any);
+  // the Silling-Askari loop (pair_bbpd_alpha.cpp) reads partner indices, the others offsets too
+  bonds->set_rules(law, storage, !silling_askari());
   bonds->set_limits(run_limits());
 }
 
 /* c0 and s0 of every type pair, at every init, so that a re-issued pair_style (model,
-   thickness, area) applies; compat pmb takes peri/pmb's c and s00 as given */
+   thickness, area) applies; bbpd/pmb takes peri/pmb's c and s00 as given */
 void PairBBPD::calibrate()
 {
   fracture_any = 0;
@@ -396,9 +378,13 @@ void PairBBPD::calibrate()
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       if (setflag[i][j] == 0)
-        error->all(FLERR, "Pair style bbpd/{}: pair_coeff for types {} {} is missing (bbpd "
-                   "styles do not mix coefficients)", kernel.name, i, j);
-      if (!compat_pmb)
+        error->all(FLERR, "Pair style {}: pair_coeff for types {} {} is missing (bbpd "
+                   "styles do not mix coefficients)", style, i, j);
+      // e.g. from a restart file of an older version, where alpha was a keyword of every style
+      if (alpha[i][j] > 0.0 && !silling_askari())
+        error->all(FLERR, "Pair style {}: types {} {} have a Silling-Askari alpha {}, a rule of "
+                   "pair style {}/alpha: use that style", style, i, j, alpha[i][j], style);
+      if (!pmb_rules())
         micromodulus[i][j] = BBPD::micromodulus(kernel, model, youngs[i][j], horizon[i][j], geom);
       if (bondless[i][j])
         critical_stretch[i][j] = std::numeric_limits<double>::infinity();    // nothing to break
@@ -453,10 +439,14 @@ void PairBBPD::compute(int eflag, int vflag)
     big += std::fabs(domain->xy) + std::fabs(domain->xz) + std::fabs(domain->yz);
     break_margin = BREAK_MARGIN_ULPS * DBL_EPSILON * big;
   }
-  if (alpha_any) {
-    if (evflag) eval_alpha<1>();
-    else eval_alpha<0>();
-  } else if (!fracture_any) {
+  eval_bonds();
+  if (contact) compute_contact();
+}
+
+/* the bond forces and breaking of one step, with the critical stretch rule */
+void PairBBPD::eval_bonds()
+{
+  if (!fracture_any) {
     if (evflag) eval<1, 0, 0>();
     else eval<0, 0, 0>();
   } else if (!multi_s0) {
@@ -466,8 +456,6 @@ void PairBBPD::compute(int eflag, int vflag)
     if (evflag) eval<1, 1, 1>();
     else eval<0, 1, 1>();
   }
-  if (contact) compute_contact();
-  if (compat_pmb) compute_short_range();
 }
 
 /* is tag jtag an intact partner of local atom i? (asked only for atoms closer than the contact
@@ -596,6 +584,171 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
 }
 
 /* ----------------------------------------------------------------------
+   the bond loop of one row, shared by eval() and the loops of derived styles:
+   dispatch to the SIMD or portable kernel of bbpd_row.h over the rows of fix
+   bbpd/bonds, the energy and virial tallies, adding a row's force, the breaking
+   test both ends of a bond agree on, and the diagnosis of a non-finite force
+------------------------------------------------------------------------- */
+
+/* explain a non-finite force on atom i and stop */
+void PairBBPD::nonfinite_error(int i)
+{
+  const double *xx = atom->x[0];
+  const tagint *tag = atom->tag;
+  const std::string cause = fmt::format(
+      "timestep {:.6g} vs stable bound {:.6g}: reduce the timestep, or check the input for "
+      "atoms placed on top of each other", update->dt, dt_bound);
+  for (int m = 0; m < 3; m++)
+    if (!std::isfinite(xx[3 * i + m]))
+      error->one(FLERR, "Atom {} has a non-finite position at step {} (the run became unstable; {})",
+                 tag[i], update->ntimestep, cause);
+  for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + bonds->nbond[i]; k++) {
+    const int j = bonds->partner_of(i, k);
+    const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
+                 dz = xx[3 * j + 2] - xx[3 * i + 2];
+    const double rsq = dx * dx + dy * dy + dz * dz;
+    if (!std::isfinite(rsq))
+      error->one(FLERR, "Bond partner {} of atom {} has a non-finite position at step {} (the run "
+                 "became unstable; {})", tag[j], tag[i], update->ntimestep, cause);
+    if (rsq == 0.0)
+      error->one(FLERR, "Atoms {} and {} coincide at step {}: a bond of zero length has no "
+                 "direction ({})", tag[i], tag[j], update->ntimestep, cause);
+  }
+  error->one(FLERR, "Non-finite force on atom {} at step {} ({})", tag[i], update->ntimestep, cause);
+}
+
+/* compact storage: a cache per thread of the coefficients (bbpd_bond_values.h), taken once per
+   thread and force evaluation (a thread-local variable of a plugin costs a call at every access) */
+BBPD::CoefCache *PairBBPD::thread_coef_cache()
+{
+  static thread_local BBPD::CoefCache cache;
+  return &cache;
+}
+
+/* Force density on atom i from its intact bonds (eq. 21). The sum runs in
+   LANES fixed partial sums (bond k goes to lane k % LANES) combined in a fixed
+   order, in the SIMD (AVX-512, AVX2) and portable paths alike: the result depends
+   only on the row, never on the domain decomposition or on whether energy is
+   tallied. With FRACTURE it returns true, and tallies nothing, if a bond of the
+   row is past its critical stretch. */
+template <int EVFLAG, int FRACTURE, int MULTI>
+bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc,
+                         BBPD::CoefCache *cache)
+{
+  const double *xx = atom->x[0];
+  const int *type = atom->type;
+  const int n = bonds->nbond[i];
+  double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
+  RowTally lanes;    // energy and virial in the same lanes in every kernel (filled with EVFLAG)
+  // the row in whatever layout the storage keeps it (FixBBPDBonds::visit_row)
+  const bool broken = bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
+#ifdef BBPD_SIMD
+    if (!MULTI)
+      return row_force_simd<FRACTURE, EVFLAG, BondModel>(xx, i, bj, vals, n, s0_single,
+                                                         break_margin, ax, ay, az, &lanes);
+#endif
+    auto xi0_of = [&](int k) { return vals.xi0_at(k, BBPD::partner_index(bj, i, k)); };
+    auto coef_of = [&](int k, double) { return vals.coef_at(k, BBPD::partner_index(bj, i, k)); };
+    auto s0_of = [&](int j) { return MULTI ? s0row[type[j]] : s0_single; };
+    if (EVFLAG) lanes = {};    // the portable loop adds to the lanes, the SIMD kernels store them
+    return BBPD::row_force_portable<FRACTURE, EVFLAG, BondModel>(
+        xx, i, bj, n, xi0_of, coef_of, s0_of, break_margin, ax, ay, az, &lanes);
+  });
+  if (broken) return true;
+  lane_sum(ax, ay, az, fi);
+  if (EVFLAG) tally_lanes(i, lanes, acc);
+  return false;
+}
+
+/* energy and virial of the row of atom i: per atom where LAMMPS asked for them, and the
+   global totals into acc (energy, then the six virial components) */
+void PairBBPD::tally_lanes(int i, const RowTally &lanes, double *acc)
+{
+  const double eng = lane_total(lanes.eng);
+  double vir[6];
+  for (int c = 0; c < 6; c++) vir[c] = lane_total(lanes.vir[c]);
+  acc[0] += eng;
+  if (eflag_atom) eatom[i] += eng;
+  for (int m = 0; m < 6; m++) {
+    acc[1 + m] += vir[m];
+    if (vflag_atom) vatom[i][m] += vir[m];
+  }
+}
+
+/* a row's force into f; the lowest atom with a non-finite force is kept for finish_eval()
+   (three compares per atom turn the first NaN/inf into an ERROR that names its cause) */
+void PairBBPD::add_row_force(int i, const double *fi, int &bad)
+{
+  if (!std::isfinite(fi[0]) || !std::isfinite(fi[1]) || !std::isfinite(fi[2])) {
+#if defined(_OPENMP)
+#pragma omp critical(bbpd_nonfinite)
+#endif
+    if (bad < 0 || i < bad) bad = i;
+  }
+  double *fi_atom = atom->f[i];
+  fi_atom[0] += fi[0];
+  fi_atom[1] += fi[1];
+  fi_atom[2] += fi[2];
+}
+
+/* a thread's energy and virial sums (acc) into the loop's totals, one thread at a time */
+void PairBBPD::add_thread_totals(double *totals, const double *acc)
+{
+#if defined(_OPENMP)
+#pragma omp critical(bbpd_totals)
+#endif
+  for (int m = 0; m < 7; m++) totals[m] += acc[m];
+}
+
+/* after the loop over rows: the ERROR of a non-finite force, then the global tallies */
+void PairBBPD::finish_eval(int bad, bool evflag_on, const double *totals)
+{
+  if (bad >= 0) nonfinite_error(bad);
+  if (evflag_on) {
+    if (eflag_global) eng_vdwl += totals[0];
+    if (vflag_global)
+      for (int m = 0; m < 6; m++) virial[m] += totals[1 + m];
+  }
+}
+
+/* is bond i-j past its critical stretch? Decided from breaking_length(), the same at both ends */
+bool PairBBPD::past_critical(int i, int j, double xi0, double s0) const
+{
+  return BondModel::past_critical(BondModel::elongation(breaking_length(i, j), xi0), xi0, s0, 0.0);
+}
+
+/* the current length of bond i-j from which breaking is decided: in a periodic box from the
+   minimum-image difference of the owners' unshifted positions, identical at both ends (the
+   ghost image x +- L rounds differently at the two ends, and one end could break a bond the
+   other keeps) */
+double PairBBPD::breaking_length(int i, int j) const
+{
+  const double *xi = atom->x[i];
+  const double *xj = bonds->raw_positions() ? bonds->raw_x(j) : atom->x[j];
+  double d[3] = {xj[0] - xi[0], xj[1] - xi[1], xj[2] - xi[2]};
+  if (bonds->raw_positions()) BBPDCompat::minimum_image(domain, d);
+  return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
+// the plain loop (eval) and the Silling-Askari loop (pair_bbpd_alpha.cpp) sum rows with these
+template bool PairBBPD::row_force<0, 0, 0>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<1, 0, 0>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<0, 1, 0>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<1, 1, 0>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<0, 0, 1>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<1, 0, 1>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<0, 1, 1>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+template bool PairBBPD::row_force<1, 1, 1>(int, double *, const double *, double *,
+                                           BBPD::CoefCache *);
+
+/* ----------------------------------------------------------------------
    setup report, per type pair and global: armed by setup(), printed by the setup's force
    evaluation (after fix bbpd/notch has cut its bonds)
 ------------------------------------------------------------------------- */
@@ -620,16 +773,16 @@ void PairBBPD::report()
       sum += fb->coef_of(i, k, fb->xi0_of(i, k));
     if (fb->nbond[i] > 0 && sum <= 0.0) limp = 1;
     const int it = atom->type[i];
-    if (contact || compat_pmb)
+    if (short_range_forces())
       sum += CONTACT_STIFFNESS_FACTOR * micromodulus[it][it] * atom->vfrac[i] / horizon[it][it];
     if (sum > 0.0) dtmin = MIN(dtmin, BBPD::stable_timestep_paper(atom->rmass[i], sum));
   }
   int anylimp = 0;
   MPI_Allreduce(&limp, &anylimp, 1, MPI_INT, MPI_MAX, world);
   if (anylimp)
-    error->all(FLERR, "Pair bbpd/{}: atoms have bonds but no stiffness (the kernel vanishes at "
+    error->all(FLERR, "Pair {}: atoms have bonds but no stiffness (the kernel vanishes at "
                "every partner, e.g. triangular with delta = spacing): increase the horizon",
-               kernel.name);
+               style);
   MPI_Allreduce(&dtmin, &dt_bound_paper, 1, MPI_DOUBLE, MPI_MIN, world);
   dt_bound = dt_bound_paper * std::sqrt(2.0);
   // compute pair sums pvector over the ranks: only rank 0 contributes
@@ -658,34 +811,13 @@ void PairBBPD::report()
   MPI_Allreduce(&bytes, &gbytes, 1, MPI_DOUBLE, MPI_MAX, world);
 
   if (comm->me == 0) {
-    std::string mesg = fmt::format("BBPD pair style bbpd/{} model {}{}:\n", kernel.name,
+    std::string mesg = fmt::format("BBPD pair style {} model {}{}:\n", style,
                                    BBPD::model_name(model),
                                    model == BBPD::Model::Solid3D ? ""
                                        : fmt::format(" ({} {})", model == BBPD::Model::Bar1D ? "area" : "thickness", geom));
     for (int i = 1; i <= atom->ntypes; i++)
-      for (int j = i; j <= atom->ntypes; j++)
-        if (compat_pmb)
-          mesg += fmt::format("  types {} {}: compat pmb: c = {:.8g}  horizon = {:.6g}  s00 = {:.8g}  "
-                              "alpha = {:.6g}\n", i, j, micromodulus[i][j], horizon[i][j],
-                              critical_stretch[i][j], alpha[i][j]);
-        else if (bondless[i][j])
-          mesg += fmt::format("  types {} {}: no bonds (separate bodies); contact stiffness from "
-                              "E = {:.6g}  horizon = {:.6g}  micromodulus c0 = {:.8g}{}\n", i, j,
-                              youngs[i][j], horizon[i][j], micromodulus[i][j],
-                              contact ? "" : " (contact is off: the bodies pass through each other)");
-        else
-          mesg += fmt::format("  types {} {}: E = {:.6g}  Gc = {:.6g}  horizon = {:.6g}  "
-                              "micromodulus c0 = {:.8g}  critical_stretch s0 = {:.8g}{}\n",
-                              i, j, youngs[i][j], fracture_energy[i][j], horizon[i][j],
-                              micromodulus[i][j], critical_stretch[i][j],
-                              s0_user[i][j] ? " (given)" : "");
-    if (compat_pmb)
-      mesg += fmt::format("  compat pmb: families |xi| <= delta, volume ramp and short-range forces "
-                          "below min({} |xi|, {} lc), lattice constant lc = {:.6g}\n",
-                          BBPD::PMB::SHORT_RANGE_BOND_FACTOR, BBPD::PMB::SHORT_RANGE_LATTICE_FACTOR,
-                          lattice_constant);
-    else if (alpha_any)
-      mesg += "  Silling-Askari critical stretch: s0 - alpha min(0, smallest stretch of the atom)\n";
+      for (int j = i; j <= atom->ntypes; j++) mesg += report_type_pair(i, j);
+    mesg += report_rules();
     mesg += fmt::format("  grid spacing for the volume correction = {:.6g}{}\n", spacing,
                         spacing_user ? " (given)" : " (from atom volumes)");
     mesg += fmt::format("  bonds per atom: min {} mean {:.6g} max {}; total bonds {} ({} broken)\n",
@@ -704,9 +836,24 @@ void PairBBPD::report()
     utils::logmesg(lmp, mesg);
   }
   if (update->dt > dt_safety * dt_bound && comm->me == 0)
-    error->warning(FLERR, "Pair bbpd/{}: timestep {:.6g} exceeds {} x the stable bound {:.6g}; "
-                   "the run may blow up: reduce the timestep", kernel.name, update->dt, dt_safety,
+    error->warning(FLERR, "Pair {}: timestep {:.6g} exceeds {} x the stable bound {:.6g}; "
+                   "the run may blow up: reduce the timestep", style, update->dt, dt_safety,
                    dt_bound);
+}
+
+/* the report's line for types i j */
+std::string PairBBPD::report_type_pair(int i, int j) const
+{
+  if (bondless[i][j])
+    return fmt::format("  types {} {}: no bonds (separate bodies); contact stiffness from "
+                       "E = {:.6g}  horizon = {:.6g}  micromodulus c0 = {:.8g}{}\n", i, j,
+                       youngs[i][j], horizon[i][j], micromodulus[i][j],
+                       contact ? "" : " (contact is off: the bodies pass through each other)");
+  return fmt::format("  types {} {}: E = {:.6g}  Gc = {:.6g}  horizon = {:.6g}  "
+                     "micromodulus c0 = {:.8g}  critical_stretch s0 = {:.8g}{}\n",
+                     i, j, youngs[i][j], fracture_energy[i][j], horizon[i][j],
+                     micromodulus[i][j], critical_stretch[i][j],
+                     s0_user[i][j] ? " (given)" : "");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -723,12 +870,13 @@ void PairBBPD::write_restart_settings(FILE *fp)
   fwrite(&contact_factor, sizeof(double), 1, fp);
   const int storage_code = storage.code();
   fwrite(&storage_code, sizeof(int), 1, fp);
-  fwrite(&compat_pmb, sizeof(int), 1, fp);
+  const int pmb = pmb_rules();
+  fwrite(&pmb, sizeof(int), 1, fp);
 }
 
 void PairBBPD::read_restart_settings(FILE *fp)
 {
-  int m = 0, storage_code = 0;
+  int m = 0, storage_code = 0, pmb = 0;
   if (comm->me == 0) {
     utils::sfread(FLERR, &m, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &geom, sizeof(double), 1, fp, nullptr, error);
@@ -738,7 +886,7 @@ void PairBBPD::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &contact, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &contact_factor, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &storage_code, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &compat_pmb, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &pmb, sizeof(int), 1, fp, nullptr, error);
   }
   MPI_Bcast(&m, 1, MPI_INT, 0, world);
   MPI_Bcast(&geom, 1, MPI_DOUBLE, 0, world);
@@ -749,7 +897,12 @@ void PairBBPD::read_restart_settings(FILE *fp)
   MPI_Bcast(&contact_factor, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&storage_code, 1, MPI_INT, 0, world);
   storage = BBPD::BondStorage::from_code(storage_code);
-  MPI_Bcast(&compat_pmb, 1, MPI_INT, 0, world);
+  MPI_Bcast(&pmb, 1, MPI_INT, 0, world);
+  // written by an older version with 'compat pmb': peri/pmb's rules are now pair style bbpd/pmb
+  if (pmb != (int) pmb_rules())
+    error->all(FLERR, "Pair style {}: the restart file has the pair coefficients of {}: "
+               "redefine the pair style and its coefficients after read_restart", style,
+               pmb ? "peri/pmb's rules (compat pmb, now pair style bbpd/pmb)" : "another bbpd style");
   model = static_cast<BBPD::Model>(m);
 }
 

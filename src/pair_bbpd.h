@@ -10,6 +10,10 @@
    limits; init_one() only reports the cutoffs. It evaluates the
    forces over the storage's rows and breaks bonds through remove_bonds_if(); the
    storage never calls back (doc/architecture.rst).
+
+   A style with other breaking rules derives from this class and overrides the
+   hooks below "rules of a derived style": the Silling-Askari critical stretch
+   (pair_bbpd_alpha.h) and the rules of LAMMPS's peri/pmb (pair_bbpd_pmb.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_BBPD_H
@@ -22,6 +26,7 @@
 #include "bbpd_kernel.h"
 #include "pair.h"
 
+#include <string>
 #include <vector>
 
 namespace BBPD {
@@ -33,7 +38,7 @@ namespace LAMMPS_NS {
 
 class PairBBPD : public Pair {
  public:
-  PairBBPD(class LAMMPS *, BBPD::KernelInfo);
+  PairBBPD(class LAMMPS *, BBPD::KernelInfo, const char *style = nullptr);
   ~PairBBPD() override;
 
   void compute(int, int) override;
@@ -51,6 +56,7 @@ class PairBBPD : public Pair {
   void setup() override;
 
   const BBPD::KernelInfo kernel;
+  const std::string style;    // the style's name, for messages (bbpd/KERNEL, bbpd/pmb, ...)
   BBPD::Model model;
   double geom;       // thickness h (2D) or cross-section area A (1D); 1 in 3D
   double spacing;    // grid spacing used in the partial-volume correction (eq. 19)
@@ -79,6 +85,7 @@ class PairBBPD : public Pair {
 #else
   using BondModel = BBPD::CriticalStretchBond;
 #endif
+  double **alpha;       // Silling-Askari: s0 = s00 - alpha * smallest stretch (pair_bbpd_alpha.h)
   void calibrate();     // c0 and s0 of every type pair (init_style)
   BBPD::RunLimits run_limits() const
   {
@@ -104,23 +111,16 @@ class PairBBPD : public Pair {
   static BBPD::CoefCache *thread_coef_cache();
   void coeff_from_file(const char *file, const char *material, double &E, double &Gc);
 
-  // peri/pmb's rules ('compat pmb') and the Silling-Askari critical stretch (pair_bbpd_pmb.cpp)
- public:
-  int compat_pmb;             // families, volumes, short-range forces and breaking as peri/pmb
-  double lattice_constant;    // compat pmb: lc of the lattice command, as in peri/pmb
- protected:
-  double **alpha;             // s0 = s00 - alpha * smallest stretch of the atom at the last step
-  int alpha_any;              // the Silling-Askari rule is in use (compat pmb or some alpha > 0)
-  int nmax_smin;
-  double *smin_new;           // smallest bond stretch of each local atom in this step
-  class FixBBPDAlpha *alpha_state;    // what a second evaluation of the same step needs
-  void coeff_pmb(int, char **);
-  void init_pmb();
-  template <int EVFLAG> void eval_alpha();
-  template <int EVFLAG> void broken_bond_force(int i, int k, double *fb, double *acc);
-  void compute_short_range();
- protected:
-  // candidates of the short-range forces ('contact', 'compat pmb'): pairs that can come in
+  // rules of a derived style (pair_bbpd_alpha.h, pair_bbpd_pmb.h)
+  virtual void eval_bonds();                      // bond forces and breaking of one step
+  virtual void init_rules() {}                    // init_style: after the bond fix exists
+  virtual bool silling_askari() const { return false; }    // alpha is a rule of the style
+  virtual bool pmb_rules() const { return false; }         // peri/pmb's families and volumes
+  virtual bool short_range_forces() const { return contact != 0; }    // in the stable step
+  virtual std::string report_type_pair(int i, int j) const;
+  virtual std::string report_rules() const { return {}; }
+
+  // candidates of the short-range forces ('contact', bbpd/pmb's): pairs that can come in
   // range before the atoms move half the search's skin, searched again when stale
   BBPD::ClosePairs close_pairs;
   bigint close_generation = -1;    // of the bond cache the candidates' indices belong to

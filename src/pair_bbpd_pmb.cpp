@@ -1,36 +1,19 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
-   BBPD plugin: the rules of LAMMPS's peri/pmb in the bbpd pair styles.
-
-   'pair_style bbpd/constant MODEL compat pmb' takes 'pair_coeff I J c delta s00 alpha'
-   as peri/pmb does and follows its rules (bbpd_pmb_rules.h): families |xi| <= delta,
-   the volume ramp within lc/2 of the horizon, short-range forces between all atoms
-   closer than min(0.9 |xi|, 1.35 lc), and in each step: all intact bonds exert their
-   force, then a bond breaks when its stretch exceeds s00 - alpha max(smin_i, smin_j),
-   smin being the smallest stretch of each atom's bonds at the previous step.
-   Without compat, 'alpha A' applies the same rule (compression only) to every kernel,
-   with the usual bbpd order: a bond past its critical stretch exerts no force.
-   smin lives in the per-atom s0 of atom_style peri, which LAMMPS already sends to
-   ghost atoms every step and carries through migration and restart files; fix
-   bbpd/alpha keeps what a second evaluation of the same step needs (fix_bbpd_alpha.h).
+   BBPD plugin: pair style bbpd/pmb, the rules of LAMMPS's peri/pmb
+   (pair_bbpd_pmb.h): its coefficients, lattice constant and short-range forces;
+   the bonds are evaluated and broken by the Silling-Askari loop
+   (pair_bbpd_alpha.cpp) in peri/pmb's order.
 ------------------------------------------------------------------------- */
 
-#include "pair_bbpd.h"
+#include "pair_bbpd_pmb.h"
 #include "bbpd_compat.h"
 #include "bbpd_pmb_rules.h"
-#include "bbpd_pmb_row.h"
 
 #include "atom.h"
-#include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "fix_bbpd_alpha.h"
-#include "fix_bbpd_bonds.h"
 #include "lattice.h"
-#include "memory.h"
-#include "modify.h"
-#include "neighbor.h"
-#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,23 +24,56 @@
 
 using namespace LAMMPS_NS;
 using namespace BBPD::PMB;
-using BBPD::LANES;
-using BBPD::RowTally;
-using BBPD::lane_sum;
 
-// a bond's stretch seen through a periodic image and from the owners' positions differ by at
-// most break_margin / xi0, plus the rounding of the division: twice that bounds both
-static constexpr double STRETCH_MARGIN_FACTOR = 2.0;
+/* ---------------------------------------------------------------------- */
 
+PairBBPDPMB::PairBBPDPMB(LAMMPS *lmp) :
+    PairBBPDAlpha(lmp, BBPD::kernel_info<BBPD::ConstantKernel>(), "bbpd/pmb"),
+    lattice_constant(0.0)
+{
+}
+
+/* pair_style bbpd/pmb MODEL [thickness h] [area A] [spacing dx] [dt/safety f] [bond/storage s]:
+   the keywords of the kernel styles, without contact (peri/pmb's short-range forces act) */
+void PairBBPDPMB::settings(int narg, char **arg)
+{
+  PairBBPD::settings(narg, arg);
+  if (contact)
+    error->all(FLERR, "Pair style bbpd/pmb brings peri/pmb's short-range forces; drop "
+               "'contact yes'");
+}
+
+/* the bond forces and breaking of one step in peri/pmb's order, then its short-range forces */
+void PairBBPDPMB::eval_bonds()
+{
+  if (evflag) eval_silling_askari<1, true>();
+  else eval_silling_askari<0, true>();
+  compute_short_range();
+}
+
+std::string PairBBPDPMB::report_type_pair(int i, int j) const
+{
+  return fmt::format("  types {} {}: peri/pmb: c = {:.8g}  horizon = {:.6g}  s00 = {:.8g}  "
+                     "alpha = {:.6g}\n", i, j, micromodulus[i][j], horizon[i][j],
+                     critical_stretch[i][j], alpha[i][j]);
+}
+
+std::string PairBBPDPMB::report_rules() const
+{
+  return fmt::format("  peri/pmb rules: families |xi| <= delta, volume ramp and short-range forces "
+                     "below min({} |xi|, {} lc), lattice constant lc = {:.6g}\n",
+                     SHORT_RANGE_BOND_FACTOR, SHORT_RANGE_LATTICE_FACTOR, lattice_constant);
+}
 
 /* ----------------------------------------------------------------------
-   compat pmb: pair_coeff I J c delta s00 alpha (peri/pmb's four numbers)
+   pair_coeff I J c delta s00 alpha (peri/pmb's four numbers)
 ------------------------------------------------------------------------- */
 
-void PairBBPD::coeff_pmb(int narg, char **arg)
+void PairBBPDPMB::coeff(int narg, char **arg)
 {
+  if (!allocated) allocate();
   if (narg != 6)
-    error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: expected 'I J c delta s00 alpha' "
+    error->all(FLERR, "Pair coeff for bbpd/pmb: expected 'I J c delta s00 alpha' "
                "(the numbers of pair_coeff peri/pmb), got {} arguments", narg);
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
@@ -66,11 +82,11 @@ void PairBBPD::coeff_pmb(int narg, char **arg)
   const double delta = utils::numeric(FLERR, arg[3], false, lmp);
   const double s00 = utils::numeric(FLERR, arg[4], false, lmp);
   const double a = utils::numeric(FLERR, arg[5], false, lmp);
-  if (!(c > 0.0)) error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: c must be > 0");
-  if (!(delta > 0.0)) error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: delta must be > 0");
-  if (!(s00 > 0.0)) error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: s00 must be > 0");
+  if (!(c > 0.0)) error->all(FLERR, "Pair coeff for bbpd/pmb: c must be > 0");
+  if (!(delta > 0.0)) error->all(FLERR, "Pair coeff for bbpd/pmb: delta must be > 0");
+  if (!(s00 > 0.0)) error->all(FLERR, "Pair coeff for bbpd/pmb: s00 must be > 0");
   if (!(a >= 0.0) || !std::isfinite(a))
-    error->all(FLERR, "Pair coeff for bbpd/constant compat pmb: alpha must be >= 0");
+    error->all(FLERR, "Pair coeff for bbpd/pmb: alpha must be >= 0");
 
   int count = 0;
   for (int i = ilo; i <= ihi; i++)
@@ -88,226 +104,37 @@ void PairBBPD::coeff_pmb(int narg, char **arg)
   if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
 }
 
-/* part of init_style: the state fix and starting smin of the Silling-Askari rule, and the
-   lattice constant of compat pmb */
-void PairBBPD::init_pmb()
+/* part of init_style: the Silling-Askari state (PairBBPDAlpha) and the lattice constant */
+void PairBBPDPMB::init_rules()
 {
-  alpha_any = compat_pmb;
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++)
-      if (setflag[i][j] && alpha[i][j] > 0.0) alpha_any = 1;
-  if (alpha_any) {
-    alpha_state = dynamic_cast<FixBBPDAlpha *>(modify->get_fix_by_id("BBPD_ALPHA"));
-    if (!alpha_state)
-      alpha_state = dynamic_cast<FixBBPDAlpha *>(modify->add_fix("BBPD_ALPHA all bbpd/alpha"));
-    if (!alpha_state) error->all(FLERR, "Pair style bbpd: could not create its fix bbpd/alpha");
-  }
-  // before the families exist no atom has a bond: no smin yet (as peri/pmb)
-  if (alpha_any && !bonds->families_built())
-    for (int i = 0; i < atom->nlocal; i++) atom->s0[i] = NO_BOND_STRETCH;
-  if (!compat_pmb) return;
-
-  if (contact)
-    error->all(FLERR, "Pair style bbpd/constant: compat pmb brings peri/pmb's short-range forces; "
-               "drop 'contact yes'");
+  PairBBPDAlpha::init_rules();
   const Lattice *lat = domain->lattice;
   if (!lat || lat->style == Lattice::NONE)
-    error->all(FLERR, "Pair style bbpd/constant compat pmb needs a lattice command before the run: "
+    error->all(FLERR, "Pair style bbpd/pmb needs a lattice command before the run: "
                "peri/pmb's volume ramp and short-range distance use its lattice constant");
   if (lat->xlattice != lat->ylattice || lat->xlattice != lat->zlattice)
-    error->all(FLERR, "Pair style bbpd/constant compat pmb needs a lattice with the same constant "
+    error->all(FLERR, "Pair style bbpd/pmb needs a lattice with the same constant "
                "in x, y and z (as peri/pmb)");
   lattice_constant = lat->xlattice;
+  law.lattice_constant = lattice_constant;    // the volume ramp of the bond fix
   // the short-range partners are found among the local and ghost atoms (no neighbour list):
   // the ghosts cover every pair closer than the horizon
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
       if (setflag[i][j] && horizon[i][j] < SHORT_RANGE_LATTICE_FACTOR * lattice_constant)
-        error->all(FLERR, "Pair style bbpd/constant compat pmb: horizon {} for types {} {} is "
+        error->all(FLERR, "Pair style bbpd/pmb: horizon {} for types {} {} is "
                    "shorter than the short-range distance {} x lattice constant {}: use a horizon "
                    "of at least {}", horizon[i][j], i, j, SHORT_RANGE_LATTICE_FACTOR,
                    lattice_constant, SHORT_RANGE_LATTICE_FACTOR * lattice_constant);
 }
 
 /* ----------------------------------------------------------------------
-   bond forces and breaking with the Silling-Askari critical stretch
-------------------------------------------------------------------------- */
-
-template <int EVFLAG> void PairBBPD::eval_alpha()
-{
-  const double *xx = atom->x[0];
-  const int *type = atom->type;
-  double *smin = atom->s0;    // smallest bond stretch at the previous step, ghosts included
-  const int nlocal = atom->nlocal;
-  if (nlocal > nmax_smin) {
-    nmax_smin = atom->nmax;
-    memory->destroy(smin_new);
-    memory->create(smin_new, nmax_smin, "pair:smin_new");
-  }
-  const bool pmb = compat_pmb;
-  const bool clamp = !pmb;
-  // one s00 and alpha for every type pair: no per-bond lookups
-  bool multi = false;
-  const double s00_one = critical_stretch[1][1], alpha_one = alpha[1][1];
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = 1; j <= atom->ntypes; j++)
-      if (critical_stretch[i][j] != s00_one || alpha[i][j] != alpha_one) multi = true;
-  // a second evaluation of the last step (setup of a new run, read_restart): no breaking,
-  // no new smallest stretches, and the bonds that broke then act again
-  const bool replay = update->setupflag && update->ntimestep == alpha_state->last_step;
-  double **fbroken = alpha_state->fbroken;
-  // in a periodic box the two ends of a bond see each other through images that round
-  // differently: a row with a bond within 'margin' (stretch) of breaking is decided again
-  // from breaking_length(), which both ends compute alike. The margin bounds the stretch
-  // difference of the two views (break_margin / shortest reference length), with a factor
-  // for the rounding of the stretch itself.
-  const bool canonical = bonds->raw_positions();
-  const double margin = canonical && break_margin > 0.0
-      ? STRETCH_MARGIN_FACTOR * break_margin / bonds->min_reference_length() : 0.0;
-  double totals[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  int bad = -1;
-
-#if defined(_OPENMP)
-#pragma omp parallel num_threads(comm->nthreads) if (comm->nthreads > 1)
-#endif
-  {
-    double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    BBPD::CoefCache *cache = thread_coef_cache();
-#if defined(_OPENMP)
-#pragma omp for schedule(static, 512)
-#endif
-    for (int i = 0; i < nlocal; i++) {
-      const int itype = type[i];
-      const double *xi = atom->x[i];
-      const double smin_i = smin[i];
-      // stretch of bond k at current length r (peri/pmb zeroes round-off elongations)
-      auto stretch_at = [&](int k, double r) {
-        const double xi0 = bonds->xi0_of(i, k);
-        double elong = BondModel::elongation(r, xi0);
-        if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
-        return BBPD::SillingAskariRule<false>::stretch(elong, xi0);
-      };
-      auto stretch_of = [&](int k) {
-        const double *xj = atom->x[bonds->partner_of(i, k)];
-        const double dx = xj[0] - xi[0], dy = xj[1] - xi[1], dz = xj[2] - xi[2];
-        return stretch_at(k, std::sqrt(dx * dx + dy * dy + dz * dz));
-      };
-      // the stretch that decides breaking: the same at both ends of the bond
-      auto breaking_stretch = [&](int k) {
-        return canonical ? stretch_at(k, breaking_length(i, bonds->partner_of(i, k))) : stretch_of(k);
-      };
-      auto s0_of = [&](int k) {
-        const int j = bonds->partner_of(i, k);
-        if (!multi) return BBPD::PMB::critical_stretch(s00_one, alpha_one, smin_i, smin[j], clamp);
-        return BBPD::PMB::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
-                                           smin_i, smin[j], clamp);
-      };
-      double fi[3];
-      bool done = false;    // fi (and the tallies) summed by the fused kernel
-      if (replay) {
-        smin_new[i] = smin_i;
-      } else {
-        double snew = std::numeric_limits<double>::max();
-        bool broken = false;
-        const int n = bonds->nbond[i];
-        if (!multi) {
-          // the row in whatever layout the storage keeps it (FixBBPDBonds::visit_row)
-          broken = bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
-#ifdef BBPD_SIMD
-            // force and stretch in one pass
-            double ax[LANES], ay[LANES], az[LANES];
-            RowTally tally;
-            const bool past = pmb
-                ? row_force_stretch_simd<EVFLAG, true, false>(xx, i, bj, vals, n, smin, s00_one,
-                                                              alpha_one, margin, &snew, ax, ay, az, &tally)
-                : row_force_stretch_simd<EVFLAG, false, true>(xx, i, bj, vals, n, smin, s00_one,
-                                                              alpha_one, margin, &snew, ax, ay, az, &tally);
-            if (!past) {
-              lane_sum(ax, ay, az, fi);
-              if (EVFLAG) tally_lanes(i, tally, acc);
-              done = true;
-            }
-            return past;
-#else
-            return pmb ? BBPD::row_stretch_portable<true, false>(xx, i, bj, vals, n, smin, s00_one,
-                                                                 alpha_one, margin, &snew)
-                       : BBPD::row_stretch_portable<false, true>(xx, i, bj, vals, n, smin, s00_one,
-                                                                 alpha_one, margin, &snew);
-#endif
-          });
-        } else {
-          for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + n; k++) {
-            const double s = stretch_of(k);
-            snew = std::min(snew, s);
-            broken |= BBPD::SillingAskariRule<false>::past_critical(s, s0_of(k), margin);
-          }
-        }
-        smin_new[i] = n > 0 ? snew : NO_BOND_STRETCH;
-        double fb[3] = {0.0, 0.0, 0.0};
-        if (broken)
-          bonds->remove_bonds_if(i, [&](int k) {
-            if (!BBPD::SillingAskariRule<false>::past_critical(breaking_stretch(k), s0_of(k), 0.0))
-              return false;
-            // peri/pmb applies the force of a bond in the step it breaks; bbpd drops it at once
-            if (pmb) broken_bond_force<EVFLAG>(i, k, fb, acc);
-            return true;
-          });
-        if (pmb)
-          for (int m = 0; m < 3; m++) fbroken[i][m] = fb[m];
-      }
-      if (!done) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc, cache);
-      if (pmb)
-        for (int m = 0; m < 3; m++) fi[m] += fbroken[i][m];
-      add_row_force(i, fi, bad);
-    }
-    if (EVFLAG) add_thread_totals(totals, acc);
-  }
-  finish_eval(bad, EVFLAG, totals);
-  // the new smin takes effect at the next step, once sent to the ghosts
-  for (int i = 0; i < nlocal; i++) smin[i] = smin_new[i];
-  alpha_state->last_step = update->ntimestep;
-}
-
-/* add the force density of bond k of atom i (about to break) to fb, in the order the
-   bonds break; tally its energy and virial as row_force does */
-template <int EVFLAG> void PairBBPD::broken_bond_force(int i, int k, double *fb, double *acc)
-{
-  const double *xx = atom->x[0];
-  const int j = bonds->partner_of(i, k);
-  const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
-               dz = xx[3 * j + 2] - xx[3 * i + 2];
-  const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
-  const double xi0 = bonds->xi0_of(i, k);
-  const double coef = bonds->coef_of(i, k, xi0);
-  const double elong = BondModel::elongation(r, xi0);
-  const double fbond = BondModel::force_per_length(coef, elong, r);
-  fb[0] += fbond * dx;
-  fb[1] += fbond * dy;
-  fb[2] += fbond * dz;
-  if (EVFLAG) {
-    const double eng = BondModel::energy_share(coef, elong);
-    const double vir[6] = {-BondModel::virial_share(fbond, dx, dx), -BondModel::virial_share(fbond, dy, dy),
-                           -BondModel::virial_share(fbond, dz, dz), -BondModel::virial_share(fbond, dx, dy),
-                           -BondModel::virial_share(fbond, dx, dz), -BondModel::virial_share(fbond, dy, dz)};
-    acc[0] += eng;
-    if (eflag_atom) eatom[i] += eng;
-    for (int m = 0; m < 6; m++) {
-      acc[1 + m] += vir[m];
-      if (vflag_atom) vatom[i][m] += vir[m];
-    }
-  }
-}
-
-template void PairBBPD::eval_alpha<0>();
-template void PairBBPD::eval_alpha<1>();
-
-/* ----------------------------------------------------------------------
-   compat pmb: short-range forces between all atoms (bonded or not) closer than
+   short-range forces between all atoms (bonded or not) closer than
    min(0.9 |xi|, 1.35 lc), stiffness 15 c V_j / delta. Each atom sums its own pairs
    in tag order, so the result does not depend on the decomposition.
 ------------------------------------------------------------------------- */
 
-void PairBBPD::compute_short_range()
+void PairBBPDPMB::compute_short_range()
 {
   double **x = atom->x, **f = atom->f;
   const int *type = atom->type;

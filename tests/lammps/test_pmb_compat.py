@@ -1,5 +1,5 @@
-"""'pair_style bbpd/constant ... compat pmb' against LAMMPS's own peri/pmb, and the
-Silling-Askari critical stretch ('alpha').
+"""'pair_style bbpd/pmb' against LAMMPS's own peri/pmb, and the Silling-Askari critical
+stretch of the bbpd/KERNEL/alpha styles ('alpha').
 
 Forces: a perturbed 3D block whose reference lattice is read from a data file (%.17g),
 so both styles start from the same doubles; a few atoms are pushed towards a neighbour
@@ -81,7 +81,7 @@ def run_forces(lmp, tmp_path, pair_lines, plugin, nprocs=1, dim=3, boundary="s s
 
 @pytest.mark.parametrize("model", ["3d", "plane/stress", "3d-periodic"])
 def test_forces_equal_peri_pmb(lmp, tmp_path, model):
-    """compat pmb gives peri/pmb's forces (bonds with the volume ramp, short-range forces
+    """bbpd/pmb gives peri/pmb's forces (bonds with the volume ramp, short-range forces
     between bonded atoms) to 1e-12 of the largest force, on 1 and 2 ranks; ours are the
     same bits on 1 and 2 ranks. In 2D, peri/pmb runs in dimension 2 as well. 3d-periodic:
     a periodic box one lattice period long, every atom bonded across the boundaries."""
@@ -100,10 +100,10 @@ def test_forces_equal_peri_pmb(lmp, tmp_path, model):
     _, f_pmb = run_forces(lmp, tmp_path, f"pair_style peri/pmb\npair_coeff * * {numbers}\n",
                           plugin=False, dim=dim, boundary=boundary)
     thick = "" if dim == 3 else f" thickness {THICKNESS!r}"
-    ours = f"pair_style bbpd/constant {model}{thick} compat pmb\npair_coeff * * {numbers}\n"
+    ours = f"pair_style bbpd/pmb {model}{thick}\npair_coeff * * {numbers}\n"
     out1, f1 = run_forces(lmp, tmp_path, ours, plugin=True, dim=dim, boundary=boundary)
     out2, f2 = run_forces(lmp, tmp_path, ours, plugin=True, nprocs=2, dim=dim, boundary=boundary)
-    assert "compat pmb" in out1
+    assert "BBPD pair style bbpd/pmb" in out1 and "peri/pmb rules" in out1
     # |xi| <= delta gives an interior atom 122 partners (3D), 28 (2D) at delta = 3.0002 dx
     assert f"max {122 if dim == 3 else 28}" in out1
     if periodic:    # every atom is interior
@@ -140,9 +140,8 @@ PAIR_XI = 1.0e-3
 S00 = 1.0e-3
 
 
-def bond_history(lmp, pair_lines, stretches, lattice=True):
-    """Put the bond at each stretch in turn (one force evaluation each); return the number
-    of broken bonds after the first evaluation (stretch 0) and after each stretch."""
+def bond_script(pair_lines, stretches, lattice=True):
+    """The two-atom script of bond_history()"""
     lines = [peri_preamble(3, "f f f").rstrip("\n"), "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box",
              "create_box 1 box", "create_atoms 1 single 0 0 0 units box",
              f"create_atoms 1 single {PAIR_XI!r} 0 0 units box",
@@ -155,7 +154,13 @@ def bond_history(lmp, pair_lines, stretches, lattice=True):
     for s in stretches:
         lines += [f"set atom 2 x {PAIR_XI * (1.0 + s)!r}", "run 1"]
     lines.append("run 1")
-    out = lmp("\n".join(lines) + "\n").output
+    return "\n".join(lines) + "\n"
+
+
+def bond_history(lmp, pair_lines, stretches, lattice=True):
+    """Put the bond at each stretch in turn (one force evaluation each); return the number
+    of broken bonds after the first evaluation (stretch 0) and after each stretch."""
+    out = lmp(bond_script(pair_lines, stretches, lattice)).output
     # each setup reports the bonds left by the evaluations before it
     return [int(v) for v in re.findall(r"total bonds 1 \((\d) broken\)", out)][1:]
 
@@ -167,8 +172,8 @@ def test_alpha_compression_then_tension(lmp, style):
     stretch = 1.002 * S00    # above s00, below s00 + 0.25 * 0.01
     def pair(a):
         if style == "compat":
-            return f"pair_style bbpd/constant 3d compat pmb\npair_coeff * * 1.0e20 0.0015 {S00!r} {a!r}"
-        return ("pair_style bbpd/constant 3d\n"
+            return f"pair_style bbpd/pmb 3d\npair_coeff * * 1.0e20 0.0015 {S00!r} {a!r}"
+        return ("pair_style bbpd/constant/alpha 3d\n"
                 f"pair_coeff * * 1.0e9 none 0.0015 critical_stretch {S00!r} alpha {a!r}")
     # alpha = 0: it breaks at once
     assert bond_history(lmp, pair(0.0), [-0.01, stretch]) == [0, 0, 1]
@@ -181,15 +186,27 @@ def test_alpha_compression_then_tension(lmp, style):
 def test_alpha_tension_rule_differs(lmp):
     """peri/pmb's rule lowers s0 after tension (s0 = s00 - alpha * smin, smin > 0); the
     bbpd alpha keyword counts compression only. A bond at 0.9 s00 then 0.98 s00 breaks
-    under compat pmb and survives with the keyword."""
+    under bbpd/pmb and survives with the keyword."""
     hist = [0.9 * S00, 0.98 * S00]
-    compat = bond_history(lmp, "pair_style bbpd/constant 3d compat pmb\n"
+    compat = bond_history(lmp, "pair_style bbpd/pmb 3d\n"
                           f"pair_coeff * * 1.0e20 0.0015 {S00!r} {ALPHA!r}", hist)
-    plain = bond_history(lmp, "pair_style bbpd/constant 3d\n"
+    plain = bond_history(lmp, "pair_style bbpd/constant/alpha 3d\n"
                          f"pair_coeff * * 1.0e9 none 0.0015 critical_stretch {S00!r} alpha {ALPHA!r}",
                          hist)
     assert compat == [0, 0, 1]
     assert plain == [0, 0, 0]
+
+
+def test_alpha_style_without_alpha_warns(lmp):
+    """bbpd/KERNEL/alpha with alpha 0 for every type pair runs the Silling-Askari loop for the
+    plain rule: a WARNING names the faster style; with alpha > 0 there is none."""
+    warning = "alpha is 0 for every type pair"
+    for a, warns in ((0.0, True), (ALPHA, False)):
+        out = lmp(bond_script("pair_style bbpd/constant/alpha 3d\n"
+                              f"pair_coeff * * 1.0e9 none 0.0015 critical_stretch {S00!r} alpha {a!r}",
+                              [0.0])).output
+        assert (warning in out) == warns, out[-2000:]
+        assert "Silling-Askari critical stretch" in out
 
 
 def test_compat_needs_lattice(lmp):
@@ -197,14 +214,14 @@ def test_compat_needs_lattice(lmp):
                "atom_modify map array\nregion box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box\n"
                "create_box 1 box\ncreate_atoms 1 single 0 0 0 units box\n"
                "set group all volume 1e-9\nset group all density 1000\n"
-               "pair_style bbpd/constant 3d compat pmb\npair_coeff * * 1e20 0.0015 0.001 0.25\n"
+               "pair_style bbpd/pmb 3d\npair_coeff * * 1e20 0.0015 0.001 0.25\n"
                "run 0\n", check=False)
     assert "needs a lattice command" in proc.error
 
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "peri-pmb-dropin" / "in.bbpd.pmb"
 # the cylinder's material for the kernel models: E = pi c delta^4 / 12 (doc/migrating_from_peri)
-PLAIN_ALPHA = ("pair_style      bbpd/gaussian 3d contact yes\n"
+PLAIN_ALPHA = ("pair_style      bbpd/gaussian/alpha 3d contact yes\n"
                "pair_coeff      * * 22.355e9 5.0 0.0015001 alpha 0.25\n")
 # a second atom type that no atom has, with another s00: the per-bond (multi-type) loop
 TWO_TYPES = ("pair_coeff      * * 1.6863e22 0.0015001 0.0005 0.25\n"
@@ -215,13 +232,13 @@ def cylinder(variant, steps=300):
     script = EXAMPLE.read_text().replace("variable        steps index 1000",
                                          f"variable        steps index {steps}")
     script = script.replace("variable        scale index 1", "variable        scale index 0.6")
-    pmb_lines = ("pair_style      bbpd/constant 3d compat pmb\n"
+    pmb_lines = ("pair_style      bbpd/pmb 3d\n"
                  "pair_coeff      * * 1.6863e22 0.0015001 0.0005 0.25\n")
     assert pmb_lines in script
     if variant == "plain-alpha":
         script = script.replace(pmb_lines, PLAIN_ALPHA)
     elif variant == "compact":
-        script = script.replace("compat pmb\n", "compat pmb bond/storage compact\n", 1)
+        script = script.replace("bbpd/pmb 3d\n", "bbpd/pmb 3d bond/storage compact\n", 1)
     elif variant == "two-types":
         script = script.replace("create_box      1 target", "create_box      2 target")
         script = script.replace(pmb_lines, pmb_lines.splitlines()[0] + "\n" + TWO_TYPES)
@@ -243,7 +260,7 @@ def test_per_bond_loop_gives_the_same_bits(lmp, tmp_path):
 
 
 def test_cylinder_bitwise_on_1_and_2_threads(lmp, tmp_path):
-    """compat pmb on 2 OpenMP threads ends in the bits of 1 thread."""
+    """bbpd/pmb on 2 OpenMP threads ends in the bits of 1 thread."""
     states = []
     for threads in (1, 2):
         script = cylinder("compat").replace("units           si",
@@ -272,7 +289,7 @@ def test_cylinder_bitwise_on_1_and_2_ranks(lmp, tmp_path, variant):
 
 
 def test_cylinder_restart_equals_continuous_run(lmp, tmp_path):
-    """compat pmb across write_restart/read_restart (new process): the smallest stretches
+    """bbpd/pmb across write_restart/read_restart (new process): the smallest stretches
     (per-atom s0), compat and alpha come back, and the run continues in the same bits."""
     script = EXAMPLE.read_text().replace("variable        scale index 1",
                                          "variable        scale index 0.6")
@@ -283,7 +300,7 @@ def test_cylinder_restart_equals_continuous_run(lmp, tmp_path):
     straight = ref.read_dump(tmp_path / "end.dump")
     lmp(script.replace("variable        steps index 1000", "variable        steps index 150")
         + "write_restart state.restart\n")
-    # a new process: the plugin, the lattice (compat pmb needs it, as peri/pmb), the fixes
+    # a new process: the plugin, the lattice (bbpd/pmb needs it, as peri/pmb), the fixes
     second = ("plugin load bbpdplugin.so\nread_restart state.restart\nneighbor 0.0010 bin\n"
               "lattice sc 0.0005\nvariable steps index 150\nfix 1 all nve" + tail + dump)
     lmp(second)
@@ -296,7 +313,7 @@ def test_cylinder_restart_equals_continuous_run(lmp, tmp_path):
 def test_cylinder_atom_sorting_gives_the_same_bits(lmp, tmp_path):
     """LAMMPS sorting the atoms (new local indices at a reneighboring) rebuilds the bond cache
     and the short-range candidates; without sorting both are kept from one reneighboring to
-    the next. Either way the run ends in the same bits, with and without compat pmb."""
+    the next. Either way the run ends in the same bits, with and without bbpd/pmb."""
     for variant in ("compat", "plain-alpha"):
         states = []
         for sort in ("atom_modify     sort 0 0.0", "atom_modify     sort 10 0.0005"):
@@ -316,13 +333,13 @@ def periodic_cylinder(style):
     script = cylinder("compat").replace("boundary        s s s", "boundary        p s p")
     if style == "peri/pmb":
         script = script.replace("plugin load     bbpdplugin.so\n", "")
-        script = script.replace("pair_style      bbpd/constant 3d compat pmb", "pair_style      peri/pmb")
+        script = script.replace("pair_style      bbpd/pmb 3d", "pair_style      peri/pmb")
         script = script.replace("bbpd/damage/atom", "damage/atom")
     return script
 
 
 def test_periodic_cylinder_follows_peri_pmb(lmp, tmp_path):
-    """compat pmb in a periodic box: the same damage as peri/pmb at every thermo step, and the
+    """bbpd/pmb in a periodic box: the same damage as peri/pmb at every thermo step, and the
     same bits on 1 and 2 ranks (every bond breaks at both ends at once)."""
     tables, states = [], []
     for style, nprocs in (("peri/pmb", 1), ("compat", 1), ("compat", 2)):

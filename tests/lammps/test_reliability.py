@@ -113,7 +113,7 @@ def straddling_pairs(tmp_path, seed=12, alpha=False):
     # the bonds are first tested at step 1, after a step too short to move an atom by one ulp
     dt = 1e-15 if alpha else 1e-9
     return peri_preamble(2, "p f p", data="pairs.data") + f"""\
-pair_style bbpd/gaussian plane/stress thickness {DX!r}
+pair_style bbpd/gaussian{"/alpha" if alpha else ""} plane/stress thickness {DX!r}
 pair_coeff * * {E!r} none {3 * DX!r} critical_stretch {S0!r}{" alpha 0.25" if alpha else ""}
 fix nve all nve
 fix 2d all enforce2d

@@ -84,7 +84,7 @@ def final_state(lmp, tmp_path, plugin, bond_storage="fast", volumes=1):
 
 
 def cylinder_state(lmp, tmp_path, plugin=None):
-    """Final state of the shattering compat pmb cylinder (the Silling-Askari loop: a fused
+    """Final state of the shattering bbpd/pmb cylinder (the Silling-Askari loop: a fused
     force-and-stretch pass with AVX-512, a stretch pass and the force kernel otherwise)."""
     script = pmb_compat.cylinder("compat")
     if plugin is not None:

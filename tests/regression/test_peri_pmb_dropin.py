@@ -1,5 +1,5 @@
 """LAMMPS's examples/peri/in.peri.pmb (glass cylinder shattered by a spherical indenter)
-run with peri/pmb and, ported, with 'bbpd/constant 3d compat pmb'
+run with peri/pmb and, ported, with 'bbpd/pmb 3d'
 (examples/peri-pmb-dropin): mean damage and the number of atoms with damage > 0.5 at
 steps 500 and 1000 agree within 2 %.
 
@@ -34,7 +34,7 @@ def run_both(lmp, scale):
 
 def check(results):
     pmb, ours = results["peri"], results["bbpd"]
-    print(f"loop time peri/pmb {pmb['loop']:.3f} s, bbpd compat pmb {ours['loop']:.3f} s, "
+    print(f"loop time peri/pmb {pmb['loop']:.3f} s, bbpd/pmb {ours['loop']:.3f} s, "
           f"ratio {pmb['loop'] / ours['loop']:.2f}")
     for step in CHECK_STEPS:
         (d_pmb, n_pmb), (d_ours, n_ours) = pmb[step], ours[step]

@@ -1,0 +1,252 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* ----------------------------------------------------------------------
+   BBPD plugin: the Silling-Askari critical stretch in the bbpd pair styles
+   (pair_bbpd_alpha.h): the loop over the rows of fix bbpd/bonds that breaks
+   bonds with it, for bbpd/KERNEL/alpha and for bbpd/pmb.
+------------------------------------------------------------------------- */
+
+#include "pair_bbpd_alpha.h"
+#include "bbpd_pmb_rules.h"
+#include "bbpd_pmb_row.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_bbpd_alpha.h"
+#include "fix_bbpd_bonds.h"
+#include "memory.h"
+#include "modify.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace LAMMPS_NS;
+using namespace BBPD::PMB;
+using BBPD::LANES;
+using BBPD::RowTally;
+using BBPD::lane_sum;
+
+// a bond's stretch seen through a periodic image and from the owners' positions differ by at
+// most break_margin / xi0, plus the rounding of the division: twice that bounds both
+static constexpr double STRETCH_MARGIN_FACTOR = 2.0;
+static constexpr const char *ALPHA_FIX_ID = "BBPD_ALPHA";
+
+/* ---------------------------------------------------------------------- */
+
+PairBBPDAlpha::PairBBPDAlpha(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name) :
+    PairBBPD(lmp, k, style_name ? style_name : (std::string("bbpd/") + k.name + "/alpha").c_str()),
+    nmax_smin(0), smin_new(nullptr), alpha_state(nullptr)
+{
+}
+
+PairBBPDAlpha::~PairBBPDAlpha()
+{
+  if (copymode) return;
+  memory->destroy(smin_new);
+  if (alpha_state && modify->get_fix_by_id(ALPHA_FIX_ID)) modify->delete_fix(ALPHA_FIX_ID);
+}
+
+/* part of init_style: the state fix and the starting smin */
+void PairBBPDAlpha::init_rules()
+{
+  alpha_state = dynamic_cast<FixBBPDAlpha *>(modify->get_fix_by_id(ALPHA_FIX_ID));
+  if (!alpha_state)
+    alpha_state = dynamic_cast<FixBBPDAlpha *>(
+        modify->add_fix(std::string(ALPHA_FIX_ID) + " all bbpd/alpha"));
+  if (!alpha_state) error->all(FLERR, "Pair style {}: could not create its fix bbpd/alpha", style);
+  // before the families exist no atom has a bond: no smin yet (as peri/pmb)
+  if (!bonds->families_built())
+    for (int i = 0; i < atom->nlocal; i++) atom->s0[i] = NO_BOND_STRETCH;
+  if (pmb_rules() || comm->me != 0) return;
+  bool any = false;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j] && alpha[i][j] > 0.0) any = true;
+  if (!any)
+    error->warning(FLERR, "Pair style {}: alpha is 0 for every type pair, which turns the "
+                   "Silling-Askari rule off: pair style bbpd/{} breaks bonds alike, faster",
+                   style, kernel.name);
+}
+
+std::string PairBBPDAlpha::report_rules() const
+{
+  return "  Silling-Askari critical stretch: s0 - alpha min(0, smallest stretch of the atom)\n";
+}
+
+/* the bond forces and breaking of one step, in the bbpd order */
+void PairBBPDAlpha::eval_bonds()
+{
+  if (evflag) eval_silling_askari<1, false>();
+  else eval_silling_askari<0, false>();
+}
+
+/* ----------------------------------------------------------------------
+   bond forces and breaking with the Silling-Askari critical stretch
+------------------------------------------------------------------------- */
+
+template <int EVFLAG, bool PMB> void PairBBPDAlpha::eval_silling_askari()
+{
+  const double *xx = atom->x[0];
+  const int *type = atom->type;
+  double *smin = atom->s0;    // smallest bond stretch at the previous step, ghosts included
+  const int nlocal = atom->nlocal;
+  if (nlocal > nmax_smin) {
+    nmax_smin = atom->nmax;
+    memory->destroy(smin_new);
+    memory->create(smin_new, nmax_smin, "pair:smin_new");
+  }
+  constexpr bool pmb = PMB;
+  constexpr bool clamp = !PMB;
+  // one s00 and alpha for every type pair: no per-bond lookups
+  bool multi = false;
+  const double s00_one = critical_stretch[1][1], alpha_one = alpha[1][1];
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = 1; j <= atom->ntypes; j++)
+      if (critical_stretch[i][j] != s00_one || alpha[i][j] != alpha_one) multi = true;
+  // a second evaluation of the last step (setup of a new run, read_restart): no breaking,
+  // no new smallest stretches, and the bonds that broke then act again
+  const bool replay = update->setupflag && update->ntimestep == alpha_state->last_step;
+  double **fbroken = alpha_state->fbroken;
+  // in a periodic box the two ends of a bond see each other through images that round
+  // differently: a row with a bond within 'margin' (stretch) of breaking is decided again
+  // from breaking_length(), which both ends compute alike. The margin bounds the stretch
+  // difference of the two views (break_margin / shortest reference length), with a factor
+  // for the rounding of the stretch itself.
+  const bool canonical = bonds->raw_positions();
+  const double margin = canonical && break_margin > 0.0
+      ? STRETCH_MARGIN_FACTOR * break_margin / bonds->min_reference_length() : 0.0;
+  double totals[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  int bad = -1;
+
+#if defined(_OPENMP)
+#pragma omp parallel num_threads(comm->nthreads) if (comm->nthreads > 1)
+#endif
+  {
+    double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    BBPD::CoefCache *cache = thread_coef_cache();
+#if defined(_OPENMP)
+#pragma omp for schedule(static, 512)
+#endif
+    for (int i = 0; i < nlocal; i++) {
+      const int itype = type[i];
+      const double *xi = atom->x[i];
+      const double smin_i = smin[i];
+      // stretch of bond k at current length r (peri/pmb zeroes round-off elongations)
+      auto stretch_at = [&](int k, double r) {
+        const double xi0 = bonds->xi0_of(i, k);
+        double elong = BondModel::elongation(r, xi0);
+        if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
+        return BBPD::SillingAskariRule<false>::stretch(elong, xi0);
+      };
+      auto stretch_of = [&](int k) {
+        const double *xj = atom->x[bonds->partner_of(i, k)];
+        const double dx = xj[0] - xi[0], dy = xj[1] - xi[1], dz = xj[2] - xi[2];
+        return stretch_at(k, std::sqrt(dx * dx + dy * dy + dz * dz));
+      };
+      // the stretch that decides breaking: the same at both ends of the bond
+      auto breaking_stretch = [&](int k) {
+        return canonical ? stretch_at(k, breaking_length(i, bonds->partner_of(i, k))) : stretch_of(k);
+      };
+      auto s0_of = [&](int k) {
+        const int j = bonds->partner_of(i, k);
+        if (!multi) return BBPD::PMB::critical_stretch(s00_one, alpha_one, smin_i, smin[j], clamp);
+        return BBPD::PMB::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
+                                           smin_i, smin[j], clamp);
+      };
+      double fi[3];
+      bool done = false;    // fi (and the tallies) summed by the fused kernel
+      if (replay) {
+        smin_new[i] = smin_i;
+      } else {
+        double snew = std::numeric_limits<double>::max();
+        bool broken = false;
+        const int n = bonds->nbond[i];
+        if (!multi) {
+          // the row in whatever layout the storage keeps it (FixBBPDBonds::visit_row)
+          broken = bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
+#ifdef BBPD_SIMD
+            // force and stretch in one pass
+            double ax[LANES], ay[LANES], az[LANES];
+            RowTally tally;
+            const bool past = row_force_stretch_simd<EVFLAG, PMB, !PMB>(
+                xx, i, bj, vals, n, smin, s00_one, alpha_one, margin, &snew, ax, ay, az, &tally);
+            if (!past) {
+              lane_sum(ax, ay, az, fi);
+              if (EVFLAG) tally_lanes(i, tally, acc);
+              done = true;
+            }
+            return past;
+#else
+            return BBPD::row_stretch_portable<PMB, !PMB>(xx, i, bj, vals, n, smin, s00_one,
+                                                         alpha_one, margin, &snew);
+#endif
+          });
+        } else {
+          for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + n; k++) {
+            const double s = stretch_of(k);
+            snew = std::min(snew, s);
+            broken |= BBPD::SillingAskariRule<false>::past_critical(s, s0_of(k), margin);
+          }
+        }
+        smin_new[i] = n > 0 ? snew : NO_BOND_STRETCH;
+        double fb[3] = {0.0, 0.0, 0.0};
+        if (broken)
+          bonds->remove_bonds_if(i, [&](int k) {
+            if (!BBPD::SillingAskariRule<false>::past_critical(breaking_stretch(k), s0_of(k), 0.0))
+              return false;
+            // peri/pmb applies the force of a bond in the step it breaks; bbpd drops it at once
+            if (pmb) broken_bond_force<EVFLAG>(i, k, fb, acc);
+            return true;
+          });
+        if (pmb)
+          for (int m = 0; m < 3; m++) fbroken[i][m] = fb[m];
+      }
+      if (!done) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc, cache);
+      if (pmb)
+        for (int m = 0; m < 3; m++) fi[m] += fbroken[i][m];
+      add_row_force(i, fi, bad);
+    }
+    if (EVFLAG) add_thread_totals(totals, acc);
+  }
+  finish_eval(bad, EVFLAG, totals);
+  // the new smin takes effect at the next step, once sent to the ghosts
+  for (int i = 0; i < nlocal; i++) smin[i] = smin_new[i];
+  alpha_state->last_step = update->ntimestep;
+}
+
+/* add the force density of bond k of atom i (about to break) to fb, in the order the
+   bonds break; tally its energy and virial as row_force does */
+template <int EVFLAG> void PairBBPDAlpha::broken_bond_force(int i, int k, double *fb, double *acc)
+{
+  const double *xx = atom->x[0];
+  const int j = bonds->partner_of(i, k);
+  const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
+               dz = xx[3 * j + 2] - xx[3 * i + 2];
+  const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+  const double xi0 = bonds->xi0_of(i, k);
+  const double coef = bonds->coef_of(i, k, xi0);
+  const double elong = BondModel::elongation(r, xi0);
+  const double fbond = BondModel::force_per_length(coef, elong, r);
+  fb[0] += fbond * dx;
+  fb[1] += fbond * dy;
+  fb[2] += fbond * dz;
+  if (EVFLAG) {
+    const double eng = BondModel::energy_share(coef, elong);
+    const double vir[6] = {-BondModel::virial_share(fbond, dx, dx), -BondModel::virial_share(fbond, dy, dy),
+                           -BondModel::virial_share(fbond, dz, dz), -BondModel::virial_share(fbond, dx, dy),
+                           -BondModel::virial_share(fbond, dx, dz), -BondModel::virial_share(fbond, dy, dz)};
+    acc[0] += eng;
+    if (eflag_atom) eatom[i] += eng;
+    for (int m = 0; m < 6; m++) {
+      acc[1 + m] += vir[m];
+      if (vflag_atom) vatom[i][m] += vir[m];
+    }
+  }
+}
+
+template void PairBBPDAlpha::eval_silling_askari<0, false>();
+template void PairBBPDAlpha::eval_silling_askari<1, false>();
+template void PairBBPDAlpha::eval_silling_askari<0, true>();
+template void PairBBPDAlpha::eval_silling_askari<1, true>();
