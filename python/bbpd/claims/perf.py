@@ -14,7 +14,7 @@ ZEN3_FILES = tuple(RESULTS / name for name in (
 SCENES = (("plate 2D", "plate 200 × 100, 785 k bonds", "ms/step"),
           ("block 3D", "3D block 41³, 15.4 M bonds", "ms/step"),
           ("LAMMPS bench", "LAMMPS's benchmark scene, periodic 16³, 250 k bonds", "ms/step"),
-          ("cylinder", "`compat pmb` cylinder, 1000 steps", "s"))
+          ("cylinder", "`bbpd/pmb` cylinder, 1000 steps", "s"))
 MARGIN = "memory: bytes per bond at the margin"
 
 
