@@ -13,6 +13,7 @@
 #include "pair_bbpd.h"
 #include "bbpd_compat.h"
 #include "bbpd_row.h"
+#include "pair_bbpd_rows.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -527,60 +528,42 @@ void PairBBPD::compute_contact()
       f[i][0] += fpair * dx;
       f[i][1] += fpair * dy;
       f[i][2] += fpair * dz;
-      if (evflag) {
-        const double e = 0.25 * k * (dc - r) * (dc - r);
-        if (eflag_global) eng_vdwl += e;
-        if (eflag_atom) eatom[i] += e;
-        const double v[6] = {0.5 * fpair * dx * dx, 0.5 * fpair * dy * dy, 0.5 * fpair * dz * dz,
-                             0.5 * fpair * dx * dy, 0.5 * fpair * dx * dz, 0.5 * fpair * dy * dz};
-        for (int m = 0; m < 6; m++) {
-          if (vflag_global) virial[m] += v[m];
-          if (vflag_atom) vatom[i][m] += v[m];
-        }
-      }
+      if (evflag) tally_short_range(i, 0.25 * k * (dc - r) * (dc - r), fpair, dx, dy, dz);
     }
+  }
+}
+
+/* energy e and virial of the short-range force fpair (dx, dy, dz) on local atom i: each end of
+   the pair tallies half */
+void PairBBPD::tally_short_range(int i, double e, double fpair, double dx, double dy, double dz)
+{
+  if (eflag_global) eng_vdwl += e;
+  if (eflag_atom) eatom[i] += e;
+  const double v[6] = {0.5 * fpair * dx * dx, 0.5 * fpair * dy * dy, 0.5 * fpair * dz * dz,
+                       0.5 * fpair * dx * dy, 0.5 * fpair * dx * dz, 0.5 * fpair * dy * dz};
+  for (int m = 0; m < 6; m++) {
+    if (vflag_global) virial[m] += v[m];
+    if (vflag_atom) vatom[i][m] += v[m];
   }
 }
 
 template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
 {
-  const double *xx = atom->x[0];
   const int *type = atom->type;
-  const int nlocal = atom->nlocal;
-  // every atom sums only its own bonds, so threads share nothing but the energy/virial totals;
-  // the forces are the same bits for any number of threads
-  double totals[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  int bad = -1;    // an atom whose force is not finite (errors are raised outside the threads)
-#if defined(_OPENMP)
-#pragma omp parallel num_threads(comm->nthreads) if (comm->nthreads > 1)
-#endif
-  {
-    double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    BBPD::CoefCache *cache = thread_coef_cache();
-#if defined(_OPENMP)
-    // chunks of 512 atoms dealt out in turn: rows differ in length near surfaces and cracks
-    // (plate, 2 threads: 1.92x speed-up; one half per thread: 1.65x)
-#pragma omp for schedule(static, 512)
-#endif
-    for (int i = 0; i < nlocal; i++) {
-      const double *s0row = MULTI ? critical_stretch[type[i]] : nullptr;
-      double fi[3];
-      if (!FRACTURE) {
-        row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc, cache);
-      } else if (row_force<EVFLAG, 1, MULTI>(i, fi, s0row, acc, cache)) {
-        // a bond of the row is (near) past its critical stretch: remove such bonds
-        // (irreversibly, in row order), then sum the row again
-        bonds->remove_bonds_if(i, [&](int k) {
-          const int j = bonds->partner_of(i, k);
-          return past_critical(i, j, bonds->xi0_of(i, k), MULTI ? s0row[type[j]] : s0_single);
-        });
-        row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc, cache);
-      }
-      add_row_force(i, fi, bad);
+  for_each_row<EVFLAG>([&](int i, double *fi, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
+    const double *s0row = MULTI ? critical_stretch[type[i]] : nullptr;
+    if (!FRACTURE) {
+      row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc, cache);
+    } else if (row_force<EVFLAG, 1, MULTI>(i, fi, s0row, acc, cache)) {
+      // a bond of the row is (near) past its critical stretch: remove such bonds
+      // (irreversibly, in row order), then sum the row again
+      bonds->remove_bonds_if(i, [&](int k) {
+        const int j = bonds->partner_of(i, k);
+        return past_critical(i, j, bonds->xi0_of(i, k), MULTI ? s0row[type[j]] : s0_single);
+      });
+      row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc, cache);
     }
-    if (EVFLAG) add_thread_totals(totals, acc);
-  }
-  finish_eval(bad, EVFLAG, totals);
+  });
 }
 
 /* ----------------------------------------------------------------------

@@ -93,6 +93,11 @@ class PairBBPD : public Pair {
   }
   void allocate();
   void compute_contact();
+  void tally_short_range(int i, double e, double fpair, double dx, double dy, double dz);
+  // the threaded loop over the local atoms' rows that every bond loop runs in:
+  // row(i, fi, acc, cache) sums the force density of atom i into fi (and, with EVFLAG, its
+  // energy and virial into acc); defined in pair_bbpd_rows.h
+  template <int EVFLAG, class Row> void for_each_row(Row row);
   [[noreturn]] void nonfinite_error(int i);
   void add_row_force(int i, const double *fi, int &bad);
   void finish_eval(int bad, bool evflag_on, const double *totals);

@@ -8,6 +8,7 @@
 #include "pair_bbpd_alpha.h"
 #include "bbpd_pmb_rules.h"
 #include "bbpd_pmb_row.h"
+#include "pair_bbpd_rows.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -117,100 +118,83 @@ template <int EVFLAG, bool PMB> void PairBBPDAlpha::eval_silling_askari()
   const bool canonical = bonds->raw_positions();
   const double margin = canonical && break_margin > 0.0
       ? STRETCH_MARGIN_FACTOR * break_margin / bonds->min_reference_length() : 0.0;
-  double totals[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  int bad = -1;
-
-#if defined(_OPENMP)
-#pragma omp parallel num_threads(comm->nthreads) if (comm->nthreads > 1)
-#endif
-  {
-    double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    BBPD::CoefCache *cache = thread_coef_cache();
-#if defined(_OPENMP)
-#pragma omp for schedule(static, 512)
-#endif
-    for (int i = 0; i < nlocal; i++) {
-      const int itype = type[i];
-      const double *xi = atom->x[i];
-      const double smin_i = smin[i];
-      // stretch of bond k at current length r (peri/pmb zeroes round-off elongations)
-      auto stretch_at = [&](int k, double r) {
-        const double xi0 = bonds->xi0_of(i, k);
-        double elong = BondModel::elongation(r, xi0);
-        if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
-        return BBPD::SillingAskariRule<false>::stretch(elong, xi0);
-      };
-      auto stretch_of = [&](int k) {
-        const double *xj = atom->x[bonds->partner_of(i, k)];
-        const double dx = xj[0] - xi[0], dy = xj[1] - xi[1], dz = xj[2] - xi[2];
-        return stretch_at(k, std::sqrt(dx * dx + dy * dy + dz * dz));
-      };
-      // the stretch that decides breaking: the same at both ends of the bond
-      auto breaking_stretch = [&](int k) {
-        return canonical ? stretch_at(k, breaking_length(i, bonds->partner_of(i, k))) : stretch_of(k);
-      };
-      auto s0_of = [&](int k) {
-        const int j = bonds->partner_of(i, k);
-        if (!multi) return BBPD::PMB::critical_stretch(s00_one, alpha_one, smin_i, smin[j], clamp);
-        return BBPD::PMB::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
-                                           smin_i, smin[j], clamp);
-      };
-      double fi[3];
-      bool done = false;    // fi (and the tallies) summed by the fused kernel
-      if (replay) {
-        smin_new[i] = smin_i;
-      } else {
-        double snew = std::numeric_limits<double>::max();
-        bool broken = false;
-        const int n = bonds->nbond[i];
-        if (!multi) {
-          // the row in whatever layout the storage keeps it (FixBBPDBonds::visit_row)
-          broken = bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
+  for_each_row<EVFLAG>([&](int i, double *fi, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
+    const int itype = type[i];
+    const double *xi = atom->x[i];
+    const double smin_i = smin[i];
+    // stretch of bond k at current length r (peri/pmb zeroes round-off elongations)
+    auto stretch_at = [&](int k, double r) {
+      const double xi0 = bonds->xi0_of(i, k);
+      double elong = BondModel::elongation(r, xi0);
+      if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
+      return BBPD::SillingAskariRule<false>::stretch(elong, xi0);
+    };
+    auto stretch_of = [&](int k) {
+      const double *xj = atom->x[bonds->partner_of(i, k)];
+      const double dx = xj[0] - xi[0], dy = xj[1] - xi[1], dz = xj[2] - xi[2];
+      return stretch_at(k, std::sqrt(dx * dx + dy * dy + dz * dz));
+    };
+    // the stretch that decides breaking: the same at both ends of the bond
+    auto breaking_stretch = [&](int k) {
+      return canonical ? stretch_at(k, breaking_length(i, bonds->partner_of(i, k))) : stretch_of(k);
+    };
+    auto s0_of = [&](int k) {
+      const int j = bonds->partner_of(i, k);
+      if (!multi) return BBPD::PMB::critical_stretch(s00_one, alpha_one, smin_i, smin[j], clamp);
+      return BBPD::PMB::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
+                                         smin_i, smin[j], clamp);
+    };
+    bool done = false;    // fi (and the tallies) summed by the fused kernel
+    if (replay) {
+      smin_new[i] = smin_i;
+    } else {
+      double snew = std::numeric_limits<double>::max();
+      bool broken = false;
+      const int n = bonds->nbond[i];
+      if (!multi) {
+        // the row in whatever layout the storage keeps it (FixBBPDBonds::visit_row)
+        broken = bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
 #ifdef BBPD_SIMD
-            // force and stretch in one pass
-            double ax[LANES], ay[LANES], az[LANES];
-            RowTally tally;
-            const bool past = row_force_stretch_simd<EVFLAG, PMB, !PMB>(
-                xx, i, bj, vals, n, smin, s00_one, alpha_one, margin, &snew, ax, ay, az, &tally);
-            if (!past) {
-              lane_sum(ax, ay, az, fi);
-              if (EVFLAG) tally_lanes(i, tally, acc);
-              done = true;
-            }
-            return past;
-#else
-            return BBPD::row_stretch_portable<PMB, !PMB>(xx, i, bj, vals, n, smin, s00_one,
-                                                         alpha_one, margin, &snew);
-#endif
-          });
-        } else {
-          for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + n; k++) {
-            const double s = stretch_of(k);
-            snew = std::min(snew, s);
-            broken |= BBPD::SillingAskariRule<false>::past_critical(s, s0_of(k), margin);
+          // force and stretch in one pass
+          double ax[LANES], ay[LANES], az[LANES];
+          RowTally tally;
+          const bool past = row_force_stretch_simd<EVFLAG, PMB, !PMB>(
+              xx, i, bj, vals, n, smin, s00_one, alpha_one, margin, &snew, ax, ay, az, &tally);
+          if (!past) {
+            lane_sum(ax, ay, az, fi);
+            if (EVFLAG) tally_lanes(i, tally, acc);
+            done = true;
           }
+          return past;
+#else
+          return BBPD::row_stretch_portable<PMB, !PMB>(xx, i, bj, vals, n, smin, s00_one,
+                                                       alpha_one, margin, &snew);
+#endif
+        });
+      } else {
+        for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + n; k++) {
+          const double s = stretch_of(k);
+          snew = std::min(snew, s);
+          broken |= BBPD::SillingAskariRule<false>::past_critical(s, s0_of(k), margin);
         }
-        smin_new[i] = n > 0 ? snew : NO_BOND_STRETCH;
-        double fb[3] = {0.0, 0.0, 0.0};
-        if (broken)
-          bonds->remove_bonds_if(i, [&](int k) {
-            if (!BBPD::SillingAskariRule<false>::past_critical(breaking_stretch(k), s0_of(k), 0.0))
-              return false;
-            // peri/pmb applies the force of a bond in the step it breaks; bbpd drops it at once
-            if (pmb) broken_bond_force<EVFLAG>(i, k, fb, acc);
-            return true;
-          });
-        if (pmb)
-          for (int m = 0; m < 3; m++) fbroken[i][m] = fb[m];
       }
-      if (!done) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc, cache);
+      smin_new[i] = n > 0 ? snew : NO_BOND_STRETCH;
+      double fb[3] = {0.0, 0.0, 0.0};
+      if (broken)
+        bonds->remove_bonds_if(i, [&](int k) {
+          if (!BBPD::SillingAskariRule<false>::past_critical(breaking_stretch(k), s0_of(k), 0.0))
+            return false;
+          // peri/pmb applies the force of a bond in the step it breaks; bbpd drops it at once
+          if (pmb) broken_bond_force<EVFLAG>(i, k, fb, acc);
+          return true;
+        });
       if (pmb)
-        for (int m = 0; m < 3; m++) fi[m] += fbroken[i][m];
-      add_row_force(i, fi, bad);
+        for (int m = 0; m < 3; m++) fbroken[i][m] = fb[m];
     }
-    if (EVFLAG) add_thread_totals(totals, acc);
-  }
-  finish_eval(bad, EVFLAG, totals);
+    if (!done) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc, cache);
+    if (pmb)
+      for (int m = 0; m < 3; m++) fi[m] += fbroken[i][m];
+  });
   // the new smin takes effect at the next step, once sent to the ghosts
   for (int i = 0; i < nlocal; i++) smin[i] = smin_new[i];
   alpha_state->last_step = update->ntimestep;

@@ -188,17 +188,7 @@ void PairBBPDPMB::compute_short_range()
       f[i][0] += dx * fpair;
       f[i][1] += dy * fpair;
       f[i][2] += dz * fpair;
-      if (evflag) {
-        const double e = 0.25 * rk * dr;    // half of the pair's energy: the other end adds the rest
-        if (eflag_global) eng_vdwl += e;
-        if (eflag_atom) eatom[i] += e;
-        const double v[6] = {0.5 * fpair * dx * dx, 0.5 * fpair * dy * dy, 0.5 * fpair * dz * dz,
-                             0.5 * fpair * dx * dy, 0.5 * fpair * dx * dz, 0.5 * fpair * dy * dz};
-        for (int m = 0; m < 6; m++) {
-          if (vflag_global) virial[m] += v[m];
-          if (vflag_atom) vatom[i][m] += v[m];
-        }
-      }
+      if (evflag) tally_short_range(i, 0.25 * rk * dr, fpair, dx, dy, dz);
     }
   }
 }
