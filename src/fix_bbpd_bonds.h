@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
-   BBPD plugin: bond families of the bbpd/* pair styles.
+   BBPD plugin: bond families of the bbpd pair styles.
 
    Created by the pair style (ID BBPD_BONDS); not meant for input scripts.
    Persistent per-atom data, carried through atom migration and restart files:

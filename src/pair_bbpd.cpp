@@ -57,11 +57,12 @@ static constexpr double BREAK_MARGIN_ULPS = 16.0;
 /* ---------------------------------------------------------------------- */
 
 PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name) :
-    Pair(lmp), kernel(k), style(style_name ? style_name : std::string("bbpd/") + k.name), model(BBPD::Model::Solid3D), geom(1.0), spacing(0.0),
-    dt_safety(DT_SAFETY_DEFAULT), contact(0), contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
+    Pair(lmp), kernel(k), style(style_name ? style_name : std::string("bbpd/") + k.name),
+    model(BBPD::Model::Solid3D), geom(1.0), spacing(0.0), dt_safety(DT_SAFETY_DEFAULT), contact(0),
+    contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
     fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
-    s0_user(nullptr), bondless(nullptr), bonds(nullptr), report_due(0), dt_bound_paper(0.0), dt_bound(0.0), multi_s0(0),
-    alpha(nullptr), s0_single(0.0), break_margin(0.0)
+    s0_user(nullptr), bondless(nullptr), bonds(nullptr), dt_bound_paper(0.0), dt_bound(0.0),
+    report_due(0), alpha(nullptr), multi_s0(0), s0_single(0.0), break_margin(0.0)
 {
   single_enable = 0;
   restartinfo = 1;
