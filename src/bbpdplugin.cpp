@@ -14,6 +14,7 @@
 #include "fix_bbpd_alpha.h"
 #include "fix_bbpd_bonds.h"
 #include "fix_bbpd_notch.h"
+#include "fix_bbpd_watchdog.h"
 #include "info.h"
 #include "lammps.h"
 #include "pair_bbpd.h"
@@ -52,6 +53,10 @@ Fix *bonds_creator(LAMMPS *lmp, int narg, char **arg)
 Fix *alpha_creator(LAMMPS *lmp, int narg, char **arg)
 {
   return new FixBBPDAlpha(lmp, narg, arg);
+}
+Fix *watchdog_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixBBPDWatchdog(lmp, narg, arg);
 }
 Fix *notch_creator(LAMMPS *lmp, int narg, char **arg)
 {
@@ -135,6 +140,10 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "bbpd/alpha";
   plugin.info = "BBPD Silling-Askari breaking state (internal, created by the pair style) v" BBPD_VERSION;
   plugin.creator.v2 = (lammpsplugin_factory2 *) &alpha_creator;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/watchdog";
+  plugin.info = "BBPD run-explosion watchdog (internal, created by the pair style) v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &watchdog_creator;
   (*register_plugin)(&plugin, lmp);
   plugin.name = "bbpd/notch";
   plugin.info = "BBPD pre-cracks by broken bonds v" BBPD_VERSION;

@@ -35,12 +35,6 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 using MathConst::MY_PI;
 
-// an atom cloud this many times larger than the body at bond creation means the run has blown
-// up; stop before LAMMPS bins the exploded box (which can take all the memory)
-static constexpr double MAX_EXTENT_GROWTH = 1000.0;
-// nor can an atom that moves this many grid spacings in one step be part of a valid run (a stable
-// step moves atoms a small fraction of a spacing: dt < spacing / wave speed, and v << wave speed)
-static constexpr double MAX_STEP_SPACINGS = 10.0;
 // LAMMPS's default page size is 100 x its default 'neigh_modify one' (neighbor.cpp); the family
 // build asks for at least this ratio when it raises 'one' (LAMMPS requires page >= 10 x one)
 static constexpr int PAGE_PER_ONE = 10;
@@ -92,7 +86,7 @@ FixBBPDBonds::~FixBBPDBonds()
 
 int FixBBPDBonds::setmask()
 {
-  return POST_NEIGHBOR | MIN_POST_NEIGHBOR | PRE_EXCHANGE | PRE_FORCE | MIN_PRE_FORCE;
+  return POST_NEIGHBOR | MIN_POST_NEIGHBOR | PRE_FORCE | MIN_PRE_FORCE;
 }
 
 void FixBBPDBonds::init()
@@ -216,8 +210,9 @@ bool FixBBPDBonds::same_atoms_at_same_indices()
       std::equal(tags_cached.begin(), tags_cached.end(), tag);
 }
 
-/* largest extent of the atoms that still have bonds (free fragments may fly away) */
-double FixBBPDBonds::local_extent()
+/* largest extent of the atoms that still have bonds (free fragments may fly away); of all atoms
+   before the families exist */
+double FixBBPDBonds::bonded_extent()
 {
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300}, glo[3], ghi[3];
   double **x = atom->x;
@@ -232,40 +227,6 @@ double FixBBPDBonds::local_extent()
   double e = 0.0;
   for (int m = 0; m < domain->dimension; m++) e = MAX(e, ghi[m] - glo[m]);
   return MAX(e, 0.0);
-}
-
-/* before atoms migrate (once per reneighboring): catch an exploding run */
-void FixBBPDBonds::pre_exchange()
-{
-  if (first) return;
-  // no atom may cross a horizon in one step, and the bonded body may not spread out
-  double vmax = 0.0, gvmax = 0.0;
-  double **v = atom->v;
-  for (int i = 0; i < atom->nlocal; i++)
-    vmax = MAX(vmax, v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
-  MPI_Allreduce(&vmax, &gvmax, 1, MPI_DOUBLE, MPI_MAX, world);
-  const double e = local_extent();
-  const double step = std::sqrt(gvmax) * update->dt;
-  const double spacing = limits.grid_spacing;
-  const bool too_fast = !(step <= spacing * MAX_STEP_SPACINGS);
-  if (!too_fast && (extent0 <= 0.0 || e <= MAX_EXTENT_GROWTH * extent0)) return;
-  const double bound = limits.stable_timestep;
-  const std::string what = fmt::format(
-      "BBPD: the run is unstable at step {} (an atom moves {:.3g} grid spacings per step, the "
-      "bonded body spans {:.3g} x its size)", update->ntimestep, step / spacing,
-      extent0 > 0.0 ? e / extent0 : 0.0);
-  if (!(update->dt <= limits.timestep_safety * bound))
-    error->all(FLERR, "{}: the timestep {:.6g} ({:.3g} of the stable bound {:.6g} printed at "
-               "setup) must stay below that bound", what, update->dt, update->dt / bound, bound);
-  // below the stable bound the timestep is not the cause: atoms were set moving faster than
-  // the material can carry (a stable run moves atoms a small fraction of a spacing per step),
-  // e.g. an impact velocity far above the wave speed
-  error->all(FLERR, "{}: atoms move at up to {:.3g} (velocity units), far faster than a signal "
-             "crosses the grid (about {:.3g}: grid spacing / stable timestep), while the "
-             "timestep {:.6g} is only {:.3g} of the stable bound. Reduce the imposed velocities "
-             "(velocity, fix move, boundary conditions) or use a stiffer material, so that atoms "
-             "move well below one grid spacing per step", what, std::sqrt(gvmax),
-             spacing / bound, update->dt, update->dt / bound);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -349,7 +310,7 @@ void FixBBPDBonds::build_families()
     }
   }
   first = 0;
-  extent0 = local_extent();
+  extent0 = bonded_extent();
   refresh_cache();
   for (int i = 0; i < nlocal; i++) vinit[i] = vintact[i];
 }

@@ -34,8 +34,9 @@
    BBPD::BondLaw (bbpd_bond_law.h, no LAMMPS dependency) the pair style passes
    with set_rules() at every init, once it has calibrated c0 and s0: a value
    holding its own copy of the calibrated numbers, no pointer into the pair's
-   tables. With it come the storage policy and the run limits; the fix
-   includes no pair-style header.
+   tables. With it come the storage policy and the run limits (whether bonds break,
+   and the stable step for messages); the fix includes no pair-style header. The
+   run-explosion watchdog is fix bbpd/watchdog (fix_bbpd_watchdog.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_BBPD_BONDS_H
@@ -62,7 +63,6 @@ class FixBBPDBonds : public Fix {
   void init_list(int, class NeighList *) override;
   void setup_post_neighbor() override;
   void post_neighbor() override;
-  void pre_exchange() override;
   void min_post_neighbor() override { post_neighbor(); }
   void setup_pre_force(int) override;
   void pre_force(int) override;
@@ -178,6 +178,9 @@ class FixBBPDBonds : public Fix {
   double min_reference_length() const { return xi0_min; }
   // counts the rebuilds of the cache: unchanged while every local index keeps its meaning
   bigint cache_generation() const { return generation; }
+  // for fix bbpd/watchdog: the body's size now (atoms with bonds) and when the bonds were made
+  double bonded_extent();
+  double initial_extent() const { return extent0; }
 
  protected:
   int first;    // 1 until bond families exist
@@ -188,8 +191,7 @@ class FixBBPDBonds : public Fix {
   BBPD::BondStorage policy;
   bool offsets_allowed;
   BBPD::RunLimits limits;
-  double extent0;    // size of the body when the families were built
-  double local_extent();
+  double extent0;    // size of the body when the families were built (in restart files)
   int need_raw;       // periodic box with fracture: ghosts carry their owner's position
   int nmax_raw;
   double **xraw;      // owner's (unshifted) position of each ghost

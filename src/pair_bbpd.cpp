@@ -20,6 +20,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix_bbpd_bonds.h"
+#include "fix_bbpd_watchdog.h"
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
@@ -43,6 +44,7 @@ using BBPD::lane_total;
 
 static constexpr double DT_SAFETY_DEFAULT = 0.8;    // fraction of the stable bound before a warning
 static constexpr const char *BONDS_FIX_ID = "BBPD_BONDS";
+static constexpr const char *WATCHDOG_FIX_ID = "BBPD_WATCHDOG";
 // short-range contact as in LAMMPS peri/pmb: distance 0.9 x grid spacing (Parks et al., Comput.
 // Phys. Commun. 179 (2008) 777) and stiffness 15 c0 (Silling, EMU theory manual, 2005, p. 18)
 static constexpr double CONTACT_FACTOR_DEFAULT = 0.9;
@@ -61,7 +63,7 @@ PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name) :
     model(BBPD::Model::Solid3D), geom(1.0), spacing(0.0), dt_safety(DT_SAFETY_DEFAULT), contact(0),
     contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
     fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
-    s0_user(nullptr), bondless(nullptr), bonds(nullptr), dt_bound_paper(0.0), dt_bound(0.0),
+    s0_user(nullptr), bondless(nullptr), bonds(nullptr), watchdog(nullptr), dt_bound_paper(0.0), dt_bound(0.0),
     report_due(0), alpha(nullptr), multi_s0(0), s0_single(0.0), break_margin(0.0)
 {
   single_enable = 0;
@@ -79,6 +81,7 @@ PairBBPD::~PairBBPD()
 {
   if (copymode) return;
   delete[] pvector;
+  if (watchdog && modify->get_fix_by_id(WATCHDOG_FIX_ID)) modify->delete_fix(WATCHDOG_FIX_ID);
   if (bonds && modify->get_fix_by_id(BONDS_FIX_ID)) modify->delete_fix(BONDS_FIX_ID);
   if (allocated) {
     memory->destroy(setflag);
@@ -353,6 +356,11 @@ void PairBBPD::init_style()
     bonds = dynamic_cast<FixBBPDBonds *>(
         modify->add_fix(std::string(BONDS_FIX_ID) + " all bbpd/bonds"));
   if (!bonds) error->all(FLERR, "Pair style {} could not create its bond-family fix", style);
+  watchdog = dynamic_cast<FixBBPDWatchdog *>(modify->get_fix_by_id(WATCHDOG_FIX_ID));
+  if (!watchdog)
+    watchdog = dynamic_cast<FixBBPDWatchdog *>(
+        modify->add_fix(std::string(WATCHDOG_FIX_ID) + " all bbpd/watchdog"));
+  if (!watchdog) error->all(FLERR, "Pair style {} could not create its fix bbpd/watchdog", style);
   init_rules();
 
   calibrate();
@@ -367,7 +375,7 @@ void PairBBPD::init_style()
   law.bondless = BBPD::TypePairTable(atom->ntypes, bondless);
   // the Silling-Askari loop (pair_bbpd_alpha.cpp) reads partner indices, the others offsets too
   bonds->set_rules(law, storage, !silling_askari());
-  bonds->set_limits(run_limits());
+  send_run_limits();
 }
 
 /* c0 and s0 of every type pair, at every init, so that a re-issued pair_style (model,
@@ -411,6 +419,12 @@ void PairBBPD::calibrate()
       bondless[j][i] = bondless[i][j];
       alpha[j][i] = alpha[i][j];
     }
+}
+
+void PairBBPD::send_run_limits()
+{
+  bonds->set_limits(run_limits());
+  watchdog->set_limits(run_limits());
 }
 
 /* calibrated in init_style() (LAMMPS calls init_one() for every type pair after it) */
@@ -772,7 +786,7 @@ void PairBBPD::report()
   // compute pair sums pvector over the ranks: only rank 0 contributes
   pvector[0] = comm->me == 0 ? dt_bound : 0.0;
   pvector[1] = comm->me == 0 ? dt_bound_paper : 0.0;
-  bonds->set_limits(run_limits());
+  send_run_limits();
 
   int nmin = INT_MAX, nmax = 0;
   bigint nsum = 0;

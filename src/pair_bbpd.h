@@ -72,6 +72,7 @@ class PairBBPD : public Pair {
   int **s0_user;       // 1 if critical_stretch was given directly
   int **bondless;      // 1 if the type pair forms no bonds (pair_coeff ... bonds no): two bodies
   class FixBBPDBonds *bonds;
+  class FixBBPDWatchdog *watchdog;
   double dt_bound_paper, dt_bound;    // eq. 25 and with the factor 2 (velocity Verlet limit)
 
   int report_due;    // setup() was called: report once the setup's notches are cut
@@ -91,6 +92,7 @@ class PairBBPD : public Pair {
   {
     return {fracture_any != 0, spacing, dt_bound, dt_safety};
   }
+  void send_run_limits();    // to the bond fix and the watchdog
   void allocate();
   void compute_contact();
   void tally_short_range(int i, double e, double fpair, double dx, double dy, double dz);
