@@ -1,7 +1,8 @@
 """The plugin built with AddressSanitizer (build/asan-VERSION from tools/bootstrap, CMake option
 BBPD_SANITIZE) over scenes that exercise its memory handling: atoms with large families
 migrating between ranks (pack/unpack_exchange), bonds breaking (rows shifting), notches,
-restart files and contact. An out-of-bounds access stops LAMMPS with an AddressSanitizer
+restart files, contact, and the Silling-Askari loop of bbpd/pmb and the */alpha styles (fused
+kernels, short-range forces, the state fix). An out-of-bounds access stops LAMMPS with an AddressSanitizer
 report, which fails the run. The default suite keeps one small case of each kind; the larger
 scenes are marked slow."""
 import os
@@ -13,6 +14,7 @@ from bbpd.runner import ROOT
 
 import test_crack_tip as ct
 import test_mpi_restart as mr  # the scenes of those tests (tests/lammps is on pytest's pythonpath)
+import test_pmb_compat as pc
 import test_reliability as rel
 
 TIMEOUT = 900
@@ -96,3 +98,10 @@ def test_crack_tip_two_ranks(sanitized, lmp, tmp_path):
     crack grows"""
     clean(lmp(ct.scene(dump=False), nprocs=2, timeout=TIMEOUT).output)
     assert (tmp_path / "tip.dat").is_file()
+
+
+@pytest.mark.parametrize("variant", ["compat", "plain-alpha"])
+def test_silling_askari_two_ranks(sanitized, lmp, variant):
+    """the shattering cylinder with bbpd/pmb (bonds that act in the step they break, short-range
+    forces) and with bbpd/gaussian/alpha and contact, on 2 ranks"""
+    clean(lmp(pc.cylinder(variant, steps=150), nprocs=2, timeout=TIMEOUT).output)
