@@ -81,8 +81,8 @@ PairBBPD::~PairBBPD()
 {
   if (copymode) return;
   delete[] pvector;
-  if (watchdog && modify->get_fix_by_id(WATCHDOG_FIX_ID)) modify->delete_fix(WATCHDOG_FIX_ID);
-  if (bonds && modify->get_fix_by_id(BONDS_FIX_ID)) modify->delete_fix(BONDS_FIX_ID);
+  release_fix(watchdog, WATCHDOG_FIX_ID);
+  release_fix(bonds, BONDS_FIX_ID);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -351,16 +351,8 @@ void PairBBPD::init_style()
                    spacing_user ? "given by the spacing keyword"
                                 : "derived from the atom volumes: check 'set ... volume' and thickness/area");
 
-  bonds = dynamic_cast<FixBBPDBonds *>(modify->get_fix_by_id(BONDS_FIX_ID));
-  if (!bonds)
-    bonds = dynamic_cast<FixBBPDBonds *>(
-        modify->add_fix(std::string(BONDS_FIX_ID) + " all bbpd/bonds"));
-  if (!bonds) error->all(FLERR, "Pair style {} could not create its bond-family fix", style);
-  watchdog = dynamic_cast<FixBBPDWatchdog *>(modify->get_fix_by_id(WATCHDOG_FIX_ID));
-  if (!watchdog)
-    watchdog = dynamic_cast<FixBBPDWatchdog *>(
-        modify->add_fix(std::string(WATCHDOG_FIX_ID) + " all bbpd/watchdog"));
-  if (!watchdog) error->all(FLERR, "Pair style {} could not create its fix bbpd/watchdog", style);
+  bonds = static_cast<FixBBPDBonds *>(own_fix(BONDS_FIX_ID, "bbpd/bonds"));
+  watchdog = static_cast<FixBBPDWatchdog *>(own_fix(WATCHDOG_FIX_ID, "bbpd/watchdog"));
   init_rules();
 
   calibrate();
@@ -419,6 +411,23 @@ void PairBBPD::calibrate()
       bondless[j][i] = bondless[i][j];
       alpha[j][i] = alpha[i][j];
     }
+}
+
+/* the internal fix 'id' of style fix_style, created if missing: the style's own */
+Fix *PairBBPD::own_fix(const char *id, const char *fix_style)
+{
+  Fix *fix = modify->get_fix_by_id(id);
+  if (!fix) fix = modify->add_fix(fmt::format("{} all {}", id, fix_style));
+  if (!fix || strcmp(fix->style, fix_style) != 0)
+    error->all(FLERR, "Pair style {} needs its internal fix {} of style {}: do not define a fix "
+               "with that ID", style, id, fix_style);
+  return fix;
+}
+
+/* with the style goes the fix it created (owned: its pointer, null if never created) */
+void PairBBPD::release_fix(const void *owned, const char *id)
+{
+  if (owned && modify->get_fix_by_id(id)) modify->delete_fix(id);
 }
 
 void PairBBPD::send_run_limits()

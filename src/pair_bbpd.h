@@ -93,6 +93,8 @@ class PairBBPD : public Pair {
     return {fracture_any != 0, spacing, dt_bound, dt_safety};
   }
   void send_run_limits();    // to the bond fix and the watchdog
+  class Fix *own_fix(const char *id, const char *fix_style);    // the style's internal fixes
+  void release_fix(const void *owned, const char *id);
   void allocate();
   void compute_contact();
   void tally_short_range(int i, double e, double fpair, double dx, double dy, double dz);

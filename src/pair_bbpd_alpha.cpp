@@ -16,7 +16,6 @@
 #include "fix_bbpd_alpha.h"
 #include "fix_bbpd_bonds.h"
 #include "memory.h"
-#include "modify.h"
 #include "update.h"
 
 #include <algorithm>
@@ -46,17 +45,13 @@ PairBBPDAlpha::~PairBBPDAlpha()
 {
   if (copymode) return;
   memory->destroy(smin_new);
-  if (alpha_state && modify->get_fix_by_id(ALPHA_FIX_ID)) modify->delete_fix(ALPHA_FIX_ID);
+  release_fix(alpha_state, ALPHA_FIX_ID);
 }
 
 /* part of init_style: the state fix and the starting smin */
 void PairBBPDAlpha::init_rules()
 {
-  alpha_state = dynamic_cast<FixBBPDAlpha *>(modify->get_fix_by_id(ALPHA_FIX_ID));
-  if (!alpha_state)
-    alpha_state = dynamic_cast<FixBBPDAlpha *>(
-        modify->add_fix(std::string(ALPHA_FIX_ID) + " all bbpd/alpha"));
-  if (!alpha_state) error->all(FLERR, "Pair style {}: could not create its fix bbpd/alpha", style);
+  alpha_state = static_cast<FixBBPDAlpha *>(own_fix(ALPHA_FIX_ID, "bbpd/alpha"));
   // before the families exist no atom has a bond: no smin yet (as peri/pmb)
   if (!bonds->families_built())
     for (int i = 0; i < atom->nlocal; i++) atom->s0[i] = NO_BOND_STRETCH;
@@ -98,8 +93,7 @@ template <int EVFLAG, bool PMB> void PairBBPDAlpha::eval_silling_askari()
     memory->destroy(smin_new);
     memory->create(smin_new, nmax_smin, "pair:smin_new");
   }
-  constexpr bool pmb = PMB;
-  constexpr bool clamp = !PMB;
+  constexpr bool clamp = !PMB;    // peri/pmb lowers s0 after tension too
   // one s00 and alpha for every type pair: no per-bond lookups
   bool multi = false;
   const double s00_one = critical_stretch[1][1], alpha_one = alpha[1][1];
@@ -126,7 +120,7 @@ template <int EVFLAG, bool PMB> void PairBBPDAlpha::eval_silling_askari()
     auto stretch_at = [&](int k, double r) {
       const double xi0 = bonds->xi0_of(i, k);
       double elong = BondModel::elongation(r, xi0);
-      if (pmb && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
+      if (PMB && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
       return BBPD::SillingAskariRule<false>::stretch(elong, xi0);
     };
     auto stretch_of = [&](int k) {
@@ -185,14 +179,14 @@ template <int EVFLAG, bool PMB> void PairBBPDAlpha::eval_silling_askari()
           if (!BBPD::SillingAskariRule<false>::past_critical(breaking_stretch(k), s0_of(k), 0.0))
             return false;
           // peri/pmb applies the force of a bond in the step it breaks; bbpd drops it at once
-          if (pmb) broken_bond_force<EVFLAG>(i, k, fb, acc);
+          if (PMB) broken_bond_force<EVFLAG>(i, k, fb, acc);
           return true;
         });
-      if (pmb)
+      if (PMB)
         for (int m = 0; m < 3; m++) fbroken[i][m] = fb[m];
     }
     if (!done) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc, cache);
-    if (pmb)
+    if (PMB)
       for (int m = 0; m < 3; m++) fi[m] += fbroken[i][m];
   });
   // the new smin takes effect at the next step, once sent to the ghosts

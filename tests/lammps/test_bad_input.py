@@ -149,6 +149,8 @@ CASES = {
         "has no bonds to break"),
     "coeff-bonds-not-logical": (script(pair_coeff="pair_coeff * * 190.0e9 6.9e4 0.003015 bonds maybe"),
                                 "Expected boolean parameter instead of 'maybe'"),
+    "fix-with-internal-id": (script(extra="fix BBPD_WATCHDOG all nve"),
+                             "needs its internal fix BBPD_WATCHDOG of style bbpd/watchdog"),
     # ---- the rules of other styles asked of a kernel style
     "compat-is-own-style": (script(BASE_3D, pair_style="pair_style bbpd/constant 3d compat pmb"),
                             "'compat pmb' is now its own style: write 'pair_style bbpd/pmb 3d'"),
