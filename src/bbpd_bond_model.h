@@ -29,6 +29,14 @@ struct CriticalStretchBond {
   // each end tallies half of the bond's micropotential (eq. 6), 1/4 c elong^2 (with the
   // coefficient's 1/xi0 and the partner volume)
   template <class V> static V energy_share(V coef, V elong) { return V(0.25) * coef * elong * elong; }
+  // each end's share of the energy the bond carries away as it breaks: its share at the critical
+  // elongation s0 xi0, which its stretch crossed within the step. (At the stretch it has at the
+  // end of the step, the overshoot of that step would enter the energy balance as an error of
+  // first order in the time step: compute bbpd/energy, doc/compute_bbpd_energy.rst.)
+  template <class V> static V broken_energy_share(V coef, V xi0, V s0)
+  {
+    return energy_share(coef, s0 * xi0);
+  }
   // and half of its virial (x_i - x_j) (x) f_i, component a b, with the sign of f_i = f (x_j - x_i)
   template <class V> static V virial_share(V fpl, V da, V db) { return V(0.5) * fpl * da * db; }
   // past the critical stretch s0 (eq. 22), or within 'margin' (a length) of it

@@ -9,12 +9,14 @@
 #include "compute_bbpd_crack_tip.h"
 #include "compute_bbpd_damage_atom.h"
 #include "compute_bbpd_dsif.h"
+#include "compute_bbpd_energy.h"
 #include "compute_bbpd_jintegral.h"
 #include "error.h"
 #include "fix_bbpd_alpha.h"
 #include "fix_bbpd_bonds.h"
 #include "fix_bbpd_notch.h"
 #include "fix_bbpd_watchdog.h"
+#include "fix_bbpd_work.h"
 #include "info.h"
 #include "lammps.h"
 #include "pair_bbpd.h"
@@ -77,6 +79,14 @@ Compute *jintegral_creator(LAMMPS *lmp, int narg, char **arg)
 Compute *crack_tip_creator(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputeBBPDCrackTip(lmp, narg, arg);
+}
+Fix *work_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixBBPDWork(lmp, narg, arg);
+}
+Compute *energy_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new ComputeBBPDEnergy(lmp, narg, arg);
 }
 }    // namespace
 
@@ -145,6 +155,10 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.info = "BBPD run-explosion watchdog (internal, created by the pair style) v" BBPD_VERSION;
   plugin.creator.v2 = (lammpsplugin_factory2 *) &watchdog_creator;
   (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/work";
+  plugin.info = "BBPD work of external loads (internal, created by compute bbpd/energy) v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &work_creator;
+  (*register_plugin)(&plugin, lmp);
   plugin.name = "bbpd/notch";
   plugin.info = "BBPD pre-cracks by broken bonds v" BBPD_VERSION;
   plugin.creator.v2 = (lammpsplugin_factory2 *) &notch_creator;
@@ -166,5 +180,9 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "bbpd/crack/tip";
   plugin.info = "BBPD crack tip, extension, speed and direction of a growing crack v" BBPD_VERSION;
   plugin.creator.v2 = (lammpsplugin_factory2 *) &crack_tip_creator;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/energy";
+  plugin.info = "BBPD energy account: elastic, kinetic, broken bonds, external work v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &energy_creator;
   (*register_plugin)(&plugin, lmp);
 }

@@ -41,6 +41,7 @@ static constexpr int PAGE_PER_ONE = 10;
 
 FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxpartner(1), npartner(nullptr), partner(nullptr), vinit(nullptr),
+    ebroken(nullptr),
     bond_start(nullptr), nbond(nullptr), bdelta(nullptr), bj(nullptr), bclass(nullptr),
     bxi0(nullptr),
     bcoef(nullptr),
@@ -63,6 +64,7 @@ FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
   for (int i = 0; i < atom->nlocal; i++) {
     npartner[i] = 0;
     vinit[i] = 0.0;
+    ebroken[i] = 0.0;
   }
 }
 
@@ -73,6 +75,7 @@ FixBBPDBonds::~FixBBPDBonds()
   memory->destroy(npartner);
   memory->destroy(partner);
   memory->destroy(vinit);
+  memory->destroy(ebroken);
   memory->destroy(bond_start);
   memory->destroy(nbond);
   memory->destroy(bdelta);
@@ -580,7 +583,7 @@ bigint FixBBPDBonds::count_broken() const
 double FixBBPDBonds::memory_usage()
 {
   const double nmax = atom->nmax;
-  double bytes = nmax * (sizeof(int) + sizeof(double));
+  double bytes = nmax * (sizeof(int) + 2.0 * sizeof(double));    // npartner, vinit, ebroken
   bytes += nmax * maxpartner * sizeof(tagint);
   bytes += nlocal_cache * (2.0 * sizeof(int) + sizeof(double));
   bytes += (double) nbond_cache * (bxi0 ? 2.0 * sizeof(double) : 0.0);
@@ -598,6 +601,7 @@ void FixBBPDBonds::grow_arrays(int nmax)
   memory->grow(npartner, nmax, "bbpd/bonds:npartner");
   memory->grow(partner, nmax, maxpartner, "bbpd/bonds:partner");
   memory->grow(vinit, nmax, "bbpd/bonds:vinit");
+  memory->grow(ebroken, nmax, "bbpd/bonds:ebroken");
 }
 
 void FixBBPDBonds::copy_arrays(int i, int j, int)
@@ -605,12 +609,14 @@ void FixBBPDBonds::copy_arrays(int i, int j, int)
   npartner[j] = npartner[i];
   for (int k = 0; k < npartner[j]; k++) partner[j][k] = partner[i][k];
   vinit[j] = vinit[i];
+  ebroken[j] = ebroken[i];
 }
 
 void FixBBPDBonds::set_arrays(int i)
 {
   npartner[i] = 0;
   vinit[i] = 0.0;
+  ebroken[i] = 0.0;
 }
 
 int FixBBPDBonds::pack_exchange(int i, double *buf)
@@ -619,6 +625,7 @@ int FixBBPDBonds::pack_exchange(int i, double *buf)
   buf[m++] = npartner[i];
   for (int k = 0; k < npartner[i]; k++) buf[m++] = ubuf(partner[i][k]).d;
   buf[m++] = vinit[i];
+  buf[m++] = ebroken[i];
   return m;
 }
 
@@ -628,6 +635,7 @@ int FixBBPDBonds::unpack_exchange(int nlocal, double *buf)
   npartner[nlocal] = static_cast<int>(buf[m++]);
   for (int k = 0; k < npartner[nlocal]; k++) partner[nlocal][k] = (tagint) ubuf(buf[m++]).i;
   vinit[nlocal] = buf[m++];
+  ebroken[nlocal] = buf[m++];
   return m;
 }
 
@@ -660,13 +668,18 @@ void FixBBPDBonds::restart(char *buf)
   grow_arrays(atom->nmax);
 }
 
+// per atom: {size, npartner, partners..., vinit, ebroken}; files written before ebroken was
+// stored end at vinit (their size is npartner + 3)
+static constexpr int RESTART_VALUES_OLD = 3, RESTART_VALUES = 4;
+
 int FixBBPDBonds::pack_restart(int i, double *buf)
 {
   int m = 0;
-  buf[m++] = npartner[i] + 3;
+  buf[m++] = npartner[i] + RESTART_VALUES;
   buf[m++] = npartner[i];
   for (int k = 0; k < npartner[i]; k++) buf[m++] = ubuf(partner[i][k]).d;
   buf[m++] = vinit[i];
+  buf[m++] = ebroken[i];
   return m;
 }
 
@@ -675,18 +688,19 @@ void FixBBPDBonds::unpack_restart(int nlocal, int nth)
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  m++;
+  const int size = static_cast<int>(extra[nlocal][m++]);
   npartner[nlocal] = static_cast<int>(extra[nlocal][m++]);
   for (int k = 0; k < npartner[nlocal]; k++) partner[nlocal][k] = (tagint) ubuf(extra[nlocal][m++]).i;
   vinit[nlocal] = extra[nlocal][m++];
+  ebroken[nlocal] = size > npartner[nlocal] + RESTART_VALUES_OLD ? extra[nlocal][m++] : 0.0;
 }
 
 int FixBBPDBonds::size_restart(int i)
 {
-  return npartner[i] + 3;
+  return npartner[i] + RESTART_VALUES;
 }
 
 int FixBBPDBonds::maxsize_restart()
 {
-  return maxpartner + 3;
+  return maxpartner + RESTART_VALUES;
 }

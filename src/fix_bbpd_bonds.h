@@ -10,6 +10,9 @@
                        exactly: z, then y, then x): the summation order then
                        depends on the geometry only, not on the atom numbering
      vinit[i]          sum of C_v V_j over the initial family (damage, eq. 17)
+     ebroken[i]        energy (not a density) that atom i's halves of its broken bonds
+                       held when they broke, summed since the bonds were made (term 3 of
+                       compute bbpd/energy; booked by the pair style's breaking rules)
    Cached per intact bond, rebuilt only when LAMMPS reneighbors (post_neighbor),
    one flat structure-of-arrays row per local atom, partners in that order:
      bond_start[i], nbond[i]  first entry and number of intact bonds of atom i
@@ -103,6 +106,7 @@ class FixBBPDBonds : public Fix {
   int *npartner;
   tagint **partner;
   double *vinit;
+  double *ebroken;
   int *bond_start, *nbond;
   BBPD::PartnerOffset *bdelta;    // null unless the rank stores offsets
   int *bj;                        // null unless the rank stores indices
@@ -201,7 +205,7 @@ class FixBBPDBonds : public Fix {
   bool same_atoms_at_same_indices();
 
   void size_family_neighbor_list();
-  void set_maxexchange() { maxexchange = maxpartner + 2; }
+  void set_maxexchange() { maxexchange = maxpartner + 3; }
 
   // entries past the last bond of bclass and bdelta: a whole SIMD vector may be read at a row end
   static constexpr int LANES_PAD = 8;

@@ -583,7 +583,10 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
       // (irreversibly, in row order), then sum the row again
       bonds->remove_bonds_if(i, [&](int k) {
         const int j = bonds->partner_of(i, k);
-        return past_critical(i, j, bonds->xi0_of(i, k), MULTI ? s0row[type[j]] : s0_single);
+        const double s0 = MULTI ? s0row[type[j]] : s0_single;
+        if (!past_critical(i, j, bonds->xi0_of(i, k), s0)) return false;
+        book_broken_bond(i, k, s0);
+        return true;
       });
       row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc, cache);
     }
@@ -722,6 +725,14 @@ void PairBBPD::finish_eval(int bad, bool evflag_on, const double *totals)
 bool PairBBPD::past_critical(int i, int j, double xi0, double s0) const
 {
   return BondModel::past_critical(BondModel::elongation(breaking_length(i, j), xi0), xi0, s0, 0.0);
+}
+
+/* atom i's share of the energy that bond k carries away as it breaks at the critical stretch s0
+   (bbpd_bond_model.h), times the atom's volume: a density times a volume, an energy */
+void PairBBPD::book_broken_bond(int i, int k, double s0)
+{
+  const double xi0 = bonds->xi0_of(i, k);
+  bonds->ebroken[i] += BondModel::broken_energy_share(bonds->coef_of(i, k, xi0), xi0, s0) * atom->vfrac[i];
 }
 
 /* the current length of bond i-j from which breaking is decided: in a periodic box from the

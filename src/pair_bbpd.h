@@ -112,6 +112,9 @@ class PairBBPD : public Pair {
   double s0_single;       // the critical stretch when it does not
   double break_margin;    // periodic box: bonds this close to s0 are re-checked canonically
   bool past_critical(int i, int j, double xi0, double s0) const;
+  // bond k of atom i breaks at the critical stretch s0: book atom i's share of the energy it
+  // carries away (fix bbpd/bonds' ebroken, term 3 of compute bbpd/energy)
+  void book_broken_bond(int i, int k, double s0);
   double breaking_length(int i, int j) const;
   template <int EVFLAG, int FRACTURE, int MULTI> void eval();
   // the row force of atom i; cache: the calling thread's coefficient cache (compact storage)

@@ -178,8 +178,12 @@ template <int EVFLAG, bool PMB> void PairBBPDAlpha::eval_silling_askari()
         bonds->remove_bonds_if(i, [&](int k) {
           if (!BBPD::SillingAskariRule<false>::past_critical(breaking_stretch(k), s0_of(k), 0.0))
             return false;
-          // peri/pmb applies the force of a bond in the step it breaks; bbpd drops it at once
-          if (PMB) broken_bond_force<EVFLAG>(i, k, fb, acc);
+          // peri/pmb applies the force of a bond in the step it breaks (and its energy then is
+          // what it carries away); bbpd drops it at once, at its critical stretch
+          if (PMB)
+            bonds->ebroken[i] += broken_bond_force<EVFLAG>(i, k, fb, acc) * atom->vfrac[i];
+          else
+            book_broken_bond(i, k, s0_of(k));
           return true;
         });
       if (PMB)
@@ -195,8 +199,9 @@ template <int EVFLAG, bool PMB> void PairBBPDAlpha::eval_silling_askari()
 }
 
 /* add the force density of bond k of atom i (about to break) to fb, in the order the
-   bonds break; tally its energy and virial as row_force does */
-template <int EVFLAG> void PairBBPDAlpha::broken_bond_force(int i, int k, double *fb, double *acc)
+   bonds break; tally its energy and virial as row_force does; returns the row's share of its
+   energy density */
+template <int EVFLAG> double PairBBPDAlpha::broken_bond_force(int i, int k, double *fb, double *acc)
 {
   const double *xx = atom->x[0];
   const int j = bonds->partner_of(i, k);
@@ -210,8 +215,8 @@ template <int EVFLAG> void PairBBPDAlpha::broken_bond_force(int i, int k, double
   fb[0] += fbond * dx;
   fb[1] += fbond * dy;
   fb[2] += fbond * dz;
+  const double eng = BondModel::energy_share(coef, elong);
   if (EVFLAG) {
-    const double eng = BondModel::energy_share(coef, elong);
     const double vir[6] = {-BondModel::virial_share(fbond, dx, dx), -BondModel::virial_share(fbond, dy, dy),
                            -BondModel::virial_share(fbond, dz, dz), -BondModel::virial_share(fbond, dx, dy),
                            -BondModel::virial_share(fbond, dx, dz), -BondModel::virial_share(fbond, dy, dz)};
@@ -222,6 +227,7 @@ template <int EVFLAG> void PairBBPDAlpha::broken_bond_force(int i, int k, double
       if (vflag_atom) vatom[i][m] += vir[m];
     }
   }
+  return eng;
 }
 
 template void PairBBPDAlpha::eval_silling_askari<0, false>();

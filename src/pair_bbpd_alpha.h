@@ -39,7 +39,7 @@ class PairBBPDAlpha : public PairBBPD {
   // PMB: peri/pmb's order (a bond acts in the step it breaks, round-off elongations are zero,
   // smin is not clamped to compression)
   template <int EVFLAG, bool PMB> void eval_silling_askari();
-  template <int EVFLAG> void broken_bond_force(int i, int k, double *fb, double *acc);
+  template <int EVFLAG> double broken_bond_force(int i, int k, double *fb, double *acc);
 };
 
 }    // namespace LAMMPS_NS

@@ -51,6 +51,7 @@ PMB = dict(pair_style="pair_style peri/pmb",
 NOTCH_2D = "fix n all bbpd/notch segment 0 0.0045 0.004 0.0045"
 JINT = "compute J all bbpd/jintegral {}\nthermo_style custom step c_J[1] c_J[2] c_J[3]"
 TIP = "compute tip all bbpd/crack/tip {}\nthermo_style custom step c_tip[3]"
+ENERGY = "compute e all bbpd/energy\nthermo_style custom step c_e[5]"
 
 # id: (script, expected substring of the ERROR line)
 CASES = {
@@ -305,6 +306,18 @@ CASES = {
     "tip-without-bbpd-pair": (script(**PMB, extra=TIP.format("0.005 0.0045")),
                               "bbpd/crack/tip requires a bbpd/* pair style"),
     "tip-3d": (script(BASE_3D, extra=TIP.format("0.003 0.003")), "works in 2D only"),
+    # ---- compute ID group bbpd/energy (no arguments); fix bbpd/work is its internal fix
+    "energy-with-args": (script(extra="compute e all bbpd/energy all"), "takes no arguments"),
+    "energy-without-bbpd-pair": (script(**PMB, extra=ENERGY), "bbpd/energy requires a bbpd/* pair style"),
+    "energy-atom-style-atomic": (script(atom_style="atom_style atomic", props="mass * 1.0",
+                                        pair_style="pair_style lj/cut 0.003",
+                                        pair_coeff="pair_coeff * * 1.0 0.001",
+                                        extra="compute e all bbpd/energy"),
+                                 "needs atom_style peri"),
+    "energy-work-fix-deleted": (script(extra=ENERGY + "\nunfix BBPD_WORK_e"),
+                                "its fix BBPD_WORK_e was deleted"),
+    "energy-respa": (script(extra=ENERGY + "\nrun_style respa 2 2"), "run_style verlet only"),
+    "work-fix-by-hand": (script(extra="fix w all bbpd/work 1"), "created by compute bbpd/energy"),
     # ---- fix bbpd/bonds is internal (created by the pair style)
     "bonds-fix-with-args": (script(extra="fix b all bbpd/bonds 1"), "takes no arguments"),
     "bonds-fix-without-bbpd-pair": (script(**PMB, extra="fix b all bbpd/bonds"),
