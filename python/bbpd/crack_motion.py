@@ -27,6 +27,10 @@ J. Mech. Phys. Solids 21, 47-61)
                                 Freund's form (the rate-independent fracture energy that
                                 bond breaking dissipates in BBPD).
 
+    kinetic     G = G_run(v):   g(v) K*^2 / E' = G_c gamma(v/c_R), a fracture energy that
+                                rises with speed as the model's own kinetic law, measured
+                                in the steady strip (bbpd.benchmarks.strip; KineticLaw).
+
     with K_Ic = sqrt(E' G_c), E' = E (plane stress) or E/(1 - nu^2) (plane strain).
     Both give v = 0 while K* <= K_Ic and v -> c_R as K* -> infinity.  The ODE
     dl/dt = v(K*(t, l)) is integrated with scipy from (t_i, l = a); for this loading the
@@ -45,7 +49,8 @@ from bbpd import freund
 
 TOUGHNESS = "toughness"
 ENERGY = "energy"
-CRITERIA = (TOUGHNESS, ENERGY)
+KINETIC = "kinetic"
+CRITERIA = (TOUGHNESS, ENERGY)    # the two constant-toughness forms; KINETIC takes a law
 ODE_RTOL = 1e-10    # the right-hand side is smooth after t_i: tight tolerances are cheap
 ODE_ATOL_FRACTION = 1e-12   # absolute tolerance on l, as a fraction of c_R (t_end - t_i)
 DENSE_POINTS = 4001   # samples of l(t) for interpolation
@@ -58,9 +63,40 @@ def _check_speeds(c_r, c_d):
         raise ValueError("Rayleigh speed must be smaller than the dilatational speed")
 
 
-def _check_criterion(criterion):
-    if criterion not in CRITERIA:
-        raise ValueError(f"criterion must be one of {CRITERIA}, got {criterion!r}")
+def _check_criterion(criterion, law=None):
+    if criterion not in CRITERIA + (KINETIC,):
+        raise ValueError(f"criterion must be one of {CRITERIA + (KINETIC,)}, got {criterion!r}")
+    if (criterion == KINETIC) != (law is not None):
+        raise ValueError("the kinetic criterion, and it alone, takes a law (KineticLaw)")
+
+
+class KineticLaw:
+    """G_run/G_c against u = v/c_R: the energy release rate a crack needs to run at speed v,
+    over G_c. Piecewise linear through (0, 1) (a crack at rest starts at G_c) and the
+    measured points (u_i, g_i), constant beyond the last; it must not decrease (a steady
+    state with G_run falling with speed is unstable, and the root below would not be unique)."""
+
+    def __init__(self, u, g):
+        u, g = np.asarray(u, dtype=float), np.asarray(g, dtype=float)
+        if u.size == 0 or u.shape != g.shape:
+            raise ValueError("a kinetic law needs matching, non-empty speeds and values")
+        order = np.argsort(u)
+        self.u = np.concatenate(([0.0], u[order]))
+        self.g = np.concatenate(([1.0], g[order]))
+        if np.any(self.u < 0.0) or np.any(self.u >= 1.0) or np.any(np.diff(self.u) <= 0.0):
+            raise ValueError("kinetic-law speeds must be distinct and lie in (0, c_R)")
+        if np.any(np.diff(self.g) < 0.0):
+            raise ValueError("a kinetic law must not decrease with speed")
+
+    def __call__(self, u):
+        return np.interp(u, self.u, self.g)
+
+
+def _kinetic_speed(ratio_sq, law):
+    """u in [0, 1) with (1 - u) (K*/K_Ic)^2 = law(u); 0 where (K*/K_Ic)^2 <= 1"""
+    if ratio_sq <= 1.0:
+        return 0.0
+    return brentq(lambda u: (1.0 - u) * ratio_sq - law(u), 0.0, 1.0, xtol=ROOT_XTOL)
 
 
 def effective_modulus(E, nu, condition):
@@ -99,18 +135,22 @@ def energy_factor(v, c_r):
     return freund._same_kind(v, 1.0 - arr / c_r)
 
 
-def crack_speed(k_star, k_ic, c_r, c_d, criterion=TOUGHNESS):
+def crack_speed(k_star, k_ic, c_r, c_d, criterion=TOUGHNESS, law=None):
     """Speed v at which the running crack meets the criterion, given the stationary SIF K*.
 
     toughness: k(v) K* = K_Ic.  With u = v/c_R, beta = c_R/c_d, r = K_Ic/K*:
     (1 - u)^2 = r^2 (1 - beta u), whose root in [0, 1] is
     u = [(2 - r^2 beta) - r sqrt(4 (1 - beta) + r^2 beta^2)] / 2.
     energy: (1 - u) K*^2 = K_Ic^2, u = 1 - r^2.
+    kinetic: (1 - u) K*^2 = K_Ic^2 law(u), the root in [0, 1) (brentq).
     v = 0 wherever K* <= K_Ic (the crack does not move)."""
     _check_speeds(c_r, c_d)
-    _check_criterion(criterion)
+    _check_criterion(criterion, law)
     freund._check_positive(k_ic=k_ic)
     ks = np.asarray(k_star, dtype=float)
+    if criterion == KINETIC:
+        u = np.vectorize(lambda k: _kinetic_speed((k / k_ic) ** 2, law))(ks)
+        return freund._same_kind(k_star, c_r * u)
     running = ks > k_ic
     r = np.where(running, k_ic / np.where(running, ks, 1.0), 1.0)
     if criterion == ENERGY:
@@ -161,13 +201,14 @@ def ramp_initiation_time(k_ic, nu_eq, sigma0, c_d, t_d, H):
                         xtol=ROOT_XTOL * (t_hi - t_c)))
 
 
-def tip_history(k_star, k_ic, c_r, c_d, l0, t_i, t_end, criterion=TOUGHNESS, t_eval=None):
+def tip_history(k_star, k_ic, c_r, c_d, l0, t_i, t_end, criterion=TOUGHNESS, t_eval=None,
+                law=None):
     """Integrate dl/dt = v(K*(t, l)) from l(t_i) = l0 to t_end.
 
     k_star(t, l): stationary SIF of a crack with its tip at l (for the plane wave parallel
     to the crack plane it does not depend on l, see the module docstring).
     Returns (t, l, v) arrays at t_eval (default: 400 points over [t_i, t_end])."""
-    _check_criterion(criterion)
+    _check_criterion(criterion, law)
     if not t_end > t_i:
         raise ValueError("t_end must be larger than t_i")
     if t_eval is None:
@@ -175,14 +216,14 @@ def tip_history(k_star, k_ic, c_r, c_d, l0, t_i, t_end, criterion=TOUGHNESS, t_e
     t_eval = np.asarray(t_eval, dtype=float)
 
     def rhs(t, y):
-        return [crack_speed(k_star(t, y[0]), k_ic, c_r, c_d, criterion)]
+        return [crack_speed(k_star(t, y[0]), k_ic, c_r, c_d, criterion, law)]
 
     sol = solve_ivp(rhs, (t_i, t_end), [l0], t_eval=t_eval, rtol=ODE_RTOL,
                     atol=ODE_ATOL_FRACTION * c_r * (t_end - t_i), method="DOP853")
     if not sol.success:
         raise RuntimeError(f"crack-tip ODE failed: {sol.message}")
     l = sol.y[0]
-    v = np.array([crack_speed(k_star(t, x), k_ic, c_r, c_d, criterion)
+    v = np.array([crack_speed(k_star(t, x), k_ic, c_r, c_d, criterion, law)
                   for t, x in zip(sol.t, l)])
     return sol.t, l, v
 
@@ -228,16 +269,16 @@ class RampProblem:
         return ramp_initiation_time(self.k_ic, self.nu_eq, self.sigma0, self.c_d,
                                     self.t_d, self.H)
 
-    def history(self, criterion=TOUGHNESS, t_end=None, t_eval=None):
+    def history(self, criterion=TOUGHNESS, t_end=None, t_eval=None, law=None):
         """(t, l, v) from t_i to t_end (default 3 t_c); l = a before t_i."""
         t_end = self.t_end if t_end is None else t_end
         t_i = self.initiation_time()
         if t_i >= t_end:
             raise ValueError("the crack does not start inside the window: lower G_c")
         return tip_history(self.k_star, self.k_ic, self.c_r, self.c_d, self.a, t_i, t_end,
-                           criterion, t_eval)
+                           criterion, t_eval, law)
 
-    def tip_position(self, t, criterion=TOUGHNESS):
+    def tip_position(self, t, criterion=TOUGHNESS, law=None):
         """l(t) at any times (a before t_i), from a dense solution."""
         t = np.asarray(t, dtype=float)
         t_i = self.initiation_time()
@@ -245,6 +286,6 @@ class RampProblem:
             return np.full_like(t, self.a), np.zeros_like(t)
         t_end = float(t.max())
         tt, l, v = self.history(criterion, t_end=t_end,
-                                t_eval=np.linspace(t_i, t_end, DENSE_POINTS))
+                                t_eval=np.linspace(t_i, t_end, DENSE_POINTS), law=law)
         return np.where(t <= t_i, self.a, np.interp(t, tt, l)), np.where(
             t <= t_i, 0.0, np.interp(t, tt, v))

@@ -135,3 +135,39 @@ def test_ramp_problem_uses_model_speeds_and_runs():
     assert np.all(v < C_R) and v[-1] > 0.5 * C_R
     with pytest.raises(ValueError):
         cm.RampProblem(E, NU, RHO, 1e3, SIGMA0, TD, H, A, freund.PLANE_STRESS).history()
+
+
+def test_constant_kinetic_law_is_the_energy_form():
+    law = cm.KineticLaw([0.3, 0.6], [1.0, 1.0])
+    ks = np.array([0.5, 1.0, 1.3, 2.0, 10.0]) * K_IC
+    assert np.allclose(cm.crack_speed(ks, K_IC, C_R, C_D, cm.KINETIC, law),
+                       cm.crack_speed(ks, K_IC, C_R, C_D, cm.ENERGY), rtol=1e-12, atol=1e-9)
+
+
+def test_kinetic_speed_solves_the_law():
+    # G_run rising from G_c to 2 G_c at half the Rayleigh speed: a slower crack than the
+    # energy form, and (1 - u) (K*/K_Ic)^2 = law(u) at the speed found
+    law = cm.KineticLaw([0.25, 0.5], [1.5, 2.0])
+    ks = np.array([1.2, 1.6, 2.5, 4.0]) * K_IC
+    v = cm.crack_speed(ks, K_IC, C_R, C_D, cm.KINETIC, law)
+    u = v / C_R
+    assert np.allclose((1.0 - u) * (ks / K_IC) ** 2, law(u), rtol=1e-10)
+    assert np.all(v < cm.crack_speed(ks, K_IC, C_R, C_D, cm.ENERGY))
+    assert np.all(np.diff(v) > 0.0)
+
+
+@pytest.mark.parametrize("u,g", [([0.5, 0.3], [2.0, 1.5]), ([0.3, 0.5], [2.0, 1.5]),
+                                 ([1.2], [2.0]), ([], [])])
+def test_kinetic_law_rejects_what_has_no_unique_speed(u, g):
+    if u == [0.5, 0.3]:
+        cm.KineticLaw(u, g)    # unsorted is fine: it sorts
+        return
+    with pytest.raises(ValueError):
+        cm.KineticLaw(u, g)
+
+
+def test_kinetic_criterion_needs_its_law():
+    with pytest.raises(ValueError):
+        cm.crack_speed(2.0 * K_IC, K_IC, C_R, C_D, cm.KINETIC)
+    with pytest.raises(ValueError):
+        cm.crack_speed(2.0 * K_IC, K_IC, C_R, C_D, cm.ENERGY, cm.KineticLaw([0.5], [2.0]))

@@ -1,0 +1,110 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Closure: the strip's kinetic law predicts the Mode-I crack of examples/mode1-propagation.
+
+The strip (bbpd.benchmarks.strip) measures G_run(v), the energy release rate a crack of the
+model needs to run steadily at speed v: U' at the steady speed v_ss, in the model's own
+units G_run/G_c against v/c_R (they depend on the kernel and m, not on the material or the
+scale). Fed into Freund's equation of motion (bbpd.crack_motion, criterion 'kinetic':
+g(v) K*^2/E' = G_run(v)) for the Mode-I plate, it gives l(t) without a fitted parameter; the
+L2 error against the PD tip histories of examples/mode1-propagation
+(results/tip_histories.csv) is set beside the two constant-toughness forms (the errors of
+its results CSV, recomputed here the same way).
+
+Command line (from the repository root):
+  tools/python -m bbpd.benchmarks.strip_closure \
+      --strip examples/strip-steady-crack/results/strip.csv \
+      --csv examples/strip-steady-crack/results/closure.csv
+"""
+
+import argparse
+import csv
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from bbpd import crack_motion
+from bbpd.benchmarks import mode1_propagation as mp
+from bbpd.benchmarks import strip
+
+ROOT = Path(__file__).resolve().parents[3]
+HISTORIES = ROOT / "examples" / "mode1-propagation" / "results" / "tip_histories.csv"
+STRIP_CSV = ROOT / "examples" / "strip-steady-crack" / "results" / "strip.csv"
+M_MODE1 = mp.M    # the Mode-I scene's delta/dx: the law must be measured at the same m
+CSV_COLUMNS = ("kernel", "dx", "law_points", "l2_kinetic_pct", "l2_toughness_pct",
+               "l2_energy_pct", "ext_pd_3tc", "ext_kinetic_3tc", "ext_energy_3tc")
+
+
+def law_of(rows, kernel, m=M_MODE1, H_over_delta=strip.H_OVER_DELTA):
+    """KineticLaw of one kernel from the strip runs at (m, H/delta) that crossed."""
+    u, g = strip.kinetic_law(rows, kernel, m, H_over_delta)
+    if u.size == 0:
+        raise ValueError(f"no strip run of kernel {kernel} at m = {m:g}, H/delta = "
+                         f"{H_over_delta:g} crossed the strip")
+    return crack_motion.KineticLaw(u, g)
+
+
+def histories(path=HISTORIES):
+    """{(kernel, dx): (t, l)} of the PD tip histories"""
+    out = {}
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            out.setdefault((r["kernel"], float(r["dx"])), []).append((float(r["t"]), float(r["l"])))
+    return {k: tuple(np.array(c) for c in zip(*v)) for k, v in out.items()}
+
+
+def compare(law, t, l_pd, problem=None):
+    """L2 errors (%) of l(t) against the kinetic, toughness and energy forms over
+    [t_i (theory), 3 t_c], and the extensions at 3 t_c"""
+    prob = problem or mp.problem()
+    window = (prob.initiation_time(), prob.t_end)
+    res = {}
+    for name, crit, lw in (("kinetic", crack_motion.KINETIC, law),
+                           ("toughness", crack_motion.TOUGHNESS, None),
+                           ("energy", crack_motion.ENERGY, None)):
+        l_th, _ = prob.tip_position(t, crit, law=lw)
+        res[f"l2_{name}_pct"] = 100.0 * mp.l2_extension_error(t, l_pd, l_th, window)
+        res[f"ext_{name}_3tc"] = float(prob.tip_position(np.array([prob.t_end]), crit, law=lw)[0][0]) - mp.A
+    res["ext_pd_3tc"] = float(np.interp(prob.t_end, t, l_pd)) - mp.A
+    return res
+
+
+def closure_rows(strip_rows, hist):
+    out = []
+    for (kernel, dx), (t, l) in sorted(hist.items()):
+        law = law_of(strip_rows, kernel)
+        r = {"kernel": kernel, "dx": dx, "law_points": len(law.u) - 1}
+        r.update(compare(law, t, l))
+        out.append(r)
+    return out
+
+
+def write_csv(path, rows, command):
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "w", newline="") as f:
+        f.write(f"# made by: {command}\n")
+        w = csv.writer(f)
+        w.writerow(CSV_COLUMNS)
+        for r in rows:
+            w.writerow([r[c] if isinstance(r[c], str) else f"{r[c]:.6g}" for c in CSV_COLUMNS])
+
+
+def main(argv=None):
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--strip", default=str(STRIP_CSV))
+    p.add_argument("--histories", default=str(HISTORIES))
+    p.add_argument("--csv")
+    a = p.parse_args(argv)
+    rows = closure_rows(strip.read_rows(a.strip), histories(a.histories))
+    for r in rows:
+        print(f"{r['kernel']} dx {r['dx']:g}: L2 kinetic {r['l2_kinetic_pct']:.1f} %, toughness "
+              f"{r['l2_toughness_pct']:.1f} %, energy {r['l2_energy_pct']:.1f} %; extension at 3 t_c "
+              f"PD {r['ext_pd_3tc']:.3f} m, kinetic {r['ext_kinetic_3tc']:.3f} m")
+    if a.csv:
+        write_csv(a.csv, rows, "tools/python -m bbpd.benchmarks.strip_closure " + " ".join(argv or sys.argv[1:]))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
