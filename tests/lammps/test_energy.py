@@ -26,8 +26,9 @@ ACCOUNT = ("compute eacc all bbpd/energy\n"
 STRIP = ROOT / "examples" / "strip-steady-crack" / "in.strip"
 MODE1 = ROOT / "examples" / "mode1-propagation" / "in.mode1-propagation"
 KW = ROOT / "examples" / "kalthoff-winkler" / "in.kalthoff_winkler"
-# a small strip: 8 x 2 horizons (H = 10 delta would take 4x as long), the crack crosses it
-STRIP_SMALL = {"H": 0.005, "L": 0.02, "a": 0.005, "Delta": 2.5}
+# a small strip: 8 x 2 horizons (H = 10 delta would take 4x as long), the crack crosses it; its
+# absorbing ends off, so that nothing does work
+STRIP_SMALL = {"H": 0.005, "L": 0.02, "a": 0.005, "Delta": 2.5, "damp": 0.0}
 
 
 # where the account starts: before the run that breaks bonds (the strip's pre-stretch comes
@@ -66,6 +67,14 @@ def test_strip_closes_without_work(tmp_path):
     assert np.max(np.abs(rows[:, 4])) < 1e-2 * rows[-1, 3]
     assert check_balance(rows) < TOLERANCE
     assert check_balance(rows, dropped="B") > 0.5    # negative control
+
+
+def test_strip_damped_ends_absorb(tmp_path):
+    # with the example's absorbing ends the damping's work is negative, and the account holds
+    rows = account(tmp_path, STRIP, **dict(STRIP_SMALL, damp=1.0))
+    assert rows[-1, 4] < -0.01 * rows[-1, 3]
+    assert check_balance(rows) < TOLERANCE
+    assert check_balance(rows, dropped="W") > 0.05    # negative control
 
 
 def test_strip_crack_crosses(tmp_path):

@@ -7,7 +7,11 @@ nu = 1/3; energies per unit thickness, i.e. the compute's joules over the slab t
 U'        the model's stored energy per unit length of the uniform strain, measured at t = 0
           by compute bbpd/energy on a column of atoms one strip height wide in the middle
           (STRIP-UPRIME); Delta' = U'/G_c beside the nominal Delta = W H / G_c of CCM.
-crossed   the tip reached the far end (x >= L - H/2) before tend.
+crossed   the tip reached the far end (x >= L - H/2) before tend along y = 0 (state
+          'crossed'); else 'arrested', or 'branched' if the tip left y = 0 by more than a
+          horizon (the crack branched or turned: no steady state to measure), or
+          'unsteady' if the bonds took more energy per unit area than U' (Gamma > U': damage
+          spread off the plane or ahead of the tip).
 v_ss      steady speed: least-squares slope of the tip position x(t) while the tip runs over
           the MIDDLE (from a + 2 H to L - H; the crack reaches a steady speed after about two
           strip heights), over the model's Rayleigh speed c_R (Rayleigh equation, nu = 1/3).
@@ -37,7 +41,11 @@ from pathlib import Path
 import numpy as np
 
 from bbpd import freund
+from bbpd import jobs as jobmod
 from bbpd.benchmarks.mode1_propagation import machine
+from bbpd.jobs import Job, Spec
+from bbpd.kernels import COLORS
+from bbpd.plots import plt
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -53,7 +61,10 @@ L_OVER_H = 8.0                      # strip length in strip heights
 MIDDLE_START_H = 2.0                # steady from a + 2 H (the issue's trial: ~2 H)
 MIDDLE_END_H = 1.0                  # to L - H (the run stops at L - H/2)
 MIN_MIDDLE_POINTS = 5
-CSV_COLUMNS = ("kernel", "m", "H_over_delta", "dx", "Delta", "Delta_model", "crossed",
+# the sweeps in load and m run at H = 10 horizons (a run costs ~(H/delta)^3: 8x less than at 20,
+# what the shared 2-core machine allowed); H/delta = 20 (and 40 where run) check that choice
+SWEEP_H_OVER_DELTA = 10.0
+CSV_COLUMNS = ("kernel", "m", "H_over_delta", "dx", "Delta", "Delta_model", "crossed", "state",
                "v_ss_over_cR", "v_ss", "Gamma_over_Gc", "Phi_over_Gc", "Phi_behind_over_Gc",
                "Phi_ahead_over_Gc", "closure_pct", "balance_pct", "atoms", "steps", "loop_s")
 
@@ -80,13 +91,17 @@ def measure(rows, uprime, g, h, Gc=G_C):
     c_R = wave_speeds()[2]
     H, L, a = g["H"], g["L"], g["a"]
     crossed = bool(x[-1] >= L - 0.5 * H - 2.0 * g["delta"])
+    # a crack that left the plane y = 0 by more than a horizon has branched or turned (the
+    # tracker follows its longest branch)
+    off_plane = bool(np.max(np.abs(rows[:, 3])) > g["delta"])
+    state = "branched" if off_plane else "crossed" if crossed else "arrested"
     mid = (x >= a + MIDDLE_START_H * H) & (x <= L - MIDDLE_END_H * H)
     nan = float("nan")
-    res = {"crossed": crossed, "v_ss": 0.0, "v_ss_over_cR": 0.0, "Gamma_over_Gc": nan,
+    res = {"crossed": crossed and not off_plane, "state": state, "v_ss": 0.0, "v_ss_over_cR": 0.0, "Gamma_over_Gc": nan,
            "Phi_over_Gc": nan, "Phi_behind_over_Gc": nan, "Phi_ahead_over_Gc": nan,
            "closure_pct": nan}
     res["balance_pct"] = 100.0 * float(np.max(np.abs(bal - bal[0])) / max(B[-1], 1e-300))
-    if not crossed or np.count_nonzero(mid) < MIN_MIDDLE_POINTS:
+    if state != "crossed" or np.count_nonzero(mid) < MIN_MIDDLE_POINTS:
         return res
     v_ss = float(np.polyfit(t[mid], x[mid], 1)[0])
     gamma = float(np.polyfit(x[mid], B[mid], 1)[0]) / h
@@ -95,6 +110,11 @@ def measure(rows, uprime, g, h, Gc=G_C):
     phi = float(np.polyfit(x[mid], rows[mid, 12] - rows[mid, 13], 1)[0]) / h
     # sent ahead, faster than the crack, and absorbed by the damped far zone
     phi_ahead = float(np.polyfit(x[mid], -rows[mid, 14], 1)[0]) / h
+    if gamma > uprime:
+        # the bonds took more than the strip releases per unit length: no single steady crack
+        # (damage spread off the plane or ahead of the tip); the numbers are kept, not the law
+        res["state"] = "unsteady"
+        res["crossed"] = False
     res.update({"v_ss": v_ss, "v_ss_over_cR": v_ss / c_R, "Gamma_over_Gc": gamma / Gc,
                 "Phi_behind_over_Gc": phi / Gc, "Phi_ahead_over_Gc": phi_ahead / Gc,
                 "Phi_over_Gc": (phi + phi_ahead) / Gc,
@@ -147,12 +167,12 @@ def read_rows(path):
     for ln in lines[1:]:
         row = {}
         for n, v in zip(names, ln.split(",")):
-            row[n] = v if n == "kernel" else (v == "True") if n == "crossed" else float(v)
+            row[n] = v if n in ("kernel", "state") else (v == "True") if n == "crossed" else float(v)
         out.append(row)
     return out
 
 
-def kinetic_law(rows, kernel, m=5.0, H_over_delta=H_OVER_DELTA):
+def kinetic_law(rows, kernel, m=5.0, H_over_delta=SWEEP_H_OVER_DELTA):
     """G_run/G_c against v/c_R of one kernel at (m, H/delta), from the runs that crossed:
     arrays (u, g) sorted by u, with G_run = U' (the model's) at the steady speed."""
     pts = sorted((r["v_ss_over_cR"], r["Delta_model"]) for r in rows
@@ -171,8 +191,14 @@ def main(argv=None):
     p.add_argument("--csv", help="write (or, with --append, add to) this results CSV")
     p.add_argument("--append", action="store_true")
     p.add_argument("--reuse", action="store_true", help="measure earlier runs in --work")
+    p.add_argument("--collect", action="store_true",
+                   help="measure every run folder in --work (KERNEL-mM-HH-DD) again, run nothing")
+    p.add_argument("--figure", help="draw the kinetic-law figure of the CSV's rows here")
     a = p.parse_args(argv)
     rows = read_rows(a.csv) if a.append and a.csv and Path(a.csv).is_file() else []
+    if a.collect:
+        rows = collect(a.work)
+        a.kernels = []
     for kernel in a.kernels:
         for m in a.m:
             for hd in a.H_over_delta:
@@ -187,10 +213,224 @@ def main(argv=None):
                     rows = [q for q in rows if not (q["kernel"] == kernel and q["m"] == m and
                                                     q["H_over_delta"] == hd and q["Delta"] == D)]
                     rows.append(r)
+    rows.sort(key=lambda r: (r["kernel"], r["m"], r["H_over_delta"], r["Delta"]))
     if a.csv:
-        rows.sort(key=lambda r: (r["kernel"], r["m"], r["H_over_delta"], r["Delta"]))
         write_csv(a.csv, rows, "tools/python -m bbpd.benchmarks.strip " + " ".join(argv or sys.argv[1:]))
+    if a.figure:
+        figure(rows, a.figure)
     return 0
+
+
+RUN_FOLDER = re.compile(r"^(constant|triangular|gaussian)-m([0-9.]+)-H([0-9.]+)-D([0-9.]+)$")
+
+
+def collect(work):
+    """Every finished run under work, measured again from its outputs."""
+    rows = []
+    for d in sorted(Path(work).iterdir()):
+        m = RUN_FOLDER.match(d.name)
+        if not m or not (d / "log.lammps").is_file() or "Total wall time" not in (d / "log.lammps").read_text():
+            continue
+        kernel, mm, hd, D = m.group(1), float(m.group(2)), float(m.group(3)), float(m.group(4))
+        rows.append(run(d, kernel, D, DX * M / mm, mm, hd, reuse=True))
+    return rows
+
+
+
+# --------------------------------------------------------------------------- README blocks
+
+def table_markdown(rows, command=None):
+    """The README table of the strip runs (rows: dicts with the CSV's columns)."""
+    head = ("| kernel | m | H/delta | Delta (CCM) | Delta' = U'/G_c (model) | crossed | v_ss/c_R | "
+            "Gamma/G_c (bonds) | Phi/G_c (waves: behind + ahead) | closure (%) | "
+            "balance drift (% of bond energy) | atoms | loop time (s) |")
+    lines = ([f"Made by `{command}`.", ""] if command else []) + [head, "|" + "---|" * (head.count("|") - 1)]
+    for r in rows:
+        if r["crossed"]:
+            run = (f"yes | {r['v_ss_over_cR']:.3f} | {r['Gamma_over_Gc']:.3f} | "
+                   f"{r['Phi_over_Gc']:.3f} ({r['Phi_behind_over_Gc']:.3f} + {r['Phi_ahead_over_Gc']:.3f}) | "
+                   f"{r['closure_pct']:+.1f}")
+        else:
+            run = f"no ({r['state']}) | | | | "
+        lines.append(f"| {r['kernel']} | {r['m']:g} | {r['H_over_delta']:g} | {r['Delta']:g} | "
+                     f"{r['Delta_model']:.3f} | {run} | {r['balance_pct']:.2f} | {int(r['atoms'])} | "
+                     f"{r['loop_s']:.0f} |")
+    return "\n".join(lines)
+
+
+def threshold(rows, kernel, m=M, H_over_delta=SWEEP_H_OVER_DELTA):
+    """(largest Delta that arrested, smallest that crossed) at (m, H/delta); None where none ran"""
+    sel = [r for r in rows if r["kernel"] == kernel and r["m"] == m and r["H_over_delta"] == H_over_delta]
+    stopped = [r["Delta"] for r in sel if r["state"] == "arrested"]
+    crossed = [r["Delta"] for r in sel if r["crossed"]]
+    return (max(stopped) if stopped else None, min(crossed) if crossed else None)
+
+
+def speed_at(rows, kernel, m, H_over_delta, Delta):
+    for r in rows:
+        if (r["kernel"], r["m"], r["H_over_delta"], r["Delta"]) == (kernel, m, H_over_delta, Delta):
+            return r["v_ss_over_cR"] if r["crossed"] else 0.0
+    return None
+
+
+CONVERGED_SPEED = 0.02    # v_ss/c_R between two refinements (issue's criterion)
+
+
+def summary_text(rows):
+    """Sentences computed from the runs: threshold, convergence in H/delta and in m, closure."""
+    kernels = sorted({r["kernel"] for r in rows})
+    out = []
+    for k in kernels:
+        parts = []
+        for m in sorted({r["m"] for r in rows if r["kernel"] == k}):
+            lo, hi = threshold(rows, k, m)
+            if hi is None and lo is None:
+                continue
+            if hi is None:
+                thr = f"no run crossed (largest Delta arrested: {lo:g})"
+            elif lo is None:
+                thr = f"Delta_c <= {hi:g} (no run arrested)"
+            else:
+                thr = f"{lo:g} < Delta_c <= {hi:g}"
+            parts.append(f"threshold {thr} at m = {m:g}, H/delta = {SWEEP_H_OVER_DELTA:g}")
+        hd = sorted({r["H_over_delta"] for r in rows if r["kernel"] == k and r["m"] == M and r["Delta"] == 2.0})
+        speeds = [(h, speed_at(rows, k, M, h, 2.0)) for h in hd]
+        if speeds:
+            conv = ", ".join(f"{s:.3f} at H/delta = {h:g}" for h, s in speeds)
+            verdict = ""
+            if len(speeds) >= 2:
+                d = abs(speeds[-1][1] - speeds[-2][1])
+                verdict = (f" (the last refinement moves it by {d:.4f} c_R: "
+                           + ("within" if d <= CONVERGED_SPEED else "more than")
+                           + f" {CONVERGED_SPEED:g} c_R)")
+            parts.append(f"v_ss/c_R at Delta = 2, m = {M:g}: {conv}{verdict}")
+        ms = sorted({r["m"] for r in rows if r["kernel"] == k and r["H_over_delta"] == SWEEP_H_OVER_DELTA
+                     and r["Delta"] == 2.0})
+        if len(ms) > 1:
+            parts.append(f"against m (Delta = 2, H/delta = {SWEEP_H_OVER_DELTA:g}): " + ", ".join(
+                f"{speed_at(rows, k, m, SWEEP_H_OVER_DELTA, 2.0):.3f} at m = {m:g}" for m in ms))
+        for state, what in (("branched", "branched or turned"), ("unsteady", "unsteady (Gamma > U')")):
+            ds = sorted({(r["m"], r["H_over_delta"], r["Delta"]) for r in rows
+                         if r["kernel"] == k and r["state"] == state})
+            if ds:
+                parts.append(f"{what} at " + ", ".join(f"Delta = {d:g} (m = {m:g}, H/delta = {h:g})"
+                                                       for m, h, d in ds))
+        out.append(f"- **{k}**: " + "; ".join(parts) + ".")
+    closed = [r for r in rows if r["crossed"]]
+    if closed:
+        worst = max(closed, key=lambda r: abs(r["closure_pct"]))
+        out.append(f"- Closure Gamma + Phi = U' over the {len(closed)} runs that crossed: within "
+                   f"{abs(worst['closure_pct']):.1f} % (worst: {worst['kernel']}, m = {worst['m']:g}, "
+                   f"H/delta = {worst['H_over_delta']:g}, Delta = {worst['Delta']:g}); the energy "
+                   f"balance of compute bbpd/energy drifts by at most "
+                   f"{max(r['balance_pct'] for r in rows):.2f} % of the broken-bond energy.")
+    return "\n".join(out)
+
+
+# --------------------------------------------------------------------------- REPORT.md
+
+# the report's runs: by default the Gaussian kernel on a short strip (H = 10 horizons, a few
+# tens of seconds each) at three loads; --full adds the converged strip (H = 20 horizons) for
+# every kernel and the law at the Mode-I scene's m
+REPORT_CASES = [("gaussian", D, M, 10.0) for D in (1.5, 2.0, 3.0)]
+REPORT_CASES_FULL = REPORT_CASES + [(k, 2.0, M, H_OVER_DELTA) for k in ("constant", "triangular", "gaussian")] + \
+    [(k, D, 5.0, H_OVER_DELTA) for k in ("constant", "triangular", "gaussian") for D in (1.5, 2.0, 3.0)]
+REPORT_TITLE = "Steady crack in a pre-stretched strip: the kinetic law (examples/strip-steady-crack)"
+
+
+def job(workdir, kernel, Delta, m, H_over_delta, nprocs=1):
+    """One run for bbpd.jobs: the measured numbers, without the histories (JSON)."""
+    r = run(workdir, kernel, Delta, DX * M / m, m, H_over_delta, nprocs=nprocs)
+    r.pop("t")
+    r.pop("x")
+    r["workdir"] = str(workdir)
+    return r
+
+
+def jobs(full=False):
+    """The report's strip runs as bbpd.report specs."""
+    inputs = (EXAMPLE, Path(__file__), Path(freund.__file__))
+    specs = []
+    for kernel, D, m, hd in (REPORT_CASES_FULL if full else REPORT_CASES):
+        label = f"strip {kernel} m = {m:g} H/delta = {hd:g} Delta = {D:g}"
+        estimate = 30.0 * (m / M) ** 3 * (hd / 10.0) ** 3
+        j = Job(label=label, func="bbpd.report:run_job",
+                kwargs={"target": "bbpd.benchmarks.strip:job",
+                        "args": {"kernel": kernel, "Delta": D, "m": m, "H_over_delta": hd},
+                        "label": label},
+                inputs=tuple(str(p) for p in inputs), estimate_s=estimate)
+        specs.append(Spec("strip", kernel, DX * M / m, j))
+    return specs
+
+
+def section(specs, results, figdir, notes):
+    """The strip's section of report/REPORT.md."""
+    done, bad = jobmod.finished(specs, results)
+    rows = [results[s.job.label] for s in done]
+    text = [summary_text(rows)] if rows else []
+    if bad:
+        text.append(jobmod.not_measured(bad))
+    return {"title": REPORT_TITLE,
+            "setup": "Soda-lime glass (E = 72 GPa, G_c = 3.8 J/m2), plane stress, delta = 1 mm, "
+                     "strip 8 H long with a seed crack H long, pre-stretched between fixed grips "
+                     "to U' = Delta G_c; steady speed, bond and wave energies over the middle of "
+                     "the strip. See examples/strip-steady-crack/README.md.",
+            "table": table_markdown(rows) if rows else "", "text": "\n".join(text), "figures": []}
+
+
+FIGURE_NAME = "kinetic_law.png"
+
+
+def figure(rows, path, H_over_delta=SWEEP_H_OVER_DELTA):
+    """v_ss/c_R against Delta' (the model's U'/G_c) and Gamma/G_c against v_ss/c_R, one line
+    per kernel and m at H/delta; runs that arrested drawn at 0, branched ones left out."""
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
+    styles = {3.0: ":", 4.0: "-", 5.0: "--", 6.0: "-.", 8.0: (0, (1, 3))}
+    for k in sorted({r["kernel"] for r in rows}):
+        for m in sorted({r["m"] for r in rows if r["kernel"] == k}):
+            sel = sorted((r for r in rows if r["kernel"] == k and r["m"] == m and
+                          r["H_over_delta"] == H_over_delta and r["state"] in ("crossed", "arrested")),
+                         key=lambda r: r["Delta_model"])
+            if len(sel) < 2:
+                continue
+            ls = styles.get(m, "-")
+            a1.plot([r["Delta_model"] for r in sel], [r["v_ss_over_cR"] for r in sel], ls=ls,
+                    marker="o", color=COLORS[k], label=f"{k}, m = {m:g}")
+            run = [r for r in sel if r["crossed"]]
+            a2.plot([r["v_ss_over_cR"] for r in run], [r["Gamma_over_Gc"] for r in run], ls=ls,
+                    marker="o", color=COLORS[k], label=f"{k}, m = {m:g}")
+    a1.axvline(1.0, color="0.6", lw=0.8)
+    a1.set_xlabel("Delta' = U'/G_c (model)")
+    a1.set_ylabel("v_ss / c_R")
+    a1.set_title(f"steady speed (H = {H_over_delta:g} delta; 0: arrested)")
+    a2.axhline(1.0, color="0.6", lw=0.8)
+    a2.set_xlabel("v_ss / c_R")
+    a2.set_ylabel("Gamma / G_c")
+    a2.set_title("energy the broken bonds take")
+    for a in (a1, a2):
+        a.grid(alpha=0.3)
+        a.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def work_precision_markdown(rows, Delta=2.0, m=M):
+    """Error of v_ss against run time: each kernel's runs at (Delta, m) by strip height, the
+    error the difference from its tallest strip (which therefore has none)."""
+    head = "| kernel | H/delta | atoms | loop time (s) | v_ss/c_R | difference from the tallest strip (c_R) |"
+    lines = [head, "|---|---|---|---|---|---|"]
+    for k in sorted({r["kernel"] for r in rows}):
+        sel = sorted((r for r in rows if r["kernel"] == k and r["m"] == m and r["Delta"] == Delta
+                      and r["crossed"]), key=lambda r: r["H_over_delta"])
+        if len(sel) < 2:
+            continue
+        ref = sel[-1]["v_ss_over_cR"]
+        for r in sel:
+            diff = "(reference)" if r is sel[-1] else f"{r['v_ss_over_cR'] - ref:+.3f}"
+            lines.append(f"| {k} | {r['H_over_delta']:g} | {int(r['atoms'])} | {r['loop_s']:.0f} | "
+                         f"{r['v_ss_over_cR']:.3f} | {diff} |")
+    return "\n".join(lines)
 
 
 if __name__ == "__main__":

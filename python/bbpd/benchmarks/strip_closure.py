@@ -35,7 +35,7 @@ CSV_COLUMNS = ("kernel", "dx", "law_points", "l2_kinetic_pct", "l2_toughness_pct
                "l2_energy_pct", "ext_pd_3tc", "ext_kinetic_3tc", "ext_energy_3tc")
 
 
-def law_of(rows, kernel, m=M_MODE1, H_over_delta=strip.H_OVER_DELTA):
+def law_of(rows, kernel, m=M_MODE1, H_over_delta=strip.SWEEP_H_OVER_DELTA):
     """KineticLaw of one kernel from the strip runs at (m, H/delta) that crossed."""
     u, g = strip.kinetic_law(rows, kernel, m, H_over_delta)
     if u.size == 0:
@@ -70,8 +70,11 @@ def compare(law, t, l_pd, problem=None):
 
 
 def closure_rows(strip_rows, hist):
+    """one row per PD tip history whose kernel has a measured law at the Mode-I scene's m"""
     out = []
     for (kernel, dx), (t, l) in sorted(hist.items()):
+        if strip.kinetic_law(strip_rows, kernel, M_MODE1)[0].size == 0:
+            continue
         law = law_of(strip_rows, kernel)
         r = {"kernel": kernel, "dx": dx, "law_points": len(law.u) - 1}
         r.update(compare(law, t, l))
@@ -108,3 +111,41 @@ def main(argv=None):
 
 if __name__ == "__main__":
     sys.exit(main())
+
+
+def table_markdown(rows, command=None):
+    head = ("| kernel | dx (m) | law points | L2 of l(t), kinetic law (%) | K_Ic form (%) | "
+            "energy form (%) | extension at 3 t_c: PD, kinetic law, energy form (m) |")
+    lines = ([f"Made by `{command}`.", ""] if command else []) + [head, "|" + "---|" * (head.count("|") - 1)]
+    for r in rows:
+        lines.append(f"| {r['kernel']} | {r['dx']:g} | {int(r['law_points'])} | {r['l2_kinetic_pct']:.1f} | "
+                     f"{r['l2_toughness_pct']:.1f} | {r['l2_energy_pct']:.1f} | {r['ext_pd_3tc']:.2f}, "
+                     f"{r['ext_kinetic_3tc']:.2f}, {r['ext_energy_3tc']:.2f} |")
+    return "\n".join(lines)
+
+
+CLOSURE_GOAL_PCT = 5.0    # L2 of l(t) at the finest grid (issue's criterion)
+
+
+def read_rows(path):
+    lines = [ln for ln in Path(path).read_text().splitlines() if ln and not ln.startswith("#")]
+    names = lines[0].split(",")
+    return [{n: (v if n == "kernel" else float(v)) for n, v in zip(names, ln.split(","))}
+            for ln in lines[1:]]
+
+
+def verdict(rows):
+    """The closure's sentence, computed: the finest grid against the goal, and the trend."""
+    out = []
+    for k in sorted({r["kernel"] for r in rows}):
+        sel = sorted((r for r in rows if r["kernel"] == k), key=lambda r: -r["dx"])
+        errs = ", ".join(f"{r['l2_kinetic_pct']:.1f}" for r in sel)
+        finest = sel[-1]
+        falls = all(b["l2_kinetic_pct"] < a["l2_kinetic_pct"] for a, b in zip(sel, sel[1:]))
+        best_const = min(finest["l2_toughness_pct"], finest["l2_energy_pct"])
+        out.append(f"- **{k}**: L2 {errs} % at dx = " + ", ".join(f"{r['dx']:g}" for r in sel)
+                   + f" m ({'falls' if falls else 'does not fall'} as dx halves); at dx = "
+                   f"{finest['dx']:g} m {finest['l2_kinetic_pct']:.1f} % "
+                   + ("meets" if finest["l2_kinetic_pct"] <= CLOSURE_GOAL_PCT else "misses")
+                   + f" the {CLOSURE_GOAL_PCT:g} % goal (the better constant-toughness form: {best_const:.1f} %).")
+    return "\n".join(out)

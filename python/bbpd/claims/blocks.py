@@ -9,6 +9,7 @@ KW = "examples/kalthoff-winkler/README.md"
 JDOC = "doc/compute_bbpd_jintegral.rst"
 PROPAGATION = "examples/mode1-propagation/README.md"
 KINK = "examples/kink-mixed-mode/README.md"
+STRIP = "examples/strip-steady-crack/README.md"
 
 # file -> {block name: render(data) -> text}
 BLOCKS = {
@@ -29,4 +30,8 @@ BLOCKS = {
     JDOC: {"jintegral-benchmarks": mode2.jintegral_doc},
     PROPAGATION: {"mode1-propagation": crack.propagation_table},
     KINK: {"kink": crack.kink_table, "kink-kw": crack.kink_kw_table},
+    STRIP: {"strip-runs": crack.strip_table, "strip-summary": crack.strip_summary,
+            "strip-work-precision": crack.strip_work_precision,
+            "strip-closure": crack.strip_closure_table,
+            "strip-closure-verdict": crack.strip_closure_verdict},
 }

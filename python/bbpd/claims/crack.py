@@ -6,11 +6,13 @@ import json
 
 from bbpd.benchmarks import kalthoff_winkler_grid as grid
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
-from bbpd.benchmarks import kink, kink_kalthoff_winkler, mode1_propagation
+from bbpd.benchmarks import kink, kink_kalthoff_winkler, mode1_propagation, strip, strip_closure
 from bbpd.jobs import ROOT
 
 PROPAGATION_CSV = ROOT / "examples" / "mode1-propagation" / "results" / "mode1_propagation.csv"
 PROJECTILE_CSV = ROOT / "examples" / "kalthoff-winkler" / "projectile.csv"
+STRIP_CSV = ROOT / "examples" / "strip-steady-crack" / "results" / "strip.csv"
+CLOSURE_CSV = ROOT / "examples" / "strip-steady-crack" / "results" / "closure.csv"
 MADE_BY = "# made by: "
 
 
@@ -48,3 +50,23 @@ def kw_summary(data):
     return grid.summary(projectile.read_csv(PROJECTILE_CSV), grid.read_rows(grid.CSV)[1],
                         kink.read_rows(kink.RESULTS),
                         json.loads(kink_kalthoff_winkler.SUMMARY.read_text()))
+
+
+def strip_table(data):
+    return strip.table_markdown(strip.read_rows(STRIP_CSV), _made_by(STRIP_CSV))
+
+
+def strip_summary(data):
+    return strip.summary_text(strip.read_rows(STRIP_CSV))
+
+
+def strip_closure_table(data):
+    return strip_closure.table_markdown(strip_closure.read_rows(CLOSURE_CSV), _made_by(CLOSURE_CSV))
+
+
+def strip_closure_verdict(data):
+    return strip_closure.verdict(strip_closure.read_rows(CLOSURE_CSV))
+
+
+def strip_work_precision(data):
+    return strip.work_precision_markdown(strip.read_rows(STRIP_CSV))

@@ -14,7 +14,7 @@ from pathlib import Path
 from bbpd import jobs as jobmod
 from bbpd import readers
 from bbpd.benchmarks import (dispersion, kalthoff_winkler_grid, kalthoff_winkler_projectile,
-                             kalthoff_winkler_study, kink)
+                             kalthoff_winkler_study, kink, strip)
 from bbpd.jobs import ROOT, Job, Spec
 from bbpd.kernels import KERNELS
 
@@ -201,6 +201,7 @@ def benchmark_specs(full=False, study=None):
     # the experiment's projectile: the Gaussian at 2 mm; --full adds the other kernels and 1 mm
     specs += kalthoff_winkler_projectile.jobs(full=study)
     specs += kink_specs(study)
+    specs += strip.jobs(full=study)    # the strip: Gaussian on a short strip; --full the sweep
     if study:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
         specs += kalthoff_winkler_study.jobs()
         specs += kalthoff_winkler_grid.jobs()    # the grid's pull (44 runs)
