@@ -46,7 +46,7 @@ from bbpd.benchmarks.mode1_propagation import machine
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import COLORS
 from bbpd.plots import plt
-from bbpd.runner import run_lammps
+from bbpd.runner import LammpsError, run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "strip-steady-crack" / "in.strip"
@@ -204,7 +204,11 @@ def main(argv=None):
             for hd in a.H_over_delta:
                 for D in a.Delta:
                     wd = Path(a.work) / f"{kernel}-m{m:g}-H{hd:g}-D{D:g}"
-                    r = run(wd, kernel, D, DX * M / m, m, hd, reuse=a.reuse)
+                    try:
+                        r = run(wd, kernel, D, DX * M / m, m, hd, reuse=a.reuse)
+                    except LammpsError as exc:    # one failed run must not end the sweep
+                        print(f"{wd.name}: FAILED: {exc}", flush=True)
+                        continue
                     print(f"{kernel} m {m:g} H/delta {hd:g} Delta {D:g} (model {r['Delta_model']:.3f}): "
                           f"crossed {r['crossed']} v_ss/c_R {r['v_ss_over_cR']:.3f} Gamma/Gc "
                           f"{r['Gamma_over_Gc']:.3f} Phi/Gc {r['Phi_over_Gc']:.3f} closure "
@@ -224,12 +228,19 @@ def main(argv=None):
 RUN_FOLDER = re.compile(r"^(constant|triangular|gaussian)-m([0-9.]+)-H([0-9.]+)-D([0-9.]+)$")
 
 
+def finished(log):
+    """the crack's run (after the pre-stretch) ran to its end"""
+    text = log.read_text(errors="replace")
+    tail = text.split("STRIP-UPRIME: ")[-1] if "STRIP-UPRIME: " in text else ""
+    return re.search(r"Loop time of \S+ on \d+ procs for [1-9]\d* steps", tail) is not None
+
+
 def collect(work):
     """Every finished run under work, measured again from its outputs."""
     rows = []
     for d in sorted(Path(work).iterdir()):
         m = RUN_FOLDER.match(d.name)
-        if not m or not (d / "log.lammps").is_file() or "Total wall time" not in (d / "log.lammps").read_text():
+        if not m or not (d / "log.lammps").is_file() or not finished(d / "log.lammps"):
             continue
         kernel, mm, hd, D = m.group(1), float(m.group(2)), float(m.group(3)), float(m.group(4))
         rows.append(run(d, kernel, D, DX * M / mm, mm, hd, reuse=True))
