@@ -76,13 +76,15 @@ void ComputeBBPDEnergy::compute_vector()
     sums[3].add(work->work(i));
   }
   // the ranks' exact partial sums, added as integers: the same bits on any rank count
+  // (long long: an MPI type that LAMMPS's serial MPI stubs have too)
+  static_assert(sizeof(long long) == sizeof(int64_t), "limbs are sent as MPI_LONG_LONG");
   constexpr int N = BBPD::ExactSum::NLIMBS;
-  int64_t local[NTERMS * N], all[NTERMS * N];
+  long long local[NTERMS * N], all[NTERMS * N];
   for (int t = 0; t < NTERMS; t++) {
     sums[t].normalize();
     for (int k = 0; k < N; k++) local[t * N + k] = sums[t].limbs()[k];
   }
-  MPI_Allreduce(local, all, NTERMS * N, MPI_INT64_T, MPI_SUM, world);
+  MPI_Allreduce(local, all, NTERMS * N, MPI_LONG_LONG, MPI_SUM, world);
   BBPD::ExactSum total;
   for (int t = 0; t < NTERMS; t++) {
     for (int k = 0; k < N; k++) sums[t].limbs()[k] = all[t * N + k];

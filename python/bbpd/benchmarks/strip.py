@@ -294,6 +294,9 @@ def summary_text(rows):
     for k in kernels:
         parts = []
         for m in sorted({r["m"] for r in rows if r["kernel"] == k}):
+            if len({r["Delta"] for r in rows if r["kernel"] == k and r["m"] == m and
+                    r["H_over_delta"] == SWEEP_H_OVER_DELTA}) < 2:
+                continue    # one load says nothing of the threshold
             lo, hi = threshold(rows, k, m)
             if hi is None and lo is None:
                 continue

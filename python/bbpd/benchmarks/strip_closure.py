@@ -156,7 +156,7 @@ def verdict(rows):
                    + ("meets" if finest["l2_kinetic_pct"] <= CLOSURE_GOAL_PCT else "misses")
                    + f" the {CLOSURE_GOAL_PCT:g} % goal (the better constant-toughness form: {best_const:.1f} %). "
                    f"The law is measured for v/c_R from {finest['law_u_min']:.2f} (the slowest steady "
-                   f"crack: below it none runs steadily) to {finest['law_u_max']:.2f} "
+                   f"crack of the runs) to {finest['law_u_max']:.2f} "
                    f"({int(finest['law_points'])} runs); the predicted crack runs at such speeds in "
                    f"{finest['inside_law_pct']:.0f} % of the window, elsewhere the law is interpolated "
                    "from rest or held at its fastest value.")
