@@ -73,7 +73,7 @@ def read_reference(path):
 def serial(tmp_path_factory):
     work = tmp_path_factory.mktemp("crack_branches")
     out = run_lammps(script(), workdir=work, vars=VARS).output
-    dt = float(out.split("CRACK-BRANCHING:")[1].split(" dt ")[1].split()[0])
+    dt = float(out.split("CRACK-BRANCHING:")[-1].split(" dt ")[1].split()[0])
     return work, dt
 
 

@@ -9,6 +9,7 @@ KW = "examples/kalthoff-winkler/README.md"
 JDOC = "doc/compute_bbpd_jintegral.rst"
 PROPAGATION = "examples/mode1-propagation/README.md"
 KINK = "examples/kink-mixed-mode/README.md"
+BRANCHING = "examples/crack-branching/README.md"
 
 # file -> {block name: render(data) -> text}
 BLOCKS = {
@@ -29,4 +30,5 @@ BLOCKS = {
     JDOC: {"jintegral-benchmarks": mode2.jintegral_doc},
     PROPAGATION: {"mode1-propagation": crack.propagation_table},
     KINK: {"kink": crack.kink_table, "kink-kw": crack.kink_kw_table},
+    BRANCHING: {"branching": crack.branching_table},
 }

@@ -1,12 +1,13 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Blocks of the crack-growth examples (examples/mode1-propagation, examples/kink-mixed-mode,
+examples/crack-branching,
 the projectile, grid-pull and summary parts of examples/kalthoff-winkler), each rendered by its
 benchmark module from the results it committed."""
 import json
 
 from bbpd.benchmarks import kalthoff_winkler_grid as grid
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
-from bbpd.benchmarks import kink, kink_kalthoff_winkler, mode1_propagation
+from bbpd.benchmarks import branching, kink, kink_kalthoff_winkler, mode1_propagation
 from bbpd.jobs import ROOT
 
 PROPAGATION_CSV = ROOT / "examples" / "mode1-propagation" / "results" / "mode1_propagation.csv"
@@ -29,6 +30,10 @@ def propagation_table(data):
 
 def kink_table(data):
     return kink.table(kink.read_rows(kink.RESULTS))
+
+
+def branching_table(data):
+    return branching.readme_table()
 
 
 def kink_kw_table(data):
