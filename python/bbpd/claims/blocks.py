@@ -30,5 +30,6 @@ BLOCKS = {
     JDOC: {"jintegral-benchmarks": mode2.jintegral_doc},
     PROPAGATION: {"mode1-propagation": crack.propagation_table},
     KINK: {"kink": crack.kink_table, "kink-kw": crack.kink_kw_table},
-    BRANCHING: {"branching": crack.branching_table},
+    BRANCHING: {"branching": crack.branching_table,
+                "branching-findings": crack.branching_findings},
 }

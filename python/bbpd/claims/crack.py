@@ -36,6 +36,10 @@ def branching_table(data):
     return branching.readme_table()
 
 
+def branching_findings(data):
+    return branching.readme_findings()
+
+
 def kink_kw_table(data):
     return kink_kalthoff_winkler.table(json.loads(kink_kalthoff_winkler.SUMMARY.read_text()))
 
