@@ -452,6 +452,29 @@ def findings(rows):
     return "\n".join(out)
 
 
+def cost_table(rows):
+    """Work against precision at 2 MPa: per kernel and resolution, the loop time and the
+    distance of the split (x, t) from that of the kernel's finest run (not an error: the
+    finest run is not converged, see the findings)."""
+    by = {r["run"]: r for r in rows}
+    lines = ["| kernel | resolution | atoms | loop (s) | x_split − finest (mm) | "
+             "t_split − finest (µs) |", "|---|---|---|---|---|---|"]
+    for k in KERNELS:
+        runs = [by[n] for n in (f"{k}-s2-m3", f"{k}-s2-m4", f"{k}-s2-m4-d0.5") if n in by]
+        if not runs:
+            continue
+        finest = min(runs, key=lambda r: r["dx_mm"])
+        for r in runs:
+            lines.append(f"| {k} | δ = {r['delta_mm']:g} mm, m = {r['m']:g} | {int(r['atoms'])} | "
+                         f"{r['loop_s']:.0f} | {r['x_split_mm'] - finest['x_split_mm']:+.2f} | "
+                         f"{r['t_split_us'] - finest['t_split_us']:+.2f} |")
+    return "\n".join(lines)
+
+
+def readme_cost(path=RESULTS):
+    return cost_table(read_rows(path))
+
+
 def readme_findings(path=RESULTS):
     return findings(read_rows(path))
 

@@ -31,5 +31,6 @@ BLOCKS = {
     PROPAGATION: {"mode1-propagation": crack.propagation_table},
     KINK: {"kink": crack.kink_table, "kink-kw": crack.kink_kw_table},
     BRANCHING: {"branching": crack.branching_table,
-                "branching-findings": crack.branching_findings},
+                "branching-findings": crack.branching_findings,
+                "branching-cost": crack.branching_cost},
 }

@@ -40,6 +40,10 @@ def branching_findings(data):
     return branching.readme_findings()
 
 
+def branching_cost(data):
+    return branching.readme_cost()
+
+
 def kink_kw_table(data):
     return kink_kalthoff_winkler.table(json.loads(kink_kalthoff_winkler.SUMMARY.read_text()))
 
