@@ -428,8 +428,14 @@ def findings(rows):
             f"- σ = 4 MPa: the crack forks earlier (t = {_span([r['t_split_us'] for r in mid], '.1f')}"
             f" µs), nearer the notch (x = {_span([r['x_split_mm'] for r in mid], '.1f')} mm) "
             f"and faster ({_span([r['v_pre_over_cR'] for r in mid], '.2f')} c_R over the "
-            f"{PRE_WINDOW * 1e6:g} µs before, against "
-            f"{_span([r['v_pre_over_cR'] for r in base], '.2f')} c_R at 2 MPa), and branches "
+            f"{PRE_WINDOW * 1e6:g} µs before"
+            + (", a window that reaches back to within 1 µs of the crack's initiation, so "
+               "these include its start" if any(
+                   r["t_split_us"] - PRE_WINDOW * 1e6 < r["t_init_us"] + 1.0 for r in mid)
+               else "")
+            + f", against {_span([r['v_pre_over_cR'] for r in base], '.2f')} c_R at 2 MPa; "
+            f"mean speed from initiation {_span([r['v_mean_over_cR'] for r in mid], '.2f')} "
+            f"against {_span([r['v_mean_over_cR'] for r in base], '.2f')} c_R), and branches "
             f"again ({_span([r['tips_end'] for r in mid], '.0f')} tips at 43 µs, the first "
             "ones stopped at the no-fail bands). The speed at the split is not one value: as "
             "Bobaru & Zhang argue, no critical speed sets it here. Whether stress waves piling "
