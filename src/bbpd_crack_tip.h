@@ -88,22 +88,28 @@ inline bool before(const Node &a, const Node &b)
   return a.tag < b.tag;
 }
 
-/* the tip of the crack graph of `all` (any order; atoms that are not candidates are skipped) */
-inline Result find_tip(std::vector<Node> all, const Params &p)
-{
-  Result r;
-  r.x = p.start[0];
-  r.y = p.start[1];
-  r.back[0] = p.start[0];
-  r.back[1] = p.start[1];
-  r.direction = degrees(p.dir[0], p.dir[1]);
-
+/* the crack graph searched from S: the candidates in node order, their edges (compressed
+   rows), path lengths and shortest-path predecessors */
+struct Graph {
   std::vector<Node> node;
+  std::vector<std::size_t> row, col;    // edges of node i: col[row[i] .. row[i + 1])
+  std::vector<double> length;           // edge lengths
+  std::vector<double> len;              // path length from S (HUGE_VAL: not reached)
+  std::vector<std::size_t> pred;        // predecessor on the shortest path (size: from S)
+  std::vector<char> done;               // reached from S
+  std::size_t reached = 0;
+};
+
+/* the crack graph of `all` (any order; atoms that are not candidates are skipped) */
+inline Graph search(std::vector<Node> all, const Params &p)
+{
+  Graph g;
+  std::vector<Node> &node = g.node;
   std::sort(all.begin(), all.end(), before);
   for (const Node &a : all)
     if (candidate(p, a.x, a.y, a.damage)) node.push_back(a);
   const std::size_t n = node.size();
-  if (n == 0) return r;
+  if (n == 0) return g;
 
   // cells of side `link`: the neighbours of a node lie in its own and the 8 adjacent cells
   using Cell = std::pair<std::int64_t, std::int64_t>;
@@ -117,8 +123,9 @@ inline Result find_tip(std::vector<Node> all, const Params &p)
 
   // edges as compressed rows with their lengths; a row lists the cells in a fixed order and
   // each cell in node order, so the same nodes give the same rows
-  std::vector<std::size_t> row(n + 1, 0), col;
-  std::vector<double> length;
+  std::vector<std::size_t> &row = g.row, &col = g.col;
+  std::vector<double> &length = g.length;
+  row.assign(n + 1, 0);
   const double wide = p.link * p.link * (1.0 + 1.0e-12);    // beyond it no d <= link
   for (std::size_t i = 0; i < n; i++) {
     const Cell c = cell_of(node[i]);
@@ -142,8 +149,10 @@ inline Result find_tip(std::vector<Node> all, const Params &p)
 
   // Dijkstra from S; equal keys leave the queue in node order
   const double inf = HUGE_VAL;
-  std::vector<double> len(n, inf);
-  std::vector<std::size_t> pred(n, n);    // n: reached from S directly
+  std::vector<double> &len = g.len;
+  std::vector<std::size_t> &pred = g.pred;
+  len.assign(n, inf);
+  pred.assign(n, n);    // n: reached from S directly
   using Item = std::pair<double, std::size_t>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
   for (std::size_t i = 0; i < n; i++) {
@@ -154,13 +163,14 @@ inline Result find_tip(std::vector<Node> all, const Params &p)
       queue.push({d, i});
     }
   }
-  std::vector<char> done(n, 0);
+  std::vector<char> &done = g.done;
+  done.assign(n, 0);
   while (!queue.empty()) {
     const auto [d, i] = queue.top();
     queue.pop();
     if (done[i]) continue;
     done[i] = 1;
-    r.nodes++;
+    g.reached++;
     for (std::size_t k = row[i]; k < row[i + 1]; k++) {
       const std::size_t j = col[k];
       const double dj = d + length[k];
@@ -171,28 +181,63 @@ inline Result find_tip(std::vector<Node> all, const Params &p)
       }
     }
   }
-  if (r.nodes == 0) return r;
+  return g;
+}
 
-  double longest = -inf;
-  for (std::size_t i = 0; i < n; i++)
-    if (done[i]) longest = std::max(longest, len[i]);
-  std::size_t tip = n;
-  for (std::size_t i = 0; i < n && tip == n; i++)    // the first in node order within the tie
-    if (done[i] && len[i] >= longest - TIE_FRACTION * p.link) tip = i;
+/* nothing found: the tip is S, the direction d */
+inline Result no_tip(const Params &p, std::size_t nodes = 0)
+{
+  Result r;
+  r.nodes = nodes;
+  r.x = p.start[0];
+  r.y = p.start[1];
+  r.back[0] = p.start[0];
+  r.back[1] = p.start[1];
+  r.direction = degrees(p.dir[0], p.dir[1]);
+  return r;
+}
 
+/* the result for reached node `tip` of the graph: its position, path length and the chord
+   from the first node on its path at least `span` behind it */
+inline Result tip_at(const Graph &g, std::size_t tip, const Params &p)
+{
+  const std::size_t n = g.node.size();
+  Result r = no_tip(p, g.reached);
   r.found = true;
-  r.tag = node[tip].tag;
-  r.x = node[tip].x;
-  r.y = node[tip].y;
-  r.extension = len[tip];
+  r.tag = g.node[tip].tag;
+  r.x = g.node[tip].x;
+  r.y = g.node[tip].y;
+  r.extension = g.len[tip];
   std::size_t k = tip;
-  while (k != n && len[tip] - len[k] < p.span) k = pred[k];
+  while (k != n && g.len[tip] - g.len[k] < p.span) k = g.pred[k];
   if (k != n) {
-    r.back[0] = node[k].x;
-    r.back[1] = node[k].y;
+    r.back[0] = g.node[k].x;
+    r.back[1] = g.node[k].y;
   }
   if (r.x != r.back[0] || r.y != r.back[1]) r.direction = degrees(r.x - r.back[0], r.y - r.back[1]);
   return r;
+}
+
+/* the node index of the tip of a searched graph (the size of the graph if none is reached) */
+inline std::size_t tip_index(const Graph &g, const Params &p)
+{
+  const std::size_t n = g.node.size();
+  if (g.reached == 0) return n;
+  double longest = -HUGE_VAL;
+  for (std::size_t i = 0; i < n; i++)
+    if (g.done[i]) longest = std::max(longest, g.len[i]);
+  std::size_t tip = n;
+  for (std::size_t i = 0; i < n && tip == n; i++)    // the first in node order within the tie
+    if (g.done[i] && g.len[i] >= longest - TIE_FRACTION * p.link) tip = i;
+  return tip;
+}
+
+/* the tip of the crack graph of `all` (any order; atoms that are not candidates are skipped) */
+inline Result find_tip(std::vector<Node> all, const Params &p)
+{
+  const Graph g = search(std::move(all), p);
+  const std::size_t tip = tip_index(g, p);
+  return tip == g.node.size() ? no_tip(p, g.reached) : tip_at(g, tip, p);
 }
 
 /* (time, extension) of past evaluations, for the speed over a time window */

@@ -31,6 +31,11 @@ namespace {
 constexpr double THRESHOLD_DEFAULT = 0.3;
 constexpr double SPAN_DEFAULT = 2.0;      // chord of the direction, in units of the link
 constexpr double WINDOW_DEFAULT = 0.0;    // speed since the previous invocation
+// least length of a branch beyond its split point, in units of the link: a tip must stand two
+// horizons above where it leaves the crack, so that a bump of the damage band (a few grid
+// spacings) is no branch (tests/unit/test_crack_branches.cpp)
+constexpr double BRANCH_DEFAULT = 2.0;
+constexpr int MAXTIPS_DEFAULT = 8;        // rows of the array
 constexpr double UNSET = -1.0;
 static_assert(std::is_trivially_copyable<Node>::value, "nodes are sent as bytes");
 }    // namespace
@@ -40,7 +45,9 @@ static_assert(std::is_trivially_copyable<Node>::value, "nodes are sent as bytes"
 ComputeBBPDCrackTip::ComputeBBPDCrackTip(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), values{0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
     params{{0.0, 0.0}, {1.0, 0.0}, THRESHOLD_DEFAULT, UNSET, UNSET}, link_user(UNSET),
-    span_user(UNSET), history(WINDOW_DEFAULT), bonds(nullptr), have_found(false)
+    span_user(UNSET), history(WINDOW_DEFAULT), bonds(nullptr), have_found(false),
+    branches(false), maxtips(MAXTIPS_DEFAULT), branch_user(UNSET), min_length(UNSET),
+    tracker(WINDOW_DEFAULT), invoked_branches(-1)
 {
   if (narg < 5 || !utils::is_double(arg[3]) || !utils::is_double(arg[4]))
     error->all(FLERR, "Illegal compute bbpd/crack/tip command: expected 'compute ID group "
@@ -49,6 +56,7 @@ ComputeBBPDCrackTip::ComputeBBPDCrackTip(LAMMPS *lmp, int narg, char **arg) :
   params.start[1] = utils::numeric(FLERR, arg[4], false, lmp);
 
   double window = WINDOW_DEFAULT;
+  bool maxtips_given = false;
   int iarg = 5;
   auto value = [&](const char *key) {
     if (iarg + 1 >= narg) error->all(FLERR, "Compute bbpd/crack/tip: keyword {} needs a value", key);
@@ -82,17 +90,48 @@ ComputeBBPDCrackTip::ComputeBBPDCrackTip(LAMMPS *lmp, int narg, char **arg) :
       params.dir[0] = dx / len;
       params.dir[1] = dy / len;
       iarg += 3;
+    } else if (key == "branches") {
+      if (iarg + 1 >= narg) error->all(FLERR, "Compute bbpd/crack/tip: keyword branches needs "
+                                       "yes or no");
+      branches = utils::logical(FLERR, arg[iarg + 1], false, lmp) == 1;
+      iarg += 2;
+    } else if (key == "branch") {
+      branch_user = value("branch");
+      if (branch_user <= 0.0)
+        error->all(FLERR, "Compute bbpd/crack/tip: branch must be > 0 (a length), got {}",
+                   branch_user);
+      iarg += 2;
+    } else if (key == "maxtips") {
+      if (iarg + 1 >= narg) error->all(FLERR, "Compute bbpd/crack/tip: keyword maxtips needs a value");
+      maxtips = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (maxtips < 1)
+        error->all(FLERR, "Compute bbpd/crack/tip: maxtips must be >= 1 (rows of the array), "
+                   "got {}", maxtips);
+      maxtips_given = true;
+      iarg += 2;
     } else {
       error->all(FLERR, "Compute bbpd/crack/tip: unknown keyword '{}' (expected threshold, "
-                 "link, span, window or direction)", key);
+                 "link, span, window, direction, branches, branch or maxtips)", key);
     }
   }
   history = BBPD::CrackTip::History(window);
+  tracker = BBPD::CrackTip::BranchTracker(window);
+  if (!branches && (branch_user > 0.0 || maxtips_given))
+    error->all(FLERR, "Compute bbpd/crack/tip: keywords branch and maxtips need 'branches yes'");
 
   vector_flag = 1;
-  size_vector = NVALUES;
+  size_vector = branches ? NBRANCHVALUES : NVALUES;
   extvector = 0;
   vector = values;
+  if (branches) {
+    array_flag = 1;
+    size_array_rows = maxtips;
+    size_array_cols = NCOLS;
+    extarray = 0;
+    block.assign(static_cast<std::size_t>(maxtips) * NCOLS, 0.0);
+    for (int k = 0; k < maxtips; k++) rows.push_back(block.data() + k * NCOLS);
+    array = rows.data();
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -120,7 +159,9 @@ void ComputeBBPDCrackTip::init()
                "atoms would be connected; increase link (default: the horizon)", params.link,
                pair->spacing);
   params.span = span_user > 0.0 ? span_user : SPAN_DEFAULT * params.link;
+  min_length = branch_user > 0.0 ? branch_user : BRANCH_DEFAULT * params.link;
   have_found = false;    // the link may have changed with the pair style
+  invoked_branches = -1;
 }
 
 /* the gathered crack atoms are those of the last search, in the same order */
@@ -138,7 +179,83 @@ bool ComputeBBPDCrackTip::same_nodes() const
 void ComputeBBPDCrackTip::compute_vector()
 {
   invoked_vector = update->ntimestep;
+  if (branches) {
+    compute_branches();
+    return;
+  }
+  gather();
 
+  // the damage of a crack atom does not enter the search: a new search only if the set changed
+  if (!same_nodes()) {
+    found = BBPD::CrackTip::find_tip(all, params);
+    searched = all;
+    have_found = true;
+  }
+  const BBPD::CrackTip::Result &r = found;
+  const double time = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+  history.record(time, r.extension);
+
+  values[0] = r.x;
+  values[1] = r.y;
+  values[2] = r.extension;
+  values[3] = history.speed();
+  values[4] = r.direction;
+  values[5] = static_cast<double>(r.nodes);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeBBPDCrackTip::compute_array()
+{
+  invoked_array = update->ntimestep;
+  compute_branches();
+}
+
+/* the vector and the array of branches yes, once per step whichever is asked first */
+void ComputeBBPDCrackTip::compute_branches()
+{
+  if (invoked_branches == update->ntimestep) return;
+  invoked_branches = update->ntimestep;
+  gather();
+  if (!same_nodes()) {
+    graph = BBPD::CrackTip::search(all, params);
+    const std::size_t top = BBPD::CrackTip::tip_index(graph, params);
+    found = top == graph.node.size() ? BBPD::CrackTip::no_tip(params, graph.reached)
+                                     : BBPD::CrackTip::tip_at(graph, top, params);
+    tips = BBPD::CrackTip::find_branches(graph, params, min_length);
+    searched = all;
+    have_found = true;
+  }
+  const BBPD::CrackTip::Result &r = found;
+  const double time = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+  history.record(time, r.extension);
+  tracker.record(time, graph, tips);
+
+  values[0] = r.x;
+  values[1] = r.y;
+  values[2] = r.extension;
+  values[3] = history.speed();
+  values[4] = r.direction;
+  values[5] = static_cast<double>(r.nodes);
+  values[6] = static_cast<double>(tips.size());
+  values[7] = static_cast<double>(tracker.splits().size());
+
+  std::fill(block.begin(), block.end(), 0.0);    // rows past the tips
+  const auto &tracks = tracker.tracks();
+  for (std::size_t k = 0; k < tips.size() && k < static_cast<std::size_t>(maxtips); k++) {
+    const BBPD::CrackTip::Result &t = tips[k].tip;
+    const BBPD::CrackTip::Split &s = tracks[k].split;
+    const bool split = s.time >= 0.0;
+    const double row[NCOLS] = {t.x, t.y, t.extension, tracks[k].history.speed(), t.direction,
+                               split ? s.x : params.start[0], split ? s.y : params.start[1],
+                               s.time, s.length};
+    std::copy(row, row + NCOLS, rows[k]);
+  }
+}
+
+/* the candidate atoms of every rank, on every rank, in `all` */
+void ComputeBBPDCrackTip::gather()
+{
   mine.clear();
   double **x0 = atom->x0;
   const int *mask = atom->mask;
@@ -164,29 +281,15 @@ void ComputeBBPDCrackTip::compute_vector()
   all.resize(nall);
   MPI_Allgatherv(mine.data(), nbytes, MPI_BYTE, all.data(), counts.data(), displs.data(),
                  MPI_BYTE, world);
-
-  // the damage of a crack atom does not enter the search: a new search only if the set changed
-  if (!same_nodes()) {
-    found = BBPD::CrackTip::find_tip(all, params);
-    searched = all;
-    have_found = true;
-  }
-  const BBPD::CrackTip::Result &r = found;
-  const double time = update->atime + (update->ntimestep - update->atimestep) * update->dt;
-  history.record(time, r.extension);
-
-  values[0] = r.x;
-  values[1] = r.y;
-  values[2] = r.extension;
-  values[3] = history.speed();
-  values[4] = r.direction;
-  values[5] = static_cast<double>(r.nodes);
 }
 
 /* ---------------------------------------------------------------------- */
 
 double ComputeBBPDCrackTip::memory_usage()
 {
-  return static_cast<double>((mine.capacity() + all.capacity() + searched.capacity()) *
-                             sizeof(Node));
+  return static_cast<double>((mine.capacity() + all.capacity() + searched.capacity() +
+                              graph.node.capacity()) * sizeof(Node) +
+                             (graph.col.capacity() + graph.pred.capacity()) * sizeof(std::size_t) +
+                             (graph.length.capacity() + graph.len.capacity() + block.size()) *
+                                 sizeof(double));
 }

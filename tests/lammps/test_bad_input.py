@@ -281,7 +281,7 @@ CASES = {
                                                            "rout 0.002")),
                                   "tip variable tx does not exist"),
     # ---- compute ID group bbpd/crack/tip X Y [threshold T] [link L] [span S] [window W]
-    #      [direction DX DY]
+    #      [direction DX DY] [branches yes|no] [branch B] [maxtips N]
     "tip-no-xy": (script(extra=TIP.format("threshold 0.3")),
                   "expected 'compute ID group bbpd/crack/tip X Y"),
     "tip-one-coordinate": (script(extra=TIP.format("0.005")),
@@ -318,6 +318,22 @@ CASES = {
                                 "its fix BBPD_WORK_e was deleted"),
     "energy-respa": (script(extra=ENERGY + "\nrun_style respa 2 2"), "run_style verlet only"),
     "work-fix-by-hand": (script(extra="fix w all bbpd/work 1"), "created by compute bbpd/energy"),
+    # [branches yes|no] [branch B] [maxtips N]
+    "tip-branches-no-value": (script(extra=TIP.format("0.005 0.0045 branches")),
+                              "keyword branches needs yes or no"),
+    "tip-branches-not-boolean": (script(extra=TIP.format("0.005 0.0045 branches maybe")),
+                                 "Expected boolean parameter instead of 'maybe'"),
+    "tip-branch-zero": (script(extra=TIP.format("0.005 0.0045 branches yes branch 0")),
+                        "branch must be > 0 (a length), got 0"),
+    "tip-maxtips-zero": (script(extra=TIP.format("0.005 0.0045 branches yes maxtips 0")),
+                         "maxtips must be >= 1 (rows of the array), got 0"),
+    "tip-maxtips-not-integer": (script(extra=TIP.format("0.005 0.0045 branches yes maxtips 2.5")),
+                                "Expected integer parameter instead of '2.5'"),
+    "tip-branch-without-branches": (script(extra=TIP.format("0.005 0.0045 branch 0.002")),
+                                    "keywords branch and maxtips need 'branches yes'"),
+    "tip-maxtips-without-branches": (script(extra=TIP.format("0.005 0.0045 branches no "
+                                                             "maxtips 4")),
+                                     "keywords branch and maxtips need 'branches yes'"),
     # ---- fix bbpd/bonds is internal (created by the pair style)
     "bonds-fix-with-args": (script(extra="fix b all bbpd/bonds 1"), "takes no arguments"),
     "bonds-fix-without-bbpd-pair": (script(**PMB, extra="fix b all bbpd/bonds"),

@@ -10,6 +10,7 @@ JDOC = "doc/compute_bbpd_jintegral.rst"
 PROPAGATION = "examples/mode1-propagation/README.md"
 KINK = "examples/kink-mixed-mode/README.md"
 STRIP = "examples/strip-steady-crack/README.md"
+BRANCHING = "examples/crack-branching/README.md"
 
 # file -> {block name: render(data) -> text}
 BLOCKS = {
@@ -34,4 +35,7 @@ BLOCKS = {
             "strip-work-precision": crack.strip_work_precision,
             "strip-closure": crack.strip_closure_table,
             "strip-closure-verdict": crack.strip_closure_verdict},
+    BRANCHING: {"branching": crack.branching_table,
+                "branching-findings": crack.branching_findings,
+                "branching-cost": crack.branching_cost},
 }

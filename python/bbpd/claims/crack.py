@@ -1,12 +1,14 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Blocks of the crack-growth examples (examples/mode1-propagation, examples/kink-mixed-mode,
+examples/crack-branching,
 the projectile, grid-pull and summary parts of examples/kalthoff-winkler), each rendered by its
 benchmark module from the results it committed."""
 import json
 
 from bbpd.benchmarks import kalthoff_winkler_grid as grid
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
-from bbpd.benchmarks import kink, kink_kalthoff_winkler, mode1_propagation, strip, strip_closure
+from bbpd.benchmarks import (branching, kink, kink_kalthoff_winkler, mode1_propagation, strip,
+                             strip_closure)
 from bbpd.jobs import ROOT
 
 PROPAGATION_CSV = ROOT / "examples" / "mode1-propagation" / "results" / "mode1_propagation.csv"
@@ -31,6 +33,18 @@ def propagation_table(data):
 
 def kink_table(data):
     return kink.table(kink.read_rows(kink.RESULTS))
+
+
+def branching_table(data):
+    return branching.readme_table()
+
+
+def branching_findings(data):
+    return branching.readme_findings()
+
+
+def branching_cost(data):
+    return branching.readme_cost()
 
 
 def kink_kw_table(data):

@@ -20,7 +20,8 @@ def main(argv=None):
                          "Kalthoff-Winkler Gaussian at 0.25 mm (one run of about 20 min) "
                          "and the Mode-I propagation at 0.025 m, and the whole kink sweep "
                          "of examples/kink-mixed-mode (49 runs; its 18 fine-grid runs take "
-                         "about 2 h of single-core run time)")
+                         "about 2 h of single-core run time), and the crack-branching sweep "
+                         "of examples/crack-branching (12 runs, about 10 min)")
     ap.add_argument("--finer", action="store_true",
                     help="the finer grids of the benchmarks' tables alone (Mode II 0.25 mm, "
                          "Kalthoff-Winkler Gaussian 0.5 mm: 4 runs more than the default), "

@@ -13,8 +13,8 @@ from pathlib import Path
 
 from bbpd import jobs as jobmod
 from bbpd import readers
-from bbpd.benchmarks import (dispersion, kalthoff_winkler_grid, kalthoff_winkler_projectile,
-                             kalthoff_winkler_study, kink, strip)
+from bbpd.benchmarks import (branching, dispersion, kalthoff_winkler_grid,
+                             kalthoff_winkler_projectile, kalthoff_winkler_study, kink, strip)
 from bbpd.jobs import ROOT, Job, Spec
 from bbpd.kernels import KERNELS
 
@@ -41,6 +41,9 @@ MODE1PROP_DX_FULL = (0.1, 0.05, 0.025)
 # rows at the five mixes (the cheapest set that draws the angle against the mix); --full runs
 # the sweep of examples/kink-mixed-mode (bbpd.benchmarks.kink.cases)
 KINK_DEFAULT = ("gaussian", 0.0)     # kernel, crack angle to the grid's rows (deg)
+# crack branching: by default the Gaussian kernel at sigma = 2 MPa, delta = 1 mm, m = 4 (45 s);
+# --full the sweep of examples/crack-branching (bbpd.benchmarks.branching.DEFAULT_RUNS)
+BRANCHING_DEFAULT = ("gaussian-s2-m4",)
 
 # Expected wall time of each single-rank run here, 2 at a time on 2 shared cores (s); only
 # the time-left estimate and the job order (longest first) use them.
@@ -51,6 +54,7 @@ ESTIMATE_S = {
     ("kw", 2.0e-3): 8.0, ("kw", 1.0e-3): 75.0, ("kw", 0.5e-3): 200.0, ("kw", 0.25e-3): 1200.0,
     ("mode1prop", 0.1): 3.0, ("mode1prop", 0.05): 15.0, ("mode1prop", 0.025): 160.0,
     ("kink", 1.0e-3): 20.0, ("kink", 0.5e-3): 600.0,
+    ("branching", 4): 60.0, ("branching", 3): 25.0,
 }
 
 
@@ -130,11 +134,15 @@ def bench_inputs(bench):
                           ROOT / "python" / "bbpd" / "crack_tip.py", FREUND_PY,
                           READERS_PY),
             "kink": (kink.EXAMPLE, BENCH / "kink.py", ROOT / "python" / "bbpd" / "kink.py",
-                     ROOT / "python" / "bbpd" / "crack_path.py", READERS_PY)}[bench]
+                     ROOT / "python" / "bbpd" / "crack_path.py", READERS_PY),
+            "branching": (branching.EXAMPLE, BENCH / "branching.py", READERS_PY, FREUND_PY,
+                          BENCH / "mode1_propagation.py")}[bench]
 
 
 def label_of(bench, kernel, dx, args):
     """The run's name in the log and the report (part of its cache key)."""
+    if bench == "branching":
+        return f"crack branching {args['name']}"
     if bench == "kink":
         return (f"kink {kernel} dx = {dx * 1e3:g} mm psi = {args['psi']:g} crack at "
                 f"{args['alpha']:g} deg" + ("" if args["ncross"] == kink.NCROSS else
@@ -202,6 +210,7 @@ def benchmark_specs(full=False, study=None):
     specs += kalthoff_winkler_projectile.jobs(full=study)
     specs += kink_specs(study)
     specs += strip.jobs(full=study)    # the strip: Gaussian on a short strip; --full the sweep
+    specs += branching_specs(study)
     if study:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
         specs += kalthoff_winkler_study.jobs()
         specs += kalthoff_winkler_grid.jobs()    # the grid's pull (44 runs)
@@ -218,3 +227,14 @@ def kink_specs(full=False):
                       {"kernel": k, "psi": p, "alpha": a, "dx": dx, "m": m, "ncross": n},
                       inputs, ESTIMATE_S.get(("kink", dx), 600.0))
             for k, p, a, dx, m, n in cases]
+
+
+def branching_specs(full=False):
+    """The branching runs: BRANCHING_DEFAULT, or with full=True the example's sweep."""
+    inputs = bench_inputs("branching")
+    specs = []
+    for name in (branching.DEFAULT_RUNS if full else BRANCHING_DEFAULT):
+        kernel, delta, m, _ = branching.RUNS[name]
+        specs.append(make_spec("branching", kernel, delta / m, "bbpd.benchmarks.branching:job",
+                               {"name": name}, inputs, ESTIMATE_S.get(("branching", m), 400.0)))
+    return specs

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """One section of REPORT.md per benchmark: its title, the setup it ran, the table, the
 paragraph and the figures, each from tables, prose and figures."""
-from bbpd.benchmarks import (kalthoff_winkler_grid, kalthoff_winkler_projectile,
+from bbpd.benchmarks import (branching, kalthoff_winkler_grid, kalthoff_winkler_projectile,
                              kalthoff_winkler_study, kink, mode1_propagation, strip)
 
 from . import figures, prose, tables
@@ -94,11 +94,14 @@ def kink_section(specs, results, figdir, notes):
 
 def strip_section(specs, results, figdir, notes):
     return strip.section(specs, results, figdir, notes)
+def branching_section(specs, results, figdir, notes):
+    return branching.section(specs, results, figdir, notes)
 
 
 # the sections of REPORT.md in order: (Spec.bench of their runs, builder)
 BUILDERS = (("dispersion", dispersion_section), ("mode1", mode1_section),
             ("mode2", mode2_section), ("mode1prop", mode1_propagation_section),
             ("strip", strip_section),
-            ("kink", kink_section), ("kw", kw_section), ("kwstudy", kw_study_section),
-            ("kwprojectile", kw_projectile_section), ("kwgrid", kw_grid_section))
+            ("kink", kink_section), ("branching", branching_section), ("kw", kw_section),
+            ("kwstudy", kw_study_section), ("kwprojectile", kw_projectile_section),
+            ("kwgrid", kw_grid_section))
