@@ -43,11 +43,19 @@ const char *path_needs(SimdPath p);
 using CompactValues = RecomputedValues<CoefFunction, false>;
 using UniformCompactValues = RecomputedValues<CoefFunction, true>;
 
+// the kernels are called once per row: hidden, a call goes straight to them, not through the
+// plugin's procedure linkage table
+#if defined(__GNUC__)
+#define BBPD_PATH_HIDDEN __attribute__((visibility("hidden")))
+#else
+#define BBPD_PATH_HIDDEN
+#endif
+
 /* the SIMD row kernels of one path (row_force_avx2/avx512 of bbpd_row.h,
    row_force_stretch_avx2/avx512 of bbpd_pmb_row.h), defined and instantiated in the path's own
    file: a caller sees declarations only, so no copy of them is ever compiled for another
    instruction set */
-struct Avx2Path {
+struct BBPD_PATH_HIDDEN Avx2Path {
   template <int FRACTURE, int EV, class Model, class Idx, class Values>
   static bool row_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                         double s0, double margin, double *ax, double *ay, double *az,
@@ -58,7 +66,7 @@ struct Avx2Path {
                                 double *smin_row, double *ax, double *ay, double *az,
                                 RowTally *tally);
 };
-struct Avx512Path {
+struct BBPD_PATH_HIDDEN Avx512Path {
   template <int FRACTURE, int EV, class Model, class Idx, class Values>
   static bool row_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                         double s0, double margin, double *ax, double *ay, double *az,
