@@ -9,7 +9,8 @@ x86-64 CPU), that the path files define no symbol another file defines too (the 
 keep one copy, perhaps the AVX-512 one, for every caller), that every forced path and auto give
 the portable loop's bits (the crack scene of test_storage.py with default and compact storage,
 the shattering bbpd/pmb cylinder, a rank with 4-byte partner indices), that the log names the
-path and why, and that a forced path the CPU lacks is an ERROR. The CPU here may run every
+path and why, that a forced path the CPU lacks is an ERROR, and that a restart written on a
+forced path reads back (on auto: the keyword is not stored) with the bits of a continuous run. The CPU here may run every
 path: the test hook BBPD_SIMD_HIDE (a list of paths) makes the plugin treat the paths it names
 as unsupported, as a CPU without them. A build with BBPD_NATIVE=ON (every file compiled with
 -march=native) gives the same bits too.
@@ -240,3 +241,25 @@ def test_forced_path_the_cpu_lacks_is_an_error(lmp, monkeypatch, path, nprocs):
     assert proc.error and f"simd {path} needs a CPU with" in proc.error, proc.output[-2000:]
     assert "hidden by the environment variable BBPD_SIMD_HIDE" in proc.error
     assert "use simd auto or one of portable" in proc.error
+
+
+_spec = importlib.util.spec_from_file_location("bbpd_test_mpi_restart",
+                                               Path(__file__).with_name("test_mpi_restart.py"))
+mpi_restart = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(mpi_restart)
+
+
+@needs_path("avx2")
+def test_restart_written_on_a_forced_path_reads_back_on_auto(tmp_path):
+    """The simd keyword is not in the restart file (the CPU that reads it may lack the path):
+    a run written with simd avx2 and read back continues on auto, with the continuous run's bits."""
+    scene, half = "2d", 100
+    ref_dir = tmp_path / "continuous"
+    ref_out = mpi_restart.run_in(ref_dir, scene, mpi_restart.fresh_script(scene, 1, 2 * half), 1)
+    first, second = mpi_restart.restart_scripts(scene, 1, half)
+    wd = tmp_path / "restarted"
+    out1 = mpi_restart.run_in(wd, scene, with_path(first, "avx2"), 1)
+    out2 = mpi_restart.run_in(wd, scene, second, 1)
+    assert loop_line(out1) == ("avx2", "forced by the simd keyword")
+    assert loop_line(out2)[1].startswith("auto: ")
+    assert mpi_restart.final_state(wd, out2) == mpi_restart.final_state(ref_dir, ref_out)
