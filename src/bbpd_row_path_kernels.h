@@ -14,7 +14,7 @@
 #include "bbpd_row_paths.h"
 
 #ifndef BBPD_SIMD
-#error "bbpd_row_path_kernels.h: this file is not compiled for a SIMD instruction set (check its flags in CMakeLists.txt)"
+#error "bbpd_row_path_kernels.h: not compiled for a SIMD instruction set (its flags: CMakeLists.txt)"
 #endif
 
 // the bond model of the plugin's loops (pair_bbpd.h): a test build's toy model, or the default

@@ -158,7 +158,8 @@ void ComputeBBPDCrackTip::compute_vector()
                "raise the threshold", id, nall);
   const int nprocs = comm->nprocs;
   std::vector<int> counts(nprocs), displs(nprocs);
-  const int nbytes = static_cast<int>(nmine * sizeof(Node));
+  // not const: the serial MPI stubs take void *
+  int nbytes = static_cast<int>(nmine * sizeof(Node));
   MPI_Allgather(&nbytes, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
   for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
   all.resize(nall);

@@ -34,18 +34,23 @@ static constexpr int TIMED_ROUNDS = 3;
 /* the paths every rank's CPU runs, as bits 1 << path */
 static int supported_everywhere(MPI_Comm world)
 {
-  int mine = 0, all = 0;
+  // one flag per path, the smallest over the ranks (MPI_MIN: LAMMPS's serial MPI stubs have
+  // no bitwise reductions)
+  int mine[BBPD::NPATHS], all[BBPD::NPATHS];
+  for (int p = 0; p < BBPD::NPATHS; p++) mine[p] = BBPD::path_supported(static_cast<SimdPath>(p));
+  MPI_Allreduce(mine, all, BBPD::NPATHS, MPI_INT, MPI_MIN, world);
+  int mask = 0;
   for (int p = 0; p < BBPD::NPATHS; p++)
-    if (BBPD::path_supported(static_cast<SimdPath>(p))) mine |= 1 << p;
-  MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_BAND, world);
-  return all;
+    if (all[p]) mask |= 1 << p;
+  return mask;
 }
 
 static std::string path_list(int mask)
 {
   std::string s;
   for (int p = 0; p < BBPD::NPATHS; p++)
-    if (mask & (1 << p)) s += std::string(s.empty() ? "" : ", ") + BBPD::path_name(static_cast<SimdPath>(p));
+    if (mask & (1 << p))
+      s += std::string(s.empty() ? "" : ", ") + BBPD::path_name(static_cast<SimdPath>(p));
   return s;
 }
 
@@ -63,7 +68,8 @@ void PairBBPD::check_simd_request()
   error->all(FLERR, "Pair style {}: simd {} needs a CPU with {}, which {} lacks{}: use simd auto "
              "or one of {}", style, name, BBPD::path_needs(simd_request),
              comm->nprocs > 1 ? "the CPU of a rank" : "this CPU",
-             BBPD::path_hidden(simd_request) ? " (hidden by the environment variable BBPD_SIMD_HIDE)" : "",
+             BBPD::path_hidden(simd_request) ? " (hidden by the environment variable "
+                                               "BBPD_SIMD_HIDE)" : "",
              path_list(mask));
 }
 
@@ -130,7 +136,8 @@ void PairBBPD::choose_simd_path()
         for (int p = 0; p < BBPD::NPATHS; p++)
           if (mask & (1 << p))
             best[p] = std::min(best[p], time_path(static_cast<SimdPath>(p), first, last));
-      const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const auto t1 = std::chrono::steady_clock::now();
+      const double spent = std::chrono::duration<double>(t1 - t0).count();
       std::string times;
       for (int p = BBPD::NPATHS - 1; p >= 0; p--)
         if (mask & (1 << p)) {
