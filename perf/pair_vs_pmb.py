@@ -19,9 +19,12 @@ constant-kernel c0, the same force law up to the partial-volume weights):
 
 Usage (from the repository root): tools/python perf/pair_vs_pmb.py [--steps 200] [--nprocs 1]
     [--reps 3] [--scenes plate,block,bench,cylinder,memory] [--csv perf/results/NAME.csv]
-Prints the CPU (model, family/model numbers) and the vector instruction set of the plugin
-build, then per scene ms/step of the whole loop and of the pair computation, undirected bond
-updates per second, bytes per bond of our bond storage, and the ratio pmb/ours of loop times.
+    [--simd auto|portable|avx2|avx512]
+Prints the CPU (model, family/model numbers) and the paths of the bond loops the plugin build
+holds, then per scene ms/step of the whole loop and of the pair computation, undirected bond
+updates per second, bytes per bond of our bond storage, the ratio pmb/ours of loop times and
+the path our run took (its setup report's 'bond loop:' line; --simd forces one, the default is
+the plugin's, auto).
 Each figure is the minimum over --reps repetitions, ours and peri/pmb run in turn
 (A B A B ...), so that both see the same drift of a shared machine; the load average before and
 after is printed with them. --csv writes the same rows with the CPU, the ISA and the command.
@@ -126,10 +129,14 @@ MEMORY_SIZES = (40, 50)    # block edges in spacings: 41^3 and 51^3 atoms
 MEMORY_STEPS = 2
 
 
+SIMD = None    # --simd: the path our runs force (None: the plugin's default)
+
+
 def ours(kernel, model, extra="", delta=DELTA_OURS):
     geom = "thickness {}".format(DX) if model.startswith("plane") else ""
+    simd = f"simd {SIMD}" if SIMD else ""
     return ("plugin load bbpdplugin.so\n"
-            f"pair_style bbpd/{kernel} {model} {geom} {extra}\n"
+            f"pair_style bbpd/{kernel} {model} {geom} {extra} {simd}\n"
             f"pair_coeff 1 1 {E} none {delta}")
 
 
@@ -166,10 +173,17 @@ def cpu_numbers():
 
 
 def build_isa(builddir=None):
-    """the vector instruction set of the plugin's force kernels: src/bbpd_row.h picks AVX-512
-    (__AVX512F__ and __AVX512VL__), else AVX2 (__AVX2__), else the portable loop, from the
-    compiler's macros under the build's flags (BBPD_NATIVE adds -march=native)"""
+    """the paths of the bond loops the plugin build holds: the portable loop and each SIMD path
+    whose file it compiled (src/bbpd_row_paths.h; the run's setup report says which ran), with
+    the flags of every file (BBPD_NATIVE adds -march=native); for a build from before the
+    paths, the instruction set its compiler's macros gave src/bbpd_row.h"""
     builddir = Path(builddir or ROOT / "build" / f"lammps-{VERSION}")
+    objects = builddir / "CMakeFiles" / "bbpdplugin.dir" / "src"
+    paths = [p for p in ("avx2", "avx512") if (objects / f"bbpd_row_{p}.cpp.o").is_file()]
+    if (ROOT / "src" / "bbpd_row_paths.h").is_file() and (objects / "bbpd_row_paths.cpp.o").is_file():
+        native = re.search(r"^BBPD_NATIVE:\w+=(ON|TRUE|1|YES)$", (builddir / "CMakeCache.txt").read_text(),
+                           re.M | re.I)
+        return "/".join(["portable"] + paths) + (" (-march=native)" if native else "")
     cache = (builddir / "CMakeCache.txt").read_text()
 
     def entry(key, default=""):
@@ -200,7 +214,8 @@ def parse(out, steps):
         bonds = int(m.group(1)) // 2 if m else None
     c0 = re.search(r"micromodulus c0 = ([0-9.eE+-]+)", out)
     mem = re.search(r"bond storage: ([0-9.]+) bytes per bond", out)
-    return {"ms_per_step": 1e3 * pair / steps, "loop_ms_per_step": 1e3 * loop / steps, "bonds": bonds,
+    path = re.search(r"bond loop: (\w+) path", out)
+    return {"path": path.group(1) if path else "","ms_per_step": 1e3 * pair / steps, "loop_ms_per_step": 1e3 * loop / steps, "bonds": bonds,
             "c0": float(c0.group(1)) if c0 else None,
             "bytes_per_bond": float(mem.group(1)) if mem else None}
 
@@ -209,8 +224,10 @@ def run_once(template, pair, steps, nprocs, dims, workdir):
     """template: a scene above, formatted with pair and dims (over the plate's spacing and
     step); or pair: the path of a whole input file that takes the variable 'steps'"""
     if isinstance(pair, Path):
-        template = pair
-        out = run_lammps(str(template), workdir=workdir, nprocs=nprocs, vars={"steps": steps}).output
+        script = pair.read_text()
+        if SIMD:    # the input reads no other file: a copy with the keyword runs the same
+            script = re.sub(r"^(pair_style\s+bbpd/.*)$", rf"\1 simd {SIMD}", script, count=1, flags=re.M)
+        out = run_lammps(script, workdir=workdir, nprocs=nprocs, vars={"steps": steps}).output
         return parse(out, steps)
     params = {"dx": DX, "rho": RHO, "vol": DX ** 3, "v": V_IMPACT, "dt": DT}
     params.update(dims)
@@ -277,7 +294,11 @@ def main():
     ap.add_argument("--scenes", default="plate,contact,kernels,compact,block,bench,cylinder,memory,mpi")
     ap.add_argument("--reps", type=int, default=REPS, help="repetitions of each run (minimum kept)")
     ap.add_argument("--csv", help="also write the rows to this CSV file")
+    ap.add_argument("--simd", choices=["auto", "portable", "avx2", "avx512"],
+                    help="force this path of our bond loops (default: the plugin's, auto)")
     args = ap.parse_args()
+    global SIMD
+    SIMD = args.simd
     load_before = load_average()
     memory = None
     REPS = args.reps
@@ -331,11 +352,12 @@ def main():
     load_after = load_average()
     family, model = cpu_numbers()
     isa = build_isa()
-    print(f"CPU: {cpu_model()} (family {family}, model {model}); plugin build: {isa}")
+    print(f"CPU: {cpu_model()} (family {family}, model {model}); plugin build: {isa}"
+          f"{'; simd ' + SIMD if SIMD else ''}")
     print(f"load average (1/5/15 min) before {load_before}, after {load_after}")
     print(f"minimum of {REPS} alternating repetitions; ratio = pmb/ours loop time")
     print(f"{'scene':45s} {'ours loop':>10s} {'ours pair':>10s} {'pmb loop':>9s} {'pmb pair':>9s} "
-          f"{'ratio':>6s} {'ours Mbond/s':>13s} {'B/bond':>7s}   (times in ms/step)")
+          f"{'ratio':>6s} {'ours Mbond/s':>13s} {'B/bond':>7s} {'path':>8s}   (times in ms/step)")
     for name, a, b in rows:
         rate = a["bonds"] / a["ms_per_step"] / 1e3
         line = f"{name:45s} {a['loop_ms_per_step']:10.3f} {a['ms_per_step']:10.3f} "
@@ -344,7 +366,7 @@ def main():
                      f"{b['loop_ms_per_step'] / a['loop_ms_per_step']:6.1f} ")
         else:
             line += f"{'':9s} {'':9s} {'':6s} "
-        line += f"{rate:13.0f} {a['bytes_per_bond'] or float('nan'):7.1f}"
+        line += f"{rate:13.0f} {a['bytes_per_bond'] or float('nan'):7.1f} {a['path']:>8s}"
         print(line)
         if b and b["bonds"] != a["bonds"]:
             print(f"  note: bond counts differ: ours {a['bonds']}, pmb {b['bonds']}")
@@ -370,7 +392,7 @@ def write_csv(path, rows, memory, machine):
     path.parent.mkdir(parents=True, exist_ok=True)
     command = "tools/python perf/pair_vs_pmb.py " + " ".join(shlex.quote(a) for a in sys.argv[1:])
     fields = ["scene", "ours_loop_ms", "ours_pair_ms", "pmb_loop_ms", "pmb_pair_ms", "ratio",
-              "bonds", "bytes_per_bond", "max_rss_mb", "cpu", "family", "model", "isa", "reps",
+              "bonds", "bytes_per_bond", "max_rss_mb", "path", "cpu", "family", "model", "isa", "reps",
               "load_before", "load_after", "date", "command"]
     date = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     with open(path, "w", newline="") as f:
@@ -383,7 +405,8 @@ def write_csv(path, rows, memory, machine):
                             pmb_loop_ms=f"{b['loop_ms_per_step']:.4f}" if b else "",
                             pmb_pair_ms=f"{b['ms_per_step']:.4f}" if b else "",
                             ratio=f"{b['loop_ms_per_step'] / a['loop_ms_per_step']:.2f}" if b else "",
-                            bonds=a["bonds"], bytes_per_bond=a["bytes_per_bond"] or ""))
+                            bonds=a["bonds"], bytes_per_bond=a["bytes_per_bond"] or "",
+                            path=a["path"]))
         if memory:
             runs, margin = memory
             for edge, rss, bonds, reported in runs:

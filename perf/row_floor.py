@@ -6,29 +6,32 @@ The 3D block of pair_vs_pmb.py (41^3 atoms, m = 4.5, 15.4 M bonds), held still (
 integration: the probes compute wrong forces on purpose), pair time of `--steps` force
 evaluations. Each variant is the plugin built from HEAD with perf/probes/row_floor.patch applied
 and one of its switches on (bbpd_row.h; the portable loop's table reads in pair_bbpd.cpp),
-for the path chosen with --path: the build's own (native: -march=native, AVX-512 or AVX2 by the
-CPU), avx2 (-march=native -mno-avx512f) or portable (no -march=native):
+run on the path chosen with --path (the pair style's simd keyword: the plugin holds every path,
+src/bbpd_row_paths.h): auto (the one the style picks), avx512, avx2 or portable:
   baseline          the kernel as it is (the patch with no switch is the same code)
   no_sqrt_div       multiplications in place of the square root and the division
   no_memory         no partner-offset or class stream and no gathers: partners i+1.., positions
                     and table entries loaded contiguously (square root and division kept):
                     the floor of the path, its arithmetic with the data in the L1 cache
   no_memory_no_sqrt_div   both: the loop's arithmetic alone
-  rsqrt14_fma       (AVX-512 only) square root and 1/r from the 14-bit estimate, Newton steps
+  rsqrt14_fma       (AVX-512 path only) square root and 1/r from the 14-bit estimate, Newton steps
                     and an FMA correction (no divider instruction)
-  float_guess       (AVX-512 only) 1/sqrt in single precision, two Newton steps in double
+  float_guess       (AVX-512 path only) 1/sqrt in single precision, two Newton steps in double
 Usage (from the repository root, after tools/bootstrap):
-  tools/python perf/row_floor.py [--path native|avx2|portable] [--steps 20] [--reps 2]
-      [--variants baseline,no_memory]
-Prints the CPU model and family/model, the vector instruction set each build holds and, per
+  tools/python perf/row_floor.py [--path auto|avx512|avx2|portable] [--steps 20] [--reps 2]
+      [--variants baseline,no_memory] [--csv perf/results/NAME.csv]
+Prints the CPU model and family/model, the path each run took (its setup report) and, per
 variant, the minimum pair time over --reps alternating rounds and its ratio to the baseline;
 the baseline over no_memory is the path's distance from its floor.
 The plugins are built in a temporary worktree of HEAD; the checkout is not touched.
 """
 import argparse
+import csv
+import datetime
 import importlib.util
 import os
 import re
+import shlex
 import subprocess
 import sys
 import tempfile
@@ -57,7 +60,7 @@ VARIANTS = {
     "float_guess": ["FLOAT_GUESS"],
 }
 AVX512_ONLY = ("rsqrt14_fma", "float_guess")
-PATHS = {"native": [], "avx2": ["-mno-avx512f"], "portable": None}    # extra flags; None: no -march=native
+PATHS = ("auto", "avx512", "avx2", "portable")
 
 
 def cache_entry(cache, name):
@@ -67,12 +70,11 @@ def cache_entry(cache, name):
     return m.group(1)
 
 
-def build(src, builddir, switches, lammps_dir, lammps_source, path):
-    flags = " ".join([f"-DBBPD_PROBE_{s}=1" for s in switches] + (PATHS[path] or []))
-    native = "OFF" if PATHS[path] is None else "ON"
+def build(src, builddir, switches, lammps_dir, lammps_source):
+    flags = " ".join(f"-DBBPD_PROBE_{s}=1" for s in switches)
     subprocess.run(["cmake", "-S", str(src), "-B", str(builddir), f"-DLAMMPS_DIR={lammps_dir}",
                     f"-DLAMMPS_SOURCE_DIR={lammps_source}", "-DBBPD_BUILD_TESTS=OFF",
-                    f"-DBBPD_NATIVE={native}", f"-DCMAKE_CXX_FLAGS={flags}"], check=True,
+                    f"-DCMAKE_CXX_FLAGS={flags}"], check=True,
                    capture_output=True)
     subprocess.run(["cmake", "--build", str(builddir), "--target", "bbpdplugin", "-j",
                     str(os.cpu_count() or 1)], check=True, capture_output=True)
@@ -84,10 +86,11 @@ def main():
     ap.add_argument("--steps", type=int, default=20)
     ap.add_argument("--reps", type=int, default=2)
     ap.add_argument("--variants", help="default: all the path has")
-    ap.add_argument("--path", default="native", choices=list(PATHS))
+    ap.add_argument("--path", default="auto", choices=PATHS)
+    ap.add_argument("--csv", help="also write the variants' times to this CSV file")
     args = ap.parse_args()
     names = (args.variants.split(",") if args.variants else
-             [n for n in VARIANTS if n not in AVX512_ONLY or args.path == "native"])
+             [n for n in VARIANTS if n not in AVX512_ONLY or args.path == "avx512"])
     for n in names:
         if n not in VARIANTS:
             sys.exit(f"row_floor: unknown variant {n}: choose from {', '.join(VARIANTS)}")
@@ -109,13 +112,14 @@ def main():
             if subprocess.run(["git", "-C", str(src), "apply", str(PATCH)]).returncode:
                 sys.exit("row_floor: perf/probes/row_floor.patch no longer applies to "
                          "src/bbpd_row.h: update the patch")
-            plugins = {n: build(src, tmp / f"build-{n}", VARIANTS[n], lammps_dir, lammps_source,
-                                args.path) for n in names}
-            isa = {n: PVP.build_isa(tmp / f"build-{n}") for n in names}
-            if any(n in AVX512_ONLY for n in names) and isa[names[0]] != "AVX-512":
-                sys.exit(f"row_floor: {', '.join(AVX512_ONLY)} probe the AVX-512 kernel; "
-                         f"this build holds {isa[names[0]]}")
+            if any(n in AVX512_ONLY for n in names) and args.path != "avx512":
+                sys.exit(f"row_floor: {', '.join(AVX512_ONLY)} probe the AVX-512 kernel: "
+                         "use --path avx512")
+            plugins = {n: build(src, tmp / f"build-{n}", VARIANTS[n], lammps_dir, lammps_source)
+                       for n in names}
             best = {n: float("inf") for n in names}
+            ran = {}
+            PVP.SIMD = args.path
             for rep in range(args.reps):
                 for n in names:
                     pair = PVP.ours("constant", "3d").replace("plugin load bbpdplugin.so",
@@ -125,12 +129,15 @@ def main():
                     out = run_lammps(script, workdir=tmp / f"run-{n}-{rep}").output
                     t = float(re.search(r"^Pair\s*\|\s*([0-9.eE+-]+)", out, re.M).group(1))
                     best[n] = min(best[n], 1e3 * t / args.steps)
+                    ran.setdefault(n, set()).add(PVP.parse(out, args.steps)["path"])
         finally:
             subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(src)],
                            capture_output=True)
     family, model = PVP.cpu_numbers()
-    print(f"CPU: {PVP.cpu_model()} (family {family}, model {model}); path {args.path}, "
-          f"kernel {'/'.join(sorted(set(isa.values())))}; load average {PVP.load_average()}")
+    took = "/".join(sorted(set().union(*ran.values())))
+    load = PVP.load_average()
+    print(f"CPU: {PVP.cpu_model()} (family {family}, model {model}); simd {args.path}, "
+          f"path run: {took}; load average {load}")
     print(f"3D block 41^3 held still, pair time in ms/step, minimum of {args.reps} alternating rounds")
     base = best.get("baseline")
     for n in names:
@@ -138,6 +145,26 @@ def main():
         print(f"{n:24s} {best[n]:8.2f}  {rel}")
     if base and "no_memory" in best:
         print(f"baseline / floor (no_memory): {base / best['no_memory']:.2f}")
+    if args.csv:
+        write_csv(Path(args.csv), best, {"cpu": PVP.cpu_model(), "family": family, "model": model,
+                                         "simd": args.path, "path": took, "load": load,
+                                         "reps": args.reps, "steps": args.steps})
+
+
+def write_csv(path, best, machine):
+    """one line per variant (pair ms/step), with the machine and the command"""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    command = "tools/python perf/row_floor.py " + " ".join(shlex.quote(a) for a in sys.argv[1:])
+    date = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    fields = ["variant", "pair_ms", "vs_baseline"] + list(machine) + ["date", "command"]
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        base = best.get("baseline")
+        for n, t in best.items():
+            w.writerow(dict(machine, variant=n, pair_ms=f"{t:.3f}",
+                            vs_baseline=f"{t / base:.3f}" if base else "", date=date, command=command))
+    print(f"written: {path}")
 
 
 if __name__ == "__main__":

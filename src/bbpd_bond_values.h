@@ -97,6 +97,15 @@ struct CoefCache {
   }
 };
 
+/* the coefficient of a bond of a compact row, computed on a cache miss (rare): called through a
+   pointer, so that the SIMD kernels, each compiled for its own instruction set
+   (bbpd_row_paths.h), reach the one copy compiled with the plugin's flags */
+struct CoefFunction {
+  double (*fn)(const void *context, int jtype, double xi0, double vj);
+  const void *context;
+  double operator()(int jtype, double xi0, double vj) const { return fn(context, jtype, xi0, vj); }
+};
+
 template <class CoefFn, bool UNIFORM = false> struct RecomputedValues {
   const double *x0;       // reference positions, 3 per atom
   int i;

@@ -440,7 +440,15 @@ template <int FRACTURE, int EV, class Model> struct Avx2Lanes {
 /* A row of n bonds in groups of 4 for the AVX2 kernels: full(half, k) takes bonds k..k+3 and
    tail(half, k) the last n - k < 4, masked; groups alternate between the two 4-wide halves of
    the 8-wide accumulators (half 0, 1, 0, ...), so the sums match the AVX-512 kernel's lanes. */
-template <class Full, class Tail> inline void for_each_group4(int n, Full &&full, Tail &&tail)
+#if defined(__GNUC__)
+#define BBPD_GROUPS_INLINE __attribute__((always_inline))
+#else
+#define BBPD_GROUPS_INLINE
+#endif
+// inlined into the kernel: GCC left it a call, with the lambdas' captures built in memory for
+// every row (instruction counts: doc/performance.md)
+template <class Full, class Tail>
+BBPD_GROUPS_INLINE inline void for_each_group4(int n, Full &&full, Tail &&tail)
 {
   using H0 = std::integral_constant<int, 0>;
   using H1 = std::integral_constant<int, 1>;

@@ -51,6 +51,7 @@
 #include "bbpd_bond_table.h"
 #include "bbpd_bond_values.h"
 #include "bbpd_partner_index.h"
+#include "bbpd_row_paths.h"
 #include "fix.h"
 
 #include <vector>
@@ -123,6 +124,16 @@ class FixBBPDBonds : public Fix {
   int uniform_type;
   double uniform_vfrac;
 
+  // the coefficients of the bonds of an atom of type itype (compact storage's cache misses)
+  struct RowLaw {
+    const BBPD::BondLaw *law;
+    int itype;
+    static double coefficient(const void *self, int jtype, double xi0, double vj)
+    {
+      const RowLaw &r = *static_cast<const RowLaw *>(self);
+      return r.law->coefficient(r.itype, jtype, xi0, vj);
+    }
+  };
   /* Row i of the cache as the bond loops read it, whatever the layout: returns
      fn(partners, values), the partners as 2-byte offsets or 4-byte indices
      (bbpd_partner_index.h), the reference lengths and coefficients by class, per bond, or
@@ -135,18 +146,16 @@ class FixBBPDBonds : public Fix {
       if (bclass)
         return fn(row_partners, BBPD::ClassValues{bclass + beg, classes.xi0.data(), classes.coef.data()});
       if (bxi0) return fn(row_partners, BBPD::PerBondValues{bxi0 + beg, bcoef + beg});
-      const int itype = atom->type[i];
-      auto coef_fn = [this, itype](int jtype, double xi0, double vj) {
-        return law.coefficient(itype, jtype, xi0, vj);
-      };
+      const RowLaw row_law{&law, atom->type[i]};
+      const BBPD::CoefFunction coef_fn{&RowLaw::coefficient, &row_law};
       cache.start(coef_epoch);
       const int t_uniform = uniform_type * BBPD::CoefCache::TYPE_STRIDE + uniform_type;
       const double *x0 = atom->x0 ? atom->x0[0] : nullptr;
       // every atom in reach of one type and volume, and so every cache entry: lengths alone key it
       if (uniform_type > 0 && cache.holds_only(uniform_vfrac, t_uniform))
-        return fn(row_partners, BBPD::RecomputedValues<decltype(coef_fn), true>{
+        return fn(row_partners, BBPD::UniformCompactValues{
                                     x0, i, atom->vfrac, atom->type, &cache, coef_fn, uniform_type, uniform_vfrac});
-      return fn(row_partners, BBPD::RecomputedValues<decltype(coef_fn)>{
+      return fn(row_partners, BBPD::CompactValues{
                                   x0, i, atom->vfrac, atom->type, &cache, coef_fn, uniform_type, uniform_vfrac});
     };
     return bdelta ? with_values(bdelta + beg) : with_values(bj + beg);

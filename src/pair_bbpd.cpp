@@ -61,10 +61,10 @@ static constexpr double BREAK_MARGIN_ULPS = 16.0;
 PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name) :
     Pair(lmp), kernel(k), style(style_name ? style_name : std::string("bbpd/") + k.name),
     model(BBPD::Model::Solid3D), geom(1.0), spacing(0.0), dt_safety(DT_SAFETY_DEFAULT), contact(0),
-    contact_factor(CONTACT_FACTOR_DEFAULT), spacing_user(0), fracture_any(0), youngs(nullptr),
+    contact_factor(CONTACT_FACTOR_DEFAULT), simd_request(BBPD::SimdPath::AUTO), spacing_user(0), fracture_any(0), youngs(nullptr),
     fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
     s0_user(nullptr), bondless(nullptr), bonds(nullptr), watchdog(nullptr), dt_bound_paper(0.0), dt_bound(0.0),
-    report_due(0), alpha(nullptr), multi_s0(0), s0_single(0.0), break_margin(0.0)
+    report_due(0), simd_path(BBPD::SimdPath::PORTABLE), simd_decided(false), alpha(nullptr), multi_s0(0), s0_single(0.0), break_margin(0.0)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -122,6 +122,8 @@ void PairBBPD::allocate()
 
 /* ----------------------------------------------------------------------
    pair_style bbpd/KERNEL [model] MODEL [thickness h] [area A] [spacing dx] [dt/safety f]
+     [contact yes|no] [contact/distance f] [bond/storage fast|compact]
+     [simd auto|portable|avx2|avx512]
 ------------------------------------------------------------------------- */
 
 void PairBBPD::settings(int narg, char **arg)
@@ -145,6 +147,8 @@ void PairBBPD::settings(int narg, char **arg)
   contact = 0;
   contact_factor = CONTACT_FACTOR_DEFAULT;
   storage = BBPD::BondStorage::FAST;
+  simd_request = BBPD::SimdPath::AUTO;
+  simd_decided = false;    // a new pair_style command times its rows again
   while (iarg < narg) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) utils::missing_cmd_args(FLERR, "pair_style " + style + " " + key, error);
@@ -162,6 +166,13 @@ void PairBBPD::settings(int narg, char **arg)
         error->all(FLERR, "Pair style {}: bond/storage must be 'fast' (16 bytes per bond on a "
                    "grid, 44 on irregular ones) or 'compact' (12 bytes per bond, slower)", style);
       storage = v == "compact" ? BBPD::BondStorage::COMPACT : BBPD::BondStorage::FAST;
+      iarg += 2;
+      continue;
+    }
+    if (key == "simd") {
+      if (!BBPD::path_from_name(arg[iarg + 1], simd_request))
+        error->all(FLERR, "Pair style {}: simd must be auto (the fastest path this CPU runs), "
+                   "portable, avx2 or avx512, got '{}'", style, arg[iarg + 1]);
       iarg += 2;
       continue;
     }
@@ -189,10 +200,11 @@ void PairBBPD::settings(int narg, char **arg)
       dt_safety = value;
     } else {
       error->all(FLERR, "Unknown pair_style {} keyword: {} (expected thickness, area, spacing, "
-                 "dt/safety, contact, contact/distance or bond/storage)", style, key);
+                 "dt/safety, contact, contact/distance, bond/storage or simd)", style, key);
     }
     iarg += 2;
   }
+  check_simd_request();
   if (model == BBPD::Model::Solid3D) geom = 1.0;
   else if (geom == 0.0)
     error->all(FLERR, "Pair style {} model {} needs {} (e.g. '{} 1.0')", style, m,
@@ -450,6 +462,7 @@ void PairBBPD::compute(int eflag, int vflag)
   if (!bonds || !bonds->families_built()) return;
   if (report_due) {
     report_due = 0;
+    choose_simd_path();
     report();
   }
   break_margin = 0.0;
@@ -652,17 +665,19 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc,
   RowTally lanes;    // energy and virial in the same lanes in every kernel (filled with EVFLAG)
   // the row in whatever layout the storage keeps it (FixBBPDBonds::visit_row)
   const bool broken = bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
-#ifdef BBPD_SIMD
-    if (!MULTI)
-      return row_force_simd<FRACTURE, EVFLAG, BondModel>(xx, i, bj, vals, n, s0_single,
-                                                         break_margin, ax, ay, az, &lanes);
-#endif
-    auto xi0_of = [&](int k) { return vals.xi0_at(k, BBPD::partner_index(bj, i, k)); };
-    auto coef_of = [&](int k, double) { return vals.coef_at(k, BBPD::partner_index(bj, i, k)); };
-    auto s0_of = [&](int j) { return MULTI ? s0row[type[j]] : s0_single; };
-    if (EVFLAG) lanes = {};    // the portable loop adds to the lanes, the SIMD kernels store them
-    return BBPD::row_force_portable<FRACTURE, EVFLAG, BondModel>(
-        xx, i, bj, n, xi0_of, coef_of, s0_of, break_margin, ax, ay, az, &lanes);
+    auto portable = [&] {
+      auto xi0_of = [&](int k) { return vals.xi0_at(k, BBPD::partner_index(bj, i, k)); };
+      auto coef_of = [&](int k, double) { return vals.coef_at(k, BBPD::partner_index(bj, i, k)); };
+      auto s0_of = [&](int j) { return MULTI ? s0row[type[j]] : s0_single; };
+      if (EVFLAG) lanes = {};    // the portable loop adds to the lanes, the SIMD kernels store them
+      return BBPD::row_force_portable<FRACTURE, EVFLAG, BondModel>(
+          xx, i, bj, n, xi0_of, coef_of, s0_of, break_margin, ax, ay, az, &lanes);
+    };
+    if (MULTI) return portable();    // the SIMD kernels take one critical stretch
+    return BBPD::on_path(simd_path, [&](auto path) {
+      return decltype(path)::template row_force<FRACTURE, EVFLAG, BondModel>(
+          xx, i, bj, vals, n, s0_single, break_margin, ax, ay, az, &lanes);
+    }, portable);
   });
   if (broken) return true;
   lane_sum(ax, ay, az, fi);
@@ -844,6 +859,7 @@ void PairBBPD::report()
     mesg += fmt::format("  fracture: {}\n", fracture_any ? "on" : "off (elastic, no bond-failure checks)");
     mesg += contact ? fmt::format("  contact: on, distance {:.6g}\n", contact_factor * spacing)
                     : std::string("  contact: off (no neighbour list)\n");
+    mesg += fmt::format("  bond loop: {} path ({})\n", BBPD::path_name(simd_path), simd_reason);
     mesg += fmt::format("  bond storage: {:.1f} bytes per bond ({:.1f} per bond end){}\n",
                         gbytes, 0.5 * gbytes,
                         gclass ? fmt::format("; table of {} distinct (reference length, "

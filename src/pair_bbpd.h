@@ -24,6 +24,7 @@
 #include "bbpd_bond_storage.h"
 #include "bbpd_close_pairs.h"
 #include "bbpd_kernel.h"
+#include "bbpd_row_paths.h"
 #include "pair.h"
 
 #include <string>
@@ -64,6 +65,7 @@ class PairBBPD : public Pair {
   int contact;       // short-range repulsion between non-bonded close atoms
   BBPD::BondStorage storage;    // what the bond cache keeps per bond (bond/storage keyword)
   double contact_factor;    // contact distance = contact_factor * spacing
+  BBPD::SimdPath simd_request;    // the simd keyword: a path, or AUTO (bbpd_row_paths.h)
 
  protected:
   int spacing_user;    // 1 if the spacing keyword was given
@@ -76,6 +78,14 @@ class PairBBPD : public Pair {
   double dt_bound_paper, dt_bound;    // eq. 25 and with the factor 2 (velocity Verlet limit)
 
   int report_due;    // setup() was called: report once the setup's notches are cut
+  // the path the bond loops run, the same on every rank and thread, and why (for the report)
+  BBPD::SimdPath simd_path;
+  std::string simd_reason;
+  bool simd_decided;    // auto: timed once per pair_style command, at its first setup
+  void check_simd_request();
+  void choose_simd_path();
+  double time_path(BBPD::SimdPath p, int first, int last);
+  double timing_sink = 0.0;
   void report();
   BBPD::BondLaw law;    // what the bond fix builds and caches with, filled in init_style()
   // what one bond does (elongation, force, energy, breaking): every loop of the style uses it

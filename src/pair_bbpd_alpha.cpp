@@ -148,22 +148,23 @@ template <int EVFLAG, bool PMB> void PairBBPDAlpha::eval_silling_askari()
       if (!multi) {
         // the row in whatever layout the storage keeps it (FixBBPDBonds::visit_row)
         broken = bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
-#ifdef BBPD_SIMD
+          auto portable = [&] {
+            return BBPD::row_stretch_portable<PMB, !PMB>(xx, i, bj, vals, n, smin, s00_one,
+                                                         alpha_one, margin, &snew);
+          };
           // force and stretch in one pass
-          double ax[LANES], ay[LANES], az[LANES];
-          RowTally tally;
-          const bool past = row_force_stretch_simd<EVFLAG, PMB, !PMB>(
-              xx, i, bj, vals, n, smin, s00_one, alpha_one, margin, &snew, ax, ay, az, &tally);
-          if (!past) {
-            lane_sum(ax, ay, az, fi);
-            if (EVFLAG) tally_lanes(i, tally, acc);
-            done = true;
-          }
-          return past;
-#else
-          return BBPD::row_stretch_portable<PMB, !PMB>(xx, i, bj, vals, n, smin, s00_one,
-                                                       alpha_one, margin, &snew);
-#endif
+          return BBPD::on_path(simd_path, [&](auto path) {
+            double ax[LANES], ay[LANES], az[LANES];
+            RowTally tally;
+            const bool past = decltype(path)::template row_force_stretch<EVFLAG, PMB, !PMB>(
+                xx, i, bj, vals, n, smin, s00_one, alpha_one, margin, &snew, ax, ay, az, &tally);
+            if (!past) {
+              lane_sum(ax, ay, az, fi);
+              if (EVFLAG) tally_lanes(i, tally, acc);
+              done = true;
+            }
+            return past;
+          }, portable);
         });
       } else {
         for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + n; k++) {

@@ -105,6 +105,17 @@ CASES = {
     "style-contact-distance-above-one": (script(pair_style="pair_style bbpd/gaussian plane/strain "
                                                 "thickness 0.001 contact/distance 1.5"),
                                          "contact/distance must be in (0,1]"),
+    # ---- pair_style ... simd auto|portable|avx2|avx512 (a forced path the CPU lacks:
+    # tests/lammps/test_simd_builds.py, which hides paths with BBPD_SIMD_HIDE)
+    "style-simd-unknown": (script(pair_style="pair_style bbpd/triangular plane/strain "
+                                  "thickness 0.001 simd sse4"),
+                           "simd must be auto (the fastest path this CPU runs), portable, avx2 "
+                           "or avx512, got 'sse4'"),
+    "style-simd-no-value": (script(pair_style="pair_style bbpd/triangular plane/strain "
+                                   "thickness 0.001 simd"),
+                            "Illegal pair_style bbpd/triangular simd command: missing argument"),
+    "style-simd-upper-case": (script(BASE_3D, pair_style="pair_style bbpd/pmb 3d simd AVX2"),
+                              "got 'AVX2'"),
     # ---- pair_coeff I J E Gc delta [critical_stretch s0] | I J FILE MATERIAL delta [...]
     "coeff-4-args": (script(pair_coeff="pair_coeff * * 190.0e9 6.9e4"), "got 4 arguments"),
     "coeff-6-args": (script(pair_coeff="pair_coeff * * 190.0e9 6.9e4 0.003015 critical_stretch"),

@@ -1,13 +1,19 @@
-"""The three force kernels give the same bits: AVX-512, AVX2 and the portable loop.
+"""One plugin, three paths of the bond loops, the same bits.
 
-src/bbpd_row.h picks the kernel at compile time from the target's macros: AVX-512
-(__AVX512F__ and __AVX512VL__) before AVX2 (__AVX2__), else the portable loop
-(row_force_portable). The default build (-march=native) on an AVX-512 host therefore never runs the
-AVX2 kernel. This test builds the plugin again with -mno-avx512f (the AVX2 kernel; in the
-default suite) and without -march=native (the portable loop; slow), into build/, checks from
-the machine code which kernel each build holds (zmm registers for AVX-512, ymm for AVX2), and
-compares the final state of a run in which a crack grows (the scene of test_storage.py) with
-the default build's, bit for bit.
+The default build (BBPD_NATIVE=OFF) holds the portable loop and the AVX2 and AVX-512 kernels,
+each compiled for its own instruction set in its own file (src/bbpd_row_paths.h);
+`pair_style ... simd` forces a path or (auto, the default) times the paths the CPU runs and
+takes the fastest. These tests check from the machine code that each path's file holds its
+instruction set and that no other file holds any wide instruction (the plugin runs on any
+x86-64 CPU), that the path files define no symbol another file defines too (the linker would
+keep one copy, perhaps the AVX-512 one, for every caller), that every forced path and auto give
+the portable loop's bits (the crack scene of test_storage.py with default and compact storage,
+the shattering bbpd/pmb cylinder, a rank with 4-byte partner indices), that the log names the
+path and why, that a forced path the CPU lacks is an ERROR, and that a restart written on a
+forced path reads back (on auto: the keyword is not stored) with the bits of a continuous run. The CPU here may run every
+path: the test hook BBPD_SIMD_HIDE (a list of paths) makes the plugin treat the paths it names
+as unsupported, as a CPU without them. A build with BBPD_NATIVE=ON (every file compiled with
+-march=native) gives the same bits too.
 """
 import importlib.util
 import os
@@ -20,6 +26,8 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 VERSION = os.environ.get("BBPD_LAMMPS_VERSION", "20260704")
 DEFAULT_BUILD = ROOT / "build" / f"lammps-{VERSION}"
+OBJECTS = DEFAULT_BUILD / "CMakeFiles" / "bbpdplugin.dir" / "src"
+PATH_FILES = {"avx2": "bbpd_row_avx2.cpp.o", "avx512": "bbpd_row_avx512.cpp.o"}
 
 _spec = importlib.util.spec_from_file_location("bbpd_test_storage",
                                                Path(__file__).with_name("test_storage.py"))
@@ -30,23 +38,20 @@ _spec = importlib.util.spec_from_file_location("bbpd_test_pmb_compat",
 pmb_compat = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(pmb_compat)
 
-VARIANTS = {"avx2": ["-D", "BBPD_NATIVE=ON", "-D", "CMAKE_CXX_FLAGS=-mno-avx512f"],
-            "portable": ["-D", "BBPD_NATIVE=OFF"]}
-
 
 def cache_value(key):
     text = (DEFAULT_BUILD / "CMakeCache.txt").read_text()
     return re.search(rf"^{key}:\w+=(.*)$", text, re.M).group(1)
 
 
-def build_variant(name, flags=None):
-    """Configure and build the plugin alone into build/<name>-VERSION with the cmake flags of
-    VARIANTS[name] (or the flags given); returns the .so path."""
+def build_variant(name, flags):
+    """Configure and build the plugin alone into build/<name>-VERSION with the cmake flags
+    given; returns the .so path."""
     folder = ROOT / "build" / f"{name}-{VERSION}"
     configure = ["cmake", "-S", str(ROOT), "-B", str(folder),
                  "-D", f"LAMMPS_SOURCE_DIR={cache_value('LAMMPS_SOURCE_DIR')}",
                  "-D", f"LAMMPS_DIR={cache_value('LAMMPS_DIR')}",
-                 "-D", "BBPD_BUILD_TESTS=OFF"] + (VARIANTS[name] if flags is None else flags)
+                 "-D", "BBPD_BUILD_TESTS=OFF"] + flags
     for cmd in (configure, ["cmake", "--build", str(folder), "--target", "bbpdplugin", "-j",
                             str(os.cpu_count() or 1)]):
         proc = subprocess.run(cmd, capture_output=True, text=True)
@@ -54,88 +59,207 @@ def build_variant(name, flags=None):
     return folder / "bbpdplugin.so"
 
 
-def registers(path):
-    """(zmm used, ymm used) in the machine code of a shared object."""
-    code = subprocess.run(["objdump", "-d", "--no-show-raw-insn", str(path)],
+def disassembly(path):
+    return subprocess.run(["objdump", "-d", "--no-show-raw-insn", str(path)],
                           capture_output=True, text=True, check=True).stdout
-    return "%zmm" in code, "%ymm" in code
 
 
-def host_has(flag):
-    return re.search(rf"\b{flag}\b", Path("/proc/cpuinfo").read_text()) is not None
+def host_has(*flags):
+    text = Path("/proc/cpuinfo").read_text()
+    return all(re.search(rf"\b{f}\b", text) for f in flags)
+
+
+# what each path needs of the CPU (src/bbpd_row_paths.cpp asks cpuid for the same)
+NEEDS = {"portable": (), "avx2": ("avx2", "fma"),
+         "avx512": ("avx2", "fma", "avx512f", "avx512vl", "avx512bw", "avx512dq")}
+
+
+def needs_path(path):
+    return pytest.mark.skipif(not host_has(*NEEDS[path]), reason=f"the CPU cannot run {path}")
+
+
+def with_path(script, path, plugin=None):
+    """the script with 'simd PATH' on its bbpd pair style (and another plugin if given)"""
+    if path:
+        script, n = re.subn(r"^(pair_style\s+bbpd/.*)$", rf"\1 simd {path}", script, count=1,
+                            flags=re.M)
+        assert n == 1
+    if plugin:
+        script = re.sub(r"^plugin load\s+bbpdplugin.so", f"plugin load {plugin}", script, flags=re.M)
+    return script
 
 
 TWO_VOLUMES = ("set group all volume 1e-9", "set group all volume 1e-9\n"
                "region top block INF INF 10.5 INF INF INF\nset region top volume 1.1e-9")
 
 
-def final_state(lmp, tmp_path, plugin, bond_storage="fast", volumes=1):
-    """Final state of the crack scene of test_storage.py; with compact storage the kernel
-    compares cached lengths alone (one volume) or lengths, volumes and types (two volumes)."""
+def crack_state(lmp, tmp_path, path, bond_storage="fast", volumes=1, plugin=None):
+    """Final state of the crack scene of test_storage.py, with the log; with compact storage
+    the kernel compares cached lengths alone (one volume) or lengths, volumes and types (two)."""
     script = storage.SCENE.format(kernel="gaussian", storage=bond_storage)
     if volumes == 2:
         script = script.replace(*TWO_VOLUMES)
-    if plugin is not None:
-        script = script.replace("plugin load bbpdplugin.so", f"plugin load {plugin}")
-    out = lmp(script).output
+    out = lmp(with_path(script, path, plugin)).output
     notch, final = storage.broken_counts(out)
     assert final > notch + 100    # a crack grew
-    return (tmp_path / "final.dump").read_text(), final
+    return (tmp_path / "final.dump").read_text(), out
 
 
-def cylinder_state(lmp, tmp_path, plugin=None):
-    """Final state of the shattering bbpd/pmb cylinder (the Silling-Askari loop: a fused
-    force-and-stretch pass with AVX-512, a stretch pass and the force kernel otherwise)."""
-    script = pmb_compat.cylinder("compat")
-    if plugin is not None:
-        script = script.replace("plugin load     bbpdplugin.so", f"plugin load     {plugin}")
-    lmp(script + "write_dump all custom cyl.dump id x y z vx vy vz c_1 modify sort id "
+def cylinder_state(lmp, tmp_path, path, plugin=None):
+    """Final state of the shattering bbpd/pmb cylinder (the Silling-Askari loop: the fused
+    force-and-stretch kernel on a SIMD path, a stretch pass and the force loop on the portable
+    one)."""
+    lmp(with_path(pmb_compat.cylinder("compat"), path, plugin) +
+        "write_dump all custom cyl.dump id x y z vx vy vz c_1 modify sort id "
         "format float %.17g\n")
     return (tmp_path / "cyl.dump").read_text()
 
 
-def far_partners_state(lmp, tmp_path, plugin=None):
+def far_partners_state(lmp, tmp_path, path):
     """Final state of a run whose rank keeps 4-byte partner indices (unsorted atoms: partners
     out of an offset's reach; test_storage.py), with bonds breaking."""
     script = storage.FAR_PARTNERS.format(sort="0", storage="fast")
-    if plugin is not None:
-        script = script.replace("plugin load bbpdplugin.so", f"plugin load {plugin}")
-    assert "bond storage: 20.0 bytes per bond" in lmp(script).output    # indices, not offsets
+    assert "bond storage: 20.0 bytes per bond" in lmp(with_path(script, path)).output
     return (tmp_path / "final.dump").read_text()
 
 
+def states(lmp, tmp_path, path):
+    return {"crack": crack_state(lmp, tmp_path, path)[0],
+            "compact": crack_state(lmp, tmp_path, path, "compact")[0],
+            "compact, two volumes": crack_state(lmp, tmp_path, path, "compact", volumes=2)[0],
+            "cylinder": cylinder_state(lmp, tmp_path, path),
+            "far partners": far_partners_state(lmp, tmp_path, path)}
+
+
 @pytest.fixture(scope="module")
-def default_state(tmp_path_factory):
+def portable_states(tmp_path_factory):
     from bbpd.runner import run_lammps
-    wd = tmp_path_factory.mktemp("default")
-    out = run_lammps(storage.SCENE.format(kernel="gaussian", storage="fast"), wd).output
-    return (wd / "final.dump").read_text(), storage.broken_counts(out)[1]
+    wd = tmp_path_factory.mktemp("portable")
+    return states(lambda s: run_lammps(s, workdir=wd), wd, "portable")
 
 
-@pytest.mark.skipif(not host_has("avx2"), reason="the host has no AVX2")
-def test_avx2_kernel_gives_the_default_bits(lmp, tmp_path, default_state):
-    plugin = build_variant("avx2")
-    zmm, ymm = registers(plugin)
-    assert not zmm and ymm, "the -mno-avx512f build must hold the AVX2 kernel"
-    if host_has("avx512f") and host_has("avx512vl"):
-        assert registers(DEFAULT_BUILD / "bbpdplugin.so")[0], \
-            "the default build on an AVX-512 host must hold the AVX-512 kernel"
-    assert final_state(lmp, tmp_path, plugin) == default_state
-    assert cylinder_state(lmp, tmp_path, plugin) == cylinder_state(lmp, tmp_path)
-    assert far_partners_state(lmp, tmp_path, plugin) == far_partners_state(lmp, tmp_path)
-    # compact storage runs in the AVX2 kernel too
-    assert final_state(lmp, tmp_path, plugin, "compact") == default_state
-    assert final_state(lmp, tmp_path, plugin, "compact", volumes=2) == \
-        final_state(lmp, tmp_path, None, "fast", volumes=2)
+def loop_line(out):
+    m = re.search(r"^  bond loop: (\w+) path \((.*)\)$", out, re.M)
+    assert m, "the setup report names the path of the bond loops"
+    return m.group(1), m.group(2)
 
 
-@pytest.mark.slow
-def test_portable_loop_gives_the_default_bits(lmp, tmp_path, default_state):
-    plugin = build_variant("portable")
-    zmm, ymm = registers(plugin)
-    assert not zmm and not ymm, "a build without -march=native must hold the portable loop"
-    assert final_state(lmp, tmp_path, plugin) == default_state
-    assert cylinder_state(lmp, tmp_path, plugin) == cylinder_state(lmp, tmp_path)
-    assert far_partners_state(lmp, tmp_path, plugin) == far_partners_state(lmp, tmp_path)
-    assert final_state(lmp, tmp_path, plugin, "compact", volumes=2) == \
-        final_state(lmp, tmp_path, None, "fast", volumes=2)
+# ---------------------------------------------------------------------- the plugin's files
+
+@pytest.fixture(scope="module")
+def objects():
+    if cache_value("BBPD_NATIVE").upper() in ("ON", "TRUE", "1", "YES"):
+        pytest.skip("the default build was configured with BBPD_NATIVE=ON")
+    found = sorted(OBJECTS.glob("*.o"))
+    assert found, f"no object files in {OBJECTS}"
+    return {p.name: p for p in found}
+
+
+def test_each_path_file_holds_its_instruction_set_alone(objects):
+    for path, name in PATH_FILES.items():
+        assert name in objects, f"the default build must hold the {path} path ({name})"
+    avx512, avx2 = (disassembly(objects[PATH_FILES[p]]) for p in ("avx512", "avx2"))
+    assert "%zmm" in avx512
+    assert "%ymm" in avx2 and "%zmm" not in avx2
+    # every other file is baseline x86-64: no VEX or EVEX instruction (mnemonics v...), so the
+    # plugin loads and runs its portable path on any x86-64 CPU
+    vex = re.compile(r"^\s*[0-9a-f]+:\s+v[a-z0-9]+\s", re.M)
+    for name, obj in objects.items():
+        if name not in PATH_FILES.values():
+            code = disassembly(obj)
+            assert not vex.search(code), f"{name} holds a VEX/EVEX instruction: {vex.search(code).group(0)}"
+
+
+def defined_symbols(obj):
+    out = subprocess.run(["nm", "--defined-only", "--extern-only", str(obj)], capture_output=True,
+                         text=True, check=True).stdout
+    return {line.split()[-1] for line in out.splitlines() if line.strip()}
+
+
+def test_path_files_define_no_symbol_another_file_defines(objects):
+    """An inline function emitted by a path file and by another file is one symbol to the
+    linker, which keeps either copy for every caller: the portable code could then run an
+    AVX-512 copy. So a path file's symbols must be its own (its kernels' templates)."""
+    others = {}
+    for name, obj in objects.items():
+        for s in defined_symbols(obj):
+            others.setdefault(s, set()).add(name)
+    for name in PATH_FILES.values():
+        shared = {s: sorted(others[s] - {name}) for s in defined_symbols(objects[name])
+                  if others[s] - {name}}
+        assert not shared, f"{name} shares symbols with other files: {shared}"
+
+
+# ---------------------------------------------------------------------- the same bits
+
+@pytest.mark.parametrize("path", [pytest.param("avx2", marks=needs_path("avx2")),
+                                  pytest.param("avx512", marks=needs_path("avx512")), "auto"])
+def test_every_path_gives_the_portable_bits(lmp, tmp_path, portable_states, path):
+    got = states(lmp, tmp_path, path)
+    for scene, state in portable_states.items():
+        assert got[scene] == state, f"{scene}: simd {path} differs from simd portable"
+
+
+def test_native_build_gives_the_portable_bits(lmp, tmp_path, portable_states):
+    plugin = build_variant("native", ["-D", "BBPD_NATIVE=ON"])
+    assert crack_state(lmp, tmp_path, "auto", plugin=plugin)[0] == portable_states["crack"]
+    assert cylinder_state(lmp, tmp_path, "auto", plugin=plugin) == portable_states["cylinder"]
+
+
+# ---------------------------------------------------------------------- choice and errors
+
+SMALL = storage.SCENE.format(kernel="gaussian", storage="fast")
+
+
+def test_log_names_the_path_and_why(lmp):
+    path, why = loop_line(lmp(with_path(SMALL, "portable")).output)
+    assert (path, why) == ("portable", "forced by the simd keyword")
+    path, why = loop_line(lmp(SMALL).output)    # the default: auto
+    runnable = [p for p in ("avx512", "avx2") if host_has(*NEEDS[p])]
+    if runnable:
+        assert why.startswith("auto: the fastest over "), why
+        for p in runnable + ["portable"]:
+            assert f"{p} " in why, f"auto timed {p}: {why}"
+        times = {p: float(t) for p, t in re.findall(r"(\w+) ([0-9.eE+-]+) ms", why)}
+        assert path == min(times, key=times.get)
+
+
+def test_auto_takes_only_paths_the_cpu_runs(lmp, monkeypatch):
+    monkeypatch.setenv("BBPD_SIMD_HIDE", "avx512,avx2")
+    assert loop_line(lmp(SMALL).output) == ("portable", "auto: the only path every rank's CPU runs")
+    monkeypatch.setenv("BBPD_SIMD_HIDE", "avx512")
+    path, why = loop_line(lmp(SMALL).output)
+    assert path in ("avx2", "portable") and "avx512" not in why
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+@pytest.mark.parametrize("path", ["avx2", "avx512"])
+def test_forced_path_the_cpu_lacks_is_an_error(lmp, monkeypatch, path, nprocs):
+    monkeypatch.setenv("BBPD_SIMD_HIDE", path)
+    proc = lmp(with_path(SMALL, path), nprocs=nprocs, check=False)
+    assert proc.returncode != 0
+    assert proc.error and f"simd {path} needs a CPU with" in proc.error, proc.output[-2000:]
+    assert "hidden by the environment variable BBPD_SIMD_HIDE" in proc.error
+    assert "use simd auto or one of portable" in proc.error
+
+
+_spec = importlib.util.spec_from_file_location("bbpd_test_mpi_restart",
+                                               Path(__file__).with_name("test_mpi_restart.py"))
+mpi_restart = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(mpi_restart)
+
+
+@needs_path("avx2")
+def test_restart_written_on_a_forced_path_reads_back_on_auto(tmp_path):
+    """The simd keyword is not in the restart file (the CPU that reads it may lack the path):
+    a run written with simd avx2 and read back continues on auto, with the continuous run's bits."""
+    scene, half = "2d", 100
+    ref_dir = tmp_path / "continuous"
+    ref_out = mpi_restart.run_in(ref_dir, scene, mpi_restart.fresh_script(scene, 1, 2 * half), 1)
+    first, second = mpi_restart.restart_scripts(scene, 1, half)
+    wd = tmp_path / "restarted"
+    out1 = mpi_restart.run_in(wd, scene, with_path(first, "avx2"), 1)
+    out2 = mpi_restart.run_in(wd, scene, second, 1)
+    assert loop_line(out1) == ("avx2", "forced by the simd keyword")
+    assert loop_line(out2)[1].startswith("auto: ")
+    assert mpi_restart.final_state(wd, out2) == mpi_restart.final_state(ref_dir, ref_out)

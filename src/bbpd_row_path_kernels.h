@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* -*- c++ -*- ----------------------------------------------------------
+   BBPD: the definitions and instantiations of one SIMD path's row kernels (bbpd_row_paths.h),
+   included only by that path's file, which defines BBPD_ROW_PATH (Avx2Path, Avx512Path) and is
+   compiled for the path's instruction set, so that bbpd_row.h's row_force_simd is the path's
+   kernel. Nothing else is defined here: whatever this file compiles is the path's alone.
+------------------------------------------------------------------------- */
+
+#ifndef BBPD_ROW_PATH_KERNELS_H
+#define BBPD_ROW_PATH_KERNELS_H
+
+#include "bbpd_pmb_row.h"
+#include "bbpd_row.h"
+#include "bbpd_row_paths.h"
+
+#ifndef BBPD_SIMD
+#error "bbpd_row_path_kernels.h: not compiled for a SIMD instruction set (its flags: CMakeLists.txt)"
+#endif
+
+// the bond model of the plugin's loops (pair_bbpd.h): a test build's toy model, or the default
+#ifdef BBPD_BOND_MODEL
+#define BBPD_ROW_MODEL BBPD_BOND_MODEL
+#else
+#define BBPD_ROW_MODEL BBPD::CriticalStretchBond
+#endif
+
+namespace BBPD {
+
+template <int FRACTURE, int EV, class Model, class Idx, class Values>
+bool BBPD_ROW_PATH::row_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                              double s0, double margin, double *ax, double *ay, double *az,
+                              RowTally *tally)
+{
+  return row_force_simd<FRACTURE, EV, Model>(xx, i, bj, vals, n, s0, margin, ax, ay, az, tally);
+}
+
+template <int EV, bool PMB, bool CLAMP, class Values, class Idx>
+bool BBPD_ROW_PATH::row_force_stretch(const double *xx, int i, const Idx *bj, const Values &vals,
+                                      int n, const double *smin, double s00, double alpha,
+                                      double margin, double *smin_row, double *ax, double *ay,
+                                      double *az, RowTally *tally)
+{
+  return row_force_stretch_simd<EV, PMB, CLAMP>(xx, i, bj, vals, n, smin, s00, alpha, margin,
+                                                smin_row, ax, ay, az, tally);
+}
+
+// every layout of a row (FixBBPDBonds::visit_row) with every switch the loops use
+#define BBPD_FOR_LAYOUTS(X, A, B)                                                           \
+  X(A, B, int, PerBondValues) X(A, B, int, ClassValues) X(A, B, int, CompactValues)        \
+  X(A, B, int, UniformCompactValues) X(A, B, PartnerOffset, PerBondValues)                  \
+  X(A, B, PartnerOffset, ClassValues) X(A, B, PartnerOffset, CompactValues)                 \
+  X(A, B, PartnerOffset, UniformCompactValues)
+#define BBPD_ROW_FORCE(FRACTURE, EV, IDX, VALUES)                                            \
+  template bool BBPD_ROW_PATH::row_force<FRACTURE, EV, BBPD_ROW_MODEL, IDX, VALUES>(         \
+      const double *, int, const IDX *, const VALUES &, int, double, double, double *,      \
+      double *, double *, RowTally *);
+#define BBPD_ROW_FORCE_STRETCH(EV, PMB, IDX, VALUES)                                         \
+  template bool BBPD_ROW_PATH::row_force_stretch<EV, PMB, !PMB, VALUES, IDX>(                \
+      const double *, int, const IDX *, const VALUES &, int, const double *, double, double, \
+      double, double *, double *, double *, double *, RowTally *);
+BBPD_FOR_LAYOUTS(BBPD_ROW_FORCE, 0, 0)
+BBPD_FOR_LAYOUTS(BBPD_ROW_FORCE, 0, 1)
+BBPD_FOR_LAYOUTS(BBPD_ROW_FORCE, 1, 0)
+BBPD_FOR_LAYOUTS(BBPD_ROW_FORCE, 1, 1)
+BBPD_FOR_LAYOUTS(BBPD_ROW_FORCE_STRETCH, 0, false)
+BBPD_FOR_LAYOUTS(BBPD_ROW_FORCE_STRETCH, 0, true)
+BBPD_FOR_LAYOUTS(BBPD_ROW_FORCE_STRETCH, 1, false)
+BBPD_FOR_LAYOUTS(BBPD_ROW_FORCE_STRETCH, 1, true)
+#undef BBPD_ROW_FORCE_STRETCH
+#undef BBPD_ROW_FORCE
+#undef BBPD_FOR_LAYOUTS
+
+}    // namespace BBPD
+
+#endif
