@@ -1,0 +1,80 @@
+"""fix bbpd/notch groups G1 G2: the bonds between two groups start broken.
+
+A plate of 60 x 30 atoms split by the line y = 15 mm (between two atom rows) into the groups
+`lower` and `upper`: cutting by these groups must break exactly the bonds the segment along
+that line breaks, so a short impact run gives the same bits (%.17g dump, sorted by id) either
+way, with a second notch (a segment) in the same fix; and the same bits on 2 and 4 ranks, where
+bonds between a local atom and a ghost are cut from both ends. Negative control: two groups
+without a bond between them cut nothing.
+"""
+import re
+
+import pytest
+
+from test_mpi_restart import (BONDS_RE, DT, DYNAMICS, E, FINISH, GC, GRIDS, THICKNESS, V_IMPACT,
+                              check_identical, final_state, grid_data)
+from bbpd.runner import run_lammps
+from scenes import peri_preamble
+
+NX, NY = 60, 30
+SPLIT_Y = 0.015        # the line between the atom rows at 14.5 and 15.5 mm
+FULL_LINE = f"segment -0.001 {SPLIT_Y!r} 0.061 {SPLIT_Y!r}"   # beyond both plate edges
+SHORT_NOTCH = "segment 0.0 0.007 0.02 0.007"                     # from the left edge, below
+STEPS = 100
+CUT_RE = re.compile(r"fix notch bbpd/notch: (\d+) bonds cut by (\d+) notch")
+
+SETUP = peri_preamble(2, processors="{grid}", data="atoms.data") + f"""\
+pair_style bbpd/triangular plane/strain thickness {THICKNESS!r}
+pair_coeff * * {E!r} {GC!r} 0.003015
+region impact block INF 0.003 INF 0.007 INF INF units box
+group impact region impact
+velocity impact set {V_IMPACT!r} 0.0 0.0 units box
+region lower block INF INF INF {SPLIT_Y!r} INF INF units box
+group lower region lower
+group upper subtract all lower
+region left block INF 0.01 INF INF INF INF units box
+group left region left
+region right block 0.05 INF INF INF INF INF units box
+group right region right
+fix notch all bbpd/notch {{notch}}
+"""
+
+
+def run(tmp_path, name, notch, nprocs=1, steps=STEPS):
+    wd = tmp_path / name
+    wd.mkdir()
+    grid_data(wd / "atoms.data", (NX, NY, 1))
+    script = (SETUP.format(grid=GRIDS[nprocs], notch=notch)
+              + DYNAMICS.format(enforce2d="fix 2d all enforce2d")
+              + f"timestep {DT!r}\nrun {steps}\n" + FINISH)
+    out = run_lammps(script, workdir=wd, nprocs=nprocs).output
+    return out, final_state(wd, out)
+
+
+def test_groups_cut_what_the_equivalent_segment_cuts(tmp_path):
+    ref_out, ref = run(tmp_path, "segments", f"{SHORT_NOTCH} {FULL_LINE}")
+    out, state = run(tmp_path, "groups", f"{SHORT_NOTCH} groups lower upper")
+    cut_ref, cut = CUT_RE.findall(ref_out), CUT_RE.findall(out)
+    # the full line alone cuts every bond of the 3 rows each side that reaches across: many
+    assert cut == cut_ref and int(cut[0][0]) > 5 * NX and cut[0][1] == "2"
+    # the run breaks bonds beyond the notches, so the dumps compare a growing state
+    assert int(BONDS_RE.findall(out)[-1][1]) > int(BONDS_RE.findall(out)[0][1])
+    assert state[1:] == ref[1:]
+    check_identical(ref[0], state[0], "groups vs segment")
+    # idempotent: the run 0 after the run cuts nothing new (the message is printed once)
+    assert len(cut) == 1
+
+
+@pytest.mark.parametrize("nprocs", [2, 4])
+def test_groups_same_bits_on_more_ranks(tmp_path, nprocs):
+    _, ref = run(tmp_path, "np1", "groups lower upper")
+    _, state = run(tmp_path, f"np{nprocs}", "groups lower upper", nprocs=nprocs)
+    assert state[1:] == ref[1:]
+    check_identical(ref[0], state[0], f"groups: 1 vs {nprocs} ranks")
+
+
+def test_groups_that_do_not_touch_cut_nothing(tmp_path):
+    """negative control: 'left' and 'right' are 40 mm apart, beyond the 3 mm horizon"""
+    out, (atoms, _, broken) = run(tmp_path, "apart", "groups left right", steps=0)
+    assert not CUT_RE.search(out)
+    assert broken == 0 and all(float(line.split()[-1]) == 0.0 for line in atoms)
