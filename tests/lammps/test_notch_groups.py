@@ -5,7 +5,7 @@ A plate of 60 x 30 atoms split by the line y = 15 mm (between two atom rows) int
 that line breaks, so a short impact run gives the same bits (%.17g dump, sorted by id) either
 way, with a second notch (a segment) in the same fix; and the same bits on 2 and 4 ranks, where
 bonds between a local atom and a ghost are cut from both ends. Negative control: two groups
-without a bond between them cut nothing.
+without a bond between them cut nothing. After a restart the fix defined again cuts nothing new.
 """
 import re
 
@@ -78,3 +78,20 @@ def test_groups_that_do_not_touch_cut_nothing(tmp_path):
     out, (atoms, _, broken) = run(tmp_path, "apart", "groups left right", steps=0)
     assert not CUT_RE.search(out)
     assert broken == 0 and all(float(line.split()[-1]) == 0.0 for line in atoms)
+
+
+def test_groups_restart_cuts_nothing_new(tmp_path):
+    """restart-safe: the broken bonds and the groups come back from the restart file, the fix
+    defined again cuts nothing new"""
+    wd = tmp_path / "restart"
+    wd.mkdir()
+    grid_data(wd / "atoms.data", (NX, NY, 1))
+    first = SETUP.format(grid=GRIDS[1], notch="groups lower upper") + \
+        "run 0\nwrite_restart s.restart\n"
+    out1 = run_lammps(first, workdir=wd).output
+    out = run_lammps("plugin load bbpdplugin.so\nread_restart s.restart\n"
+                     "fix notch all bbpd/notch groups lower upper\nrun 0\nrun 0\n",
+                     workdir=wd).output
+    cut = int(CUT_RE.search(out1).group(1))
+    assert cut > 5 * NX and not CUT_RE.search(out)
+    assert [int(b) for _, b in BONDS_RE.findall(out)] == [cut, cut]
