@@ -6,11 +6,13 @@ that line breaks, so a short impact run gives the same bits (%.17g dump, sorted 
 way, with a second notch (a segment) in the same fix; and the same bits on 2 and 4 ranks, where
 bonds between a local atom and a ghost are cut from both ends. Negative control: two groups
 without a bond between them cut nothing. After a restart the fix defined again cuts nothing new.
+In 3D the groups either side of a plane cut what a rectangle over the whole plane cuts.
 """
 import re
 
 import pytest
 
+from test_mpi_restart import SETUP_3D as SETUP_3D_MPI
 from test_mpi_restart import (BONDS_RE, DT, DYNAMICS, E, FINISH, GC, GRIDS, THICKNESS, V_IMPACT,
                               check_identical, final_state, grid_data)
 from bbpd.runner import run_lammps
@@ -95,3 +97,31 @@ def test_groups_restart_cuts_nothing_new(tmp_path):
     cut = int(CUT_RE.search(out1).group(1))
     assert cut > 5 * NX and not CUT_RE.search(out)
     assert [int(b) for _, b in BONDS_RE.findall(out)] == [cut, cut]
+
+
+# 3D: the 16 x 10 x 6 block of test_mpi_restart.py, split by the plane y = 5 mm
+SETUP_3D = SETUP_3D_MPI.replace(
+    "fix notch all bbpd/notch rectangle 0.0 0.005 -0.001 0.006 0.0 0.0 0.0 0.0 0.008",
+    "region below block INF INF INF 0.005 INF INF units box\ngroup below region below\n"
+    "group above subtract all below\nfix notch all bbpd/notch {notch}")
+PLANE = "rectangle -0.001 0.005 -0.001 0.018 0.0 0.0 0.0 0.0 0.008"   # beyond every face
+
+
+def run_3d(tmp_path, name, notch, nprocs):
+    wd = tmp_path / name
+    wd.mkdir()
+    grid_data(wd / "atoms.data", (16, 10, 6))
+    script = (SETUP_3D.format(grid=GRIDS[nprocs], notch=notch) + DYNAMICS.format(enforce2d="")
+              + f"timestep {DT!r}\nrun 50\n" + FINISH)
+    out = run_lammps(script, workdir=wd, nprocs=nprocs).output
+    return CUT_RE.findall(out), final_state(wd, out)
+
+
+def test_groups_in_3d_cut_what_the_plane_cuts(tmp_path):
+    assert "{notch}" in SETUP_3D
+    cut_ref, ref = run_3d(tmp_path, "plane", PLANE, 1)
+    for n in (1, 2):
+        cut, state = run_3d(tmp_path, f"groups{n}", "groups below above", n)
+        assert cut == cut_ref and int(cut[0][0]) > 16 * 6
+        assert state[1:] == ref[1:]
+        check_identical(ref[0], state[0], f"3D groups on {n} ranks vs plane")
