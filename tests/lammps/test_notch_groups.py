@@ -9,6 +9,7 @@ without a bond between them cut nothing. After a restart the fix defined again c
 In 3D the groups either side of a plane cut what a rectangle over the whole plane cuts.
 """
 import re
+from pathlib import Path
 
 import pytest
 
@@ -125,3 +126,20 @@ def test_groups_in_3d_cut_what_the_plane_cuts(tmp_path):
         assert cut == cut_ref and int(cut[0][0]) > 16 * 6
         assert state[1:] == ref[1:]
         check_identical(ref[0], state[0], f"3D groups on {n} ranks vs plane")
+
+
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "notch-groups" / "in.notch_groups"
+CRACK_BAND_MM = (9.5, 12.0)    # y of every atom with damage > 0.35 at the end
+TIP_MM = 15.0                  # x of the stair's tip
+
+
+def test_example_stair_precrack_grows_from_its_tip(tmp_path):
+    """examples/notch-groups: what its README states"""
+    out = run_lammps(str(EXAMPLE), workdir=tmp_path).output
+    assert "fix notch bbpd/notch: 762 bonds cut by 1 notch" in out
+    text = (tmp_path / "damage.dump").read_text().splitlines()
+    rows = [l.split() for l in text[text.index("ITEM: ATOMS id x y c_dmg") + 1:]]
+    cracked = [(float(x) * 1e3, float(y) * 1e3) for _, x, y, d in rows if float(d) > 0.35]
+    assert all(CRACK_BAND_MM[0] <= y <= CRACK_BAND_MM[1] for _, y in cracked)
+    grown = max(x for x, _ in cracked) - TIP_MM
+    assert 5.0 < grown < 10.0
