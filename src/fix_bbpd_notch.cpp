@@ -13,6 +13,7 @@
 #include "error.h"
 #include "fix_bbpd_bonds.h"
 #include "force.h"
+#include "group.h"
 #include "modify.h"
 
 #include <cmath>
@@ -63,8 +64,18 @@ FixBBPDNotch::FixBBPDNotch(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
       if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)
         error->all(FLERR, "Fix bbpd/notch: rectangle edges are parallel or zero: it has no area");
       iarg += 10;
+    } else if (strcmp(arg[iarg], "groups") == 0) {
+      if (iarg + 3 > narg)
+        error->all(FLERR, "Fix bbpd/notch: groups needs two group IDs: groups G1 G2");
+      for (int m = 1; m <= 2; m++)
+        if (group->find(arg[iarg + m]) < 0)
+          error->all(FLERR, "Fix bbpd/notch: no group named {} (define it with the group command "
+                     "before this fix)", arg[iarg + m]);
+      group_names.emplace_back(arg[iarg + 1], arg[iarg + 2]);
+      iarg += 3;
+      continue;
     } else {
-      error->all(FLERR, "Unknown fix bbpd/notch keyword: {} (expected {})", arg[iarg],
+      error->all(FLERR, "Unknown fix bbpd/notch keyword: {} (expected {} or groups)", arg[iarg],
                  dim == 2 ? "segment" : "rectangle");
     }
     cuts.push_back(c);
@@ -86,6 +97,23 @@ void FixBBPDNotch::init()
   auto fixes = modify->get_fix_by_style("^bbpd/bonds$");
   bonds = fixes.empty() ? nullptr : dynamic_cast<FixBBPDBonds *>(fixes.front());
   if (!bonds) error->all(FLERR, "Fix bbpd/notch found no bond families of a bbpd/* pair style");
+  group_bits.clear();
+  for (const auto &g : group_names) {
+    int bit[2];
+    const std::string *name[2] = {&g.first, &g.second};
+    for (int m = 0; m < 2; m++) {
+      const int igroup = group->find(*name[m]);
+      if (igroup < 0)
+        error->all(FLERR, "Fix bbpd/notch: group {} no longer exists (define it again before "
+                   "the run)", *name[m]);
+      // an empty group cuts nothing: almost always a region or a type that missed the atoms
+      if (group->count(igroup) == 0)
+        error->all(FLERR, "Fix bbpd/notch: group {} has no atoms, so 'groups {} {}' would cut "
+                   "nothing (check the group's region or types)", *name[m], g.first, g.second);
+      bit[m] = group->bitmask[igroup];
+    }
+    group_bits.emplace_back(bit[0], bit[1]);
+  }
 }
 
 /* does the bond xa-xb cross the notch? points on the notch plane count as its positive side */
@@ -152,6 +180,11 @@ void FixBBPDNotch::setup_pre_force(int)
       if (crosses(c, x0[lo], a, dim)) return true;
       if (periodic && crosses(c, b, x0[hi], dim)) return true;
     }
+    // symmetric in i and j, and a ghost's mask is its owner's: both ends agree
+    for (const auto &g : group_bits)
+      if (((mask[i] & g.first) && (mask[j] & g.second)) ||
+          ((mask[i] & g.second) && (mask[j] & g.first)))
+        return true;
     return false;
   };
   for (int i = 0; i < atom->nlocal; i++)
@@ -161,7 +194,8 @@ void FixBBPDNotch::setup_pre_force(int)
     });
   bigint all = 0;
   MPI_Allreduce(&n, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  const size_t nnotch = cuts.size() + group_bits.size();
   if (comm->me == 0 && all > 0)
     utils::logmesg(lmp, "  fix {} bbpd/notch: {} bonds cut by {} notch{}\n", id, all / 2,
-                   cuts.size(), cuts.size() > 1 ? "es" : "");
+                   nnotch, nnotch > 1 ? "es" : "");
 }

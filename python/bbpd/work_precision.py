@@ -41,7 +41,7 @@ from bbpd.jobs import Job, Spec
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.report.figures import _figure
 from bbpd.provenance import machine
-from bbpd.report.runs import ESTIMATE_S, bench_inputs, make_spec
+from bbpd.report.runs import ESTIMATE_S, bench_inputs, build_of_run, make_spec
 from bbpd.report.tables import failed, md_table
 
 BENCHMARKS = ("mode1", "mode2", "dispersion", "kalthoff_winkler")
@@ -147,11 +147,13 @@ def repeat_run(workdir, target, args, repeats, of=None):
     of: the label of the report's run of the same arguments (only names it)."""
     module, name = target.split(":")
     fn = getattr(importlib.import_module(module), name)
-    times = []
+    times, build = [], {}
     for n in range(repeats):
         sub = Path(workdir) / f"repeat{n}"
         try:
             t = loop_time(dict(fn(workdir=str(sub), **args)))
+            # read before the outputs go: REPORT.md's header names the build of every run
+            build = build or build_of_run(sub)
         finally:
             shutil.rmtree(sub, ignore_errors=True)
         if t is None:
@@ -159,7 +161,7 @@ def repeat_run(workdir, target, args, repeats, of=None):
         times.append(t)
         if t >= REPEAT_BELOW_S:
             break
-    return {"loop_times": times}
+    return {"loop_times": times, **build}
 
 
 def _timing_spec(spec, repeats):
@@ -168,7 +170,9 @@ def _timing_spec(spec, repeats):
     job = Job(label=label, func="bbpd.work_precision:repeat_run",
               kwargs={"target": kw["target"], "args": kw["args"], "repeats": repeats,
                       "of": spec.job.label},
-              inputs=spec.job.inputs, estimate_s=spec.job.estimate_s * repeats)
+              # this file too: a result cached by an older repeat_run (without the versions
+              # of its build) is made again
+              inputs=tuple(spec.job.inputs) + (__file__,), estimate_s=spec.job.estimate_s * repeats)
     return Spec(TIMING_BENCH, spec.kernel, spec.dx, job)
 
 

@@ -223,6 +223,7 @@ CASES = {
     "init-3d-in-2d": (script(pair_style="pair_style bbpd/gaussian 3d"), "requires 'dimension 3'"),
     "init-no-atom-map": (script(map=""), "requires an atom map"),
     # ---- fix ID group bbpd/notch segment x1 y1 x2 y2 ... | rectangle cx cy cz ax ay az bx by bz
+    #      | groups G1 G2
     "notch-no-args": (script(extra="fix n all bbpd/notch"),
                       "Illegal fix bbpd/notch command: missing argument"),
     "notch-segment-3-numbers": (script(extra="fix n all bbpd/notch segment 0 0.005 0.004"),
@@ -244,6 +245,18 @@ CASES = {
                                         "0.004 0 0 0.002 0 0"), "rectangle edges are parallel"),
     "notch-non-numeric": (script(extra="fix n all bbpd/notch segment 0 a 0.004 0.005"),
                           "Expected floating point parameter instead of 'a'"),
+    "notch-groups-one-name": (script(extra="group lo id 1:50\nfix n all bbpd/notch groups lo"),
+                              "groups needs two group IDs"),
+    "notch-groups-no-name": (script(extra="fix n all bbpd/notch groups"),
+                             "groups needs two group IDs"),
+    "notch-groups-unknown": (script(extra="group lo id 1:50\nfix n all bbpd/notch groups lo hi"),
+                             "no group named hi"),
+    "notch-groups-empty": (script(extra="group lo id 1:50\nregion out block 20 30 20 30 INF INF\n"
+                                  "group none region out\nfix n all bbpd/notch groups lo none"),
+                           "group none has no atoms"),
+    "notch-groups-deleted": (script(extra="group lo id 1:50\ngroup hi id 51:100\n"
+                                    "fix n all bbpd/notch groups lo hi\ngroup hi delete"),
+                             "group hi no longer exists"),
     "notch-atom-style-atomic": (script(atom_style="atom_style atomic", props="mass 1 7800.0",
                                        pair_style="", pair_coeff="", extra=NOTCH_2D),
                                 "requires atom_style peri"),
@@ -393,6 +406,7 @@ def test_readme_counts_these_cases():
 # the other ranks must not hang in a collective call
 @pytest.mark.parametrize("name", ["coeff-file-unknown-material", "coeff-file-unit-mismatch",
                                   "init-horizon-below-spacing", "notch-segment-zero-length",
+                                  "notch-groups-empty",
                                   "jint-annulus-outside", "tip-link-below-spacing"])
 def test_bad_input_stops_under_mpi(tmp_path, name):
     text, expected = CASES[name]

@@ -162,6 +162,16 @@ def test_versions_and_machine_are_stated(calls):
     assert "cores" in text and "total wall time" in text
 
 
+def test_header_versions_parsed_and_no_blank_lines_pile_up(calls):
+    """every run's log gave its versions (no '?'), and the sections not run here (the loading
+    study, the grid's pull) are one line each, with no run of blank lines behind them"""
+    text = calls[1][0][1]
+    logs = re.search(r"the runs' logs: (.*)$", text, re.M).group(1)
+    assert logs and "?" not in logs
+    assert "\n\n\n" not in text
+    assert re.search(r"^Not run by default .*\n\n## ", text, re.M)
+
+
 def test_second_call_reuses_finished_runs(calls):
     _, logs = calls
     lines, text, failed, _ = logs[1]

@@ -13,6 +13,25 @@ from .tables import failed, run_time
 FIGURE_LIST = ".figures"    # the PNGs of the last report, removed before the next one is made
 
 
+def versions_text(results):
+    """The LAMMPS and plugin versions the finished runs' logs report, '?' where a log did not
+    say (tests/regression/test_report_header.py fails on one)."""
+    versions = sorted({(r.get("lammps_version"), r.get("plugin_version"))
+                       for r in results.values() if not failed(r)}, key=str)
+    return "; ".join(f"LAMMPS ({v or '?'}), plugin v{p or '?'}" for v, p in versions)
+
+
+def section_lines(s):
+    """A section's lines: its title and the parts it has, one blank line after each (a section
+    not run by default has its one-line setup only)."""
+    parts = [p for p in (s["setup"], s["table"], s["text"]) if p]
+    parts += ["\n".join(f"![{name}]({name})" for name in s["figures"])] if s["figures"] else []
+    lines = [f"## {s['title']}", ""]
+    for p in parts:
+        lines += [p, ""]
+    return lines
+
+
 def write_report(out, specs, results, meta, start):
     figdir = Path(out)
     listing = figdir / FIGURE_LIST
@@ -37,8 +56,6 @@ def write_report(out, specs, results, meta, start):
     n_failed = sum(failed(results.get(s.job.label)) for s in specs)
     wall = time.perf_counter() - start
     core_s = sum(run_time(r) or 0.0 for r in results.values() if not failed(r))
-    versions = sorted({(r.get("lammps_version"), r.get("plugin_version"))
-                       for r in results.values() if not failed(r)}, key=str)
     lines = [
         "# BBPD: reproduction of Bouaraquia & Mabssout (2026)",
         "",
@@ -46,8 +63,7 @@ def write_report(out, specs, results, meta, start):
                                          if meta.get("finer") else "") + "` "
         f"on {meta['date']}. Every number below comes from the runs of this report.",
         "",
-        f"- LAMMPS: {meta['lammps']} (`tools/lmp -h`); the runs' logs: "
-        + "; ".join(f"LAMMPS ({v or '?'}), plugin v{p or '?'}" for v, p in versions),
+        f"- LAMMPS: {meta['lammps']} (`tools/lmp -h`); the runs' logs: " + versions_text(results),
         f"- plugin: bbpdplugin.so version {meta['plugin']} (CMakeLists.txt), source "
         f"{meta['git']}",
         f"- machine: {meta['machine']}; load average {meta['load']:.1f} at the start (the "
@@ -63,8 +79,7 @@ def write_report(out, specs, results, meta, start):
         "",
     ]
     for s in sections:
-        lines += [f"## {s['title']}", "", s["setup"], "", s["table"], "", s["text"], ""]
-        lines += [f"![{name}]({name})" for name in s["figures"]] + [""]
+        lines += section_lines(s)
     if notes:
         lines += ["## Problems while writing the report", ""] + [f"- {n}" for n in notes] + [""]
     path = Path(out) / "REPORT.md"
