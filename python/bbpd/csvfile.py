@@ -50,3 +50,32 @@ def _value(text):
         return float(text)
     except ValueError:
         return text
+
+
+# --------------------------------------------------------------------------- benchmark tables
+# The benchmarks' own tables (strip, strip_closure, branching): fixed columns, '#' lines first,
+# text cells as they are, True/False for flags, numbers to 6 significant digits.
+
+def write_table(path, rows, columns, comments=(), text=()):
+    """rows (dicts) in the given columns; a cell of a `text` column, or a str or bool, is kept"""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "w", newline="") as f:
+        for line in comments:
+            f.write(f"# {line}\n")
+        w = csv.writer(f)
+        w.writerow(columns)
+        for r in rows:
+            w.writerow([r[c] if c in text or isinstance(r[c], (str, bool)) else f"{r[c]:.6g}"
+                        for c in columns])
+
+
+def read_table(path, text=(), flags=()):
+    """The rows of write_table as dicts: `text` columns strings, `flags` columns bools, the
+    rest floats"""
+    lines = [ln for ln in Path(path).read_text().splitlines() if ln and not ln.startswith("#")]
+    names = lines[0].split(",")
+
+    def cell(n, v):
+        return v if n in text else (v == "True") if n in flags else float(v)
+    return [{n: cell(n, v) for n, v in zip(names, ln.split(","))} for ln in lines[1:]]

@@ -38,14 +38,13 @@ writes the README's table from the CSV (block 'branching', readme_table).
 """
 
 import argparse
-import csv
 import sys
 import time
 from pathlib import Path
 
 import numpy as np
 
-from bbpd import crack_tip, freund, readers
+from bbpd import crack_tip, csvfile, freund, readers
 from bbpd import jobs as jobmod
 from bbpd.benchmarks.mode1_propagation import machine
 from bbpd.kernels import COLORS, KERNELS
@@ -214,21 +213,13 @@ def run_case(workdir, kernel, delta, m, sigma, name=None, reuse=False, nprocs=1)
 # --------------------------------------------------------------------------- outputs
 
 def write_csv(path, rows, command):
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, "w", newline="") as f:
-        f.write(f"# made by: {command}\n# timing: LAMMPS loop time, 1 rank, {machine()}\n")
-        w = csv.writer(f)
-        w.writerow(CSV_COLUMNS)
-        for r in rows:
-            w.writerow([r[c] if c in TEXT_COLUMNS else f"{r[c]:.6g}" for c in CSV_COLUMNS])
+    csvfile.write_table(path, rows, CSV_COLUMNS,
+                        (f"made by: {command}", f"timing: LAMMPS loop time, 1 rank, {machine()}"),
+                        text=TEXT_COLUMNS)
 
 
 def read_rows(path=RESULTS):
-    lines = [l for l in Path(path).read_text().splitlines() if l and not l.startswith("#")]
-    names = lines[0].split(",")
-    return [{n: (v if n in TEXT_COLUMNS else float(v)) for n, v in zip(names, l.split(","))}
-            for l in lines[1:]]
+    return csvfile.read_table(path, text=TEXT_COLUMNS)
 
 
 def made_by(path=RESULTS):

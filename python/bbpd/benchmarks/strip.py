@@ -32,7 +32,6 @@ Command line (from the repository root):
 """
 
 import argparse
-import csv
 import re
 import sys
 import time
@@ -40,7 +39,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import freund
+from bbpd import csvfile, freund
 from bbpd import jobs as jobmod
 from bbpd.benchmarks.mode1_propagation import machine
 from bbpd.jobs import Job, Spec
@@ -149,27 +148,13 @@ def run(workdir, kernel="gaussian", Delta=2.0, dx=DX, m=M, H_over_delta=H_OVER_D
 
 
 def write_csv(path, rows, command):
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, "w", newline="") as f:
-        f.write(f"# made by: {command}\n# timing: LAMMPS loop time, 1 rank, {machine()}\n")
-        w = csv.writer(f)
-        w.writerow(CSV_COLUMNS)
-        for r in rows:
-            w.writerow([r[c] if isinstance(r[c], (str, bool)) else f"{r[c]:.6g}" for c in CSV_COLUMNS])
+    csvfile.write_table(path, rows, CSV_COLUMNS,
+                        (f"made by: {command}", f"timing: LAMMPS loop time, 1 rank, {machine()}"))
 
 
 def read_rows(path):
-    """The CSV of write_csv as dicts (kernel a string, crossed a bool, the rest floats)."""
-    lines = [ln for ln in Path(path).read_text().splitlines() if ln and not ln.startswith("#")]
-    names = lines[0].split(",")
-    out = []
-    for ln in lines[1:]:
-        row = {}
-        for n, v in zip(names, ln.split(",")):
-            row[n] = v if n in ("kernel", "state") else (v == "True") if n == "crossed" else float(v)
-        out.append(row)
-    return out
+    """The CSV of write_csv as dicts (kernel and state strings, crossed a bool, the rest floats)."""
+    return csvfile.read_table(path, text=("kernel", "state"), flags=("crossed",))
 
 
 def kinetic_law(rows, kernel, m=5.0, H_over_delta=SWEEP_H_OVER_DELTA):

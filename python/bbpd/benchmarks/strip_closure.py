@@ -23,7 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import crack_motion
+from bbpd import crack_motion, csvfile
 from bbpd.benchmarks import mode1_propagation as mp
 from bbpd.benchmarks import strip
 
@@ -90,14 +90,7 @@ def closure_rows(strip_rows, hist):
 
 
 def write_csv(path, rows, command):
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, "w", newline="") as f:
-        f.write(f"# made by: {command}\n")
-        w = csv.writer(f)
-        w.writerow(CSV_COLUMNS)
-        for r in rows:
-            w.writerow([r[c] if isinstance(r[c], str) else f"{r[c]:.6g}" for c in CSV_COLUMNS])
+    csvfile.write_table(path, rows, CSV_COLUMNS, (f"made by: {command}",))
 
 
 def main(argv=None):
@@ -135,10 +128,7 @@ CLOSURE_GOAL_PCT = 5.0    # L2 of l(t) at the finest grid (issue's criterion)
 
 
 def read_rows(path):
-    lines = [ln for ln in Path(path).read_text().splitlines() if ln and not ln.startswith("#")]
-    names = lines[0].split(",")
-    return [{n: (v if n == "kernel" else float(v)) for n, v in zip(names, ln.split(","))}
-            for ln in lines[1:]]
+    return csvfile.read_table(path, text=("kernel",))
 
 
 def verdict(rows):
