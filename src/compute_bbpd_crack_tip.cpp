@@ -191,16 +191,22 @@ void ComputeBBPDCrackTip::compute_vector()
     searched = all;
     have_found = true;
   }
+  record_tip();
+}
+
+/* the speed's history and the first six values from the tip found; returns the time */
+double ComputeBBPDCrackTip::record_tip()
+{
   const BBPD::CrackTip::Result &r = found;
   const double time = update->atime + (update->ntimestep - update->atimestep) * update->dt;
   history.record(time, r.extension);
-
   values[0] = r.x;
   values[1] = r.y;
   values[2] = r.extension;
   values[3] = history.speed();
   values[4] = r.direction;
   values[5] = static_cast<double>(r.nodes);
+  return time;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -226,17 +232,7 @@ void ComputeBBPDCrackTip::compute_branches()
     searched = all;
     have_found = true;
   }
-  const BBPD::CrackTip::Result &r = found;
-  const double time = update->atime + (update->ntimestep - update->atimestep) * update->dt;
-  history.record(time, r.extension);
-  tracker.record(time, graph, tips);
-
-  values[0] = r.x;
-  values[1] = r.y;
-  values[2] = r.extension;
-  values[3] = history.speed();
-  values[4] = r.direction;
-  values[5] = static_cast<double>(r.nodes);
+  tracker.record(record_tip(), graph, tips);
   values[6] = static_cast<double>(tips.size());
   values[7] = static_cast<double>(tracker.splits().size());
 

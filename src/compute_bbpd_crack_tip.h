@@ -64,6 +64,7 @@ class ComputeBBPDCrackTip : public Compute {
   std::vector<double *> rows;
   bigint invoked_branches;
   void compute_branches();
+  double record_tip();
 };
 
 }    // namespace LAMMPS_NS
