@@ -13,6 +13,9 @@ opts=(-D PKG_PERI=on -D PKG_PLUGIN=on -D PKG_OPENMP=on -D BUILD_MPI=on -D BUILD_
       -D BUILD_SHARED_LIBS=on -D CMAKE_BUILD_TYPE=Release -D PKG_PYTHON=off
       -D BUILD_TOOLS=off -D WITH_JPEG=on -D WITH_PNG=on -D WITH_GZIP=on -D WITH_FFMPEG=off
       -D LAMMPS_MACHINE= -D CMAKE_CXX_COMPILER=g++)
+# dump image (the examples' pictures of the damage) left the core for the GRAPHICS package
+# after 4 Feb 2025; older versions have it built in.
+[ "$key" = 20250204 ] || opts+=(-D PKG_GRAPHICS=on)
 tag=$(printf '%s\n' "$key" "${opts[@]}" | sha256sum | cut -c1-12)
 prefix="$BBPD_CACHE/lammps/install-$key-$tag"
 if [ -f "$prefix/.complete" ]; then echo "$prefix"; exit 0; fi
