@@ -87,6 +87,52 @@ def partial_volume(xi, delta, dx):
     return np.where(xi <= delta - 0.5 * dx, 1.0, cv)
 
 
+def grid_family(m, dim=2):
+    """The bond vectors of one atom's family on a square (dim 2) or cubic (dim 3) grid of unit
+    spacing with horizon m (|xi| < m + 1/2, as the pair styles build it), N x 3."""
+    n = int(math.ceil(m + 0.5))
+    axes = [np.arange(-n, n + 1)] * dim + [np.zeros(1)] * (3 - dim)
+    g = np.stack([a.ravel() for a in np.meshgrid(*axes, indexing="ij")], axis=1).astype(float)
+    r = np.linalg.norm(g, axis=1)
+    return g[(r > 0.0) & (r < m + 0.5)]
+
+
+def dynamic_matrix(name, model, E, m, dx, k):
+    """rho omega^2 of the plane waves u = U exp(i k.x) on the unbounded grid: the eigenvalues of
+    D(k) = sum_j c(xi) C_v V_j / |xi| (1 - cos k.xi) e e^T (e = xi/|xi|), the linearised force
+    density of the bonds (eqs. 20-21) summed over the family exactly as the pair style builds
+    it (3 x 3; k a 3-vector in 1/m). In 2D c0 V_j does not depend on the thickness."""
+    dim = DIMENSION[model]
+    delta = m * dx
+    xi_vec = grid_family(m, dim) * dx
+    xi = np.linalg.norm(xi_vec, axis=1)
+    e = xi_vec / xi[:, None]
+    c = micromodulus(name, model, E, delta) * kernel(name)(xi / delta)
+    weight = c * partial_volume(xi, delta, dx) * dx**dim / xi
+    # 1 - cos x written as 2 sin^2(x/2): no cancellation at long wavelengths
+    phase = 2.0 * np.sin(0.5 * (xi_vec @ np.asarray(k, dtype=float))) ** 2
+    return np.einsum("b,bp,bq->pq", weight * phase, e, e)
+
+
+# a wavelength this many horizons long is in the long-wave limit to round-off (k delta ~ 1e-3)
+LONG_WAVE_HORIZONS = 6.0e3
+
+
+def grid_wave_speeds(name, model, E, rho, m, dx, direction=(1.0, 0.0, 0.0),
+                     wavelength=None):
+    """Phase speeds (c_d, c_s) of the longitudinal and in-plane transverse waves travelling
+    along direction on the grid (wavelength in m; default: the long-wave limit). They differ
+    from the continuum's where the lattice sum differs from the horizon integral (the
+    calibration tests' table) and by the grid's anisotropy."""
+    n = np.asarray(direction, dtype=float)
+    n = n / np.linalg.norm(n)
+    lam = LONG_WAVE_HORIZONS * m * dx if wavelength is None else wavelength
+    kk = 2.0 * math.pi / lam
+    d = dynamic_matrix(name, model, E, m, dx, kk * n)
+    t = np.array([-n[1], n[0], 0.0])    # in-plane transverse polarisation
+    return (math.sqrt(float(n @ d @ n) / rho) / kk, math.sqrt(float(t @ d @ t) / rho) / kk)
+
+
 def classical_energy_density(model, E, strain):
     """Strain-energy density of linear elasticity with the model's Poisson ratio.
 

@@ -39,7 +39,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import csvfile, freund
+from bbpd import csvfile, freund, reference
 from bbpd import jobs as jobmod
 from bbpd.benchmarks.mode1_propagation import machine
 from bbpd.jobs import Job, Spec
@@ -73,6 +73,14 @@ def wave_speeds():
     c_d = freund.dilatational_wave_speed(E, NU, RHO, freund.PLANE_STRESS)
     c_s = freund.shear_wave_speed(E, NU, RHO)
     return c_d, c_s, freund.rayleigh_wave_speed(c_s, c_d)
+
+
+def grid_rayleigh_ratio(kernel, m):
+    """c_R of the model's own dispersion over c_R: the Rayleigh speed of the long-wave speeds
+    that the grid's lattice sum gives along the crack (bbpd.reference.grid_wave_speeds); it
+    depends on the kernel and m only (the sum scales with dx)."""
+    c_d, c_s = reference.grid_wave_speeds(kernel, "plane/stress", E, RHO, m, DX)
+    return freund.rayleigh_wave_speed(c_s, c_d) / wave_speeds()[2]
 
 
 def geometry(dx=DX, m=M, H_over_delta=H_OVER_DELTA):
@@ -303,11 +311,17 @@ def summary_text(rows):
                            + ("within" if d <= CONVERGED_SPEED else "more than")
                            + f" {CONVERGED_SPEED:g} c_R)")
             parts.append(f"v_ss/c_R at Delta = 2, m = {M:g}: {conv}{verdict}")
-        ms = sorted({r["m"] for r in rows if r["kernel"] == k and r["H_over_delta"] == SWEEP_H_OVER_DELTA
-                     and r["Delta"] == 2.0})
-        if len(ms) > 1:
-            parts.append(f"against m (Delta = 2, H/delta = {SWEEP_H_OVER_DELTA:g}): " + ", ".join(
-                f"{speed_at(rows, k, m, SWEEP_H_OVER_DELTA, 2.0):.3f} at m = {m:g}" for m in ms))
+        for h in sorted({r["H_over_delta"] for r in rows if r["kernel"] == k}):
+            ms = sorted({r["m"] for r in rows if r["kernel"] == k and r["H_over_delta"] == h
+                         and r["Delta"] == 2.0})
+            if len(ms) > 1:
+                sp = [(m, speed_at(rows, k, m, h, 2.0)) for m in ms]
+                parts.append(f"against m (Delta = 2, H/delta = {h:g}): " + ", ".join(
+                    f"{s:.3f} at m = {m:g}" for m, s in sp) + "; over the grid's own c_R: " +
+                    ", ".join(f"{s / grid_rayleigh_ratio(k, m):.3f}" for m, s in sp))
+        ms_all = sorted({r["m"] for r in rows if r["kernel"] == k})
+        parts.append("the grid's own c_R over c_R: " + ", ".join(
+            f"{grid_rayleigh_ratio(k, m):.3f} at m = {m:g}" for m in ms_all))
         for state, what in (("branched", "branched or turned"), ("unsteady", "unsteady (Gamma > U')")):
             ds = sorted({(r["m"], r["H_over_delta"], r["Delta"]) for r in rows
                          if r["kernel"] == k and r["state"] == state})
