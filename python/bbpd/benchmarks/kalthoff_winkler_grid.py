@@ -306,6 +306,71 @@ def _span(values):
     return f"{min(values):.1f}–{max(values):.1f}°"
 
 
+# the Kalthoff-Winkler tips' mode mix, taken at two fair instants (kink_kalthoff_winkler.py):
+# the first broken bond and the damage band leaving the tip (keys of kalthoff_winkler_mix.json)
+MIXES = (("the first broken bond", "", "t_mix_us", "psi"),
+         ("the damage band", "_band", "t_band_mix_us", "psi_band"))
+CRITERIA = (("hoop strain", "hoop_strain"), ("hoop stress", "hoop_stress"),
+            ("maximum energy release rate", "energy"))
+MEASURED = ("initial", "fit")    # the angles the verdict is read on (study.ANGLE_DEFS)
+AGREE_SE = 2.0    # a criterion agrees with a mean angle within this many standard errors
+
+
+def _nearest(angle, predicted):
+    return min(predicted, key=lambda c: abs(angle - predicted[c]))
+
+
+def mix_verdict(mix, angles, dx_mm):
+    """What the kink criteria say about the measured angles (dict definition -> angles of the
+    setups), at each mix of MIXES; a verdict is stated only where every mix and definition
+    supports it, else it is said to depend on the mix."""
+    if not angles or any(len(v) < 2 for v in angles.values()):
+        raise ValueError("mix_verdict needs at least two setups' angles for every definition "
+                         f"(got {({d: len(v) for d, v in angles.items()})})")
+    pred = {m: {c: -mix[key + suffix] for c, key in CRITERIA} for m, suffix, _, _ in MIXES}
+    stats = {d: (float(np.mean(v)), float(np.std(v, ddof=1) / np.sqrt(len(v)))) for d, v in angles.items()}
+    text = "The criteria's angles at the tips' mix: " + "; ".join(
+        f"at {m} (psi = {mix[psi]:.1f}°, {mix[t]:.1f} µs) "
+        + ", ".join(f"{c} {pred[m][c]:.1f}°" for c, _ in CRITERIA)
+        for m, _, t, psi in MIXES) + ". "
+    text += (f"The {dx_mm:g} mm setups' mean angles (± one standard error): "
+             + ", ".join(f"{d} {mu:.1f} ± {se:.1f}°" for d, (mu, se) in stats.items()) + ". ")
+    nearest = {(m, d): _nearest(mu, pred[m]) for m in pred for d, (mu, _) in stats.items()}
+    agree = {(m, d): abs(mu - pred[m][nearest[m, d]]) <= AGREE_SE * se
+             for m in pred for d, (mu, se) in stats.items()}
+    gaps = [stats[d][0] - pred[m][nearest[m, d]] for m, d in nearest]
+    names = set(nearest.values())
+    if len(names) == 1:
+        c = names.pop()
+        text += (f"At both mixes and by both definitions they lie nearest {c} "
+                 f"({min(gaps):+.1f} to {max(gaps):+.1f}°)")
+        held = [m for m in pred if all(agree[m, d] for d in stats)]
+        if len(held) == len(pred):
+            text += f", within {AGREE_SE:g} standard errors at both: the crack follows {c}."
+        else:
+            if held:
+                text += (f", but agree with it within {AGREE_SE:g} standard errors only at "
+                         f"{held[0]}'s mix: that the crack follows {c} depends on which "
+                         "instant's mix is taken, and is not settled.")
+            else:
+                text += (f", but below it by more than {AGREE_SE:g} standard errors at both "
+                         f"mixes: nearer {c} than the other criteria, not on it; that the "
+                         f"crack follows {c} is not settled.")
+    else:
+        text += ("The nearest criterion depends on the mix or the definition ("
+                 + "; ".join(f"{d} at {m}: {nearest[m, d]}" for m, d in nearest)
+                 + "): no criterion is singled out.")
+    target = study.ANGLE_TARGET_DEG
+    exp = {m: _nearest(target, pred[m]) for m in pred}
+    if len(set(exp.values())) == 1:
+        text += f" The experiment's {target:.0f}° lies nearest {exp[MIXES[0][0]]} at both mixes."
+    else:
+        text += (f" The experiment's {target:.0f}° lies nearest "
+                 + " and ".join(f"{exp[m]} at {m}'s mix" for m in pred)
+                 + ": whether it is a hoop-strain or a hoop-stress angle is not settled by the mix.")
+    return text
+
+
 def summary(proj_rows, grid_rows, kink_rows, mix):
     """The summary of the Kalthoff-Winkler setups against the experiment's 70 deg and what the
     kink test says about it, computed from projectile.csv, grid_pull.csv, the kink test's
@@ -322,44 +387,28 @@ def summary(proj_rows, grid_rows, kink_rows, mix):
         if at_fine else "none") + ".")
     # the finest 2D runs with the paper's G_c: every loading and grid
     ang = {}
-    for d in ("fit", "chord"):
+    for d in MEASURED + ("chord",):
         v = [projectile._num(r[f"{d}_deg"]) for r in proj_rows if r["setup"] == "2d"
              and float(r["dx_mm"]) == fine and float(r["Gc"]) == 6.9e4]
         v += [r[f"{d}_{s}_deg"] for r in grid_rows for s in SIDES if float(r["dx_mm"]) == fine]
         ang[d] = [a for a in v if a is not None]
-    mean_fit = float(np.mean(ang["fit"]))
     mode2 = next(r for r in kink_rows if r["kernel"] == "gaussian" and r["psi"] == 90.0
                  and r["alpha"] == 0.0 and r["dx"] == min(k["dx"] for k in kink_rows))
-    strain, stress = -mix["hoop_strain_band"], -mix["hoop_stress_band"]
-    nearer = "hoop strain" if abs(mean_fit - strain) < abs(mean_fit - stress) else "hoop stress"
     text += (f" With the paper's G_c the {fine:g} mm cracks run at {_span(ang['fit'])} by the fit "
-             f"angle (their direction 10–50 mm from the tip; mean {mean_fit:.1f}°) and "
-             f"{_span(ang['chord'])} by the chord, over both loadings and the square, perturbed "
-             "and rotated grids. The kink test puts BBPD's critical stretch on the maximum "
-             f"hoop-strain criterion: on its fine grid pure Mode II kinks at "
-             f"{mode2['angle_2d']:.1f} / {mode2['angle_4d']:.1f}° (2 / 4 horizons) against "
-             f"{mode2['hoop_strain']:.1f}° (hoop strain) and {mode2['hoop_stress']:.1f}° (hoop "
-             f"stress). At the mix of the Kalthoff–Winkler tips when the damage band leaves "
-             f"(psi = {mix['psi_band']:.1f}°) hoop strain predicts {strain:.1f}° and hoop "
-             f"stress {stress:.1f}°: the mean fit angle lies {mean_fit - strain:+.1f}° from "
-             f"the first and {mean_fit - stress:+.1f}° from the second, nearer {nearer}.")
-    if nearer == "hoop strain":
-        target = study.ANGLE_TARGET_DEG
-        text += (" So the crack's direction follows the hoop-strain angle of its mix, as a "
-                 "critical stretch does in the kink test, "
-                 + ("short of" if mean_fit < target else "beyond")
-                 + f" the experiment's {target:.0f}°"
-                 + (", which lies nearer the hoop-stress angle"
-                    if abs(target - stress) < abs(target - strain) else ""))
-        chord_pull = [q["pull"] for k, q in pull(grid_rows).items()
-                      if k[2] == fine and k[3] == "chord"]
-        if at_fine and fine_defs == ["chord"] and chord_pull:
-            text += (f"; the {fine:g} mm setups at 70 ± 2° reach it by the chord alone (the "
-                     "line from the notch tip to the crack tip)"
-                     + (" and only off the square grid, which flattens the chord there by "
-                        f"{_span([-c for c in chord_pull])[:-1]}°"
-                        if not any(h["square"] for h in at_fine) else ""))
-        text += "."
+             f"angle (their direction 10–50 mm from the tip) and {_span(ang['chord'])} by the "
+             "chord, over both loadings and the square, perturbed and rotated grids. The kink "
+             "test puts BBPD's critical stretch on the maximum hoop-strain criterion: on its fine "
+             f"grid pure Mode II kinks at {mode2['angle_2d']:.1f} / {mode2['angle_4d']:.1f}° (2 / "
+             f"4 horizons) against {mode2['hoop_strain']:.1f}° (hoop strain) and "
+             f"{mode2['hoop_stress']:.1f}° (hoop stress).")
+    text += " " + mix_verdict(mix, {d: ang[d] for d in MEASURED}, fine)
+    chord_pull = [q["pull"] for k, q in pull(grid_rows).items() if k[2] == fine and k[3] == "chord"]
+    if at_fine and fine_defs == ["chord"] and chord_pull:
+        text += (f" The {fine:g} mm setups at 70 ± 2° reach it by the chord alone (the line from "
+                 "the notch tip to the crack tip)"
+                 + (" and only off the square grid, which flattens the chord there by "
+                    f"{_span([-c for c in chord_pull])[:-1]}°"
+                    if not any(h["square"] for h in at_fine) else "") + ".")
     return text
 
 
