@@ -230,7 +230,7 @@ PYTHON_LAYERS = [
      "bbpd.benchmarks.stability", "bbpd.benchmarks.mode1_propagation",
      "bbpd.benchmarks.kalthoff_winkler_projectile", "bbpd.benchmarks.kink",
      "bbpd.benchmarks.kink_kalthoff_winkler", "bbpd.benchmarks.kalthoff_winkler_grid",
-     "bbpd.benchmarks.kalthoff_winkler_deck",
+     "bbpd.benchmarks.kalthoff_winkler_deck", "bbpd.benchmarks.kalthoff_winkler_3d",
      "bbpd.benchmarks.strip", "bbpd.benchmarks.strip_closure", "bbpd.benchmarks.branching"},
     {"bbpd.report", "bbpd.report.runs", "bbpd.report.tables", "bbpd.report.figures",
      "bbpd.report.prose", "bbpd.report.sections", "bbpd.report.results"},

@@ -1,0 +1,210 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Kalthoff-Winkler in 3D, the 9 mm plate resolved through its thickness.
+
+examples/kalthoff-winkler/in.kalthoff_winkler_3d struck by the projectile (Gaussian kernel, the
+paper's G_c), with m = delta/dx = 3 so that the horizon fits at least four times into the
+thickness (delta <= 2.25 mm) at a cost this machine can run: delta = 2.25 mm (dx = 0.75 mm,
+12 layers, 4 horizons) and, as the second resolution, delta = 3 mm (dx = 1 mm, 9 layers, 3
+horizons), on 2 MPI ranks, to 100 us (the crack must cross the plate), the tip and momentum
+monitors every MONITOR steps. Beside each, the 2D
+plate with the same dx, m, loading and kernel (in.kalthoff_winkler).
+
+Measured per run: the angles of the loading study (initial, fit, chord: study.angles_of; fit and
+chord at 70 us) on the mid-plane (the middle layer's damage.dump) and on both faces
+(damage_faces.dump), the first broken bond and the damage band's departure (mid-plane),
+atoms, bonds, steps, loop time and memory (LAMMPS's per-rank maximum times the ranks).
+
+Command line (from the repository root):
+  tools/python -m bbpd.benchmarks.kalthoff_winkler_3d --work /tmp/kw3d \
+      --csv examples/kalthoff-winkler/results/kw3d.csv
+"""
+
+import argparse
+import re
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from bbpd import csvfile, readers
+from bbpd.benchmarks import kalthoff_winkler as kw
+from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
+from bbpd.benchmarks import kalthoff_winkler_study as study
+from bbpd.benchmarks.mode1_propagation import machine
+from bbpd.jobs import ROOT
+from bbpd.runner import run_lammps
+
+CSV = ROOT / "examples" / "kalthoff-winkler" / "results" / "kw3d.csv"
+PLATE_THICKNESS = 9.0e-3          # m, the experiment's plate
+MIN_HORIZONS_THROUGH = 4          # what "resolved through the thickness" asks
+M = 3.0
+RESOLUTIONS = (1.0e-3, 0.75e-3)   # dx: delta = 3 and 2.25 mm
+KERNEL = "gaussian"
+TEND = 100.0e-6                   # the loading study's: the 2D cracks reach the edge at ~80 us
+MONITOR = 5                       # steps between monitor lines: first bond to 5 dt = 0.3-0.4 us
+NPROCS = 2
+TIMEOUT_S = 4 * 3600              # a 3D run on a shared 2-core machine
+COLUMNS = ("setup", "kernel", "dx_mm", "m", "delta_mm", "horizons_through", "atoms", "bonds",
+           "steps", "first_bond_us", "band_us", "initial_deg", "fit_deg", "chord_deg",
+           "fit_face_lo_deg", "fit_face_hi_deg", "chord_face_deg", "length_end_mm",
+           "loop_s", "memory_MB", "nprocs")
+
+
+def case_vars(dx, m=M, kernel=KERNEL, setup="3d"):
+    out = {"kernel": kernel, "dx": repr(float(dx)), "m": repr(float(m)), "loading": "projectile",
+           "tend": repr(TEND)}
+    if setup == "3d":
+        out["monitor"] = str(MONITOR)
+    return out
+
+
+def log_figures(text):
+    """atoms, bonds, steps, loop time and memory (all ranks, MB) from a LAMMPS log"""
+    loop = re.search(r"Loop time of (\S+) on (\d+) procs for (\d+) steps with (\d+) atoms", text)
+    bonds = re.findall(r"total bonds (\d+)", text)
+    mem = re.findall(r"Per MPI rank memory allocation \(min/avg/max\) = \S+ \| \S+ \| (\S+) Mbytes",
+                     text)
+    out = {"atoms": None, "bonds": None, "steps": None, "loop_s": None, "memory_MB": None}
+    if loop:
+        out.update(loop_s=float(loop[1]), steps=int(loop[3]), atoms=int(loop[4]))
+        if mem:
+            out["memory_MB"] = max(float(v) for v in mem) * int(loop[2])
+    if bonds:
+        out["bonds"] = int(bonds[0])
+    return out
+
+
+def face_angles(workdir, g, t_us):
+    """study.angles_of on each face (damage_faces.dump) at the last snapshot at or before t_us"""
+    snaps = readers.dump_snapshots(Path(workdir) / "damage_faces.dump")
+    times = [step * g["dt"] * 1e6 for step, _ in snaps]
+    k = max([i for i, t in enumerate(times) if t <= t_us + 1e-6], default=len(snaps) - 1)
+    s = snaps[k][1]
+    z = s["f_ref[3]"]
+    out = {}
+    for name, layer in (("lo", z.min()), ("hi", z.max())):
+        sel = np.abs(z - layer) < 0.25 * g["dx"]
+        out[name] = study.angles_of(s["f_ref[1]"][sel], s["f_ref[2]"][sel], s["c_dmg"][sel], g)
+    return out
+
+
+def measure(workdir, setup, dx, m):
+    workdir = Path(workdir)
+    r = projectile.analyse(workdir)
+    log = (workdir / "log.lammps").read_text()
+    delta = m * dx
+    row = {"setup": setup, "kernel": r["kernel"], "dx_mm": dx * 1e3, "m": m,
+           "delta_mm": delta * 1e3,
+           "horizons_through": PLATE_THICKNESS / delta if setup == "3d" else None,
+           "first_bond_us": r["t_init_us"], "band_us": r["t_band_us"],
+           "initial_deg": r.get("initial_deg"), "fit_deg": r.get("fit_t70_deg"),
+           "chord_deg": r.get("chord_t70_deg"), "length_end_mm": r["length_end_mm"],
+           "fit_face_lo_deg": None, "fit_face_hi_deg": None, "chord_face_deg": None,
+           "nprocs": NPROCS if setup == "3d" else 1}
+    row.update(log_figures(log))
+    if setup == "3d":
+        g = {k: r[k] for k in ("dx", "delta", "a", "ylo", "yhi", "Lx", "Ly", "dt")}
+        faces = face_angles(workdir, g, study.T_EVAL_US)
+        row["fit_face_lo_deg"] = study.mean_or_none([faces["lo"][sd]["fit"] for sd in ("lo", "hi")])
+        row["fit_face_hi_deg"] = study.mean_or_none([faces["hi"][sd]["fit"] for sd in ("lo", "hi")])
+        row["chord_face_deg"] = study.mean_or_none([faces[f][sd]["chord"] for f in ("lo", "hi")
+                                                    for sd in ("lo", "hi")])
+    return {c: row[c] for c in COLUMNS}
+
+
+def run_case(work, setup, dx, m=M, reuse=False):
+    wd = Path(work) / f"{setup}-dx{dx * 1e3:g}mm-m{m:g}"
+    if not (reuse and (wd / "log.lammps").is_file()):
+        script = projectile.EXAMPLE_3D if setup == "3d" else kw.EXAMPLE
+        run_lammps(str(script), wd, nprocs=NPROCS if setup == "3d" else 1,
+                   vars=case_vars(dx, m, setup=setup), timeout=TIMEOUT_S)
+    return measure(wd, setup, dx, m)
+
+
+def _f(v, spec):
+    return "-" if v is None else format(v, spec)
+
+
+def table(rows, command=None):
+    head = ("| setup | dx (mm) | m | delta (mm) | horizons through 9 mm | atoms | bonds | steps | "
+            "first bond (us) | damage band (us) | initial (deg) | fit, mid-plane (deg) | "
+            "fit, faces (deg) | chord, mid-plane / faces (deg) | crack length (mm) | loop (s) | "
+            "memory (MB) | ranks |")
+    lines = [head, "|" + "---|" * 18]
+    for r in sorted(rows, key=lambda r: (-r["dx_mm"], r["setup"])):
+        faces = ("-" if r["fit_face_lo_deg"] is None else
+                 f"{r['fit_face_lo_deg']:.1f} / {r['fit_face_hi_deg']:.1f}")
+        lines.append("| " + " | ".join([
+            r["setup"].upper(), f"{r['dx_mm']:g}", f"{r['m']:g}", f"{r['delta_mm']:g}",
+            _f(r["horizons_through"], ".0f"), _f(r["atoms"], ".0f"), _f(r["bonds"], ".3g"),
+            _f(r["steps"], ".0f"), _f(r["first_bond_us"], ".1f"), _f(r["band_us"], ".1f"),
+            _f(r["initial_deg"], ".1f"), _f(r["fit_deg"], ".1f"), faces,
+            f"{_f(r['chord_deg'], '.1f')} / {_f(r['chord_face_deg'], '.1f')}",
+            _f(r["length_end_mm"], ".0f"), _f(r["loop_s"], ".0f"), _f(r["memory_MB"], ".0f"),
+            f"{r['nprocs']:g}"]) + " |")
+    out = "\n".join(lines)
+    return out if command is None else f"Made by `{command}`.\n\n" + out
+
+
+def summary(rows):
+    """Sentences computed from the rows: 3D against its 2D twin per resolution, mid-plane
+    against faces, and the change with the resolution."""
+    by = {(r["setup"], r["dx_mm"]): r for r in rows}
+    out = []
+    for dx in sorted({r["dx_mm"] for r in rows}, reverse=True):
+        d3, d2 = by.get(("3d", dx)), by.get(("2d", dx))
+        if not d3:
+            continue
+        s = (f"At delta = {d3['delta_mm']:g} mm ({d3['horizons_through']:.0f} horizons through the "
+             f"plate, {d3['atoms']:.0f} atoms, {d3['loop_s']:.0f} s on {d3['nprocs']:g} ranks, "
+             f"{d3['memory_MB']:.0f} MB) the 3D crack's fit angle is {_f(d3['fit_deg'], '.1f')}° "
+             f"on the mid-plane and {_f(d3['fit_face_lo_deg'], '.1f')} / "
+             f"{_f(d3['fit_face_hi_deg'], '.1f')}° on the faces, first bond at "
+             f"{d3['first_bond_us']:.1f} µs")
+        if d2 and d2["fit_deg"] is not None and d3["fit_deg"] is not None:
+            s += (f"; the 2D plate of the same grid: {d2['fit_deg']:.1f}° "
+                  f"({d3['fit_deg'] - d2['fit_deg']:+.1f}° in 3D), first bond at "
+                  f"{d2['first_bond_us']:.1f} µs")
+        out.append(s)
+    res = sorted((r for r in rows if r["setup"] == "3d" and r["fit_deg"] is not None),
+                 key=lambda r: -r["dx_mm"])
+    if len(res) >= 2:
+        out.append(f"refining delta from {res[0]['delta_mm']:g} to {res[-1]['delta_mm']:g} mm "
+                   f"moves the mid-plane fit angle by {res[-1]['fit_deg'] - res[0]['fit_deg']:+.1f}°")
+    return ". ".join(s[0].upper() + s[1:] for s in out) + "." if out else "No 3D run."
+
+
+def read_rows(path=CSV):
+    return csvfile.read_csv(path)[1]
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--dx", nargs="+", type=float, default=list(RESOLUTIONS))
+    ap.add_argument("--setups", nargs="+", default=["2d", "3d"], choices=["2d", "3d"])
+    ap.add_argument("--work", default="/tmp/kw3d")
+    ap.add_argument("--reuse", action="store_true")
+    ap.add_argument("--csv")
+    a = ap.parse_args(argv)
+    rows = []
+    for dx in a.dx:
+        if PLATE_THICKNESS / (M * dx) < MIN_HORIZONS_THROUGH - 1e-9:
+            print(f"dx {dx:g}: delta {M * dx:g} m gives fewer than {MIN_HORIZONS_THROUGH} horizons "
+                  "through the plate", flush=True)
+        for setup in a.setups:
+            r = run_case(a.work, setup, dx, reuse=a.reuse)
+            print(f"{setup} dx {dx * 1e3:g} mm: fit {_f(r['fit_deg'], '.1f')} faces "
+                  f"{_f(r['fit_face_lo_deg'], '.1f')}/{_f(r['fit_face_hi_deg'], '.1f')} first bond "
+                  f"{_f(r['first_bond_us'], '.1f')} us loop {_f(r['loop_s'], '.0f')} s memory "
+                  f"{_f(r['memory_MB'], '.0f')} MB", flush=True)
+            rows.append(r)
+    if a.csv:
+        cmd = "tools/python -m bbpd.benchmarks.kalthoff_winkler_3d " + " ".join(argv or sys.argv[1:])
+        csvfile.write_csv(a.csv, rows, comments=[f"made by: {cmd}",
+                                                 f"timing: LAMMPS loop time, {machine()}, shared"])
+    print(summary(rows))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
