@@ -229,7 +229,7 @@ PYTHON_LAYERS = [
      "bbpd.benchmarks.kalthoff_winkler_study", "bbpd.benchmarks.mode1", "bbpd.benchmarks.mode2",
      "bbpd.benchmarks.stability", "bbpd.benchmarks.mode1_propagation",
      "bbpd.benchmarks.kalthoff_winkler_projectile", "bbpd.benchmarks.kink",
-     "bbpd.benchmarks.kink_kalthoff_winkler", "bbpd.benchmarks.kalthoff_winkler_grid",
+     "bbpd.benchmarks.kink_kalthoff_winkler", "bbpd.benchmarks.kink_convergence", "bbpd.benchmarks.kalthoff_winkler_grid",
      "bbpd.benchmarks.kalthoff_winkler_deck", "bbpd.benchmarks.kalthoff_winkler_3d",
      "bbpd.benchmarks.strip", "bbpd.benchmarks.strip_closure", "bbpd.benchmarks.branching"},
     {"bbpd.report", "bbpd.report.runs", "bbpd.report.tables", "bbpd.report.figures",

@@ -1,0 +1,151 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The kink test's convergence: the pure Mode II kink angle against m and R/delta.
+
+A pure-K problem has no length scale, so the angle at which the crack of
+examples/kink-mixed-mode/in.kink leaves the tip is a property of the model at a given m =
+delta/dx and kernel; the disk's size R/delta only has to be large enough for the Williams
+field to hold over the tip's neighbourhood. This sweep runs the Gaussian kernel under pure
+Mode II (psi = 90 deg, crack along the rows) at delta = 5 mm for
+
+  m = 5, 10, 15, 20 at R/delta = 10 (R = 50 mm, the kink test's disk), and
+  m = 5, 10 at R/delta = 20 (R = 100 mm),
+
+measured as bbpd.benchmarks.kink measures (angle at 2 and 4 horizons from the tip). The time
+step is DT_PER_M * m * dx / c_d, the kink test's rule (0.8 at m = 5, 1.6 at m = 10): the
+stable step of a bond family scales with the horizon, not with dx.
+
+Command line (from the repository root):
+  tools/python -m bbpd.benchmarks.kink_convergence --work /tmp/kink-conv --nprocs 2 \
+      --csv examples/kink-mixed-mode/results/kink_convergence.csv
+"""
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+from bbpd import csvfile
+from bbpd.benchmarks import kink as kinkbench
+from bbpd.benchmarks.mode1_propagation import machine
+from bbpd.runner import run_lammps
+
+CSV = kinkbench.FOLDER / "results" / "kink_convergence.csv"
+KERNEL, PSI, ALPHA = "gaussian", 90.0, 0.0
+DELTA = 5.0e-3
+DT_PER_M = 0.16                     # dtfactor / m of the kink test (kink.DTFACTOR)
+CASES = ((5, 10), (10, 10), (15, 10), (20, 10), (5, 20), (10, 20))    # (m, R/delta)
+SETTLED_DEG = 1.0                   # the last refinement in m moves the angle by less
+COLUMNS = ("kernel", "psi", "alpha", "m", "R_over_delta", "dx_mm", "atoms", "steps",
+           "K_init_over_Kc", "extension_over_delta", "angle_2d", "angle_4d", "hoop_stress",
+           "hoop_strain", "energy", "loop_s", "nprocs")
+
+
+def case_vars(m, r_over_delta):
+    dx = DELTA / m
+    return {"kernel": KERNEL, "psi": repr(PSI), "alpha": repr(ALPHA), "dx": repr(dx),
+            "m": repr(float(m)), "R": repr(r_over_delta * DELTA),
+            "dtfactor": repr(DT_PER_M * m)}
+
+
+def run_case(work, m, r_over_delta, nprocs=1, reuse=False):
+    wd = Path(work) / f"m{m:g}-R{r_over_delta:g}"
+    if not (reuse and (wd / "final.dump").is_file()):
+        run_lammps(str(kinkbench.EXAMPLE), wd, nprocs=nprocs, vars=case_vars(m, r_over_delta),
+                   timeout=4 * 3600)
+    r = kinkbench.analyse(wd)
+    row = {"kernel": r["kernel"], "psi": r["psi"], "alpha": r["alpha"], "m": float(m),
+           "R_over_delta": float(r_over_delta), "dx_mm": r["dx"] * 1e3, "atoms": r["atoms"],
+           "steps": r["steps"], "K_init_over_Kc": r["K_init_over_Kc"],
+           "extension_over_delta": r["extension_over_delta"], "angle_2d": r["angle_2d"],
+           "angle_4d": r["angle_4d"], "hoop_stress": r["hoop_stress"],
+           "hoop_strain": r["hoop_strain"], "energy": r["energy"], "loop_s": r["loop_s"],
+           "nprocs": r["nprocs"]}
+    return row
+
+
+def _f(v, spec=".1f"):
+    return "-" if v is None else format(v, spec)
+
+
+def table(rows, command=None):
+    head = ("| m | R/delta | dx (mm) | atoms | steps | K at 1st break / K_c | extension (delta) | "
+            "angle at 2 delta | angle at 4 delta | hoop stress | hoop strain | max G | loop (s) | "
+            "ranks |")
+    lines = [head, "|" + "---|" * 14]
+    for r in sorted(rows, key=lambda r: (r["R_over_delta"], r["m"])):
+        lines.append("| " + " | ".join([
+            f"{r['m']:g}", f"{r['R_over_delta']:g}", f"{r['dx_mm']:.3g}", _f(r["atoms"], ".0f"),
+            _f(r["steps"], ".0f"), _f(r["K_init_over_Kc"], ".3f"),
+            _f(r["extension_over_delta"], ".1f"), _f(r["angle_2d"]), _f(r["angle_4d"]),
+            _f(r["hoop_stress"]), _f(r["hoop_strain"]), _f(r["energy"]), _f(r["loop_s"], ".0f"),
+            _f(r["nprocs"], ".0f")]) + " |")
+    out = "\n".join(lines)
+    return out if command is None else f"Made by `{command}`.\n\n" + out
+
+
+NAMES = {"hoop_stress": "max. hoop stress", "hoop_strain": "max. hoop strain",
+         "energy": "max. energy release rate"}
+
+
+def verdict(rows):
+    """The sentence on the sequence in m at the kink test's R/delta, and on R/delta: which
+    criterion the finest m lies nearest, and whether the last refinement settled it."""
+    out = []
+    for dist in ("2d", "4d"):
+        seq = sorted((r for r in rows if r["R_over_delta"] == 10.0 and r[f"angle_{dist}"]
+                      is not None), key=lambda r: r["m"])
+        if len(seq) < 2:
+            continue
+        last, prev = seq[-1], seq[-2]
+        step = last[f"angle_{dist}"] - prev[f"angle_{dist}"]
+        near = min(NAMES, key=lambda c: abs(last[f"angle_{dist}"] - last[c]))
+        s = (f"at {dist[0]} horizons, R/delta = 10: " + ", ".join(
+            f"{r[f'angle_{dist}']:.1f}° at m = {r['m']:g}" for r in seq)
+             + f"; the finest lies nearest the {NAMES[near]} criterion "
+             f"({last[f'angle_{dist}'] - last[near]:+.1f}° from {last[near]:.1f}°), and the last "
+             f"refinement (m = {prev['m']:g} to {last['m']:g}) moves it by {step:+.1f}°: ")
+        s += ("settled within {:g}°".format(SETTLED_DEG) if abs(step) <= SETTLED_DEG
+              else f"not settled (more than {SETTLED_DEG:g}°)")
+        out.append(s)
+        size = {r["m"]: r for r in rows if r["R_over_delta"] == 20.0 and r[f"angle_{dist}"]
+                is not None}
+        pairs = [(m, size[m][f"angle_{dist}"] - r[f"angle_{dist}"]) for r in seq
+                 for m in [r["m"]] if m in size]
+        if pairs:
+            out.append(f"doubling the disk to R/delta = 20 moves it by " + ", ".join(
+                f"{d:+.1f}° at m = {m:g}" for m, d in pairs))
+    return (". ".join(s[0].upper() + s[1:] for s in out) + "." if out else
+            "No verdict: it needs two values of m at R/delta = 10.")
+
+
+def read_rows(path=CSV):
+    return csvfile.read_csv(path)[1]
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--work", default="/tmp/kink-conv")
+    ap.add_argument("--nprocs", type=int, default=1)
+    ap.add_argument("--cases", nargs="+", help="M:R_OVER_DELTA pairs (default: all)")
+    ap.add_argument("--reuse", action="store_true")
+    ap.add_argument("--csv")
+    a = ap.parse_args(argv)
+    cases = CASES if not a.cases else [tuple(float(v) for v in c.split(":")) for c in a.cases]
+    rows = []
+    for m, rd in cases:
+        start = time.perf_counter()
+        r = run_case(a.work, m, rd, a.nprocs, a.reuse)
+        print(f"m {m:g} R/delta {rd:g}: angle {_f(r['angle_2d'])} / {_f(r['angle_4d'])} deg "
+              f"(2 / 4 delta), loop {_f(r['loop_s'], '.0f')} s, wall "
+              f"{time.perf_counter() - start:.0f} s", flush=True)
+        rows.append(r)
+        if a.csv:    # after every run: a stopped sweep keeps what it measured
+            cmd = "tools/python -m bbpd.benchmarks.kink_convergence " + " ".join(argv or sys.argv[1:])
+            csvfile.write_csv(a.csv, rows, comments=[
+                f"made by: {cmd}", f"timing: LAMMPS loop time, {machine()}, shared machine"])
+    print(verdict(rows))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,32 @@
+"""The kink convergence verdict (bbpd.benchmarks.kink_convergence.verdict) follows its rows."""
+from bbpd.benchmarks import kink_convergence as kc
+
+
+def row(m, rd, a2, a4):
+    return {"m": float(m), "R_over_delta": float(rd), "angle_2d": a2, "angle_4d": a4,
+            "hoop_stress": -70.53, "hoop_strain": -63.61, "energy": -75.23}
+
+
+def test_settled_sequence_names_its_criterion():
+    rows = [row(5, 10, -90.0, -87.0), row(10, 10, -62.0, -63.8), row(15, 10, -63.0, -64.0),
+            row(20, 10, -63.4, -64.2), row(10, 20, -62.5, -64.0)]
+    text = kc.verdict(rows)
+    assert "the finest lies nearest the max. hoop strain criterion (+0.2° from -63.6°)" in text
+    assert "moves it by -0.4°: settled within 1°" in text
+    assert "R/delta = 20 moves it by -0.5° at m = 10" in text
+
+
+def test_moving_sequence_is_not_settled():
+    rows = [row(10, 10, -62.0, -63.0), row(15, 10, -66.0, -67.0), row(20, 10, -69.5, -70.0)]
+    text = kc.verdict(rows)
+    assert "nearest the max. hoop stress criterion" in text
+    assert "not settled (more than 1°)" in text
+
+
+def test_one_run_says_nothing():
+    assert kc.verdict([row(5, 10, -90.0, -87.0)]).startswith("No verdict")
+
+
+def test_time_step_rule_is_the_kink_tests():
+    for m, factor in kc.kinkbench.DTFACTOR.items():
+        assert float(kc.case_vars(m, 10)["dtfactor"]) == factor
