@@ -82,6 +82,13 @@ def read_log(path):
     info["critical_stretch"] = setup["critical_stretch"]
     info["dt_bound"] = setup["dt_bound"]
     info["loop_s"], info["nprocs"] = readers.loop_time(text)
+    # in 3D the atoms inside the experiment's slot are deleted once dx is below its width:
+    # the notch's flank atoms then lie up to slot/2 + dx from the notch line, not dx
+    m3 = re.search(r"^KW 3d: thickness \S+ middle layer z = \S+ slot (\S+)", text, re.M)
+    deleted = re.search(r"^Deleted (\d+) atoms", text, re.M)
+    info["flank"] = info["dx"]
+    if m3 and deleted and int(deleted[1]) > 0:
+        info["flank"] = 0.5 * float(m3[1]) + info["dx"]
     return info
 
 
@@ -111,14 +118,14 @@ def notch_cracks(x, y, phi, g):
     labels = clusters(np.column_stack([x[idx], y[idx]]), LINK * g["dx"])
     out = {}
     for side, yn, outer in (("lo", g["ylo"], y < g["ylo"]), ("hi", g["yhi"], y > g["yhi"])):
-        # flank seeds: crack atoms within dx of the notch line, up to its tip (on a rotated
+        # flank seeds: crack atoms within dx of the notch line (flank: see read_log), up to its tip (on a rotated
         # grid the band along the cut can have gaps wider than LINK far from the tip)
-        flank = crack & (x <= g["a"]) & (np.abs(y - yn) < g["dx"])
+        flank = crack & (x <= g["a"]) & (np.abs(y - yn) < g.get("flank", g["dx"]))
         seeds = set(labels[np.isin(idx, np.nonzero(flank)[0])])
         linked = np.zeros_like(crack)
         linked[idx[np.isin(labels, list(seeds))]] = True
         out[side] = linked & outer & (x > g["a"])
-        out[side + "_flank"] = linked & (x <= g["a"]) & (np.abs(y - yn) < 2 * g["dx"])
+        out[side + "_flank"] = linked & (x <= g["a"]) & (np.abs(y - yn) < g.get("flank", g["dx"]) + g["dx"])
     return out
 
 

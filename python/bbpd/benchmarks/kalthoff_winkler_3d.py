@@ -103,7 +103,7 @@ def measure(workdir, setup, dx, m):
            "nprocs": NPROCS if setup == "3d" else 1}
     row.update(log_figures(log))
     if setup == "3d":
-        g = {k: r[k] for k in ("dx", "delta", "a", "ylo", "yhi", "Lx", "Ly", "dt")}
+        g = {k: r[k] for k in ("dx", "delta", "a", "ylo", "yhi", "Lx", "Ly", "dt", "flank")}
         faces = face_angles(workdir, g, study.T_EVAL_US)
         row["fit_face_lo_deg"] = study.mean_or_none([faces["lo"][sd]["fit"] for sd in ("lo", "hi")])
         row["fit_face_hi_deg"] = study.mean_or_none([faces["hi"][sd]["fit"] for sd in ("lo", "hi")])

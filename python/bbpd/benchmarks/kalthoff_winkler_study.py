@@ -161,7 +161,7 @@ def analyse(workdir):
     """kalthoff_winkler.analyse plus the study's measures (module docstring)."""
     workdir = Path(workdir)
     res = kw.analyse(workdir)
-    g = {k: res[k] for k in ("dx", "delta", "a", "ylo", "yhi", "Lx", "Ly", "dt")}
+    g = {k: res[k] for k in ("dx", "delta", "a", "ylo", "yhi", "Lx", "Ly", "dt", "flank")}
     log = (workdir / "log.lammps").read_text()
     m = re.search(r"^KW loading: v0 (\S+) tramp (\S+) thold (\S+) layer (\S+)", log, re.M)
     if m:
