@@ -5,10 +5,12 @@ the projectile, grid-pull and summary parts of examples/kalthoff-winkler), each 
 benchmark module from the results it committed."""
 import json
 
+from bbpd.benchmarks import kalthoff_winkler_3d as kw3d
+from bbpd.benchmarks import kalthoff_winkler_deck as deck
 from bbpd.benchmarks import kalthoff_winkler_grid as grid
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
-from bbpd.benchmarks import (branching, kink, kink_kalthoff_winkler, mode1_propagation, strip,
-                             strip_closure)
+from bbpd.benchmarks import (branching, kink, kink_convergence, kink_kalthoff_winkler,
+                             mode1_propagation, strip, strip_closure)
 from bbpd.jobs import ROOT
 
 PROPAGATION_CSV = ROOT / "examples" / "mode1-propagation" / "results" / "mode1_propagation.csv"
@@ -84,3 +86,27 @@ def strip_closure_verdict(data):
 
 def strip_work_precision(data):
     return strip.work_precision_markdown(strip.read_rows(STRIP_CSV))
+
+
+def kw_deck_table(data):
+    return deck.table(deck.read_rows()[1], _made_by(deck.CSV))
+
+
+def kw_deck_summary(data):
+    return deck.summary(deck.read_rows()[1])
+
+
+def kw3d_table(data):
+    return kw3d.table(kw3d.read_rows(), _made_by(kw3d.CSV))
+
+
+def kw3d_summary(data):
+    return kw3d.summary(kw3d.read_rows())
+
+
+def kink_convergence_table(data):
+    return kink_convergence.table(kink_convergence.read_rows(), _made_by(kink_convergence.CSV))
+
+
+def kink_convergence_verdict(data):
+    return kink_convergence.verdict(kink_convergence.read_rows())
