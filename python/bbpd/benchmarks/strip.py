@@ -33,6 +33,7 @@ Command line (from the repository root):
 
 import argparse
 import re
+import subprocess
 import sys
 import time
 from pathlib import Path
@@ -63,6 +64,9 @@ MIN_MIDDLE_POINTS = 5
 # the sweeps in load and m run at H = 10 horizons (a run costs ~(H/delta)^3: 8x less than at 20,
 # what the shared 2-core machine allowed); H/delta = 20 (and 40 where run) check that choice
 SWEEP_H_OVER_DELTA = 10.0
+# a run at H/delta = 40 took 1150 s of loop on one core of a quiet machine; on a shared one
+# (load 6-8) a run at H/delta = 20, m = 5 overran LAMMPS's default 30 min
+RUN_TIMEOUT_S = 6 * 3600
 CSV_COLUMNS = ("kernel", "m", "H_over_delta", "dx", "Delta", "Delta_model", "crossed", "state",
                "v_ss_over_cR", "v_ss", "Gamma_over_Gc", "Phi_over_Gc", "Phi_behind_over_Gc",
                "Phi_ahead_over_Gc", "closure_pct", "balance_pct", "atoms", "steps", "loop_s")
@@ -140,7 +144,8 @@ def run(workdir, kernel="gaussian", Delta=2.0, dx=DX, m=M, H_over_delta=H_OVER_D
     if reuse:
         output = (workdir / "log.lammps").read_text()
     else:
-        output = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_).output
+        output = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_,
+                            timeout=RUN_TIMEOUT_S).output
     wall = time.perf_counter() - start
     uprime = float(output.split("STRIP-UPRIME: ")[-1].split()[0])
     words = output.split("STRIP: ")[-1].split("\n")[0].split()
@@ -199,7 +204,7 @@ def main(argv=None):
                     wd = Path(a.work) / f"{kernel}-m{m:g}-H{hd:g}-D{D:g}"
                     try:
                         r = run(wd, kernel, D, DX * M / m, m, hd, reuse=a.reuse)
-                    except LammpsError as exc:    # one failed run must not end the sweep
+                    except (LammpsError, subprocess.TimeoutExpired) as exc:    # one failed run must not end the sweep
                         print(f"{wd.name}: FAILED: {exc}", flush=True)
                         continue
                     print(f"{kernel} m {m:g} H/delta {hd:g} Delta {D:g} (model {r['Delta_model']:.3f}): "
