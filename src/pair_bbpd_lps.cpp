@@ -284,7 +284,7 @@ void PairBBPDLPS::add_bond_force(int i, int j, double xi0, double wv, double *f,
   f[1] += fpl * dy;
   f[2] += fpl * dz;
   if (EVFLAG) {
-    const double eng = 0.5 *
+    const double eng = END_SHARE *
         LPS::deviatoric_energy(mod, wv, xi0, e, LPS::third(lps_state->dilatation[i]), atom_states[i].inv_m);
     const double vir[6] = {-BondModel::virial_share(fpl, dx, dx), -BondModel::virial_share(fpl, dy, dy),
                            -BondModel::virial_share(fpl, dz, dz), -BondModel::virial_share(fpl, dx, dy),
