@@ -167,3 +167,33 @@ def test_cylinder_follows_peri_lps(lmp, tmp_path):
     print("mean damage peri/lps", list(d_ref), "bbpd/lps", list(d))
     broken = d_ref > 0.01
     np.testing.assert_allclose(d[broken], d_ref[broken], rtol=0.02)
+
+
+def test_periodic_cylinder_bitwise_on_1_and_2_ranks(lmp, tmp_path):
+    """The smaller cylinder in a box periodic in x and z (its bounding box): the rim atoms are
+    bonded across the boundary and bonds break there, each decided alike at both ends (from
+    the owners' unshifted positions); the run ends in the same bits on 1 and 2 ranks."""
+    script = cylinder().replace("boundary        s s s", "boundary        p s p")
+    states = []
+    for nprocs in (1, 2):
+        out = lmp(script + END_DUMP, nprocs=nprocs).output
+        assert "Periodic" not in out
+        assert ref.thermo_tables(out)[-1]["c_dmean"][-1] > 0.05
+        states.append(end_state(tmp_path))
+    for key in KEYS:
+        np.testing.assert_array_equal(states[0][key], states[1][key])
+
+
+def test_compact_storage_gives_the_same_bits(lmp, tmp_path):
+    """bond/storage compact (the weighted partner volumes recomputed from x0 through the bond
+    law) ends the cylinder in the bits of the default storage."""
+    states = []
+    for storage in ("", " bond/storage compact"):
+        script = cylinder().replace("pair_style      bbpd/lps 3d", f"pair_style      bbpd/lps 3d{storage}")
+        out = lmp(script + END_DUMP).output
+        # 8 bytes per bond end with compact storage (tag and partner index), 10 by default
+        assert f"{'8.0' if storage else '10.0'} per bond end" in out
+        states.append(end_state(tmp_path))
+    assert states[0]["c_1"].mean() > 0.05
+    for key in KEYS:
+        np.testing.assert_array_equal(states[0][key], states[1][key])
