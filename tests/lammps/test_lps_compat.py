@@ -16,7 +16,8 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
-from test_pmb_compat import DELTA, DENSITY, DX, block, perturbed, run_forces, short_range_pairs
+from test_pmb_compat import (DELTA, DENSITY, DX, PERTURBATION, SEED, block, perturbed, run_forces,
+                              short_range_pairs)
 
 BULK = 14.9e9       # the peri/lps example's K and G
 SHEAR = 14.9e9
@@ -41,7 +42,8 @@ def test_forces_equal_peri_lps(lmp, tmp_path, boundary):
     There peri/lps differs (measured: 0.38 of the largest force): fix_peri_neigh.cpp sums its
     weighted volume from x0_i - x0_j without the minimum image (its force loop takes it), so a
     bond across the boundary enters m with the length of the box; bbpd/lps takes the minimum
-    image in both. The periodic case checks our rank counts only."""
+    image in both (test_periodic_difference_is_peri_lps_weighted_volume shows that this is
+    where they part). The periodic case checks our rank counts only."""
     periodic = boundary == "p p p"
     x0, box = block(3, periodic)
     y = perturbed(x0, 3)
@@ -67,6 +69,34 @@ def test_forces_equal_peri_lps(lmp, tmp_path, boundary):
         assert abs(e - e_ref) <= FORCE_RTOL * abs(e_ref)
     for _, f in results[1:]:
         np.testing.assert_array_equal(results[0][1], f)
+
+
+def test_periodic_difference_is_peri_lps_weighted_volume(lmp, tmp_path):
+    """Where peri/lps and bbpd/lps part in a periodic box: a periodic block of 15^3 atoms,
+    randomly perturbed. An atom whose partners' families reach across no boundary (its lattice
+    indices 6..8: every pair of its partners and their partners is at most 3 spacings apart in
+    the raw x0, less than half the box) gets peri/lps's force to 1e-12; elsewhere the forces
+    differ by more than 1e-3 of the largest force, as peri/lps's weighted volume of an atom
+    bonded across the boundary counts that bond with the raw distance."""
+    n = 15
+    x0 = ref.square_lattice((n, n, n), DX)
+    box = [(x0[:, k].min() - 0.5 * DX, x0[:, k].max() + 0.5 * DX) for k in range(3)]
+    rng = np.random.default_rng(SEED)
+    y = x0 + PERTURBATION * DX * rng.uniform(-1.0, 1.0, x0.shape)
+    ref.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
+    ref.write_positions(tmp_path / "current.dump", y, box)
+    _, f_lps = run_forces(lmp, tmp_path, f"pair_style peri/lps\npair_coeff * * {NUMBERS}\n",
+                          plugin=False, boundary="p p p")
+    _, f = run_forces(lmp, tmp_path, f"pair_style bbpd/lps 3d\npair_coeff * * {NUMBERS}\n",
+                      plugin=True, boundary="p p p")
+    scale = np.linalg.norm(f_lps, axis=1).max()
+    err = np.linalg.norm(f - f_lps, axis=1) / scale
+    index = np.rint((x0 - x0.min(axis=0)) / DX).astype(int)
+    inner = np.all((index >= 6) & (index <= 8), axis=1)
+    assert inner.sum() == 27
+    print(f"inner atoms: {err[inner].max():.3g}, all atoms: {err.max():.3g} of the largest force")
+    assert err[inner].max() < FORCE_RTOL
+    assert err.max() > 1e-3
 
 
 def test_dilatation_is_needed(lmp, tmp_path):
