@@ -16,6 +16,7 @@
 #define BBPD_BOND_LAW_H
 
 #include "bbpd_kernel.h"
+#include "bbpd_lps.h"
 #include "bbpd_pmb_rules.h"
 
 #include <cmath>
@@ -60,6 +61,7 @@ struct BondLaw {
   double spacing = 0.0;              // grid spacing of the partial-volume correction (eq. 19)
   bool pmb = false;                  // peri/pmb's families, volumes and volume ramp
   double lattice_constant = 0.0;     // pmb: the ramp's width
+  bool lps = false;                  // with pmb: the coefficient is peri/lps's omega V_j ramp
   // per type pair, as calibrated by the pair style: c0 (eq. 21; pmb: peri/pmb's c) and delta
   TypePairTable micromodulus, horizon;
   TypePairTable bondless;    // nonzero: the type pair forms no bonds (separate bodies)
@@ -83,10 +85,12 @@ struct BondLaw {
     if (pmb) return vj;
     return partial_volume(xi0, horizon(itype, jtype), spacing) * vj;
   }
-  // force density per unit elongation: c(xi0) C_v V_j / xi0; pmb: c V_j times its ramp / xi0
+  // force density per unit elongation: c(xi0) C_v V_j / xi0; pmb: c V_j times its ramp / xi0;
+  // lps: the bond's weighted partner volume omega(xi0) V_j ramp (bbpd_lps.h)
   double coefficient(int itype, int jtype, double xi0, double vj) const
   {
     const double delta = horizon(itype, jtype);
+    if (pmb && lps) return LPS::weighted_partner_volume(xi0, delta, lattice_constant, vj);
     if (pmb) return micromodulus(itype, jtype) * vj * PMB::volume_scale(xi0, delta, lattice_constant) / xi0;
     return micromodulus(itype, jtype) * kernel.shape(xi0 / delta) *
         partner_volume(itype, jtype, xi0, vj) / xi0;

@@ -14,6 +14,7 @@
 #include "error.h"
 #include "fix_bbpd_alpha.h"
 #include "fix_bbpd_bonds.h"
+#include "fix_bbpd_lps.h"
 #include "fix_bbpd_notch.h"
 #include "fix_bbpd_watchdog.h"
 #include "fix_bbpd_work.h"
@@ -21,6 +22,7 @@
 #include "lammps.h"
 #include "pair_bbpd.h"
 #include "pair_bbpd_alpha.h"
+#include "pair_bbpd_lps.h"
 #include "pair_bbpd_pmb.h"
 #include "utils.h"
 #include "version.h"
@@ -47,6 +49,14 @@ template <class K> Pair *alpha_pair_creator(LAMMPS *lmp)
 Pair *pmb_pair_creator(LAMMPS *lmp)
 {
   return new PairBBPDPMB(lmp);
+}
+Pair *lps_pair_creator(LAMMPS *lmp)
+{
+  return new PairBBPDLPS(lmp);
+}
+Fix *lps_state_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixBBPDLPS(lmp, narg, arg);
 }
 Fix *bonds_creator(LAMMPS *lmp, int narg, char **arg)
 {
@@ -141,6 +151,10 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.info = "BBPD pair style, the rules of peri/pmb, v" BBPD_VERSION;
   plugin.creator.v1 = (lammpsplugin_factory1 *) &pmb_pair_creator;
   (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/lps";
+  plugin.info = "BBPD pair style, the linear peridynamic solid of peri/lps, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &lps_pair_creator;
+  (*register_plugin)(&plugin, lmp);
 
   plugin.style = "fix";
   plugin.name = "bbpd/bonds";
@@ -150,6 +164,10 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "bbpd/alpha";
   plugin.info = "BBPD Silling-Askari breaking state (internal, created by the pair style) v" BBPD_VERSION;
   plugin.creator.v2 = (lammpsplugin_factory2 *) &alpha_creator;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/lps";
+  plugin.info = "BBPD linear peridynamic solid state (internal, created by the pair style) v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &lps_state_creator;
   (*register_plugin)(&plugin, lmp);
   plugin.name = "bbpd/watchdog";
   plugin.info = "BBPD run-explosion watchdog (internal, created by the pair style) v" BBPD_VERSION;

@@ -803,7 +803,7 @@ void PairBBPD::report()
   for (int i = 0; i < atom->nlocal; i++) {
     double sum = 0.0;
     for (int k = fb->bond_start[i]; k < fb->bond_start[i] + fb->nbond[i]; k++)
-      sum += fb->coef_of(i, k, fb->xi0_of(i, k));
+      sum += bond_stiffness(i, k);
     if (fb->nbond[i] > 0 && sum <= 0.0) limp = 1;
     const int it = atom->type[i];
     if (short_range_forces())
@@ -873,6 +873,12 @@ void PairBBPD::report()
     error->warning(FLERR, "Pair {}: timestep {:.6g} exceeds {} x the stable bound {:.6g}; "
                    "the run may blow up: reduce the timestep", style, update->dt, dt_safety,
                    dt_bound);
+}
+
+/* bond k of atom i in the stable time step: its coefficient (force density per elongation) */
+double PairBBPD::bond_stiffness(int i, int k) const
+{
+  return bonds->coef_of(i, k, bonds->xi0_of(i, k));
 }
 
 /* the report's line for types i j */

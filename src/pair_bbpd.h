@@ -141,6 +141,8 @@ class PairBBPD : public Pair {
   virtual bool short_range_forces() const { return contact != 0; }    // in the stable step
   virtual std::string report_type_pair(int i, int j) const;
   virtual std::string report_rules() const { return {}; }
+  // a bond's stiffness in the stable time step (eq. 26): its coefficient c C_v V_j / xi0
+  virtual double bond_stiffness(int i, int k) const;
 
   // candidates of the short-range forces ('contact', bbpd/pmb's): pairs that can come in
   // range before the atoms move half the search's skin, searched again when stale

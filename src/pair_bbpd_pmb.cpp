@@ -27,8 +27,8 @@ using namespace BBPD::PMB;
 
 /* ---------------------------------------------------------------------- */
 
-PairBBPDPMB::PairBBPDPMB(LAMMPS *lmp) :
-    PairBBPDAlpha(lmp, BBPD::kernel_info<BBPD::ConstantKernel>(), "bbpd/pmb"),
+PairBBPDPMB::PairBBPDPMB(LAMMPS *lmp, const char *style_name) :
+    PairBBPDAlpha(lmp, BBPD::kernel_info<BBPD::ConstantKernel>(), style_name),
     lattice_constant(0.0)
 {
 }
@@ -39,8 +39,8 @@ void PairBBPDPMB::settings(int narg, char **arg)
 {
   PairBBPD::settings(narg, arg);
   if (contact)
-    error->all(FLERR, "Pair style bbpd/pmb brings peri/pmb's short-range forces; drop "
-               "'contact yes'");
+    error->all(FLERR, "Pair style {} brings peri/{}'s short-range forces; drop "
+               "'contact yes'", style, style.substr(5));
 }
 
 /* the bond forces and breaking of one step in peri/pmb's order, then its short-range forces */
@@ -110,11 +110,11 @@ void PairBBPDPMB::init_rules()
   PairBBPDAlpha::init_rules();
   const Lattice *lat = domain->lattice;
   if (!lat || lat->style == Lattice::NONE)
-    error->all(FLERR, "Pair style bbpd/pmb needs a lattice command before the run: "
-               "peri/pmb's volume ramp and short-range distance use its lattice constant");
+    error->all(FLERR, "Pair style {} needs a lattice command before the run: "
+               "peri/pmb's volume ramp and short-range distance use its lattice constant", style);
   if (lat->xlattice != lat->ylattice || lat->xlattice != lat->zlattice)
-    error->all(FLERR, "Pair style bbpd/pmb needs a lattice with the same constant "
-               "in x, y and z (as peri/pmb)");
+    error->all(FLERR, "Pair style {} needs a lattice with the same constant "
+               "in x, y and z (as peri/{})", style, style.substr(5));
   lattice_constant = lat->xlattice;
   law.lattice_constant = lattice_constant;    // the volume ramp of the bond fix
   // the short-range partners are found among the local and ghost atoms (no neighbour list):
@@ -122,9 +122,9 @@ void PairBBPDPMB::init_rules()
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
       if (setflag[i][j] && horizon[i][j] < SHORT_RANGE_LATTICE_FACTOR * lattice_constant)
-        error->all(FLERR, "Pair style bbpd/pmb: horizon {} for types {} {} is "
+        error->all(FLERR, "Pair style {}: horizon {} for types {} {} is "
                    "shorter than the short-range distance {} x lattice constant {}: use a horizon "
-                   "of at least {}", horizon[i][j], i, j, SHORT_RANGE_LATTICE_FACTOR,
+                   "of at least {}", style, horizon[i][j], i, j, SHORT_RANGE_LATTICE_FACTOR,
                    lattice_constant, SHORT_RANGE_LATTICE_FACTOR * lattice_constant);
 }
 
@@ -182,8 +182,7 @@ void PairBBPDPMB::compute_short_range()
       const int itype = type[i], jtype = type[j];
       const double dr = r - dist[c.second];
       // written as in peri/pmb
-      const double rk = (SHORT_RANGE_STIFFNESS_FACTOR * micromodulus[itype][jtype] * vfrac[j]) *
-          (dr / horizon[itype][jtype]);
+      const double rk = (short_range_stiffness(itype, jtype) * vfrac[j]) * (dr / horizon[itype][jtype]);
       const double fpair = r > 0.0 ? -(rk / r) : 0.0;
       f[i][0] += dx * fpair;
       f[i][1] += dy * fpair;

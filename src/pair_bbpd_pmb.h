@@ -15,13 +15,14 @@
 #ifndef LMP_PAIR_BBPD_PMB_H
 #define LMP_PAIR_BBPD_PMB_H
 
+#include "bbpd_pmb_rules.h"
 #include "pair_bbpd_alpha.h"
 
 namespace LAMMPS_NS {
 
 class PairBBPDPMB : public PairBBPDAlpha {
  public:
-  PairBBPDPMB(class LAMMPS *);
+  PairBBPDPMB(class LAMMPS *, const char *style = "bbpd/pmb");
 
   void settings(int, char **) override;
   void coeff(int, char **) override;
@@ -36,6 +37,11 @@ class PairBBPDPMB : public PairBBPDAlpha {
   std::string report_type_pair(int i, int j) const override;
   std::string report_rules() const override;
   void compute_short_range();
+  // the short-range stiffness of types i j per partner volume (peri/pmb: 15 c)
+  virtual double short_range_stiffness(int itype, int jtype) const
+  {
+    return BBPD::PMB::SHORT_RANGE_STIFFNESS_FACTOR * micromodulus[itype][jtype];
+  }
 };
 
 }    // namespace LAMMPS_NS

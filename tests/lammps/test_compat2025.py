@@ -72,3 +72,14 @@ def test_compat_notch_across_periodic_boundary(compat, tmp_path):
     def lmp(script, **kw):
         return runner.run_lammps(script, workdir=tmp_path, **kw)
     forces.test_notch_cuts_bonds_across_periodic_boundary(lmp, tmp_path)
+
+
+lps = load("test_lps_compat")
+
+
+def test_compat_lps_forces_equal_peri_lps(compat, tmp_path):
+    """bbpd/lps built against 4 Feb 2025 gives that version's peri/lps forces (to 1e-12 of
+    the largest force) on 1, 2 and 4 ranks, the same bits on each."""
+    def lmp(script, **kw):
+        return runner.run_lammps(script, workdir=tmp_path, **kw)
+    lps.test_forces_equal_peri_lps(lmp, tmp_path, "s s s")

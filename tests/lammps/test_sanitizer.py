@@ -13,6 +13,7 @@ import pytest
 from bbpd.runner import ROOT
 
 import test_crack_tip as ct
+import test_lps_compat as lc
 import test_mpi_restart as mr  # the scenes of those tests (tests/lammps is on pytest's pythonpath)
 import test_pmb_compat as pc
 import test_reliability as rel
@@ -105,3 +106,13 @@ def test_silling_askari_two_ranks(sanitized, lmp, variant):
     """the shattering cylinder with bbpd/pmb (bonds that act in the step they break, short-range
     forces) and with bbpd/gaussian/alpha and contact, on 2 ranks"""
     clean(lmp(pc.cylinder(variant, steps=150), nprocs=2, timeout=TIMEOUT).output)
+
+
+def test_lps_two_ranks_and_restart(sanitized, lmp):
+    """the shattering cylinder with bbpd/lps on 2 ranks (the dilatation pass and its ghost
+    exchange, bonds breaking in the fused loop, the state fix migrating), then read back from
+    its restart file"""
+    clean(lmp(lc.cylinder(steps=150) + "write_restart state.restart\n", nprocs=2,
+              timeout=TIMEOUT).output)
+    clean(lmp("plugin load bbpdplugin.so\nread_restart state.restart\nneighbor 0.0010 bin\n"
+              "lattice sc 0.0005\nfix 1 all nve\nrun 20\n", nprocs=2, timeout=TIMEOUT).output)

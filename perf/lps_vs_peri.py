@@ -1,0 +1,99 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""bbpd/lps against LAMMPS's peri/lps on LAMMPS's own examples/peri/in.peri.lps.
+
+The two inputs of examples/peri-lps-dropin (the glass cylinder, 3,487 atoms, shattered by an
+indenter; one with peri/lps, one ported to bbpd/lps) run in turn, bbpd/lps first, --reps
+rounds, one MPI rank each. Per run: the loop time and the Pair time of LAMMPS's timing
+summary, the processor time of the process (user + system, from the operating system), and
+the mean damage and the number of atoms with damage > 0.5 at steps 500 and the last. Printed
+and written with --csv: one row per run, with the CPU (model name, family and model numbers),
+the vector ISA of the plugin build, the load average before and after and the command; the
+summary gives the ratio peri/lps / bbpd/lps of the minimum loop times, of each round's loop
+times (median) and of the processor times.
+
+Usage (from the repository root): tools/python perf/lps_vs_peri.py [--reps 3] [--steps 1000]
+    [--csv perf/results/NAME.csv]
+"""
+import argparse
+import csv
+import datetime
+import re
+import resource
+import statistics
+import sys
+import tempfile
+from pathlib import Path
+
+from bbpd.runner import run_lammps
+from pair_vs_pmb import build_isa, cpu_model, cpu_numbers, load_average
+
+ROOT = Path(__file__).resolve().parents[1]
+EXAMPLE = ROOT / "examples" / "peri-lps-dropin"
+INPUTS = {"bbpd/lps": EXAMPLE / "in.bbpd.lps", "peri/lps": EXAMPLE / "in.peri.lps"}
+REPORT_STEP = 500    # a damage row before the cylinder shatters
+
+
+def children_cpu():
+    use = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return use.ru_utime + use.ru_stime
+
+
+def run(style, steps, workdir):
+    before = children_cpu()
+    out = run_lammps(INPUTS[style].read_text(), workdir=workdir, vars={"steps": steps}).output
+    cpu = children_cpu() - before
+    loop = float(re.search(r"^Loop time of ([0-9.eE+-]+)", out, re.M).group(1))
+    pair = float(re.search(r"^Pair\s*\|\s*([0-9.eE+-]+)", out, re.M).group(1))
+    rows = {int(m.group(1)): (float(m.group(2)), int(float(m.group(3))))
+            for m in re.finditer(r"^\s+(\d+)\s+([0-9.eE+-]+)\s+([0-9.eE+-]+)\s+[0-9.eE+-]+\s*$", out, re.M)}
+    mid, last = rows.get(REPORT_STEP, (None, None)), rows[max(rows)]
+    return {"style": style, "steps": steps, "loop_s": loop, "pair_s": pair, "cpu_s": round(cpu, 3),
+            "damage_mid": mid[0], "cracked_mid": mid[1], "damage_end": last[0], "cracked_end": last[1]}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--steps", type=int, default=1000)
+    ap.add_argument("--csv", type=Path)
+    args = ap.parse_args()
+    family, model = cpu_numbers()
+    machine = {"cpu": cpu_model(), "family": family, "model": model, "isa": build_isa()}
+    print(f"CPU: {machine['cpu']} (family {family} model {model}); plugin paths: {machine['isa']}")
+    load_before = load_average()
+    results = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for rep in range(args.reps):
+            for style in INPUTS:
+                r = run(style, args.steps, Path(tmp) / f"{rep}-{style.replace('/', '-')}")
+                r["round"] = rep + 1
+                results.append(r)
+                print(f"round {rep + 1} {style}: loop {r['loop_s']:.3f} s, pair {r['pair_s']:.3f} s, "
+                      f"cpu {r['cpu_s']:.3f} s; damage {r['damage_mid']} / {r['damage_end']}, "
+                      f"atoms > 0.5: {r['cracked_mid']} / {r['cracked_end']}", flush=True)
+    load_after = load_average()
+    by = {s: [r for r in results if r["style"] == s] for s in INPUTS}
+    ratio_min = min(r["loop_s"] for r in by["peri/lps"]) / min(r["loop_s"] for r in by["bbpd/lps"])
+    rounds = [b["loop_s"] / a["loop_s"] for a, b in zip(by["bbpd/lps"], by["peri/lps"])]
+    cpu_ratio = min(r["cpu_s"] for r in by["peri/lps"]) / min(r["cpu_s"] for r in by["bbpd/lps"])
+    print(f"loop time ratio peri/lps / bbpd/lps: {ratio_min:.2f} (minima), {statistics.median(rounds):.2f} "
+          f"(median of the rounds {', '.join(f'{x:.2f}' for x in rounds)}); processor time: "
+          f"{cpu_ratio:.2f}; load {load_before} -> {load_after}")
+    if args.csv:
+        command = "tools/python perf/lps_vs_peri.py " + " ".join(sys.argv[1:])
+        date = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+        fields = ["round", "style", "steps", "loop_s", "pair_s", "cpu_s", "damage_mid", "cracked_mid",
+                  "damage_end", "cracked_end", "cpu", "family", "model", "isa", "load_before",
+                  "load_after", "date", "command"]
+        with open(args.csv, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=fields)
+            w.writeheader()
+            for r in results:
+                w.writerow(dict(r, **machine, load_before=load_before, load_after=load_after,
+                                date=date, command=command))
+        print(f"wrote {args.csv}")
+
+
+if __name__ == "__main__":
+    main()

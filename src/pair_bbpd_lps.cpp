@@ -1,0 +1,468 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* ----------------------------------------------------------------------
+   BBPD plugin: pair style bbpd/lps, the linear peridynamic solid of LAMMPS's peri/lps
+   (pair_bbpd_lps.h): its coefficients, the dilatation pass and its ghost exchange, the
+   bond loop of the LPS force state with the Silling-Askari breaking of peri/lps, and
+   peri/lps's short-range forces (pair_bbpd_pmb.cpp).
+------------------------------------------------------------------------- */
+
+#include "pair_bbpd_lps.h"
+#include "pair_bbpd_rows.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_bbpd_alpha.h"
+#include "fix_bbpd_bonds.h"
+#include "fix_bbpd_lps.h"
+#include "memory.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <type_traits>
+
+using namespace LAMMPS_NS;
+namespace LPS = BBPD::LPS;
+using StretchRule = BBPD::SillingAskariRule<false>;    // peri/lps: smin not clamped
+
+static constexpr const char *LPS_FIX_ID = "BBPD_LPS";
+// each end of a bond tallies half its energy and virial
+static constexpr double END_SHARE = 0.5;
+// forward communication: theta / m and 1 / m of every ghost atom
+static constexpr int LPS_FORWARD_VALUES = 2;
+
+/* ---------------------------------------------------------------------- */
+
+PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp) :
+    PairBBPDPMB(lmp, "bbpd/lps"), bulk(nullptr), shear(nullptr), lps_state(nullptr), nmax_lps(0),
+    atom_states(nullptr), nmax_length(0), bond_length(nullptr)
+{
+  comm_forward = LPS_FORWARD_VALUES;
+}
+
+PairBBPDLPS::~PairBBPDLPS()
+{
+  if (copymode) return;
+  memory->destroy(bulk);
+  memory->destroy(shear);
+  memory->sfree(atom_states);
+  memory->destroy(bond_length);
+  release_fix(lps_state, LPS_FIX_ID);
+}
+
+void PairBBPDLPS::allocate_moduli()
+{
+  if (bulk) return;
+  const int n = atom->ntypes + 1;
+  memory->create(bulk, n, n, "pair:bulk");
+  memory->create(shear, n, n, "pair:shear");
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < n; j++) bulk[i][j] = shear[i][j] = 0.0;
+}
+
+/* pair_style bbpd/lps 3d [keywords of bbpd/pmb]: peri/lps is the 3D solid */
+void PairBBPDLPS::settings(int narg, char **arg)
+{
+  const int imodel = (narg > 0 && strcmp(arg[0], "model") == 0) ? 1 : 0;
+  if (imodel < narg && strcmp(arg[imodel], "3d") != 0)
+    error->all(FLERR, "Pair style bbpd/lps: model '{}' is not available: peri/lps is the 3D "
+               "linear peridynamic solid, write 'pair_style bbpd/lps 3d'", arg[imodel]);
+  PairBBPDPMB::settings(narg, arg);
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I J K G delta s00 alpha (peri/lps's five numbers)
+------------------------------------------------------------------------- */
+
+void PairBBPDLPS::coeff(int narg, char **arg)
+{
+  if (!allocated) allocate();
+  allocate_moduli();
+  if (narg != 7)
+    error->all(FLERR, "Pair coeff for bbpd/lps: expected 'I J K G delta s00 alpha' (bulk and "
+               "shear modulus, horizon, critical stretch, Silling-Askari alpha: the numbers of "
+               "pair_coeff peri/lps), got {} arguments", narg);
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  const double K = utils::numeric(FLERR, arg[2], false, lmp);
+  const double G = utils::numeric(FLERR, arg[3], false, lmp);
+  const double delta = utils::numeric(FLERR, arg[4], false, lmp);
+  const double s00 = utils::numeric(FLERR, arg[5], false, lmp);
+  const double a = utils::numeric(FLERR, arg[6], false, lmp);
+  if (!(K > 0.0)) error->all(FLERR, "Pair coeff for bbpd/lps: the bulk modulus K must be > 0");
+  if (!(G > 0.0)) error->all(FLERR, "Pair coeff for bbpd/lps: the shear modulus G must be > 0");
+  if (!(delta > 0.0)) error->all(FLERR, "Pair coeff for bbpd/lps: the horizon delta must be > 0");
+  if (!(s00 > 0.0)) error->all(FLERR, "Pair coeff for bbpd/lps: s00 must be > 0");
+  if (!(a >= 0.0) || !std::isfinite(a))
+    error->all(FLERR, "Pair coeff for bbpd/lps: alpha must be >= 0");
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      youngs[i][j] = 0.0;    // not used: K and G are given
+      fracture_energy[i][j] = std::numeric_limits<double>::infinity();
+      horizon[i][j] = delta;
+      // the PMB micromodulus of the same K: short-range forces and the stable time step
+      micromodulus[i][j] = LPS::pmb_micromodulus(K, delta);
+      critical_stretch[i][j] = s00;
+      s0_user[i][j] = 1;
+      alpha[i][j] = a;
+      bulk[i][j] = bulk[j][i] = K;
+      shear[i][j] = shear[j][i] = G;
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
+/* the coefficients of bbpd/pmb, then K and G */
+void PairBBPDLPS::write_restart(FILE *fp)
+{
+  PairBBPD::write_restart(fp);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j]) {
+        fwrite(&bulk[i][j], sizeof(double), 1, fp);
+        fwrite(&shear[i][j], sizeof(double), 1, fp);
+      }
+}
+
+void PairBBPDLPS::read_restart(FILE *fp)
+{
+  PairBBPD::read_restart(fp);
+  allocate_moduli();
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (!setflag[i][j]) continue;
+      double v[2] = {0.0, 0.0};
+      if (comm->me == 0) utils::sfread(FLERR, v, sizeof(double), 2, fp, nullptr, error);
+      MPI_Bcast(v, 2, MPI_DOUBLE, 0, world);
+      bulk[i][j] = bulk[j][i] = v[0];
+      shear[i][j] = shear[j][i] = v[1];
+    }
+}
+
+/* part of init_style: peri/pmb's rules (lattice constant, Silling-Askari state), the LPS
+   coefficient of the bond storage, and the LPS state */
+void PairBBPDLPS::init_rules()
+{
+  PairBBPDPMB::init_rules();
+  law.lps = true;
+  lps_state = static_cast<FixBBPDLPS *>(own_fix(LPS_FIX_ID, "bbpd/lps"));
+}
+
+double PairBBPDLPS::short_range_stiffness(int itype, int jtype) const
+{
+  // peri/lps takes the bulk modulus of atom i's type and the horizon of the pair
+  return LPS::short_range_stiffness(bulk[itype][itype], horizon[itype][jtype]);
+}
+
+/* the stable time step estimate: the bond as a PMB bond of the same bulk modulus */
+double PairBBPDLPS::bond_stiffness(int i, int k) const
+{
+  const int j = bonds->partner_of(i, k);
+  return micromodulus[atom->type[i]][atom->type[j]] * bonds->coef_of(i, k, bonds->xi0_of(i, k));
+}
+
+std::string PairBBPDLPS::report_type_pair(int i, int j) const
+{
+  return fmt::format("  types {} {}: peri/lps: K = {:.8g}  G = {:.8g}  horizon = {:.6g}  "
+                     "s00 = {:.8g}  alpha = {:.6g}\n", i, j, bulk[i][j], shear[i][j],
+                     horizon[i][j], critical_stretch[i][j], alpha[i][j]);
+}
+
+std::string PairBBPDLPS::report_rules() const
+{
+  return PairBBPDPMB::report_rules() +
+      "  peri/lps state: influence function 1/|xi|, weighted volume m fixed at the first "
+      "evaluation, dilatation theta every step (sent to the ghost atoms); stable time step "
+      "estimated as for a PMB bond of the same bulk modulus, c = 18 K / (pi delta^4)\n";
+}
+
+int PairBBPDLPS::pack_forward_comm(int n, int *list, double *buf, int, int *)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    buf[m++] = atom_states[list[k]].theta_over_m;
+    buf[m++] = atom_states[list[k]].inv_m;
+  }
+  return m;
+}
+
+void PairBBPDLPS::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    atom_states[i].theta_over_m = buf[m++];
+    atom_states[i].inv_m = buf[m++];
+  }
+}
+
+/* extract: "theta" (the dilatation of every local atom, as peri/lps), and those of bbpd/pmb */
+void *PairBBPDLPS::extract(const char *name, int &dim)
+{
+  if (strcmp(name, "theta") == 0) {
+    dim = 1;
+    return lps_state ? (void *) lps_state->dilatation : nullptr;
+  }
+  return PairBBPDPMB::extract(name, dim);
+}
+
+double PairBBPDLPS::memory_usage()
+{
+  const int n = atom->ntypes + 1;
+  return PairBBPDPMB::memory_usage() + 2.0 * n * n * sizeof(double) +
+      (double) LPS_FORWARD_VALUES * nmax_lps * sizeof(double) + (double) nmax_length * sizeof(double);
+}
+
+/* ----------------------------------------------------------------------
+   the step: dilatations, bonds, short-range forces
+------------------------------------------------------------------------- */
+
+void PairBBPDLPS::eval_bonds()
+{
+  if (evflag) eval_lps<1>();
+  else eval_lps<0>();
+  compute_short_range();
+}
+
+/* m_i over the bonds each local atom has now (fix_peri_neigh sums wvolume as it builds the
+   families; here after fix bbpd/notch has cut its bonds, so that a notch counts as a surface) */
+void PairBBPDLPS::sum_weighted_volumes()
+{
+  double *m = lps_state->weighted_volume;
+  for (int i = 0; i < atom->nlocal; i++) {
+    double sum = 0.0;
+    for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + bonds->nbond[i]; k++) {
+      const double xi0 = bonds->xi0_of(i, k);
+      sum += LPS::weighted_volume_term(bonds->coef_of(i, k, xi0), xi0);
+    }
+    m[i] = sum;
+  }
+}
+
+/* theta_i over the intact bonds of local atom i, in row order; the bonds' current lengths into
+   r (the force loop reads them there) */
+double PairBBPDLPS::dilatation_of(int i, double *r)
+{
+  const double *xx = atom->x[0];
+  const int n = bonds->nbond[i];
+  const double sum = bonds->visit_row(i, *thread_coef_cache(), [&](const auto *bj, const auto &vals) {
+    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
+    double s = 0.0;
+    for (int k = 0; k < n; k++) {
+      const int j = BBPD::partner_index(bj, i, k);
+      const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
+      r[k] = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const double xi0 = vals.xi0_at(k, j);
+      s += LPS::dilatation_term(vals.coef_at(k, j), xi0, LPS::elongation(r[k], xi0));
+    }
+    return s;
+  });
+  return LPS::dilatation(sum, lps_state->weighted_volume[i]);
+}
+
+/* the force density of the bond of local atom i to j (reference length xi0, weighted partner
+   volume wv) added to f, and with EVFLAG its energy density and virial (as peri/lps tallies
+   them: half the deviatoric energy of the bond at each end) into acc[0] and acc[1..6] */
+template <int EVFLAG>
+void PairBBPDLPS::add_bond_force(int i, int j, double xi0, double wv, double *f, double *acc)
+{
+  const double *xx = atom->x[0];
+  const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
+               dz = xx[3 * j + 2] - xx[3 * i + 2];
+  const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+  const double e = LPS::elongation(r, xi0);
+  const int itype = atom->type[i];
+  const LPS::Moduli mod = LPS::moduli(bulk[itype][itype], shear[itype][itype]);    // atom i's type
+  const double t = LPS::force_state(mod, wv, xi0, e, atom_states[i], atom_states[j]);
+  const double fpl = r > 0.0 ? t / r : 0.0;
+  f[0] += fpl * dx;
+  f[1] += fpl * dy;
+  f[2] += fpl * dz;
+  if (EVFLAG) {
+    const double eng = END_SHARE *
+        LPS::deviatoric_energy(mod, wv, xi0, e, LPS::third(lps_state->dilatation[i]), atom_states[i].inv_m);
+    const double vir[6] = {-BondModel::virial_share(fpl, dx, dx), -BondModel::virial_share(fpl, dy, dy),
+                           -BondModel::virial_share(fpl, dz, dz), -BondModel::virial_share(fpl, dx, dy),
+                           -BondModel::virial_share(fpl, dx, dz), -BondModel::virial_share(fpl, dy, dz)};
+    acc[0] += eng;
+    for (int m = 0; m < 6; m++) acc[1 + m] += vir[m];
+  }
+}
+
+template <int EVFLAG> void PairBBPDLPS::eval_lps()
+{
+  const int nlocal = atom->nlocal;
+  if (atom->nmax > nmax_lps) {
+    nmax_lps = atom->nmax;
+    memory->sfree(atom_states);
+    atom_states = static_cast<LPS::AtomState *>(
+        memory->smalloc(sizeof(LPS::AtomState) * nmax_lps, "pair:atom_states"));
+  }
+  const int nends = nlocal > 0 ? bonds->bond_start[nlocal - 1] + bonds->nbond[nlocal - 1] : 0;
+  if (nends > nmax_length) {
+    nmax_length = nends + nends / 8;    // headroom: migration changes the count a little
+    memory->destroy(bond_length);
+    memory->create(bond_length, nmax_length, "pair:bond_length");
+  }
+  if (nlocal > nmax_smin) {
+    nmax_smin = atom->nmax;
+    memory->destroy(smin_new);
+    memory->create(smin_new, nmax_smin, "pair:smin_new");
+  }
+  // a second evaluation of the last step (setup of a new run, read_restart): no breaking, no
+  // new smallest stretches, the bonds that broke then act again, and an atom that lost bonds
+  // keeps the dilatation they counted in
+  const bool replay = update->setupflag && update->ntimestep == alpha_state->last_step;
+  if (!lps_state->ready) {
+    sum_weighted_volumes();
+    lps_state->ready = 1;
+  }
+  const double *m = lps_state->weighted_volume;
+  double *theta = lps_state->dilatation, *lost = lps_state->lost;
+
+  // 1. the dilatations, over the bonds intact at the start of the step, then to the ghosts
+#if defined(_OPENMP)
+#pragma omp parallel for num_threads(comm->nthreads) if (comm->nthreads > 1) schedule(static, 512)
+#endif
+  for (int i = 0; i < nlocal; i++) {
+    const double th = dilatation_of(i, bond_length + bonds->bond_start[i]);
+    if (!(replay && lost[i] > 0.0)) theta[i] = th;
+    atom_states[i] = LPS::atom_state(theta[i], m[i]);
+  }
+  comm->forward_comm(this);
+
+  // 2. the bonds: forces, and breaking (peri/lps: a bond acts in the step it breaks)
+  const double *xx = atom->x[0];
+  const int *type = atom->type;
+  double *smin = atom->s0;    // smallest bond stretch at the previous step, ghosts included
+  double **fbroken = alpha_state->fbroken;
+  const bool canonical = bonds->raw_positions();    // periodic: both ends decide alike
+  // one s00 and alpha for every type pair: no per-bond lookups
+  bool multi = false;
+  const double s00_one = critical_stretch[1][1], alpha_one = alpha[1][1];
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = 1; j <= atom->ntypes; j++)
+      if (critical_stretch[i][j] != s00_one || alpha[i][j] != alpha_one) multi = true;
+  for_each_row<EVFLAG>([&](int i, double *fi, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
+    const int itype = type[i];
+    const LPS::Moduli mod = LPS::moduli(bulk[itype][itype], shear[itype][itype]);    // i's type
+    const LPS::AtomState si = atom_states[i];
+    const double theta_i = theta[i], theta_third_i = LPS::third(theta_i), smin_i = smin[i];
+    const double *r_row = bond_length + bonds->bond_start[i];
+    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
+    auto s0_with = [&](int j) BBPD_ROW_BODY {
+      if (!multi) return BBPD::PMB::critical_stretch(s00_one, alpha_one, smin_i, smin[j], false);
+      return BBPD::PMB::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
+                                         smin_i, smin[j], false);
+    };
+    // the row's force into f and its tallies into tally, in row order; with CHECK also its
+    // smallest stretch and whether a bond is past its critical stretch; with CACHED the bond
+    // lengths of the dilatation pass (the row as it was then)
+    double tally[7];
+    auto row_sum = [&](auto check, auto cached, double *f, double &snew) {
+      constexpr bool CHECK = decltype(check)::value, CACHED = decltype(cached)::value;
+      const int n = bonds->nbond[i];
+      return bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
+        double ax = 0.0, ay = 0.0, az = 0.0;
+        double eng = 0.0, v0 = 0.0, v1 = 0.0, v2 = 0.0, v3 = 0.0, v4 = 0.0, v5 = 0.0;
+        bool past = false;
+        for (int k = 0; k < n; k++) {
+          const int j = BBPD::partner_index(bj, i, k);
+          const double xi0 = vals.xi0_at(k, j), wv = vals.coef_at(k, j);
+          const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
+          const double r = CACHED ? r_row[k] : std::sqrt(dx * dx + dy * dy + dz * dz);
+          const double e = LPS::elongation(r, xi0);
+          const double t = LPS::force_state(mod, wv, xi0, e, si, atom_states[j]);
+          const double fpl = r > 0.0 ? t / r : 0.0;
+          ax += fpl * dx;
+          ay += fpl * dy;
+          az += fpl * dz;
+          if (EVFLAG) {    // sums of the bonds' terms, the factors applied once per row
+            const double ed = LPS::deviatoric_extension(e, xi0, theta_third_i);
+            eng += wv * (ed * ed);
+            v0 += fpl * dx * dx;
+            v1 += fpl * dy * dy;
+            v2 += fpl * dz * dz;
+            v3 += fpl * dx * dy;
+            v4 += fpl * dx * dz;
+            v5 += fpl * dy * dz;
+          }
+          if (CHECK) {
+            const double s = canonical
+                ? StretchRule::stretch(LPS::elongation(breaking_length(i, j), xi0), xi0)
+                : StretchRule::stretch(e, xi0);
+            snew = std::min(snew, s);
+            past |= StretchRule::past_critical(s, s0_with(j), 0.0);
+          }
+        }
+        f[0] = ax;
+        f[1] = ay;
+        f[2] = az;
+        // atom i's half of each bond's energy (as peri/lps tallies it) and of its virial
+        tally[0] = END_SHARE * LPS::deviatoric_energy_of(mod, si.inv_m, eng);
+        const double v[6] = {v0, v1, v2, v3, v4, v5};
+        for (int c = 0; c < 6; c++) tally[1 + c] = -BondModel::virial_share(1.0, v[c], 1.0);
+        return past;
+      });
+    };
+    double snew = std::numeric_limits<double>::max();
+    if (replay) {
+      smin_new[i] = smin_i;
+      row_sum(std::false_type(), std::true_type(), fi, snew);
+    } else {
+      const bool had_bonds = bonds->nbond[i] > 0;
+      const bool broken = row_sum(std::true_type(), std::true_type(), fi, snew);
+      smin_new[i] = had_bonds ? snew : BBPD::PMB::NO_BOND_STRETCH;
+      double fb[3] = {0.0, 0.0, 0.0};
+      int nlost = 0;
+      if (broken) {
+        // remove the bonds past their critical stretch, in row order, each adding its force
+        // (fbroken, applied again by a second evaluation of this step), then sum the rest
+        nlost = bonds->remove_bonds_if(i, [&](int k) {
+          const int j = bonds->partner_of(i, k);
+          const double xi0 = bonds->xi0_of(i, k);
+          const double r = canonical ? breaking_length(i, j) : [&] {
+            const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
+            return std::sqrt(dx * dx + dy * dy + dz * dz);
+          }();
+          if (!StretchRule::past_critical(StretchRule::stretch(LPS::elongation(r, xi0), xi0), s0_with(j), 0.0))
+            return false;
+          double bond_tally[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+          add_bond_force<1>(i, j, xi0, bonds->coef_of(i, k, xi0), fb, bond_tally);
+          // the energy the bond held at atom i goes with it (term 3 of compute bbpd/energy)
+          bonds->ebroken[i] += bond_tally[0] * atom->vfrac[i];
+          if (EVFLAG) {
+            for (int c = 0; c < 7; c++) acc[c] += bond_tally[c];
+            if (eflag_atom) eatom[i] += bond_tally[0];
+            for (int c = 0; c < 6 && vflag_atom; c++) vatom[i][c] += bond_tally[1 + c];
+          }
+          return true;
+        });
+        row_sum(std::false_type(), std::false_type(), fi, snew);    // the row has shifted
+      }
+      for (int c = 0; c < 3; c++) fbroken[i][c] = fb[c];
+      lost[i] = nlost;
+    }
+    for (int c = 0; c < 3; c++) fi[c] += fbroken[i][c];
+    if (EVFLAG) {
+      tally[0] += LPS::dilatation_energy(mod.bulk, theta_i);
+      acc[0] += tally[0];
+      if (eflag_atom) eatom[i] += tally[0];
+      for (int c = 0; c < 6; c++) {
+        acc[1 + c] += tally[1 + c];
+        if (vflag_atom) vatom[i][c] += tally[1 + c];
+      }
+    }
+  });
+  // the new smin takes effect at the next step, once sent to the ghosts
+  for (int i = 0; i < nlocal; i++) smin[i] = smin_new[i];
+  alpha_state->last_step = update->ntimestep;
+}
+
+template void PairBBPDLPS::eval_lps<0>();
+template void PairBBPDLPS::eval_lps<1>();

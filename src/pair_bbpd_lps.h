@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* -*- c++ -*- ----------------------------------------------------------
+   BBPD plugin: pair style bbpd/lps, the linear peridynamic solid of LAMMPS's
+   peri/lps (bbpd_lps.h) in the bbpd bond storage.
+
+   'pair_style bbpd/lps 3d' takes 'pair_coeff I J K G delta s00 alpha' as peri/lps does
+   and follows its rules: peri/pmb's families, volume ramp, short-range forces and
+   Silling-Askari breaking (pair_bbpd_pmb.h), the influence function 1/|xi|, and per step
+     1. the dilatation theta_i of every local atom over its intact bonds, sent with
+        theta_i / m_i and 1 / m_i to the ghost atoms (one forward communication);
+     2. the bond forces of the LPS force state; a bond past s00 - alpha max(smin_i, smin_j)
+        acts in this step and breaks (the order of peri/lps);
+     3. the short-range forces.
+   The weighted volumes m_i are summed once, at the first force evaluation after the families
+   were built, and kept with the dilatation of the last step in fix bbpd/lps (fix_bbpd_lps.h).
+------------------------------------------------------------------------- */
+
+#ifndef LMP_PAIR_BBPD_LPS_H
+#define LMP_PAIR_BBPD_LPS_H
+
+#include "bbpd_lps.h"
+#include "pair_bbpd_pmb.h"
+
+namespace LAMMPS_NS {
+
+class PairBBPDLPS : public PairBBPDPMB {
+ public:
+  PairBBPDLPS(class LAMMPS *);
+  ~PairBBPDLPS() override;
+
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  void *extract(const char *, int &) override;
+  double memory_usage() override;
+
+ protected:
+  double **bulk, **shear;           // K and G of peri/lps, per type pair
+  class FixBBPDLPS *lps_state;      // weighted volumes and the last step's dilatations
+  int nmax_lps;
+  BBPD::LPS::AtomState *atom_states;    // theta / m, 1 / m of every local and ghost atom, this step
+  int nmax_length;
+  double *bond_length;    // current length of every intact bond end, from the dilatation pass
+
+  void eval_bonds() override;
+  void init_rules() override;
+  double short_range_stiffness(int itype, int jtype) const override;
+  double bond_stiffness(int i, int k) const override;
+  std::string report_type_pair(int i, int j) const override;
+  std::string report_rules() const override;
+
+  void allocate_moduli();
+  void sum_weighted_volumes();
+  double dilatation_of(int i, double *r);
+  template <int EVFLAG> void eval_lps();
+  template <int EVFLAG>
+  void add_bond_force(int i, int j, double xi0, double wv, double *f, double *acc);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
