@@ -32,7 +32,7 @@ def row(setup, dx, fit, faces=(None, None)):
             "bonds": 1.0e5, "steps": 100.0, "first_bond_us": 15.0, "band_us": 20.0,
             "initial_deg": fit - 2.0, "fit_deg": fit, "chord_deg": fit + 1.0,
             "fit_face_lo_deg": faces[0], "fit_face_hi_deg": faces[1], "chord_face_deg": None,
-            "length_end_mm": 80.0, "loop_s": 10.0, "memory_MB": 100.0,
+            "length_end_mm": 80.0, "crack_stops": "edge 81", "loop_s": 10.0, "memory_MB": 100.0,
             "nprocs": 2.0 if setup == "3d" else 1.0}
 
 
@@ -43,5 +43,6 @@ def test_summary_follows_the_rows():
     assert "At delta = 2.25 mm (4 horizons through the plate" in text
     assert "61.0° on the mid-plane and 59.0 / 59.0° on the faces" in text
     assert "62.5° (-2.5° in 3D)" in text
+    assert "the crack reaching the plate's edge at 81 µs" in text
     assert "from 3 to 2.25 mm moves the mid-plane fit angle by +1.0°" in text
     assert kw3d.table(rows).count("\n") == len(rows) + 1

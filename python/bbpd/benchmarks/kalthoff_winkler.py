@@ -120,7 +120,12 @@ def notch_cracks(x, y, phi, g):
     for side, yn, outer in (("lo", g["ylo"], y < g["ylo"]), ("hi", g["yhi"], y > g["yhi"])):
         # flank seeds: crack atoms within dx of the notch line (flank: see read_log), up to its tip (on a rotated
         # grid the band along the cut can have gaps wider than LINK far from the tip)
-        flank = crack & (x <= g["a"]) & (np.abs(y - yn) < g.get("flank", g["dx"]))
+        band = g.get("flank", g["dx"])
+        flank = crack & (x <= g["a"]) & (np.abs(y - yn) < band)
+        if band > g["dx"]:
+            # the slot's faces keep their bonds through the thickness (damage below PHI_CRACK
+            # on the mid-plane): the crack is seeded at the slot's round tip as well
+            flank |= crack & (np.hypot(x - g["a"], y - yn) < band)
         seeds = set(labels[np.isin(idx, np.nonzero(flank)[0])])
         linked = np.zeros_like(crack)
         linked[idx[np.isin(labels, list(seeds))]] = True

@@ -46,7 +46,7 @@ NPROCS = 2
 TIMEOUT_S = 4 * 3600              # a 3D run on a shared 2-core machine
 COLUMNS = ("setup", "kernel", "dx_mm", "m", "delta_mm", "horizons_through", "atoms", "bonds",
            "steps", "first_bond_us", "band_us", "initial_deg", "fit_deg", "chord_deg",
-           "fit_face_lo_deg", "fit_face_hi_deg", "chord_face_deg", "length_end_mm",
+           "fit_face_lo_deg", "fit_face_hi_deg", "chord_face_deg", "length_end_mm", "crack_stops",
            "loop_s", "memory_MB", "nprocs")
 
 
@@ -100,7 +100,8 @@ def measure(workdir, setup, dx, m):
            "initial_deg": r.get("initial_deg"), "fit_deg": r.get("fit_t70_deg"),
            "chord_deg": r.get("chord_t70_deg"), "length_end_mm": r["length_end_mm"],
            "fit_face_lo_deg": None, "fit_face_hi_deg": None, "chord_face_deg": None,
-           "nprocs": NPROCS if setup == "3d" else 1}
+           "nprocs": NPROCS if setup == "3d" else 1,
+           "crack_stops": projectile.row(r)["crack_stops"]}
     row.update(log_figures(log))
     if setup == "3d":
         g = {k: r[k] for k in ("dx", "delta", "a", "ylo", "yhi", "Lx", "Ly", "dt", "flank")}
@@ -128,9 +129,9 @@ def _f(v, spec):
 def table(rows, command=None):
     head = ("| setup | dx (mm) | m | delta (mm) | horizons through 9 mm | atoms | bonds | steps | "
             "first bond (us) | damage band (us) | initial (deg) | fit, mid-plane (deg) | "
-            "fit, faces (deg) | chord, mid-plane / faces (deg) | crack length (mm) | loop (s) | "
-            "memory (MB) | ranks |")
-    lines = [head, "|" + "---|" * 18]
+            "fit, faces (deg) | chord, mid-plane / faces (deg) | crack length (mm) | crack stops (us) | "
+            "loop (s) | memory (MB) | ranks |")
+    lines = [head, "|" + "---|" * 19]
     for r in sorted(rows, key=lambda r: (-r["dx_mm"], r["setup"])):
         faces = ("-" if r["fit_face_lo_deg"] is None else
                  f"{r['fit_face_lo_deg']:.1f} / {r['fit_face_hi_deg']:.1f}")
@@ -140,7 +141,7 @@ def table(rows, command=None):
             _f(r["steps"], ".0f"), _f(r["first_bond_us"], ".1f"), _f(r["band_us"], ".1f"),
             _f(r["initial_deg"], ".1f"), _f(r["fit_deg"], ".1f"), faces,
             f"{_f(r['chord_deg'], '.1f')} / {_f(r['chord_face_deg'], '.1f')}",
-            _f(r["length_end_mm"], ".0f"), _f(r["loop_s"], ".0f"), _f(r["memory_MB"], ".0f"),
+            _f(r["length_end_mm"], ".0f"), r["crack_stops"], _f(r["loop_s"], ".0f"), _f(r["memory_MB"], ".0f"),
             f"{r['nprocs']:g}"]) + " |")
     out = "\n".join(lines)
     return out if command is None else f"Made by `{command}`.\n\n" + out
@@ -160,7 +161,10 @@ def summary(rows):
              f"{d3['memory_MB']:.0f} MB) the 3D crack's fit angle is {_f(d3['fit_deg'], '.1f')}° "
              f"on the mid-plane and {_f(d3['fit_face_lo_deg'], '.1f')} / "
              f"{_f(d3['fit_face_hi_deg'], '.1f')}° on the faces, first bond at "
-             f"{d3['first_bond_us']:.1f} µs")
+             f"{d3['first_bond_us']:.1f} µs, the crack "
+             + ("reaching the plate's edge at " + d3["crack_stops"].split()[1] + " µs"
+                if d3["crack_stops"].startswith("edge") else d3["crack_stops"].split()[0]
+                .replace("running", "still running at the end").replace("arrest", "arrested")))
         if d2 and d2["fit_deg"] is not None and d3["fit_deg"] is not None:
             s += (f"; the 2D plate of the same grid: {d2['fit_deg']:.1f}° "
                   f"({d3['fit_deg'] - d2['fit_deg']:+.1f}° in 3D), first bond at "
