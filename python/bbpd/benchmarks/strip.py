@@ -160,9 +160,17 @@ def run(workdir, kernel="gaussian", Delta=2.0, dx=DX, m=M, H_over_delta=H_OVER_D
     return res
 
 
-def write_csv(path, rows, command):
+def write_csv(path, rows, command, earlier=()):
+    """earlier: the 'made by' and 'rows added by' lines of the CSV that --append extends"""
+    made = list(earlier) + [f"{'rows added by' if earlier else 'made by'}: {command}"]
     csvfile.write_table(path, rows, CSV_COLUMNS,
-                        (f"made by: {command}", f"timing: LAMMPS loop time, 1 rank, {machine()}"))
+                        made + [f"timing: LAMMPS loop time, 1 rank, {machine()}"])
+
+
+def provenance(path):
+    """The 'made by' and 'rows added by' comment lines of a CSV write_csv wrote."""
+    return [ln[2:] for ln in Path(path).read_text().splitlines()
+            if ln.startswith(("# made by: ", "# rows added by: "))]
 
 
 def read_rows(path):
@@ -193,7 +201,9 @@ def main(argv=None):
                    help="measure every run folder in --work (KERNEL-mM-HH-DD) again, run nothing")
     p.add_argument("--figure", help="draw the kinetic-law figure of the CSV's rows here")
     a = p.parse_args(argv)
-    rows = read_rows(a.csv) if a.append and a.csv and Path(a.csv).is_file() else []
+    appending = a.append and a.csv and Path(a.csv).is_file()
+    rows = read_rows(a.csv) if appending else []
+    earlier = provenance(a.csv) if appending else []
     if a.collect:
         rows = collect(a.work)
         a.kernels = []
@@ -217,7 +227,8 @@ def main(argv=None):
                     rows.append(r)
     rows.sort(key=lambda r: (r["kernel"], r["m"], r["H_over_delta"], r["Delta"]))
     if a.csv:
-        write_csv(a.csv, rows, "tools/python -m bbpd.benchmarks.strip " + " ".join(argv or sys.argv[1:]))
+        write_csv(a.csv, rows, "tools/python -m bbpd.benchmarks.strip " + " ".join(argv or sys.argv[1:]),
+                  earlier)
     if a.figure:
         figure(rows, a.figure)
     return 0
@@ -253,7 +264,9 @@ def table_markdown(rows, command=None):
     head = ("| kernel | m | H/delta | Delta (CCM) | Delta' = U'/G_c (model) | crossed | v_ss/c_R | "
             "Gamma/G_c (bonds) | Phi/G_c (waves: behind + ahead) | closure (%) | "
             "balance drift (% of bond energy) | atoms | loop time (s) |")
-    lines = ([f"Made by `{command}`.", ""] if command else []) + [head, "|" + "---|" * (head.count("|") - 1)]
+    made = [command] if isinstance(command, str) else list(command or [])
+    intro = " ".join(f"{'Made by' if k == 0 else 'Rows added by'} `{c}`." for k, c in enumerate(made))
+    lines = ([intro, ""] if made else []) + [head, "|" + "---|" * (head.count("|") - 1)]
     for r in rows:
         if r["crossed"]:
             run = (f"yes | {r['v_ss_over_cR']:.3f} | {r['Gamma_over_Gc']:.3f} | "
@@ -320,10 +333,14 @@ def summary_text(rows):
             ms = sorted({r["m"] for r in rows if r["kernel"] == k and r["H_over_delta"] == h
                          and r["Delta"] == 2.0})
             if len(ms) > 1:
+                state = {r["m"]: r["state"] for r in rows if r["kernel"] == k and
+                         r["H_over_delta"] == h and r["Delta"] == 2.0}
                 sp = [(m, speed_at(rows, k, m, h, 2.0)) for m in ms]
                 parts.append(f"against m (Delta = 2, H/delta = {h:g}): " + ", ".join(
-                    f"{s:.3f} at m = {m:g}" for m, s in sp) + "; over the grid's own c_R: " +
-                    ", ".join(f"{s / grid_rayleigh_ratio(k, m):.3f}" for m, s in sp))
+                    (f"{s:.3f}" if state[m] == "crossed" else state[m]) + f" at m = {m:g}"
+                    for m, s in sp) + "; over the grid's own c_R: " +
+                    ", ".join(f"{s / grid_rayleigh_ratio(k, m):.3f}" if state[m] == "crossed"
+                              else state[m] for m, s in sp))
         ms_all = sorted({r["m"] for r in rows if r["kernel"] == k})
         parts.append("the grid's own c_R over c_R: " + ", ".join(
             f"{grid_rayleigh_ratio(k, m):.3f} at m = {m:g}" for m in ms_all))

@@ -69,7 +69,8 @@ def kw_summary(data):
 
 
 def strip_table(data):
-    return strip.table_markdown(strip.read_rows(STRIP_CSV), _made_by(STRIP_CSV))
+    return strip.table_markdown(strip.read_rows(STRIP_CSV),
+                                [ln.split(": ", 1)[1] for ln in strip.provenance(STRIP_CSV)])
 
 
 def strip_summary(data):
