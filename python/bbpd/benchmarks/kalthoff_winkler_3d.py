@@ -27,11 +27,12 @@ from pathlib import Path
 import numpy as np
 
 from bbpd import csvfile, readers
+from bbpd import jobs as jobmod
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
 from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.benchmarks.mode1_propagation import machine
-from bbpd.jobs import ROOT
+from bbpd.jobs import ROOT, Job, Spec
 from bbpd.runner import run_lammps
 
 CSV = ROOT / "examples" / "kalthoff-winkler" / "results" / "kw3d.csv"
@@ -113,13 +114,18 @@ def measure(workdir, setup, dx, m):
     return {c: row[c] for c in COLUMNS}
 
 
-def run_case(work, setup, dx, m=M, reuse=False):
-    wd = Path(work) / f"{setup}-dx{dx * 1e3:g}mm-m{m:g}"
+def run_case(workdir, setup, dx, m=M, reuse=False, nprocs=None):
+    """One run in workdir/SETUP-dxDXmm-mM, measured; nprocs: ranks of a 3D run (default NPROCS;
+    the report runs every job on one rank: the bits do not depend on it)"""
+    wd = Path(workdir) / f"{setup}-dx{dx * 1e3:g}mm-m{m:g}"
+    ranks = (NPROCS if nprocs is None else nprocs) if setup == "3d" else 1
     if not (reuse and (wd / "log.lammps").is_file()):
         script = projectile.EXAMPLE_3D if setup == "3d" else kw.EXAMPLE
-        run_lammps(str(script), wd, nprocs=NPROCS if setup == "3d" else 1,
-                   vars=case_vars(dx, m, setup=setup), timeout=TIMEOUT_S)
-    return measure(wd, setup, dx, m)
+        run_lammps(str(script), wd, nprocs=ranks, vars=case_vars(dx, m, setup=setup),
+                   timeout=TIMEOUT_S)
+    row = measure(wd, setup, dx, m)
+    row["nprocs"] = readers.loop_time((wd / "log.lammps").read_text())[1] or ranks
+    return row
 
 
 def _f(v, spec):
@@ -176,6 +182,50 @@ def summary(rows):
         out.append(f"refining delta from {res[0]['delta_mm']:g} to {res[-1]['delta_mm']:g} mm "
                    f"moves the mid-plane fit angle by {res[-1]['fit_deg'] - res[0]['fit_deg']:+.1f}°")
     return ". ".join(s[0].upper() + s[1:] for s in out) + "." if out else "No 3D run."
+
+
+# ---------------------------------------------------------------------------- report
+
+REPORT_TITLE = "Kalthoff-Winkler in 3D, resolved through the plate's thickness"
+ESTIMATE_S = {("3d", 1.0e-3): 1400.0, ("3d", 0.75e-3): 3400.0, ("2d", 1.0e-3): 60.0,
+              ("2d", 0.75e-3): 120.0}    # wall time on 1 rank, from the 2-rank runs (CSV)
+
+
+def jobs():
+    """The runs as bbpd.report specs (tools/reproduce --full)."""
+    inputs = (kw.EXAMPLE, projectile.EXAMPLE_3D, Path(__file__), Path(kw.__file__),
+              Path(study.__file__), Path(projectile.__file__))
+    specs = []
+    for dx in RESOLUTIONS:
+        for setup in ("2d", "3d"):
+            label = f"Kalthoff-Winkler {setup} m = {M:g} dx = {dx * 1e3:g} mm"
+            job = Job(label=label, func="bbpd.report:run_job",
+                      kwargs={"target": "bbpd.benchmarks.kalthoff_winkler_3d:run_case",
+                              "args": {"setup": setup, "dx": dx, "nprocs": 1}, "label": label},
+                      inputs=tuple(str(p) for p in inputs), estimate_s=ESTIMATE_S[setup, dx])
+            specs.append(Spec("kw3d", KERNEL, dx, job))
+    return specs
+
+
+def section(specs, results, figdir, notes):
+    """The 3D plate's section of REPORT.md (tools/reproduce --full)."""
+    if not specs:
+        return {"title": REPORT_TITLE,
+                "setup": f"Not run by default ({len(jobs())} runs, about 1.4 h on one core): "
+                         "`tools/reproduce --full` runs them; the last measured table is in "
+                         "examples/kalthoff-winkler/README.md, '3D plate resolved through its "
+                         "thickness'.", "table": "", "text": "", "figures": []}
+    rows = [results[s.job.label] for s in specs if s.job.label in results
+            and "error" not in results[s.job.label]]
+    bad = jobmod.finished(specs, results)[1]
+    text = summary(rows) if rows else ""
+    if bad:
+        text += " " + jobmod.not_measured(bad)
+    return {"title": REPORT_TITLE,
+            "setup": f"The 9 mm plate struck by the projectile, Gaussian kernel, m = {M:g}, "
+                     "beside the 2D plate of the same grid; see "
+                     "examples/kalthoff-winkler/README.md.",
+            "table": table(rows) if rows else "", "text": text, "figures": []}
 
 
 def read_rows(path=CSV):

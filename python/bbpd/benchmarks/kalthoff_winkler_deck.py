@@ -21,11 +21,12 @@ import time
 from pathlib import Path
 
 from bbpd import csvfile
+from bbpd import jobs as jobmod
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
 from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.benchmarks.mode1_propagation import machine
-from bbpd.jobs import ROOT
+from bbpd.jobs import ROOT, Job, Spec
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 
@@ -129,6 +130,50 @@ def summary(rows):
     out.append(f"within {study.ANGLE_TARGET_DEG:.0f} ± {study.ANGLE_TOL_DEG:.0f}° with cracks "
                "that cross the plate: " + ("; ".join(hits) if hits else "none"))
     return ". ".join(s[0].upper() + s[1:] for s in out) + "."
+
+
+# ---------------------------------------------------------------------------- report
+
+REPORT_TITLE = "Kalthoff-Winkler on the standard deck (Borden et al. 2012) beside the paper's loading"
+ESTIMATE_S = {1.0e-3: 10.0, 0.5e-3: 80.0}    # loop CPU of one run on 1 rank (the CSV's)
+
+
+def jobs(nprocs=1):
+    """The runs as bbpd.report specs (tools/reproduce --full)."""
+    inputs = (kw.EXAMPLE, Path(__file__), Path(kw.__file__), Path(study.__file__),
+              Path(projectile.__file__), kw.ROOT / "potentials" / "kalthoff_winkler_steel.bbpd")
+    specs = []
+    for dx in DX_VALUES:
+        for deck in DECKS:
+            for k in KERNELS:
+                label = f"Kalthoff-Winkler deck {deck} {k} dx = {dx * 1e3:g} mm"
+                job = Job(label=label, func="bbpd.report:run_job",
+                          kwargs={"target": "bbpd.benchmarks.kalthoff_winkler_deck:run_case",
+                                  "args": {"deck": deck, "kernel": k, "dx": dx, "nprocs": nprocs},
+                                  "label": label},
+                          inputs=tuple(str(p) for p in inputs), estimate_s=ESTIMATE_S[dx])
+                specs.append(Spec("kwdeck", k, dx, job))
+    return specs
+
+
+def section(specs, results, figdir, notes):
+    """The standard deck's section of REPORT.md (tools/reproduce --full)."""
+    if not specs:
+        return {"title": REPORT_TITLE,
+                "setup": f"Not run by default ({len(jobs())} runs): `tools/reproduce --full` runs "
+                         "them; the last measured table is in examples/kalthoff-winkler/README.md, "
+                         "'The standard deck'.", "table": "", "text": "", "figures": []}
+    rows = [results[s.job.label] for s in specs if s.job.label in results
+            and "error" not in results[s.job.label]]
+    bad = jobmod.finished(specs, results)[1]
+    text = summary(rows) if rows else ""
+    if bad:
+        text += " " + jobmod.not_measured(bad)
+    return {"title": REPORT_TITLE,
+            "setup": "; ".join(f"{d}: {DECKS[d][0]}" for d in DECKS) + ". Prescribed velocity on "
+                     "the struck layer, to 100 us, the loading study's angles; see "
+                     "examples/kalthoff-winkler/README.md, 'The standard deck'.",
+            "table": table(rows) if rows else "", "text": text, "figures": []}
 
 
 def read_rows(path=CSV):

@@ -25,8 +25,10 @@ import time
 from pathlib import Path
 
 from bbpd import csvfile
+from bbpd import jobs as jobmod
 from bbpd.benchmarks import kink as kinkbench
 from bbpd.benchmarks.mode1_propagation import machine
+from bbpd.jobs import Job, Spec
 from bbpd.runner import run_lammps
 
 CSV = kinkbench.FOLDER / "results" / "kink_convergence.csv"
@@ -48,8 +50,8 @@ def case_vars(m, r_over_delta):
             "dtfactor": repr(DT_PER_M * m)}
 
 
-def run_case(work, m, r_over_delta, nprocs=1, reuse=False):
-    wd = Path(work) / f"m{m:g}-R{r_over_delta:g}"
+def run_case(workdir, m, r_over_delta, nprocs=1, reuse=False):
+    wd = Path(workdir) / f"m{m:g}-R{r_over_delta:g}"
     if not (reuse and (wd / "final.dump").is_file()):
         run_lammps(str(kinkbench.EXAMPLE), wd, nprocs=nprocs, vars=case_vars(m, r_over_delta),
                    timeout=4 * 3600)
@@ -117,6 +119,46 @@ def verdict(rows):
                 f"{d:+.1f}° at m = {m:g}" for m, d in pairs))
     return (". ".join(s[0].upper() + s[1:] for s in out) + "." if out else
             "No verdict: it needs two values of m at R/delta = 10.")
+
+
+# ---------------------------------------------------------------------------- report
+
+REPORT_TITLE = "Kink test: convergence of the pure Mode II angle in m and in the disk's size"
+
+
+def jobs(nprocs=1):
+    """The runs as bbpd.report specs (tools/reproduce --full)."""
+    inputs = (kinkbench.EXAMPLE, Path(__file__), Path(kinkbench.__file__))
+    specs = []
+    for m, rd in CASES:
+        label = f"kink convergence m = {m:g} R/delta = {rd:g}"
+        job = Job(label=label, func="bbpd.report:run_job",
+                  kwargs={"target": "bbpd.benchmarks.kink_convergence:run_case",
+                          "args": {"m": m, "r_over_delta": rd, "nprocs": nprocs}, "label": label},
+                  inputs=tuple(str(p) for p in inputs),
+                  estimate_s=90.0 * (m / 5.0) ** 3 * (rd / 10.0) ** 3)
+        specs.append(Spec("kinkconv", KERNEL, DELTA / m, job))
+    return specs
+
+
+def section(specs, results, figdir, notes):
+    """The kink convergence section of REPORT.md (tools/reproduce --full)."""
+    if not specs:
+        return {"title": REPORT_TITLE,
+                "setup": f"Not run by default ({len(jobs())} runs, about an hour): "
+                         "`tools/reproduce --full` runs them; the last measured table is in "
+                         "examples/kink-mixed-mode/README.md, 'Convergence in m and in the disk's "
+                         "size'.", "table": "", "text": "", "figures": []}
+    rows = [results[s.job.label] for s in specs if s.job.label in results
+            and "error" not in results[s.job.label]]
+    bad = jobmod.finished(specs, results)[1]
+    text = verdict(rows) if rows else ""
+    if bad:
+        text += " " + jobmod.not_measured(bad)
+    return {"title": REPORT_TITLE,
+            "setup": f"Gaussian kernel, pure Mode II, crack along the rows, delta = "
+                     f"{DELTA * 1e3:g} mm; see examples/kink-mixed-mode/README.md.",
+            "table": table(rows) if rows else "", "text": text, "figures": []}
 
 
 def read_rows(path=CSV):

@@ -1,8 +1,10 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """One section of REPORT.md per benchmark: its title, the setup it ran, the table, the
 paragraph and the figures, each from tables, prose and figures."""
-from bbpd.benchmarks import (branching, kalthoff_winkler_grid, kalthoff_winkler_projectile,
-                             kalthoff_winkler_study, kink, mode1_propagation, strip)
+from bbpd.benchmarks import (branching, kalthoff_winkler_3d, kalthoff_winkler_deck,
+                             kalthoff_winkler_grid, kalthoff_winkler_projectile,
+                             kalthoff_winkler_study, kink, kink_convergence, mode1_propagation,
+                             strip)
 
 from . import figures, prose, tables
 from .runs import MODE1_TABLE3_DX
@@ -104,4 +106,5 @@ BUILDERS = (("dispersion", dispersion_section), ("mode1", mode1_section),
             ("strip", strip_section),
             ("kink", kink_section), ("branching", branching_section), ("kw", kw_section),
             ("kwstudy", kw_study_section), ("kwprojectile", kw_projectile_section),
-            ("kwgrid", kw_grid_section))
+            ("kwgrid", kw_grid_section), ("kwdeck", kalthoff_winkler_deck.section),
+            ("kw3d", kalthoff_winkler_3d.section), ("kinkconv", kink_convergence.section))
