@@ -7,8 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from bbpd import snapshots
-from bbpd.runner import run_lammps
+from bbpd import runner, snapshots
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 LONG_SIDE = 600            # pixels, the inputs' imgpx
@@ -33,7 +32,7 @@ def png_size(path):
 
 def pictures(folder, workdir, images, version=None):
     script, variables = CASES[folder]
-    run_lammps(str(EXAMPLES / folder / script), workdir, vars={**variables, "images": images},
+    runner.run_lammps(str(EXAMPLES / folder / script), workdir, vars={**variables, "images": images},
                version=version)
     return snapshots.find(workdir)
 
@@ -65,5 +64,5 @@ def test_pictures_change_no_output_and_images_no_draws_none(tmp_path):
 def test_scripted_runs_leave_the_pictures_off(tmp_path):
     """bbpd.runner passes images no unless told: the benchmarks and tests draw nothing"""
     script, variables = CASES["kalthoff-winkler"]
-    run_lammps(str(EXAMPLES / "kalthoff-winkler" / script), tmp_path, vars=variables)
+    runner.run_lammps(str(EXAMPLES / "kalthoff-winkler" / script), tmp_path, vars=variables)
     assert snapshots.find(tmp_path) == []
