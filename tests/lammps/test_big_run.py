@@ -1,8 +1,11 @@
 """examples/big-run/in.big on a small block (2 ranks, seconds): it runs, prints the memory lines
 (the pair style's memory of the bonds, LAMMPS's per-rank memory) that bbpd.benchmarks.big_run
-reads, writes its two alternating restart files, and writes none with -var restart no. The
-large run of its README is not part of the tests (minutes and most of the machine's memory)."""
+reads, writes its two alternating restart files, a run continued from the last one gives the
+thermo of the continuous run, and -var restart no writes none. The large run of its README is
+not part of the tests (minutes and most of the machine's memory)."""
+from bbpd import readers
 from bbpd.benchmarks import big_run
+from bbpd.runner import run_lammps
 
 N = 10             # points per edge: 1000 atoms
 RANKS = 2
@@ -18,6 +21,31 @@ def test_small_block_prints_its_memory_and_writes_restarts(tmp_path):
     assert r["rss_bytes"] > r["lammps_mb_per_rank"] * big_run.MBYTES
     for name in ("big.a.restart", "big.b.restart"):
         assert (tmp_path / name).stat().st_size > 0, name
+
+
+CONTINUE = """plugin          load bbpdplugin.so
+read_restart    big.b.restart
+fix             integrate all nve
+thermo_style    custom step atoms pe ke
+thermo_modify   format float %.15g
+thermo          1
+run             {steps}
+"""
+
+
+def test_continued_from_its_restart_equals_the_continuous_run(tmp_path):
+    """the file of step 4 (big.b.restart, the second of the pair) holds the whole state"""
+    cont, split = tmp_path / "continuous", tmp_path / "split"
+    energies = []
+    for work, steps in ((cont, 6), (split, 4)):
+        out = run_lammps(str(big_run.EXAMPLE), work, nprocs=RANKS,
+                         vars={"n": N, "steps": steps}).output
+        energies.append(readers.thermo_tables(out)[-1])
+    more = run_lammps(CONTINUE.format(steps=2), split, nprocs=RANKS).output
+    after = readers.thermo_tables(more)[-1]
+    assert after["Step"][-1] == energies[0]["Step"][-1] == 6
+    for column in ("PotEng", "KinEng"):
+        assert after[column][-1] == energies[0][column][-1], column
 
 
 def test_restart_no_writes_none(tmp_path):
