@@ -44,6 +44,7 @@ using BBPD::lane_total;
 
 static constexpr double DT_SAFETY_DEFAULT = 0.8;    // fraction of the stable bound before a warning
 static constexpr const char *BONDS_FIX_ID = "BBPD_BONDS";
+static constexpr double MBYTES = 1024.0 * 1024.0;    // as LAMMPS counts its "Mbytes"
 static constexpr const char *WATCHDOG_FIX_ID = "BBPD_WATCHDOG";
 // short-range contact as in LAMMPS peri/pmb: distance 0.9 x grid spacing (Parks et al., Comput.
 // Phys. Commun. 179 (2008) 777) and stiffness 15 c0 (Silling, EMU theory manual, 2005, p. 18)
@@ -842,6 +843,12 @@ void PairBBPD::report()
   // ranks choose partner offsets or indices on their own: the largest storage over the ranks
   double bytes = fb->bytes_per_bond(), gbytes = 0.0;
   MPI_Allreduce(&bytes, &gbytes, 1, MPI_DOUBLE, MPI_MAX, world);
+  // what the bonds fix and the pair style hold (their memory_usage, part of LAMMPS's "Per MPI
+  // rank memory" line): the size of a big run per atom and per bond
+  const double mine = bonds->memory_usage() + memory_usage();
+  double mem_sum = 0.0, mem_max = 0.0;
+  MPI_Allreduce(&mine, &mem_sum, 1, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(&mine, &mem_max, 1, MPI_DOUBLE, MPI_MAX, world);
 
   if (comm->me == 0) {
     std::string mesg = fmt::format("BBPD pair style {} model {}{}:\n", style,
@@ -864,6 +871,11 @@ void PairBBPD::report()
                         gbytes, 0.5 * gbytes,
                         gclass ? fmt::format("; table of {} distinct (reference length, "
                                              "coefficient) pairs", gclass) : std::string());
+    mesg += fmt::format("  memory of the bonds and the pair style: {:.6g} Mbytes on the largest "
+                        "rank, {:.6g} in all: {:.1f} bytes per atom, {:.1f} per bond\n",
+                        mem_max / MBYTES, mem_sum / MBYTES,
+                        atom->natoms ? mem_sum / atom->natoms : 0.0,
+                        gsum ? mem_sum / (0.5 * gsum) : 0.0);
     mesg += fmt::format("  stable timestep: eq. 25 {:.6g}, velocity-Verlet limit {:.6g}; "
                         "timestep = {:.6g} ({:.3g} of the limit)\n",
                         dt_bound_paper, dt_bound, update->dt, update->dt / dt_bound);

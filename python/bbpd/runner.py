@@ -8,6 +8,9 @@ ROOT = Path(__file__).resolve().parents[2]
 LMP = ROOT / "tools" / "lmp"
 
 MPIRUN = ["mpirun", "--allow-run-as-root", "--oversubscribe", "--bind-to", "none"]
+# the examples' pictures (dump image, their variable images): for a person watching a crack,
+# not for the scripted runs, which read the dumps; vars={"images": "yes"} turns them on
+IMAGES_OFF = {"images": "no"}
 
 
 class LammpsError(RuntimeError):
@@ -32,7 +35,8 @@ def error_line(output):
 
 def run_lammps(script, workdir, nprocs=1, version=None, check=True, vars=None, timeout=1800,
                log="log.lammps"):
-    """Write `script` to workdir/in.lammps and run it; raise LammpsError on an ERROR if check."""
+    """Write `script` to workdir/in.lammps and run it; raise LammpsError on an ERROR if check.
+    vars: LAMMPS index variables (-var NAME VALUE); images is "no" unless given."""
     workdir = Path(workdir)
     workdir.mkdir(parents=True, exist_ok=True)
     infile = workdir / "in.lammps"
@@ -41,7 +45,7 @@ def run_lammps(script, workdir, nprocs=1, version=None, check=True, vars=None, t
     else:
         infile = Path(script)
     cmd = [str(LMP), "-in", str(infile.resolve()), "-log", log]
-    for k, v in (vars or {}).items():
+    for k, v in {**IMAGES_OFF, **(vars or {})}.items():
         cmd += ["-var", str(k), str(v)]
     if nprocs > 1:
         cmd = MPIRUN + ["-np", str(nprocs)] + cmd

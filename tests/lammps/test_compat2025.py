@@ -1,8 +1,9 @@
 """The LAMMPS 4 Feb 2025 compatibility build (tools/bootstrap with BBPD_LAMMPS_VERSION=20250204,
 built by tools/test) beyond loading the plugin: forces against the NumPy reference, bitwise
-rank-count invariance with a growing crack, restart against a continuous run, and a notch
+rank-count invariance with a growing crack, restart against a continuous run, a notch
 across a periodic boundary (the one place where the plugin calls a LAMMPS function whose
-signature differs between the versions, src/bbpd_compat.h).
+signature differs between the versions, src/bbpd_compat.h), and the examples' damage pictures
+(dump image).
 
 The checks are those of test_forces.py and test_mpi_restart.py, run with the compatibility
 build selected through BBPD_LAMMPS_VERSION (tools/lmp reads it); every run's banner is checked,
@@ -29,6 +30,7 @@ def load(name):
 
 forces = load("test_forces")
 mpi_restart = load("test_mpi_restart")
+images = load("test_images")
 
 
 @pytest.fixture
@@ -83,3 +85,13 @@ def test_compat_lps_forces_equal_peri_lps(compat, tmp_path):
     def lmp(script, **kw):
         return runner.run_lammps(script, workdir=tmp_path, **kw)
     lps.test_forces_equal_peri_lps(lmp, tmp_path, "s s s")
+
+
+def test_compat_damage_pictures(compat, tmp_path):
+    """dump image is in the core of 4 Feb 2025 (a package from 4 Jul 2026 on): the examples'
+    pictures, with the same settings, from the compatibility build"""
+    found = images.pictures("kalthoff-winkler", tmp_path, "yes", version=VERSION)
+    assert BANNER in (tmp_path / "log.lammps").read_text()
+    assert len(found) == 5
+    for _, path in found:
+        assert max(images.png_size(path)) == images.LONG_SIDE

@@ -38,7 +38,8 @@ def tiny_specs(extra_input):
         report.make_spec("mode2", "gaussian", 2e-3, "bbpd.benchmarks.mode2:run",
                          {"kernel": "gaussian", "dx": 2e-3, "nprocs": 1}, m2, 1.0),
         report.make_spec("kw", "gaussian", 4e-3, "bbpd.benchmarks.kalthoff_winkler:run",
-                         {"kernel": "gaussian", "dx": 4e-3, "nprocs": 1}, kw, 1.0),
+                         {"kernel": "gaussian", "dx": 4e-3, "nprocs": 1, "images": True}, kw,
+                         1.0),
     ]
 
 
@@ -150,9 +151,12 @@ def test_figures_are_written(calls):
     out, logs = calls
     text = logs[0][1]
     for name in ("fig4_dispersion.png", "fig9_resolutions.png", "fig12_kernels_dx2mm.png",
-                 "damage_gaussian_dx4mm.png"):
+                 "damage_gaussian_dx4mm.png", "growth_gaussian_dx4mm.png"):
         assert f"]({name})" in text
         assert (out / name).stat().st_size > 10_000
+    # the crack growing: the run's own dump image pictures, from t = 0 to the end
+    kw = section(text, "Kalthoff-Winkler")
+    assert "The row of pictures is the damage of the gaussian run at 4 mm at 5 times" in kw
 
 
 def test_versions_and_machine_are_stated(calls):

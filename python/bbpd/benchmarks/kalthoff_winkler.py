@@ -47,7 +47,7 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
-from bbpd import readers
+from bbpd import readers, snapshots
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 
@@ -284,13 +284,14 @@ def analyse(workdir):
 
 # --------------------------------------------------------------------------- running
 
-def run(kernel, dx, workdir, nprocs=2, tend=None, reuse=False):
+def run(kernel, dx, workdir, nprocs=2, tend=None, reuse=False, images=False):
     """Run the example in workdir; return analyse(workdir) with the run's wall time (s).
-    reuse: analyse the outputs of an earlier finished run in workdir instead of running."""
+    reuse: analyse the outputs of an earlier finished run in workdir instead of running.
+    images: the input's damage pictures as well, listed as snapshots [(t in us, path)]."""
     workdir = Path(workdir)
     wall_file = workdir / "wall_s.txt"
     if not (reuse and wall_file.is_file()):
-        variables = {"kernel": kernel, "dx": repr(float(dx))}
+        variables = {"kernel": kernel, "dx": repr(float(dx)), "images": "yes" if images else "no"}
         if tend is not None:
             variables["tend"] = repr(float(tend))
         start = time.perf_counter()
@@ -298,6 +299,9 @@ def run(kernel, dx, workdir, nprocs=2, tend=None, reuse=False):
         wall_file.write_text(f"{time.perf_counter() - start:.3f}\n")
     res = analyse(workdir)
     res["wall_s"] = float(wall_file.read_text())
+    if images:
+        res["snapshots"] = [(step * res["dt"] * 1e6, str(path))
+                            for step, path in snapshots.find(workdir)]
     (workdir / "results.json").write_text(json.dumps(res))
     return res
 

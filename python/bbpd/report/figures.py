@@ -6,6 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
+from bbpd import snapshots
 from bbpd.benchmarks import dispersion as disp
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import mode1, mode2
@@ -126,10 +127,30 @@ def mode2_figures(ok, figdir, notes):
     return figs
 
 
-def kw_figures(ok, figdir, notes):
-    """Damage maps of every run, crack paths per dx and the Gaussian's paths over dx."""
-    gauss = sorted(((d, r) for (k, d), r in ok.items() if k == "gaussian"), reverse=True)
+def growth_name(kernel, dx):
+    return f"growth_{kernel}_dx{dx * 1e3:g}mm.png"
+
+
+def kw_growth_figures(ok, figdir, notes):
+    """The crack growing: the dump image pictures of the runs that drew them, in a row."""
     figs = []
+    for (k, dx), r in sorted(ok.items()):
+        if not r.get("snapshots"):
+            continue
+        path = figdir / growth_name(k, dx)
+        frames = [(f"t = {t:.1f} us", p) for t, p in r["snapshots"]]
+        title = (f"Kalthoff-Winkler, {k}, dx = {dx * 1e3:g} mm: damage from 0 (blue) to 1 "
+                 "(red), LAMMPS dump image")
+        name = _figure(lambda: snapshots.draw_strip(frames, path, title), path, notes)
+        figs += [name] if name else []
+    return figs
+
+
+def kw_figures(ok, figdir, notes):
+    """The crack growing (kw_growth_figures), damage maps of every run, crack paths per dx and
+    the Gaussian's paths over dx."""
+    gauss = sorted(((d, r) for (k, d), r in ok.items() if k == "gaussian"), reverse=True)
+    figs = kw_growth_figures(ok, figdir, notes)
     for (k, dx), r in sorted(ok.items(), key=lambda x: (-x[0][1], KERNELS.index(x[0][0]))):
         path = figdir / f"damage_{k}_dx{dx * 1e3:g}mm.png"
         name = _figure(lambda: kw.plot_damage_map(r, path), path, notes)

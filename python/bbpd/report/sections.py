@@ -65,6 +65,12 @@ def kw_section(specs, results, figdir, notes):
     header, rows, ok = tables.kw_table(specs, results)
     text = prose.kw_text(ok)
     figs = figures.kw_figures(ok, figdir, notes)
+    for (k, dx), r in sorted(ok.items()):
+        if figures.growth_name(k, dx) in figs:
+            text.append(f"The row of pictures is the damage of the {k} run at {dx * 1e3:g} mm "
+                        f"at {len(r['snapshots'])} times, drawn during the run by LAMMPS's "
+                        "dump image (the input's variable images; the other runs leave it "
+                        "off).")
     return {"title": "Kalthoff-Winkler impact (sec. 4.2.3, Figs. 14-15)",
             "setup": "Steel plate 100 x 200 mm with two 50 mm notches, impact at 32 m/s between "
                      "them, plane strain, m = 5, 70 us. First bond: first broken bond within "
