@@ -58,6 +58,20 @@ def not_measured(labels):
     return "Not measured (failed or not run): " + ", ".join(labels) + "."
 
 
+def rows_section(title, specs, results, not_run, setup, table, text):
+    """A report section whose runs each return one row: the one-line not_run when no spec ran,
+    else table(rows) and text(rows) of the finished rows, the others named as not measured"""
+    if not specs:
+        return {"title": title, "setup": not_run, "table": "", "text": "", "figures": []}
+    done, bad = finished(specs, results)
+    rows = [results[s.job.label] for s in done]
+    body = text(rows) if rows else ""
+    if bad:
+        body += " " + not_measured(bad)
+    return {"title": title, "setup": setup, "table": table(rows) if rows else "", "text": body,
+            "figures": []}
+
+
 def plugin_path():
     version = os.environ.get("BBPD_LAMMPS_VERSION", "20260704")
     return ROOT / "build" / f"lammps-{version}" / "bbpdplugin.so"

@@ -209,24 +209,14 @@ def jobs():
 
 def section(specs, results, figdir, notes):
     """The 3D plate's section of REPORT.md (tools/reproduce --full)."""
-    if not specs:
-        return {"title": REPORT_TITLE,
-                "setup": f"Not run by default ({len(jobs())} runs, about 1.4 h on one core): "
-                         "`tools/reproduce --full` runs them; the last measured table is in "
-                         "examples/kalthoff-winkler/README.md, '3D plate resolved through its "
-                         "thickness'.", "table": "", "text": "", "figures": []}
-    rows = [results[s.job.label] for s in specs if s.job.label in results
-            and "error" not in results[s.job.label]]
-    bad = jobmod.finished(specs, results)[1]
-    text = summary(rows) if rows else ""
-    if bad:
-        text += " " + jobmod.not_measured(bad)
-    return {"title": REPORT_TITLE,
-            "setup": f"The 9 mm plate struck by the projectile, Gaussian kernel, m = {M:g}, "
-                     "beside the 2D plate of the same grid; see "
-                     "examples/kalthoff-winkler/README.md.",
-            "table": table(rows) if rows else "", "text": text, "figures": []}
-
+    return jobmod.rows_section(
+        REPORT_TITLE, specs, results,
+        f"Not run by default ({len(jobs())} runs, about 1.4 h on one core): `tools/reproduce "
+        "--full` runs them; the last measured table is in examples/kalthoff-winkler/README.md, "
+        "'3D plate resolved through its thickness'.",
+        f"The 9 mm plate struck by the projectile, Gaussian kernel, m = {M:g}, beside the 2D "
+        "plate of the same grid; see examples/kalthoff-winkler/README.md.",
+        table, summary)
 
 def read_rows(path=CSV):
     return csvfile.read_csv(path)[1]

@@ -158,23 +158,14 @@ def jobs(nprocs=1):
 
 def section(specs, results, figdir, notes):
     """The standard deck's section of REPORT.md (tools/reproduce --full)."""
-    if not specs:
-        return {"title": REPORT_TITLE,
-                "setup": f"Not run by default ({len(jobs())} runs): `tools/reproduce --full` runs "
-                         "them; the last measured table is in examples/kalthoff-winkler/README.md, "
-                         "'The standard deck'.", "table": "", "text": "", "figures": []}
-    rows = [results[s.job.label] for s in specs if s.job.label in results
-            and "error" not in results[s.job.label]]
-    bad = jobmod.finished(specs, results)[1]
-    text = summary(rows) if rows else ""
-    if bad:
-        text += " " + jobmod.not_measured(bad)
-    return {"title": REPORT_TITLE,
-            "setup": "; ".join(f"{d}: {DECKS[d][0]}" for d in DECKS) + ". Prescribed velocity on "
-                     "the struck layer, to 100 us, the loading study's angles; see "
-                     "examples/kalthoff-winkler/README.md, 'The standard deck'.",
-            "table": table(rows) if rows else "", "text": text, "figures": []}
-
+    return jobmod.rows_section(
+        REPORT_TITLE, specs, results,
+        f"Not run by default ({len(jobs())} runs): `tools/reproduce --full` runs them; the last "
+        "measured table is in examples/kalthoff-winkler/README.md, 'The standard deck'.",
+        "; ".join(f"{d}: {DECKS[d][0]}" for d in DECKS) + ". Prescribed velocity on the struck "
+        "layer, to 100 us, the loading study's angles; see examples/kalthoff-winkler/README.md, "
+        "'The standard deck'.",
+        table, summary)
 
 def read_rows(path=CSV):
     """(comment lines, rows) of a CSV main() wrote"""

@@ -143,23 +143,14 @@ def jobs(nprocs=1):
 
 def section(specs, results, figdir, notes):
     """The kink convergence section of REPORT.md (tools/reproduce --full)."""
-    if not specs:
-        return {"title": REPORT_TITLE,
-                "setup": f"Not run by default ({len(jobs())} runs, about an hour): "
-                         "`tools/reproduce --full` runs them; the last measured table is in "
-                         "examples/kink-mixed-mode/README.md, 'Convergence in m and in the disk's "
-                         "size'.", "table": "", "text": "", "figures": []}
-    rows = [results[s.job.label] for s in specs if s.job.label in results
-            and "error" not in results[s.job.label]]
-    bad = jobmod.finished(specs, results)[1]
-    text = verdict(rows) if rows else ""
-    if bad:
-        text += " " + jobmod.not_measured(bad)
-    return {"title": REPORT_TITLE,
-            "setup": f"Gaussian kernel, pure Mode II, crack along the rows, delta = "
-                     f"{DELTA * 1e3:g} mm; see examples/kink-mixed-mode/README.md.",
-            "table": table(rows) if rows else "", "text": text, "figures": []}
-
+    return jobmod.rows_section(
+        REPORT_TITLE, specs, results,
+        f"Not run by default ({len(jobs())} runs, about an hour): `tools/reproduce --full` runs "
+        "them; the last measured table is in examples/kink-mixed-mode/README.md, 'Convergence "
+        "in m and in the disk's size'.",
+        f"Gaussian kernel, pure Mode II, crack along the rows, delta = {DELTA * 1e3:g} mm; see "
+        "examples/kink-mixed-mode/README.md.",
+        table, verdict)
 
 def read_rows(path=CSV):
     return csvfile.read_csv(path)[1]
