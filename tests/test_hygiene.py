@@ -70,3 +70,12 @@ def test_comments_cite_no_tracker_numbers_and_hold_no_timings(pattern, what):
                 offenders.append(f"{f.relative_to(ROOT)}: ...{m.group(0)}...")
     assert not offenders, f"comments with {what} (they belong in doc/ or the README):\n" + \
         "\n".join(offenders)
+
+
+RUN_OUTPUTS = (".dump", ".dat", ".lammpstrj", ".restart", ".png", ".jpg")    # what a run writes
+
+
+def test_no_run_outputs_at_the_repository_root():
+    # an example run from the root writes its dumps there; they belong to no one
+    root = [p.name for p in tracked() if p.parent == ROOT and p.name.endswith(RUN_OUTPUTS)]
+    assert root == [], f"run outputs tracked at the repository root: {root}"
