@@ -2,8 +2,8 @@
 from bbpd.benchmarks import kink_convergence as kc
 
 
-def row(m, rd, a2, a4):
-    return {"m": float(m), "R_over_delta": float(rd), "angle_2d": a2, "angle_4d": a4,
+def row(m, rd, a2, a4, kernel="gaussian"):
+    return {"kernel": kernel, "m": float(m), "R_over_delta": float(rd), "angle_2d": a2, "angle_4d": a4,
             "hoop_stress": -70.53, "hoop_strain": -63.61, "energy": -75.23}
 
 
@@ -24,7 +24,18 @@ def test_moving_sequence_is_not_settled():
 
 
 def test_one_run_says_nothing():
-    assert kc.verdict([row(5, 10, -90.0, -87.0)]).startswith("No verdict")
+    assert kc.verdict([row(5, 10, -90.0, -87.0)]).startswith("Gaussian: no verdict")
+
+
+def test_each_kernel_has_its_own_sentence_and_the_gaussians_comes_first():
+    rows = [row(10, 10, -55.0, -56.0, "constant"), row(15, 10, -55.2, -56.1, "constant"),
+            row(10, 10, -62.0, -63.8), row(15, 10, -63.0, -64.0)]
+    text = kc.verdict(rows)
+    g, c = text.index("Gaussian, at 2 horizons"), text.index("Constant, at 2 horizons")
+    assert g < c
+    # the constant kernel's rows are not mixed into the Gaussian's sequence
+    assert "-62.0° at m = 10, -63.0° at m = 15;" in text
+    assert "-55.0° at m = 10, -55.2° at m = 15;" in text
 
 
 def test_time_step_rule_is_the_kink_tests():

@@ -17,6 +17,9 @@ stable step of a bond family scales with the horizon, not with dx.
 Command line (from the repository root):
   tools/python -m bbpd.benchmarks.kink_convergence --work /tmp/kink-conv --nprocs 2 \
       --csv examples/kink-mixed-mode/results/kink_convergence.csv
+  # another kernel's cases, added to the same CSV:
+  tools/python -m bbpd.benchmarks.kink_convergence --work /tmp/kink-conv --kernel constant \
+      --cases 10:10 15:10 --append --csv examples/kink-mixed-mode/results/kink_convergence.csv
 """
 
 import argparse
@@ -29,6 +32,7 @@ from bbpd import jobs as jobmod
 from bbpd.benchmarks import kink as kinkbench
 from bbpd.benchmarks.mode1_propagation import machine
 from bbpd.jobs import Job, Spec
+from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 
 CSV = kinkbench.FOLDER / "results" / "kink_convergence.csv"
@@ -43,17 +47,19 @@ COLUMNS = ("kernel", "psi", "alpha", "m", "R_over_delta", "dx_mm", "atoms", "ste
            "hoop_strain", "energy", "loop_s", "nprocs")
 
 
-def case_vars(m, r_over_delta):
+def case_vars(m, r_over_delta, kernel=KERNEL):
     dx = DELTA / m
-    return {"kernel": KERNEL, "psi": repr(PSI), "alpha": repr(ALPHA), "dx": repr(dx),
+    return {"kernel": kernel, "psi": repr(PSI), "alpha": repr(ALPHA), "dx": repr(dx),
             "m": repr(float(m)), "R": repr(r_over_delta * DELTA),
             "dtfactor": repr(DT_PER_M * m)}
 
 
-def run_case(workdir, m, r_over_delta, nprocs=1, reuse=False):
-    wd = Path(workdir) / f"m{m:g}-R{r_over_delta:g}"
+def run_case(workdir, m, r_over_delta, nprocs=1, reuse=False, kernel=KERNEL):
+    wd = Path(workdir) / (f"m{m:g}-R{r_over_delta:g}" if kernel == KERNEL else
+                          f"{kernel}-m{m:g}-R{r_over_delta:g}")
     if not (reuse and (wd / "final.dump").is_file()):
-        run_lammps(str(kinkbench.EXAMPLE), wd, nprocs=nprocs, vars=case_vars(m, r_over_delta),
+        run_lammps(str(kinkbench.EXAMPLE), wd, nprocs=nprocs,
+                   vars=case_vars(m, r_over_delta, kernel),
                    timeout=4 * 3600)
     r = kinkbench.analyse(wd)
     row = {"kernel": r["kernel"], "psi": r["psi"], "alpha": r["alpha"], "m": float(m),
@@ -71,13 +77,13 @@ def _f(v, spec=".1f"):
 
 
 def table(rows, command=None):
-    head = ("| m | R/delta | dx (mm) | atoms | steps | K at 1st break / K_c | extension (delta) | "
+    head = ("| kernel | m | R/delta | dx (mm) | atoms | steps | K at 1st break / K_c | extension (delta) | "
             "angle at 2 delta | angle at 4 delta | hoop stress | hoop strain | max G | loop (s) | "
             "ranks |")
-    lines = [head, "|" + "---|" * 14]
-    for r in sorted(rows, key=lambda r: (r["R_over_delta"], r["m"])):
+    lines = [head, "|" + "---|" * 15]
+    for r in sorted(rows, key=lambda r: (r["kernel"] != KERNEL, r["kernel"], r["R_over_delta"], r["m"])):
         lines.append("| " + " | ".join([
-            f"{r['m']:g}", f"{r['R_over_delta']:g}", f"{r['dx_mm']:.3g}", _f(r["atoms"], ".0f"),
+            r["kernel"], f"{r['m']:g}", f"{r['R_over_delta']:g}", f"{r['dx_mm']:.3g}", _f(r["atoms"], ".0f"),
             _f(r["steps"], ".0f"), _f(r["K_init_over_Kc"], ".3f"),
             _f(r["extension_over_delta"], ".1f"), _f(r["angle_2d"]), _f(r["angle_4d"]),
             _f(r["hoop_stress"]), _f(r["hoop_strain"]), _f(r["energy"]), _f(r["loop_s"], ".0f"),
@@ -91,8 +97,15 @@ NAMES = {"hoop_stress": "max. hoop stress", "hoop_strain": "max. hoop strain",
 
 
 def verdict(rows):
-    """The sentence on the sequence in m at the kink test's R/delta, and on R/delta: which
-    criterion the finest m lies nearest, and whether the last refinement settled it."""
+    """The sentences on the sequence in m at the kink test's R/delta, and on R/delta: which
+    criterion the finest m lies nearest, and whether the last refinement settled it; the
+    Gaussian kernel's first, then each other kernel's."""
+    kernels = sorted({r["kernel"] for r in rows}, key=lambda k: (k != KERNEL, k))
+    parts = [_kernel_verdict([r for r in rows if r["kernel"] == k], k) for k in kernels]
+    return " ".join(parts) if parts else "No verdict: it needs two values of m at R/delta = 10."
+
+
+def _kernel_verdict(rows, kernel):
     out = []
     for dist in ("2d", "4d"):
         seq = sorted((r for r in rows if r["R_over_delta"] == 10.0 and r[f"angle_{dist}"]
@@ -102,7 +115,7 @@ def verdict(rows):
         last, prev = seq[-1], seq[-2]
         step = last[f"angle_{dist}"] - prev[f"angle_{dist}"]
         near = min(NAMES, key=lambda c: abs(last[f"angle_{dist}"] - last[c]))
-        s = (f"at {dist[0]} horizons, R/delta = 10: " + ", ".join(
+        s = (f"{kernel}, at {dist[0]} horizons, R/delta = 10: " + ", ".join(
             f"{r[f'angle_{dist}']:.1f}° at m = {r['m']:g}" for r in seq)
              + f"; the finest lies nearest the {NAMES[near]} criterion "
              f"({last[f'angle_{dist}'] - last[near]:+.1f}° from {last[near]:.1f}°), and the last "
@@ -118,7 +131,7 @@ def verdict(rows):
             out.append(f"doubling the disk to R/delta = 20 moves it by " + ", ".join(
                 f"{d:+.1f}° at m = {m:g}" for m, d in pairs))
     return (". ".join(s[0].upper() + s[1:] for s in out) + "." if out else
-            "No verdict: it needs two values of m at R/delta = 10.")
+            f"{kernel[0].upper() + kernel[1:]}: no verdict, it needs two values of m at R/delta = 10.")
 
 
 # ---------------------------------------------------------------------------- report
@@ -161,22 +174,29 @@ def main(argv=None):
     ap.add_argument("--work", default="/tmp/kink-conv")
     ap.add_argument("--nprocs", type=int, default=1)
     ap.add_argument("--cases", nargs="+", help="M:R_OVER_DELTA pairs (default: all)")
+    ap.add_argument("--kernel", default=KERNEL, choices=KERNELS)
     ap.add_argument("--reuse", action="store_true")
     ap.add_argument("--csv")
+    ap.add_argument("--append", action="store_true",
+                    help="add the runs to --csv, keeping its rows and the commands that made them")
     a = ap.parse_args(argv)
     cases = CASES if not a.cases else [tuple(float(v) for v in c.split(":")) for c in a.cases]
-    rows = []
+    cmd = "tools/python -m bbpd.benchmarks.kink_convergence " + " ".join(argv or sys.argv[1:])
+    earlier, rows, made = [], [], f"made by: {cmd}"
+    if a.append and a.csv and Path(a.csv).is_file():
+        comments, rows = csvfile.read_csv(a.csv)
+        earlier = [c for c in comments if c.startswith(("made by: ", "rows added by: "))]
+        made = f"rows added by: {cmd}"
     for m, rd in cases:
         start = time.perf_counter()
-        r = run_case(a.work, m, rd, a.nprocs, a.reuse)
+        r = run_case(a.work, m, rd, a.nprocs, a.reuse, a.kernel)
         print(f"m {m:g} R/delta {rd:g}: angle {_f(r['angle_2d'])} / {_f(r['angle_4d'])} deg "
               f"(2 / 4 delta), loop {_f(r['loop_s'], '.0f')} s, wall "
               f"{time.perf_counter() - start:.0f} s", flush=True)
         rows.append(r)
         if a.csv:    # after every run: a stopped sweep keeps what it measured
-            cmd = "tools/python -m bbpd.benchmarks.kink_convergence " + " ".join(argv or sys.argv[1:])
             csvfile.write_csv(a.csv, rows, comments=[
-                f"made by: {cmd}", f"timing: LAMMPS loop time, {machine()}, shared machine"])
+                *earlier, made, f"timing: LAMMPS loop time, {machine()}, shared machine"])
     print(verdict(rows))
     return 0
 
