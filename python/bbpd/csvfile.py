@@ -79,3 +79,10 @@ def read_table(path, text=(), flags=()):
     def cell(n, v):
         return v if n in text else (v == "True") if n in flags else float(v)
     return [{n: cell(n, v) for n, v in zip(names, ln.split(","))} for ln in lines[1:]]
+
+
+def provenance(path):
+    """The 'made by' and 'rows added by' comment lines of a results CSV, in order: every
+    command that wrote rows to it."""
+    return [ln[2:] for ln in Path(path).read_text().splitlines()
+            if ln.startswith(("# made by: ", "# rows added by: "))]

@@ -89,7 +89,9 @@ def table(rows, command=None):
             _f(r["hoop_stress"]), _f(r["hoop_strain"]), _f(r["energy"]), _f(r["loop_s"], ".0f"),
             _f(r["nprocs"], ".0f")]) + " |")
     out = "\n".join(lines)
-    return out if command is None else f"Made by `{command}`.\n\n" + out
+    made = [command] if isinstance(command, str) else list(command or [])
+    intro = " ".join(f"{'Made by' if k == 0 else 'Rows added by'} `{c}`." for k, c in enumerate(made))
+    return intro + "\n\n" + out if made else out
 
 
 NAMES = {"hoop_stress": "max. hoop stress", "hoop_strain": "max. hoop strain",

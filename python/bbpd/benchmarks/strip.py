@@ -167,12 +167,6 @@ def write_csv(path, rows, command, earlier=()):
                         made + [f"timing: LAMMPS loop time, 1 rank, {machine()}"])
 
 
-def provenance(path):
-    """The 'made by' and 'rows added by' comment lines of a CSV write_csv wrote."""
-    return [ln[2:] for ln in Path(path).read_text().splitlines()
-            if ln.startswith(("# made by: ", "# rows added by: "))]
-
-
 def read_rows(path):
     """The CSV of write_csv as dicts (kernel and state strings, crossed a bool, the rest floats)."""
     return csvfile.read_table(path, text=("kernel", "state"), flags=("crossed",))
@@ -203,7 +197,7 @@ def main(argv=None):
     a = p.parse_args(argv)
     appending = a.append and a.csv and Path(a.csv).is_file()
     rows = read_rows(a.csv) if appending else []
-    earlier = provenance(a.csv) if appending else []
+    earlier = csvfile.provenance(a.csv) if appending else []
     if a.collect:
         rows = collect(a.work)
         a.kernels = []

@@ -5,6 +5,7 @@ the projectile, grid-pull and summary parts of examples/kalthoff-winkler), each 
 benchmark module from the results it committed."""
 import json
 
+from bbpd import csvfile
 from bbpd.benchmarks import kalthoff_winkler_3d as kw3d
 from bbpd.benchmarks import kalthoff_winkler_deck as deck
 from bbpd.benchmarks import kalthoff_winkler_grid as grid
@@ -70,7 +71,7 @@ def kw_summary(data):
 
 def strip_table(data):
     return strip.table_markdown(strip.read_rows(STRIP_CSV),
-                                [ln.split(": ", 1)[1] for ln in strip.provenance(STRIP_CSV)])
+                                [ln.split(": ", 1)[1] for ln in csvfile.provenance(STRIP_CSV)])
 
 
 def strip_summary(data):
@@ -106,7 +107,8 @@ def kw3d_summary(data):
 
 
 def kink_convergence_table(data):
-    return kink_convergence.table(kink_convergence.read_rows(), _made_by(kink_convergence.CSV))
+    return kink_convergence.table(kink_convergence.read_rows(),
+                                  [ln.split(": ", 1)[1] for ln in csvfile.provenance(kink_convergence.CSV)])
 
 
 def kink_convergence_verdict(data):
