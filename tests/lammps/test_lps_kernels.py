@@ -19,6 +19,7 @@ s = 0.95 s0 and loses them at 1.05 s0, with s0 from G_c (bbpd_lps_kernel.h), com
 independently.
 """
 import math
+import re
 
 import numpy as np
 import pytest
@@ -145,3 +146,117 @@ def test_energy_check_can_fail(lmp, tmp_path):
     t = ref.thermo_tables(lmp(script).stdout)[-1]
     assert t["c_ec"][-1] == pytest.approx(classical_energy("3d", YOUNGS, 0.2, eps), rel=1e-6)
     assert abs(t["c_ec"][-1] / classical_energy("3d", YOUNGS, 0.3, eps) - 1.0) > 0.1
+
+
+# ---------------------------------------------------------------------------
+# the same bits on 1 and 2 ranks and across a restart, in a run where bonds break
+
+RUN_CASES = (("gaussian", "3d"), ("triangular", "plane/stress"), ("constant", "plane/strain"))
+RUN_N = 10
+RUN_HORIZON = 3.015 * DX
+RUN_STEPS = 60
+RUN_DT = 5.0e-8
+EXPANSION_RATE = 2.0e4    # 1/s: the bonds reach s0 (~4e-3) within the run
+RUN_KEYS = ("x", "y", "z", "vx", "vy", "vz", "c_dmg")
+RUN_DUMP = ("write_dump all custom end.dump id x y z vx vy vz c_dmg modify sort id "
+            "format float %.17g\n")
+
+
+def run_head(tmp_path, kernel, model, nprocs_grid=None):
+    dim = ref.DIMENSION[model]
+    volume = THICKNESS * DX**2 if dim == 2 else DX**3
+    x0, centre, box = block(dim, 0, nmore=RUN_N)
+    ref.write_data(tmp_path / "run.data", x0, volume, DENSITY, box)
+    c = x0[centre]
+    zvar = f"variable vz atom {EXPANSION_RATE!r}*(z-{c[2]!r})\n" if dim == 3 else ""
+    vz = "v_vz" if dim == 3 else "NULL"
+    return (peri_preamble(dim, data="run.data") + lattice_line(dim) + style_line(kernel, model) +
+            f"pair_coeff * * {YOUNGS!r} 0.3 {GC!r} {RUN_HORIZON!r}\n"
+            f"variable vx atom {EXPANSION_RATE!r}*(x-{c[0]!r})\n"
+            f"variable vy atom {EXPANSION_RATE!r}*(y-{c[1]!r})\n" + zvar +
+            f"velocity all set v_vx v_vy {vz}\n"
+            f"timestep {RUN_DT!r}\ncompute dmg all bbpd/damage/atom\n"
+            "compute dmean all reduce ave c_dmg\nthermo_style custom step pe c_dmean\n"
+            "thermo 10\nthermo_modify format float %.17g\n")
+
+
+def end_of(tmp_path):
+    d = ref.read_dump(tmp_path / "end.dump")
+    return {k: np.asarray(d[k]) for k in RUN_KEYS}
+
+
+@pytest.mark.parametrize("kernel,model", RUN_CASES)
+def test_same_bits_on_1_and_2_ranks_and_restart(lmp, tmp_path, kernel, model):
+    head = run_head(tmp_path, kernel, model)
+    half = RUN_STEPS // 2
+    states = []
+    for nprocs in (1, 2):
+        out = lmp(head + f"fix 1 all nve\nrun {RUN_STEPS}\n" + RUN_DUMP, nprocs=nprocs).output
+        dmean = ref.thermo_tables(out)[-1]["c_dmean"]
+        assert dmean[0] == 0.0 and dmean[-1] > 0.01, dmean    # bonds broke during the run
+        states.append(end_of(tmp_path))
+    lmp(head + f"fix 1 all nve\nrun {half}\nwrite_restart state.restart\n")
+    dim = ref.DIMENSION[model]
+    second = ("plugin load bbpdplugin.so\nread_restart state.restart\n" + lattice_line(dim) +
+              f"timestep {RUN_DT!r}\ncompute dmg all bbpd/damage/atom\nfix 1 all nve\n"
+              f"run {RUN_STEPS - half}\n" + RUN_DUMP)
+    for nprocs in (1, 2):
+        lmp(second, nprocs=nprocs)
+        states.append(end_of(tmp_path))
+    for other in states[1:]:
+        for key in RUN_KEYS:
+            np.testing.assert_array_equal(states[0][key], other[key])
+
+
+# ---------------------------------------------------------------------------
+# breaking: every bond of an isotropically stretched block is at the stretch s
+
+
+def critical_stretch(kernel, model, nu, gc, delta):
+    """s0 of the header comment of bbpd_lps_kernel.h, by numpy quadrature of the moments"""
+    w = ref.kernel(kernel)
+    r = np.linspace(0.0, 1.0, 400001)
+
+    def moment(n):
+        return np.trapz(w(r) * r**n, r)
+    G = YOUNGS / (2.0 * (1.0 + nu))
+    if ref.DIMENSION[model] == 2:
+        per_s2 = 8.0 / math.pi * G * delta * moment(4) / moment(3)
+    else:
+        per_s2 = 15.0 / 4.0 * G * delta * moment(5) / moment(4)
+    return math.sqrt(gc / per_s2)
+
+
+@pytest.mark.parametrize("model", MODELS)
+@pytest.mark.parametrize("kernel", KERNELS)
+def test_breaks_above_s0_not_below(lmp, tmp_path, kernel, model):
+    dim = ref.DIMENSION[model]
+    volume = THICKNESS * DX**2 if dim == 2 else DX**3
+    x0, centre, box = block(dim, 0, nmore=7)
+    box = [(lo * 1.2, hi * 1.2) for lo, hi in box] if dim == 3 else box
+    ref.write_data(tmp_path / "b.data", x0, volume, DENSITY, box)
+    nu = 0.3
+    s0 = critical_stretch(kernel, model, nu, GC, RUN_HORIZON)
+    coords = "x y z" if dim == 3 else "x y"
+    script = "plugin load bbpdplugin.so\n"
+    factors = (0.95, 1.05)
+    for f in factors:
+        eps = np.zeros((3, 3))
+        eps[np.diag_indices(dim)] = f * s0
+        ref.write_positions(tmp_path / f"s{f}.dump", x0 + (x0 - x0[centre]) @ eps.T, box)
+        script += (peri_preamble(dim, data="b.data", plugin=False, clear=True) + lattice_line(dim) +
+                   style_line(kernel, model) + f"pair_coeff * * {YOUNGS!r} {nu!r} {GC!r} {RUN_HORIZON!r}\n"
+                   "compute dmg all bbpd/damage/atom\ncompute dmax all reduce max c_dmg\n"
+                   "compute dmin all reduce min c_dmg\n"
+                   "thermo_style custom step c_dmin c_dmax\nthermo_modify format float %.17g\n"
+                   "run 0\n"
+                   f"read_dump s{f}.dump 0 {coords} box no replace yes\n"
+                   f"timestep {1e-12!r}\nfix 1 all nve\nrun 1\n")
+    out = lmp(script).output
+    # the style's s0 (printed to 8 digits) is the one computed here
+    printed = float(re.search(r"critical_stretch s0 = (\S+)", out).group(1))
+    assert printed == pytest.approx(s0, rel=1e-7)
+    tables = ref.thermo_tables(out)
+    below, above = tables[1], tables[3]
+    assert below["c_dmax"][-1] == 0.0, "bonds broke below s0"
+    assert above["c_dmin"][-1] == 1.0, "bonds survived above s0"
