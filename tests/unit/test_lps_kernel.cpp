@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace LPS = BBPD::LPS;
 using BBPD::KernelInfo;
@@ -162,4 +164,56 @@ TEST(LPSKernel, ConstantKernelClosedForms)
               std::sqrt(5.0 * PI * GC / (32.0 * G * DELTA)), 1e-14);
   EXPECT_NEAR(LPS::continuum_weighted_volume(KERNELS[0], Model::Solid3D, DELTA),
               4.0 * PI * std::pow(DELTA, 5) / 5.0, 1e-30);
+}
+
+/* the force state of the LPS in d dimensions is dW_i/de: on a family of a square (d = 2) or
+   cubic (d = 3) lattice with the Gaussian influence function and arbitrary elongations, the
+   bond's term at end i (the other end without state) against a central difference of
+   W_i = K theta^2 / 2 + d (d + 2) G / (2 m) sum omega V e_d^2 */
+TEST(LPSKernel, ForceStateIsEnergyDerivative)
+{
+  const double dx = 1.0e-3, delta = 3.015e-3, vol = 1.0e-9;
+  for (Model model : MODELS) {
+    const int d = BBPD::family_dimension(model);
+    const LPS::Moduli mod = LPS::moduli_of(model, E, 0.3);
+    std::vector<double> xi, wv, e;
+    const int zr = d == 3 ? 3 : 0;
+    for (int a = -3; a <= 3; a++)
+      for (int b = -3; b <= 3; b++)
+        for (int c = -zr; c <= zr; c++) {
+          const double r = dx * std::sqrt(double(a * a + b * b + c * c));
+          if (r == 0.0 || r > delta) continue;
+          xi.push_back(r);
+          wv.push_back(LPS::weighted_partner_volume_with(
+              LPS::influence_function(KERNELS[2], r, delta), r, delta, dx, vol));
+          e.push_back(1.0e-6 * r * std::sin(7.0 * a + 3.0 * b + c));    // arbitrary elongations
+        }
+    double m = 0.0;
+    for (size_t k = 0; k < xi.size(); k++) m += LPS::weighted_volume_term(wv[k], xi[k]);
+    auto energy = [&](const std::vector<double> &ev) {
+      double sum = 0.0;
+      for (size_t k = 0; k < xi.size(); k++) sum += LPS::dilatation_term(wv[k], xi[k], ev[k]);
+      const double theta = LPS::dilatation(sum, m, mod.dimension);
+      double dev = 0.0;
+      for (size_t k = 0; k < xi.size(); k++) {
+        const double ed = LPS::deviatoric_extension(ev[k], xi[k], LPS::third(theta, mod.dimension));
+        dev += wv[k] * ed * ed;
+      }
+      return LPS::dilatation_energy(mod.bulk, theta) + LPS::deviatoric_energy_of(mod, 1.0 / m, dev);
+    };
+    double sum = 0.0;
+    for (size_t k = 0; k < xi.size(); k++) sum += LPS::dilatation_term(wv[k], xi[k], e[k]);
+    const LPS::AtomState si = LPS::atom_state(LPS::dilatation(sum, m, mod.dimension), m);
+    const LPS::AtomState none = {0.0, std::numeric_limits<double>::min()};
+    for (size_t k = 0; k < xi.size(); k += 7) {
+      const double h = 1.0e-4 * std::fabs(e[k]) + 1.0e-12;
+      std::vector<double> ep = e, em = e;
+      ep[k] += h;
+      em[k] -= h;
+      // dW_i/de_k per unit partner volume: W is a density, the force state one per V_j
+      const double fd = (energy(ep) - energy(em)) / (2.0 * h);
+      const double t = LPS::force_state(mod, wv[k], xi[k], e[k], si, none);
+      EXPECT_NEAR(t, fd, 1.0e-6 * std::fabs(t) + 1e-3) << BBPD::model_name(model) << " bond " << k;
+    }
+  }
 }
