@@ -17,6 +17,7 @@
 
 #include "bbpd_kernel.h"
 #include "bbpd_lps.h"
+#include "bbpd_lps_kernel.h"
 #include "bbpd_pmb_rules.h"
 
 #include <cmath>
@@ -62,6 +63,7 @@ struct BondLaw {
   bool pmb = false;                  // peri/pmb's families, volumes and volume ramp
   double lattice_constant = 0.0;     // pmb: the ramp's width
   bool lps = false;                  // with pmb: the coefficient is peri/lps's omega V_j ramp
+  bool lps_kernel = false;           // with lps: omega is the kernel shape, not 1 / |xi|
   // per type pair, as calibrated by the pair style: c0 (eq. 21; pmb: peri/pmb's c) and delta
   TypePairTable micromodulus, horizon;
   TypePairTable bondless;    // nonzero: the type pair forms no bonds (separate bodies)
@@ -90,6 +92,9 @@ struct BondLaw {
   double coefficient(int itype, int jtype, double xi0, double vj) const
   {
     const double delta = horizon(itype, jtype);
+    if (pmb && lps && lps_kernel)
+      return LPS::weighted_partner_volume_with(LPS::influence_function(kernel, xi0, delta), xi0,
+                                               delta, lattice_constant, vj);
     if (pmb && lps) return LPS::weighted_partner_volume(xi0, delta, lattice_constant, vj);
     if (pmb) return micromodulus(itype, jtype) * vj * PMB::volume_scale(xi0, delta, lattice_constant) / xi0;
     return micromodulus(itype, jtype) * kernel.shape(xi0 / delta) *

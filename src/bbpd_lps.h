@@ -8,15 +8,18 @@
 
    Per bond of reference length xi0 (|x0_j - x0_i|) with partner volume V_j and
    peri/pmb's volume ramp (bbpd_pmb_rules.h), the bond's weighted volume is
-     w V = omega(xi0) V_j ramp(xi0),    omega(xi0) = 1 / xi0   (the influence function);
-   per atom
+     w V = omega(xi0) V_j ramp(xi0),    omega(xi0) = 1 / xi0   (the influence function
+   of peri/lps; the kernel styles bbpd/lps/KERNEL take the kernel shape, bbpd_lps_kernel.h);
+   per atom, in d = 3 dimensions (d = 2: the 2D LPS of Le, Chan & Schwartz, Int. J. Numer.
+   Meth. Engng 98 (2014) 547)
      m_i     = sum_j w V xi0^2                    (the weighted volume)
-     theta_i = 3 / m_i sum_j w V xi0 e_ij          (the dilatation, e = |y| - xi0)
+     theta_i = d / m_i sum_j w V xi0 e_ij          (the dilatation, e = |y| - xi0)
    and the scalar force state of the bond (force density along y_j - y_i, per |y|)
-     t_ij = (3K - 5G) w V (theta_i / m_i + theta_j / m_j) xi0
-          + 15 G w V (1 / m_i + 1 / m_j) e_ij.
-   The strain energy density of atom i is K theta_i^2 / 2 plus, per bond,
-   15 G / (2 m_i) w V (e_ij - theta_i xi0 / 3)^2.
+     t_ij = (d K - (d + 2) G) w V (theta_i / m_i + theta_j / m_j) xi0
+          + d (d + 2) G w V (1 / m_i + 1 / m_j) e_ij,
+   3K - 5G and 15G in 3D. The strain energy density of atom i is K theta_i^2 / 2 plus, per
+   bond, d (d + 2) G / (2 m_i) w V (e_ij - theta_i xi0 / d)^2 (K: the 2D bulk modulus kappa'
+   with d = 2).
 ------------------------------------------------------------------------- */
 
 #ifndef BBPD_LPS_H
@@ -49,10 +52,17 @@ namespace LPS {
     return std::fabs(xi0) < PMB::NEAR_ZERO ? 1.0 / PMB::NEAR_ZERO : 1.0 / xi0;
   }
 
-  // the bond's weighted partner volume omega V_j ramp, what the bond storage keeps per bond
+  // the bond's weighted partner volume omega V_j ramp, what the bond storage keeps per bond,
+  // for an influence function value omega = omega(xi0)
+  inline double weighted_partner_volume_with(double omega, double xi0, double delta, double lc,
+                                             double vj)
+  {
+    return omega * vj * PMB::volume_scale(xi0, delta, lc);
+  }
+  // the same with peri/lps's influence function 1 / |xi0|
   inline double weighted_partner_volume(double xi0, double delta, double lc, double vj)
   {
-    return influence(xi0) * vj * PMB::volume_scale(xi0, delta, lc);
+    return weighted_partner_volume_with(influence(xi0), xi0, delta, lc, vj);
   }
 
   // a bond's term of the weighted volume m_i (fix_peri_neigh: omega xi0^2 V_j ramp)
@@ -61,10 +71,11 @@ namespace LPS {
   // a bond's term of the dilatation sum (pair_peri: omega xi0 e V_j ramp)
   inline double dilatation_term(double wv, double xi0, double e) { return wv * xi0 * e; }
 
-  // theta_i from its sum of dilatation terms; an atom without weighted volume has none
-  inline double dilatation(double sum, double m)
+  // theta_i from its sum of dilatation terms in d dimensions (the factor d of theta = d / m
+  // sum: 3 in 3D, 2 in 2D, Le et al. 2014 eq. 10); an atom without weighted volume has none
+  inline double dilatation(double sum, double m, double d = DILATATION_FACTOR)
   {
-    return m != 0.0 ? (DILATATION_FACTOR / m) * sum : 0.0;
+    return m != 0.0 ? (d / m) * sum : 0.0;
   }
 
   // the elongation of peri/lps: round-off elongations are zero
@@ -74,15 +85,25 @@ namespace LPS {
     return std::fabs(e) < PMB::NEAR_ZERO ? 0.0 : e;
   }
 
-  // the moduli and the two coefficients of the force state they give, per type pair
+  // the moduli and the two coefficients of the force state they give, per type pair, in
+  // d dimensions: the deviatoric modulus alpha m = d (d + 2) G makes the energy of a traceless
+  // strain G eps:eps (the fourth moment of an isotropic family, m / (d (d + 2)) times the
+  // symmetric identity), the dilatational one d K - alpha m / d (t = dW/de, Silling et al. 2007
+  // eq. 95; Le et al. 2014 eq. 21 with d = 2)
   struct Moduli {
     double bulk, shear;
-    double dilatational;    // 3K - 5G
-    double deviatoric;      // 15 G
+    double dilatational;    // 3K - 5G (2D: 2 kappa' - 4G)
+    double deviatoric;      // 15 G (2D: 8 G)
+    double dimension;       // d of the dilatation theta = d / m sum
   };
+  inline Moduli moduli(double bulk, double shear, double d)
+  {
+    return {bulk, shear, d * bulk - (d + 2.0) * shear, d * (d + 2.0) * shear, d};
+  }
   inline Moduli moduli(double bulk, double shear)
   {
-    return {bulk, shear, BULK_FACTOR * bulk - SHEAR_IN_BULK_FACTOR * shear, SHEAR_FACTOR * shear};
+    return {bulk, shear, BULK_FACTOR * bulk - SHEAR_IN_BULK_FACTOR * shear, SHEAR_FACTOR * shear,
+            DILATATION_FACTOR};
   }
 
   // the per-atom values a bond reads at each end: theta / m and 1 / m (0 without weighted volume)
@@ -109,8 +130,8 @@ namespace LPS {
   // atom i's energy density of the dilatation, K theta^2 / 2
   inline double dilatation_energy(double bulk, double theta) { return 0.5 * bulk * (theta * theta); }
 
-  // theta / 3, the part of the dilatation in the extension of a bond per unit length
-  inline double third(double theta) { return theta / DILATATION_FACTOR; }
+  // theta / d, the part of the dilatation in the extension of a bond per unit length
+  inline double third(double theta, double d = DILATATION_FACTOR) { return theta / d; }
 
   // the deviatoric extension of a bond, e - theta_i xi0 / 3 (theta_third_i = third(theta_i))
   inline double deviatoric_extension(double e, double xi0, double theta_third_i)

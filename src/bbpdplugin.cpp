@@ -23,6 +23,7 @@
 #include "pair_bbpd.h"
 #include "pair_bbpd_alpha.h"
 #include "pair_bbpd_lps.h"
+#include "pair_bbpd_lps_kernel.h"
 #include "pair_bbpd_pmb.h"
 #include "utils.h"
 #include "version.h"
@@ -53,6 +54,10 @@ Pair *pmb_pair_creator(LAMMPS *lmp)
 Pair *lps_pair_creator(LAMMPS *lmp)
 {
   return new PairBBPDLPS(lmp);
+}
+template <class K> Pair *lps_kernel_pair_creator(LAMMPS *lmp)
+{
+  return new PairBBPDLPSKernel(lmp, BBPD::kernel_info<K>());
 }
 Fix *lps_state_creator(LAMMPS *lmp, int narg, char **arg)
 {
@@ -154,6 +159,18 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "bbpd/lps";
   plugin.info = "BBPD pair style, the linear peridynamic solid of peri/lps, v" BBPD_VERSION;
   plugin.creator.v1 = (lammpsplugin_factory1 *) &lps_pair_creator;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/lps/constant";
+  plugin.info = "BBPD pair style, the linear peridynamic solid with the constant influence function, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &lps_kernel_pair_creator<BBPD::ConstantKernel>;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/lps/triangular";
+  plugin.info = "BBPD pair style, the linear peridynamic solid with the triangular influence function, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &lps_kernel_pair_creator<BBPD::TriangularKernel>;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/lps/gaussian";
+  plugin.info = "BBPD pair style, the linear peridynamic solid with the Gaussian influence function, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &lps_kernel_pair_creator<BBPD::GaussianKernel>;
   (*register_plugin)(&plugin, lmp);
 
   plugin.style = "fix";

@@ -9,6 +9,8 @@
 #include "pair_bbpd_lps.h"
 #include "pair_bbpd_rows.h"
 
+#include "bbpd_lps_kernel.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
@@ -28,16 +30,23 @@ namespace LPS = BBPD::LPS;
 using StretchRule = BBPD::SillingAskariRule<false>;    // peri/lps: smin not clamped
 
 static constexpr const char *LPS_FIX_ID = "BBPD_LPS";
-// each end of a bond tallies half its energy and virial
-static constexpr double END_SHARE = 0.5;
+// peri/lps tallies half of atom i's deviatoric energy density at i (its ev_tally(i, i, ...,
+// 0.5 * evdwl)): bbpd/lps does the same, to give its energies; the kernel styles tally all of it
+static constexpr double PERI_LPS_DEVIATORIC_SHARE = 0.5;
 // forward communication: theta / m and 1 / m of every ghost atom
 static constexpr int LPS_FORWARD_VALUES = 2;
 
 /* ---------------------------------------------------------------------- */
 
 PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp) :
-    PairBBPDPMB(lmp, "bbpd/lps"), bulk(nullptr), shear(nullptr), lps_state(nullptr), nmax_lps(0),
-    atom_states(nullptr), nmax_length(0), bond_length(nullptr)
+    PairBBPDLPS(lmp, BBPD::kernel_info<BBPD::ConstantKernel>(), "bbpd/lps")
+{
+}
+
+PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name) :
+    PairBBPDPMB(lmp, k, style_name), bulk(nullptr), shear(nullptr),
+    dimension(LPS::DILATATION_FACTOR), deviatoric_share(PERI_LPS_DEVIATORIC_SHARE), lps_state(nullptr), nmax_lps(0), atom_states(nullptr),
+    nmax_length(0), bond_length(nullptr)
 {
   comm_forward = LPS_FORWARD_VALUES;
 }
@@ -151,6 +160,7 @@ void PairBBPDLPS::init_rules()
 {
   PairBBPDPMB::init_rules();
   law.lps = true;
+  dimension = LPS::lps_dimension(model);    // 3 for bbpd/lps (model 3d)
   lps_state = static_cast<FixBBPDLPS *>(own_fix(LPS_FIX_ID, "bbpd/lps"));
 }
 
@@ -262,7 +272,7 @@ double PairBBPDLPS::dilatation_of(int i, double *r)
     }
     return s;
   });
-  return LPS::dilatation(sum, lps_state->weighted_volume[i]);
+  return LPS::dilatation(sum, lps_state->weighted_volume[i], dimension);
 }
 
 /* the force density of the bond of local atom i to j (reference length xi0, weighted partner
@@ -277,15 +287,15 @@ void PairBBPDLPS::add_bond_force(int i, int j, double xi0, double wv, double *f,
   const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
   const double e = LPS::elongation(r, xi0);
   const int itype = atom->type[i];
-  const LPS::Moduli mod = LPS::moduli(bulk[itype][itype], shear[itype][itype]);    // atom i's type
+  const LPS::Moduli mod = moduli_of_type(itype);    // atom i's type
   const double t = LPS::force_state(mod, wv, xi0, e, atom_states[i], atom_states[j]);
   const double fpl = r > 0.0 ? t / r : 0.0;
   f[0] += fpl * dx;
   f[1] += fpl * dy;
   f[2] += fpl * dz;
   if (EVFLAG) {
-    const double eng = END_SHARE *
-        LPS::deviatoric_energy(mod, wv, xi0, e, LPS::third(lps_state->dilatation[i]), atom_states[i].inv_m);
+    const double eng = deviatoric_share *
+        LPS::deviatoric_energy(mod, wv, xi0, e, LPS::third(lps_state->dilatation[i], dimension), atom_states[i].inv_m);
     const double vir[6] = {-BondModel::virial_share(fpl, dx, dx), -BondModel::virial_share(fpl, dy, dy),
                            -BondModel::virial_share(fpl, dz, dz), -BondModel::virial_share(fpl, dx, dy),
                            -BondModel::virial_share(fpl, dx, dz), -BondModel::virial_share(fpl, dy, dz)};
@@ -350,9 +360,9 @@ template <int EVFLAG> void PairBBPDLPS::eval_lps()
       if (critical_stretch[i][j] != s00_one || alpha[i][j] != alpha_one) multi = true;
   for_each_row<EVFLAG>([&](int i, double *fi, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
     const int itype = type[i];
-    const LPS::Moduli mod = LPS::moduli(bulk[itype][itype], shear[itype][itype]);    // i's type
+    const LPS::Moduli mod = moduli_of_type(itype);    // i's type
     const LPS::AtomState si = atom_states[i];
-    const double theta_i = theta[i], theta_third_i = LPS::third(theta_i), smin_i = smin[i];
+    const double theta_i = theta[i], theta_third_i = LPS::third(theta_i, dimension), smin_i = smin[i];
     const double *r_row = bond_length + bonds->bond_start[i];
     const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
     auto s0_with = [&](int j) BBPD_ROW_BODY {
@@ -403,8 +413,8 @@ template <int EVFLAG> void PairBBPDLPS::eval_lps()
         f[0] = ax;
         f[1] = ay;
         f[2] = az;
-        // atom i's half of each bond's energy (as peri/lps tallies it) and of its virial
-        tally[0] = END_SHARE * LPS::deviatoric_energy_of(mod, si.inv_m, eng);
+        // atom i's deviatoric energy (bbpd/lps: half of it, as peri/lps) and half the virial
+        tally[0] = deviatoric_share * LPS::deviatoric_energy_of(mod, si.inv_m, eng);
         const double v[6] = {v0, v1, v2, v3, v4, v5};
         for (int c = 0; c < 6; c++) tally[1 + c] = -BondModel::virial_share(1.0, v[c], 1.0);
         return past;

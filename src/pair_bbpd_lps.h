@@ -26,6 +26,8 @@ namespace LAMMPS_NS {
 class PairBBPDLPS : public PairBBPDPMB {
  public:
   PairBBPDLPS(class LAMMPS *);
+  // the kernel-weighted styles (pair_bbpd_lps_kernel.h) share the state, loops and restart
+  PairBBPDLPS(class LAMMPS *, BBPD::KernelInfo, const char *style);
   ~PairBBPDLPS() override;
 
   void settings(int, char **) override;
@@ -38,7 +40,9 @@ class PairBBPDLPS : public PairBBPDPMB {
   double memory_usage() override;
 
  protected:
-  double **bulk, **shear;           // K and G of peri/lps, per type pair
+  double **bulk, **shear;           // K and G of peri/lps, per type pair (2D: kappa' and G)
+  double dimension;                 // d of the LPS (3; 2 for the 2D models of the kernel styles)
+  double deviatoric_share;          // of atom i's deviatoric energy tallied at i: peri/lps 1/2
   class FixBBPDLPS *lps_state;      // weighted volumes and the last step's dilatations
   int nmax_lps;
   BBPD::LPS::AtomState *atom_states;    // theta / m, 1 / m of every local and ghost atom, this step
@@ -53,6 +57,10 @@ class PairBBPDLPS : public PairBBPDPMB {
   std::string report_rules() const override;
 
   void allocate_moduli();
+  BBPD::LPS::Moduli moduli_of_type(int itype) const
+  {
+    return BBPD::LPS::moduli(bulk[itype][itype], shear[itype][itype], dimension);
+  }
   void sum_weighted_volumes();
   double dilatation_of(int i, double *r);
   template <int EVFLAG> void eval_lps();

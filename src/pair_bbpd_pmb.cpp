@@ -33,6 +33,11 @@ PairBBPDPMB::PairBBPDPMB(LAMMPS *lmp, const char *style_name) :
 {
 }
 
+PairBBPDPMB::PairBBPDPMB(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name) :
+    PairBBPDAlpha(lmp, k, style_name), lattice_constant(0.0)
+{
+}
+
 /* pair_style bbpd/pmb MODEL [thickness h] [area A] [spacing dx] [dt/safety f] [bond/storage s]:
    the keywords of the kernel styles, without contact (peri/pmb's short-range forces act) */
 void PairBBPDPMB::settings(int narg, char **arg)

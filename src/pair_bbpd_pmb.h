@@ -23,6 +23,8 @@ namespace LAMMPS_NS {
 class PairBBPDPMB : public PairBBPDAlpha {
  public:
   PairBBPDPMB(class LAMMPS *, const char *style = "bbpd/pmb");
+  // a style on peri/pmb's rules whose bonds carry a kernel (bbpd/lps/KERNEL)
+  PairBBPDPMB(class LAMMPS *, BBPD::KernelInfo, const char *style);
 
   void settings(int, char **) override;
   void coeff(int, char **) override;

@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* ----------------------------------------------------------------------
+   BBPD plugin: pair styles bbpd/lps/KERNEL (pair_bbpd_lps_kernel.h): the model and the
+   coefficients E nu Gc delta, turned into the LPS moduli and critical stretch of
+   bbpd_lps_kernel.h; the rest is bbpd/lps.
+------------------------------------------------------------------------- */
+
+#include "pair_bbpd_lps_kernel.h"
+
+#include "bbpd_lps_kernel.h"
+
+#include "atom.h"
+#include "error.h"
+#include "fix_bbpd_bonds.h"
+
+#include <cstring>
+#include <limits>
+#include <string>
+
+using namespace LAMMPS_NS;
+namespace LPS = BBPD::LPS;
+
+// atom i tallies its whole strain energy density W_i (bbpd/lps: peri/lps's half of the
+// deviatoric part), so that pe/atom is the energy density of the LPS
+static constexpr double WHOLE_DEVIATORIC_ENERGY = 1.0;
+
+PairBBPDLPSKernel::PairBBPDLPSKernel(LAMMPS *lmp, BBPD::KernelInfo k) :
+    PairBBPDLPS(lmp, k, (std::string("bbpd/lps/") + k.name).c_str())
+{
+  deviatoric_share = WHOLE_DEVIATORIC_ENERGY;
+}
+
+/* pair_style bbpd/lps/KERNEL MODEL [thickness h] [keywords]: the models of the LPS */
+void PairBBPDLPSKernel::settings(int narg, char **arg)
+{
+  PairBBPDPMB::settings(narg, arg);    // model, thickness and keywords of bbpd/pmb
+  if (model == BBPD::Model::Bar1D)
+    error->all(FLERR, "Pair style {}: model 1d is not available: the LPS has 3d, plane/strain "
+               "and plane/stress", style);
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I J E nu Gc|none delta (SI, as the bond-based styles)
+------------------------------------------------------------------------- */
+
+void PairBBPDLPSKernel::coeff(int narg, char **arg)
+{
+  if (!allocated) allocate();
+  allocate_moduli();
+  if (narg != 6)
+    error->all(FLERR, "Pair coeff for {}: expected 'I J E nu Gc delta' (Young's modulus, "
+               "Poisson's ratio, fracture energy or 'none', horizon), got {} arguments",
+               style, narg);
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  const double E = utils::numeric(FLERR, arg[2], false, lmp);
+  const double nu = utils::numeric(FLERR, arg[3], false, lmp);
+  const bool unbreakable = strcmp(arg[4], "none") == 0;
+  const double Gc = unbreakable ? std::numeric_limits<double>::infinity()
+                                : utils::numeric(FLERR, arg[4], false, lmp);
+  const double delta = utils::numeric(FLERR, arg[5], false, lmp);
+  if (!(E > 0.0)) error->all(FLERR, "Pair coeff for {}: Young's modulus E must be > 0", style);
+  if (!LPS::admissible_poisson_ratio(model, nu))
+    error->all(FLERR, "Pair coeff for {}: Poisson's ratio {} is outside {} < nu < {} of model {} "
+               "(K and G must be positive)", style, nu, LPS::NU_MIN, LPS::nu_max(model),
+               BBPD::model_name(model));
+  if (!unbreakable && !(Gc > 0.0 && std::isfinite(Gc)))
+    error->all(FLERR, "Pair coeff for {}: the fracture energy Gc must be > 0 (or 'none' for "
+               "bonds that never break)", style);
+  if (!(delta > 0.0)) error->all(FLERR, "Pair coeff for {}: the horizon delta must be > 0", style);
+
+  const LPS::Moduli mod = LPS::moduli_of(model, E, nu);
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      youngs[i][j] = E;
+      fracture_energy[i][j] = Gc;
+      horizon[i][j] = delta;
+      // the bond-based c0 of the same E: short-range forces and the stable time step estimate
+      micromodulus[i][j] = BBPD::micromodulus(kernel, model, E, delta, geom);
+      critical_stretch[i][j] = unbreakable ? std::numeric_limits<double>::infinity()
+                                           : LPS::critical_stretch_of(kernel, model, mod.shear, Gc, delta);
+      s0_user[i][j] = 1;    // derived here, not by the bond-based calibration
+      alpha[i][j] = 0.0;    // a fixed critical stretch
+      bulk[i][j] = bulk[j][i] = mod.bulk;
+      shear[i][j] = shear[j][i] = mod.shear;
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
+void PairBBPDLPSKernel::init_rules()
+{
+  PairBBPDLPS::init_rules();
+  law.lps_kernel = true;    // omega = W(|xi| / delta) in the bond storage
+}
+
+/* the stable time step estimate: the bond as the bond-based bond of the same E and kernel,
+   c0 W V ramp / |xi| (the stored coefficient is W V ramp) */
+double PairBBPDLPSKernel::bond_stiffness(int i, int k) const
+{
+  const int j = bonds->partner_of(i, k);
+  const double xi0 = bonds->xi0_of(i, k);
+  return micromodulus[atom->type[i]][atom->type[j]] * bonds->coef_of(i, k, xi0) / xi0;
+}
+
+std::string PairBBPDLPSKernel::report_type_pair(int i, int j) const
+{
+  return fmt::format("  types {} {}: LPS: E = {:.8g}  K = {:.8g}  G = {:.8g}  horizon = {:.6g}  "
+                     "critical_stretch s0 = {:.8g}\n", i, j, youngs[i][j], bulk[i][j],
+                     shear[i][j], horizon[i][j], critical_stretch[i][j]);
+}
+
+std::string PairBBPDLPSKernel::report_rules() const
+{
+  return PairBBPDPMB::report_rules() +
+      fmt::format("  LPS state: influence function the {} kernel W(|xi|/delta), dilatation "
+                  "factor d = {}, weighted volume m fixed at the first evaluation; stable time "
+                  "step estimated as for the bond-based bond of the same E\n", kernel.name,
+                  dimension);
+}
