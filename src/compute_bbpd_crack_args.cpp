@@ -101,15 +101,8 @@ void CrackComputeArgs::current_tip(double *tip) const
 BBPD::JIntegral::Elastic CrackComputeArgs::elastic(PairBBPD *pair, int itype) const
 {
   BBPD::JIntegral::Elastic e{youngs, poisson, plane == PLANE_STRESS};
-  if (e.E == UNSET) {
-    int dim = 0;
-    auto c0 = static_cast<double **>(pair->extract("micromodulus", dim));
-    auto horizon = static_cast<double **>(pair->extract("horizon", dim));
-    // c0 is linear in E: E = c0 / c0(E = 1)
-    e.E = c0[itype][itype] /
-        BBPD::micromodulus(pair->kernel, pair->model, 1.0, horizon[itype][itype], pair->geom);
-  }
-  if (e.nu == UNSET) e.nu = BBPD::implied_poisson_ratio(pair->model);
+  if (e.E == UNSET) e.E = pair->youngs_modulus(itype);
+  if (e.nu == UNSET) e.nu = pair->poisson_ratio(itype);
   if (plane == PLANE_UNSET) e.plane_stress = pair->model == BBPD::Model::PlaneStress;
   return e;
 }

@@ -1024,3 +1024,17 @@ void *PairBBPD::extract(const char *name, int &dim)
   if (strcmp(name, "horizon") == 0) return (void *) horizon;
   return nullptr;
 }
+
+/* ---------------------------------------------------------------------- */
+
+double PairBBPD::youngs_modulus(int itype) const
+{
+  // c0 is linear in E: E = c0 / c0(E = 1)
+  return micromodulus[itype][itype] /
+      BBPD::micromodulus(kernel, model, 1.0, horizon[itype][itype], geom);
+}
+
+double PairBBPD::poisson_ratio(int) const
+{
+  return BBPD::implied_poisson_ratio(model);
+}

@@ -56,6 +56,11 @@ class PairBBPD : public Pair {
 
   void setup() override;
 
+  // the engineering constants of type itype's bonds, for the crack computes (DSIF, J): the
+  // bond-based styles' E from c0 and the Poisson's ratio their model implies
+  virtual double youngs_modulus(int itype) const;
+  virtual double poisson_ratio(int itype) const;
+
   const BBPD::KernelInfo kernel;
   const std::string style;    // the style's name, for messages (bbpd/KERNEL, bbpd/pmb, ...)
   BBPD::Model model;

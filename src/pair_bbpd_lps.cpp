@@ -476,3 +476,17 @@ template <int EVFLAG> void PairBBPDLPS::eval_lps()
 
 template void PairBBPDLPS::eval_lps<0>();
 template void PairBBPDLPS::eval_lps<1>();
+
+/* ---------------------------------------------------------------------- */
+
+double PairBBPDLPS::youngs_modulus(int itype) const
+{
+  const double K = bulk[itype][itype], G = shear[itype][itype];
+  return 9.0 * K * G / (3.0 * K + G);
+}
+
+double PairBBPDLPS::poisson_ratio(int itype) const
+{
+  const double K = bulk[itype][itype], G = shear[itype][itype];
+  return (3.0 * K - 2.0 * G) / (2.0 * (3.0 * K + G));
+}

@@ -39,6 +39,10 @@ class PairBBPDLPS : public PairBBPDPMB {
   void *extract(const char *, int &) override;
   double memory_usage() override;
 
+  // E and nu of the 3D solid of K and G (the crack computes' constants)
+  double youngs_modulus(int itype) const override;
+  double poisson_ratio(int itype) const override;
+
  protected:
   double **bulk, **shear;           // K and G of peri/lps, per type pair (2D: kappa' and G)
   double dimension;                 // d of the LPS (3; 2 for the 2D models of the kernel styles)

@@ -25,6 +25,12 @@ class PairBBPDLPSKernel : public PairBBPDLPS {
 
   void settings(int, char **) override;
   void coeff(int, char **) override;
+  // the E and nu of pair_coeff (in 2D kappa' is not the 3D bulk modulus of the base class)
+  double youngs_modulus(int itype) const override { return youngs[itype][itype]; }
+  double poisson_ratio(int itype) const override
+  {
+    return youngs[itype][itype] / (2.0 * shear[itype][itype]) - 1.0;    // G = E / (2 (1 + nu))
+  }
 
  protected:
   void init_rules() override;

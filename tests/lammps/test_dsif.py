@@ -164,3 +164,16 @@ def test_no_work_unless_invoked(lmp):
 def test_r2_must_exceed_r1(lmp):
     with pytest.raises(LammpsError, match="r2 > r1"):
         run_k(lmp, field_script(), "tip 0.5 0.0 r1 2.0 r2 1.0")
+
+
+@pytest.mark.parametrize("kernel,nu", [("gaussian", 0.3), ("constant", 0.2)])
+def test_lps_pair_gives_its_own_e_and_nu(lmp, kernel, nu):
+    # the state-based styles' nu is free: the defaults must be pair_coeff's E and nu, not the
+    # bond-based model's implied 1/4 (a plane-strain field of that nu, compute without E, nu)
+    body = field_script("plane/strain", nu=nu).replace(
+        f"pair_style bbpd/gaussian plane/strain thickness {DX}\npair_coeff * * {YOUNGS!r} none {DELTA}",
+        f"pair_style bbpd/lps/{kernel} plane/strain thickness {DX}\n"
+        f"pair_coeff * * {YOUNGS!r} {nu!r} none {DELTA}")
+    assert "bbpd/lps/" in body
+    ki, kii = run_k(lmp, body, "tip 0.5 0.0")
+    assert (ki, kii) == pytest.approx((K_I, K_II), rel=RTOL)
