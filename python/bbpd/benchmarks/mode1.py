@@ -64,12 +64,13 @@ def default_dt(dx):
     return DT_PAPER * min(1.0, dx / DX_PAPER_DT)
 
 
-def reference(convention, model="plane/stress", E=E, rho=RHO, H=H, sigma0=SIGMA0, t_d=T_D):
-    """(K_exact(t), t_c) of eq. 42 in one convention."""
+def reference(convention, model="plane/stress", E=E, rho=RHO, H=H, sigma0=SIGMA0, t_d=T_D, nu=None):
+    """(K_exact(t), t_c) of eq. 42 in one convention; nu is the model's Poisson's ratio where
+    it is free (the LPS styles), else the one the bond-based model implies."""
     if convention == "paper":
         nu_eq, c_d = NU_PAPER, freund.dilatational_wave_speed(E, NU_PAPER, rho, freund.PLANE_STRAIN)
     elif convention == "consistent":
-        nu = IMPLIED_NU[model]
+        nu = IMPLIED_NU[model] if nu is None else nu
         if model == "plane/stress":
             nu_eq = freund.equivalent_plane_stress_poisson(nu)
             c_d = freund.dilatational_wave_speed(E, nu, rho, freund.PLANE_STRESS)
@@ -97,29 +98,34 @@ def errors(t, k_paper, k_consistent, model="plane/stress", **material):
 
 
 def run(workdir, kernel="gaussian", dx=0.05, model="plane/stress", dt=None, nprocs=1,
-        efactor=1.0, tipshift=0.5, r1=1.0, r2=2.0, t_end=T_END):
-    """Run in.mode1 once; return errors (%) in both conventions, wall time and series."""
+        efactor=1.0, tipshift=0.5, r1=1.0, r2=2.0, t_end=T_END, family="bond", nu=NU_PAPER):
+    """Run in.mode1 once; return errors (%) in both conventions, wall time and series.
+    family 'lps' runs the state-based style of the kernel with Poisson's ratio nu (the
+    bond-based family ignores nu: its ratio is the model's)."""
     dt = default_dt(dx) if dt is None else dt
     workdir = Path(workdir)
     vars_ = {"kernel": kernel, "dx": dx, "model": model, "dt": dt, "tend": t_end,
              "Efactor": efactor, "tipshift": tipshift, "r1": r1, "r2": r2,
-             "E": E, "rho": RHO, "H": H, "td": T_D, "sigma0": SIGMA0, "nu_paper": NU_PAPER}
+             "E": E, "rho": RHO, "H": H, "td": T_D, "sigma0": SIGMA0, "nu_paper": NU_PAPER,
+             "family": family, "nu": nu}
+    nu_model = nu if family == "lps" else None
     start = time.perf_counter()
     proc = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_)
     wall = time.perf_counter() - start
     loop_s, _ = readers.loop_time(proc.output)
     # k.dat: K_I (paper constants), K_I (consistent), K_II (consistent)
     t, k_paper, k_cons, k_ii = readers.k_history(workdir / "k.dat", dt)
-    res = {"kernel": kernel, "dx": dx, "model": model, "dt": dt, "nprocs": nprocs,
+    res = {"kernel": kernel, "dx": dx, "model": model, "family": family, "nu": nu_model,
+           "dt": dt, "nprocs": nprocs,
            "wall_time": wall, "loop_time": loop_s,
            "dt_fraction_of_limit": readers.pair_setup(proc.output)["dt_fraction"],
            "atoms": int(round(10.0 / dx)) * int(round(2 * H / dx)),
            "t": t, "k_paper": k_paper, "k_consistent": k_cons, "k_ii": k_ii}
-    res.update(errors(t, k_paper, k_cons, model))
+    res.update(errors(t, k_paper, k_cons, model, nu=nu_model))
     jcols = readers.j_history(workdir / "k.dat")
     if jcols is not None:    # K_I from the J-integral (interaction integral), both conventions
         res["j"], res["k_j"], res["kii_j"] = jcols
-        res["jintegral"] = errors(t, res["k_j"], res["k_j"], model)
+        res["jintegral"] = errors(t, res["k_j"], res["k_j"], model, nu=nu_model)
     # K_II must vanish by symmetry until the lateral edges matter (they are 5 m away)
     w = t <= freund.MODE1_VALIDITY_MULTIPLE * res["consistent"]["t_c"]
     res["kii_over_ki"] = float(np.max(np.abs(k_ii[w])) / np.max(np.abs(k_cons[w])))
