@@ -45,3 +45,23 @@ def test_summary_follows_the_rows():
 def test_unknown_deck_is_refused(bad):
     with pytest.raises(KeyError):
         deck.case_vars(bad, "gaussian", 1.0e-3)
+
+
+def test_lps_deck_reaches_the_input(tmp_path):
+    v = deck.case_vars("paper-lps", "gaussian", 2.0e-3)
+    assert v["family"] == "lps" and float(v["nu"]) == 0.3
+    v["tend"] = repr(SHORT_US * 1e-6)
+    run_lammps(str(deck.kw.EXAMPLE), tmp_path, vars=v)
+    log = (tmp_path / "log.lammps").read_text()
+    assert "pair style bbpd/lps/gaussian model plane/strain" in log
+    # K and G of E = 190 GPa, nu = 0.3 in plane strain: kappa' = E / (2 (1 + nu) (1 - 2 nu))
+    assert "K = 1.8269231e+11  G = 7.3076923e+10" in log
+
+
+def test_summary_separates_the_family_from_poissons_ratio():
+    text = deck.summary(rows_of({("paper", 1.0): 61.0, ("paper-lps-nu025", 1.0): 55.0,
+                                 ("paper-lps", 1.0): 51.0}))
+    assert "state-based solid at the bond-based nu = 1/4, at 1 mm (change from deck paper): " \
+           "constant 55.0° (-6.0°)" in text
+    assert "nu from 1/4 to 0.3 in the state-based solid, at 1 mm (change from deck " \
+           "paper-lps-nu025): constant 51.0° (-4.0°)" in text

@@ -7,7 +7,10 @@ rho = 8000 kg/m^3, G_c = 2.213e4 J/m^2 (and nu = 0.3, which a bond-based model c
 plane strain its Poisson ratio is 1/4). The paper's loading holds 32 m/s with rho = 7800 and
 G_c = 6.9e4. Both decks run examples/kalthoff-winkler/in.kalthoff_winkler (prescribed velocity
 on the struck layer, to 100 us) for the three kernels at 1 and 0.5 mm; the angles are those of
-the loading study (bbpd.benchmarks.kalthoff_winkler_study: initial, fit and chord).
+the loading study (bbpd.benchmarks.kalthoff_winkler_study: initial, fit and chord). The decks
+'paper-lps' and 'standard-lps' run the same loadings on the state-based solid with the kernel
+as influence function (pair_style bbpd/lps/KERNEL, family lps of the input) at nu = 0.3, the
+standard deck's own: what Poisson's ratio does to the angle.
 
 Command line (from the repository root):
   tools/python -m bbpd.benchmarks.kalthoff_winkler_deck --work /tmp/kw-deck \
@@ -37,7 +40,22 @@ DECKS = {
     "paper": ("the paper's: 32 m/s held, rho 7800 kg/m3, G_c 6.9e4 J/m2", {}),
     "standard": ("Borden et al. 2012: 16.5 m/s held, rho 8000 kg/m3, G_c 2.213e4 J/m2",
                  {"v0": 16.5, "rho": 8000.0, "Gc": 2.213e4}),
+    "paper-lps": ("the paper's loading on bbpd/lps/KERNEL with nu = 0.3",
+                  {"family": "lps", "nu": 0.3}),
+    "standard-lps": ("the standard deck on bbpd/lps/KERNEL with its nu = 0.3",
+                     {"v0": 16.5, "rho": 8000.0, "Gc": 2.213e4, "family": "lps", "nu": 0.3}),
+    "paper-lps-nu025": ("the paper's loading on bbpd/lps/KERNEL with the bond-based nu = 1/4",
+                        {"family": "lps", "nu": 0.25}),
 }
+BOND_DECK = {"paper-lps": "paper", "standard-lps": "standard",    # the same loading, bond-based
+             "paper-lps-nu025": "paper"}
+# (what changes, deck, the deck it changes from): the model family at the same nu, then nu alone
+CHANGES = (("the paper's loading on the state-based solid at the bond-based nu = 1/4",
+            "paper-lps-nu025", "paper"),
+           ("the paper's loading, nu from 1/4 to 0.3 in the state-based solid", "paper-lps",
+            "paper-lps-nu025"),
+           ("the standard deck on the state-based solid with its nu = 0.3", "standard-lps",
+            "standard"))
 DX_VALUES = (1.0e-3, 0.5e-3)
 COLUMNS = ("deck", "kernel", "dx_mm", "v0", "rho", "Gc", "first_bond_us", "band_us",
            "initial_deg", "fit_deg", "chord_deg", "length_end_mm", "crack_stops", "loop_cpu_s",
@@ -46,7 +64,7 @@ COLUMNS = ("deck", "kernel", "dx_mm", "v0", "rho", "Gc", "first_bond_us", "band_
 
 def case_vars(deck, kernel, dx):
     out = {"kernel": kernel, "dx": repr(float(dx)), "tend": repr(study.TEND)}
-    out.update({k: repr(float(v)) for k, v in DECKS[deck][1].items()})
+    out.update({k: v if isinstance(v, str) else repr(float(v)) for k, v in DECKS[deck][1].items()})
     return out
 
 
@@ -91,7 +109,9 @@ def table(rows, command=None):
             _f(r["initial_deg"], ".1f"), _f(r["fit_deg"], ".1f"), _f(r["chord_deg"], ".1f"),
             _f(r["length_end_mm"], ".0f"), r["crack_stops"], _f(r["loop_cpu_s"], ".0f")]) + " |")
     out = "\n".join(lines)
-    return out if command is None else f"Made by `{command}`.\n\n" + out
+    made = [command] if isinstance(command, str) else list(command or [])
+    intro = " ".join(f"{'Made by' if k == 0 else 'Rows added by'} `{c}`." for k, c in enumerate(made))
+    return intro + "\n\n" + out if made else out
 
 
 def _order(r):
@@ -127,6 +147,15 @@ def summary(rows):
             if (defs := [d for d in study.ANGLE_DEFS if r[f"{d}_deg"] is not None and
                          abs(r[f"{d}_deg"] - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG])
             and r["crack_stops"].startswith("edge")]
+    for what, deck, base in CHANGES:
+        for dx in dxs:    # the finest grid both decks ran
+            moved = [f"{k} {b['fit_deg']:.1f}° ({b['fit_deg'] - a['fit_deg']:+.1f}°)" for k in KERNELS
+                     if (a := by.get((base, k, dx))) and (b := by.get((deck, k, dx)))
+                     and a["fit_deg"] is not None and b["fit_deg"] is not None]
+            if moved:
+                out.append(f"fit angle, {what}, at {dx:g} mm (change from deck {base}): "
+                           + ", ".join(moved))
+                break
     out.append(f"within {study.ANGLE_TARGET_DEG:.0f} ± {study.ANGLE_TOL_DEG:.0f}° with cracks "
                "that cross the plate: " + ("; ".join(hits) if hits else "none"))
     return ". ".join(s[0].upper() + s[1:] for s in out) + "."
@@ -136,6 +165,7 @@ def summary(rows):
 
 REPORT_TITLE = "Kalthoff-Winkler on the standard deck (Borden et al. 2012) beside the paper's loading"
 ESTIMATE_S = {1.0e-3: 10.0, 0.5e-3: 80.0}    # loop CPU of one run on 1 rank (the CSV's)
+LPS_COST = 3.5    # LPS loop over bond-based, same grid (the Mode-I plate at dx 0.1 m: 1.99 / 0.58 s)
 
 
 def jobs(nprocs=1):
@@ -151,7 +181,8 @@ def jobs(nprocs=1):
                           kwargs={"target": "bbpd.benchmarks.kalthoff_winkler_deck:run_case",
                                   "args": {"deck": deck, "kernel": k, "dx": dx, "nprocs": nprocs},
                                   "label": label},
-                          inputs=tuple(str(p) for p in inputs), estimate_s=ESTIMATE_S[dx])
+                          inputs=tuple(str(p) for p in inputs),
+                          estimate_s=ESTIMATE_S[dx] * (LPS_COST if deck in BOND_DECK else 1.0))
                 specs.append(Spec("kwdeck", k, dx, job))
     return specs
 
@@ -181,8 +212,15 @@ def main(argv=None):
     ap.add_argument("--np", dest="nprocs", type=int, default=1)
     ap.add_argument("--reuse", action="store_true", help="measure finished runs in --work again")
     ap.add_argument("--csv", help="write the rows here")
+    ap.add_argument("--append", action="store_true",
+                    help="add the rows to --csv, keeping its rows and the commands that made them")
     a = ap.parse_args(argv)
-    rows = []
+    cmd = "tools/python -m bbpd.benchmarks.kalthoff_winkler_deck " + " ".join(argv or sys.argv[1:])
+    earlier, rows, made = [], [], f"made by: {cmd}"
+    if a.append and a.csv and Path(a.csv).is_file():
+        comments, rows = csvfile.read_csv(a.csv)
+        earlier = [c for c in comments if c.startswith(("made by: ", "rows added by: "))]
+        made = f"rows added by: {cmd}"
     for dx in a.dx:
         for deck in a.decks:
             for k in a.kernels:
@@ -193,8 +231,7 @@ def main(argv=None):
                       f"stops {r['crack_stops']} loop CPU {_f(r['loop_cpu_s'], '.0f')} s", flush=True)
                 rows.append(r)
     if a.csv:
-        cmd = "tools/python -m bbpd.benchmarks.kalthoff_winkler_deck " + " ".join(argv or sys.argv[1:])
-        csvfile.write_csv(a.csv, rows, comments=[f"made by: {cmd}",
+        csvfile.write_csv(a.csv, rows, comments=[*earlier, made,
                                                  f"timing: LAMMPS loop CPU time, {machine()}"])
     print(summary(rows))
     return 0

@@ -98,7 +98,7 @@ def errors(t, k_paper, k_consistent, model="plane/stress", **material):
 
 
 def run(workdir, kernel="gaussian", dx=0.05, model="plane/stress", dt=None, nprocs=1,
-        efactor=1.0, tipshift=0.5, r1=1.0, r2=2.0, t_end=T_END, family="bond", nu=NU_PAPER):
+        efactor=1.0, tipshift=0.5, r1=1.0, r2=2.0, t_end=T_END, family="bond", nu=NU_PAPER, m=None):
     """Run in.mode1 once; return errors (%) in both conventions, wall time and series.
     family 'lps' runs the state-based style of the kernel with Poisson's ratio nu (the
     bond-based family ignores nu: its ratio is the model's)."""
@@ -108,6 +108,8 @@ def run(workdir, kernel="gaussian", dx=0.05, model="plane/stress", dt=None, npro
              "Efactor": efactor, "tipshift": tipshift, "r1": r1, "r2": r2,
              "E": E, "rho": RHO, "H": H, "td": T_D, "sigma0": SIGMA0, "nu_paper": NU_PAPER,
              "family": family, "nu": nu}
+    if m is not None:
+        vars_["m"] = m
     nu_model = nu if family == "lps" else None
     start = time.perf_counter()
     proc = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_)

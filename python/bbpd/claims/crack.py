@@ -91,7 +91,8 @@ def strip_work_precision(data):
 
 
 def kw_deck_table(data):
-    return deck.table(deck.read_rows()[1], _made_by(deck.CSV))
+    return deck.table(deck.read_rows()[1],
+                      [ln.split(": ", 1)[1] for ln in csvfile.provenance(deck.CSV)])
 
 
 def kw_deck_summary(data):

@@ -4,7 +4,9 @@ examples/mode1-semi-infinite/results/mode1.csv and the tolerances of
 tests/regression/test_mode1.py."""
 import re
 
+from bbpd import csvfile
 from bbpd.benchmarks import mode1 as mode1_bench
+from bbpd.benchmarks import mode1_lps
 from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 
@@ -186,3 +188,17 @@ def tips_text(data):
             f", while the L2 error stays at {span([r['consistent_l2'] for r in far], '.1f', ' %')}"
             ". The estimate is therefore only as good as this convention: read the Mode-II "
             "README before trusting it in another mode.")
+
+
+def _lps_rows():
+    made = [ln.split(": ", 1)[1] for ln in csvfile.provenance(mode1_lps.CSV)]
+    return mode1_lps.read_rows(), made
+
+
+def lps_table(data):
+    rows, made = _lps_rows()
+    return mode1_lps.table(rows, data.rows(NAME), made[0] if made else None)
+
+
+def lps_findings(data):
+    return mode1_lps.findings(_lps_rows()[0], data.rows(NAME))

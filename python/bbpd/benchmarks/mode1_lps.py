@@ -1,0 +1,117 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The stationary Mode-I crack with Poisson's ratio free: the LPS styles at nu = 0.3.
+
+Bond-based peridynamics fixes Poisson's ratio (1/3 in plane stress, 1/4 in plane strain), so
+the paper's Mode-I convention (nu = 0.3 in Freund's eq. 42 and in C_d) cannot be run
+consistently with it. The state-based styles bbpd/lps/KERNEL take nu in pair_coeff: in plane
+strain at nu = 0.3 the paper's convention and the model's are one and the same. This runs
+examples/mode1-semi-infinite/in.mode1 with family lps for the three kernels (the kernel as
+influence function), m = 5 as the paper's, and gives K_I by displacement extrapolation and by
+the J-integral against eq. 42, with the bond-based plane-stress runs of results/mode1.csv
+(consistent convention) beside them.
+
+Command line (from the repository root):
+  tools/python -m bbpd.benchmarks.mode1_lps --work /tmp/mode1-lps \
+      --csv examples/mode1-semi-infinite/results/mode1_lps.csv
+"""
+
+import argparse
+import sys
+from pathlib import Path
+
+from bbpd import csvfile
+from bbpd.benchmarks import mode1
+from bbpd.benchmarks.mode1_propagation import machine
+from bbpd.kernels import KERNELS
+
+ROOT = Path(__file__).resolve().parents[3]
+CSV = ROOT / "examples" / "mode1-semi-infinite" / "results" / "mode1_lps.csv"
+BOND_CSV = ROOT / "examples" / "mode1-semi-infinite" / "results" / "mode1.csv"
+NU = mode1.NU_PAPER                 # the paper's Poisson's ratio, now the model's own
+MODEL = "plane/strain"              # eq. 42 is Freund's plane-strain solution
+DXS = (0.1, 0.05, 0.025)
+COLUMNS = ("kernel", "dx_m", "nu", "model", "peak_pct", "l2_pct", "j_peak_pct", "j_l2_pct",
+           "kii_over_ki", "dt_s", "atoms", "loop_s")
+
+
+def run_case(workdir, kernel, dx, nprocs=1):
+    """One LPS run; its CSV row (errors of the consistent convention = the paper's here)."""
+    r = mode1.run(Path(workdir) / f"{kernel}_{dx:g}", kernel, dx, MODEL, nprocs=nprocs,
+                  family="lps", nu=NU)
+    c, j = r["consistent"], r["jintegral"]["consistent"]
+    return {"kernel": kernel, "dx_m": dx, "nu": NU, "model": MODEL, "peak_pct": c["peak"],
+            "l2_pct": c["l2"], "j_peak_pct": j["peak"], "j_l2_pct": j["l2"],
+            "kii_over_ki": r["kii_over_ki"], "dt_s": r["dt"], "atoms": r["atoms"],
+            "loop_s": r["loop_time"]}
+
+
+def read_rows(path=CSV):
+    return csvfile.read_csv(path)[1]
+
+
+def _bond(bond_rows, kernel, dx):
+    for r in bond_rows:
+        if r["kernel"] == kernel and abs(r["dx_m"] - dx) < 1e-12:
+            return r
+    return None
+
+
+def table(rows, bond_rows, command=None):
+    head = ("| kernel | dx (m) | LPS nu = 0.3, plane strain: DSIF peak / L2 (%) | J-integral peak / "
+            "L2 (%) | bond-based plane stress (nu = 1/3), consistent: DSIF peak / L2 (%) | "
+            "J-integral peak / L2 (%) | LPS loop (s) |")
+    lines = ([f"Made by `{command}`.", ""] if command else []) + [head, "|" + "---|" * 7]
+    for r in sorted(rows, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx_m"])):
+        b = _bond(bond_rows, r["kernel"], r["dx_m"])
+        bond = (f"{b['consistent_peak']:.2f} / {b['consistent_l2']:.2f} | {b['j_peak']:.2f} / "
+                f"{b['j_l2']:.2f} | " if b else "- | - | ")
+        lines.append(f"| {r['kernel']} | {r['dx_m']:g} | {r['peak_pct']:.2f} / {r['l2_pct']:.2f} | "
+                     f"{r['j_peak_pct']:.2f} / {r['j_l2_pct']:.2f} | {bond}{r['loop_s']:.1f} |")
+    return "\n".join(lines)
+
+
+def findings(rows, bond_rows):
+    """The sentences on the table, computed: the finest grid's errors per kernel, against the
+    bond-based model's in its own (consistent) convention."""
+    out = []
+    for k in KERNELS:
+        sel = sorted((r for r in rows if r["kernel"] == k), key=lambda r: -r["dx_m"])
+        if not sel:
+            continue
+        fin = sel[-1]
+        b = _bond(bond_rows, k, fin["dx_m"])
+        trend = ", ".join(f"{r['l2_pct']:.2f}" for r in sel)
+        s = (f"- **{k}**: DSIF L2 {trend} % at dx = " + ", ".join(f"{r['dx_m']:g}" for r in sel)
+             + f" m; J-integral L2 {fin['j_l2_pct']:.2f} % at dx = {fin['dx_m']:g} m")
+        if b:
+            s += (f" (bond-based, nu = 1/3 in its own convention: DSIF {b['consistent_l2']:.2f} %, "
+                  f"J {b['j_l2']:.2f} %)")
+        out.append(s + ".")
+    return "\n".join(out)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--work", default="/tmp/mode1-lps")
+    ap.add_argument("--dx", nargs="+", type=float, default=list(DXS))
+    ap.add_argument("--kernels", nargs="+", default=list(KERNELS), choices=KERNELS)
+    ap.add_argument("--nprocs", type=int, default=1)
+    ap.add_argument("--csv")
+    a = ap.parse_args(argv)
+    rows = []
+    cmd = "tools/python -m bbpd.benchmarks.mode1_lps " + " ".join(argv or sys.argv[1:])
+    for kernel in a.kernels:
+        for dx in a.dx:
+            r = run_case(a.work, kernel, dx, a.nprocs)
+            print(f"{kernel} dx {dx:g}: DSIF peak / L2 {r['peak_pct']:.2f} / {r['l2_pct']:.2f} %, "
+                  f"J {r['j_peak_pct']:.2f} / {r['j_l2_pct']:.2f} %, loop {r['loop_s']:.1f} s",
+                  flush=True)
+            rows.append(r)
+            if a.csv:
+                csvfile.write_csv(a.csv, rows, comments=[
+                    f"made by: {cmd}", f"timing: LAMMPS loop time, {machine()}, shared machine"])
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
