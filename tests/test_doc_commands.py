@@ -20,6 +20,7 @@ SHELL = {"sh", "bash", "shell", "console"}
 VERSION = os.environ.get("BBPD_LAMMPS_VERSION", "20260704")
 BUILT = (ROOT / "build" / f"lammps-{VERSION}" / "bbpd-env.sh").is_file()
 GENERATED = ("build", "report")    # folders the commands create; not in a fresh clone
+STYLE_WORDS = {"plane/strain", "plane/stress"}    # values of -var model, not paths
 NOT_RUN = {"tools/bootstrap", "tools/test", "tools/reproduce", "cmake", "mpirun", "mkdir", "cd",
            "export"}
 
@@ -102,7 +103,7 @@ class Session:
 
     def resolve(self, token):
         """The repository path a token names (relative to ROOT), or None."""
-        if token.startswith("-") or "/" not in token:
+        if token.startswith("-") or "/" not in token or token in STYLE_WORDS:
             return None
         path = Path(token) if token.startswith("/") else self.cwd / token
         path = Path(os.path.normpath(path))
