@@ -108,9 +108,12 @@ double PairBBPDLPSKernel::bond_stiffness(int i, int k) const
 
 std::string PairBBPDLPSKernel::report_type_pair(int i, int j) const
 {
-  return fmt::format("  types {} {}: LPS: E = {:.8g}  K = {:.8g}  G = {:.8g}  horizon = {:.6g}  "
-                     "critical_stretch s0 = {:.8g}\n", i, j, youngs[i][j], bulk[i][j],
-                     shear[i][j], horizon[i][j], critical_stretch[i][j]);
+  // E and Gc first, as the bond-based styles print them (scripts read the line)
+  return fmt::format("  types {} {}: E = {:.8g}  Gc = {:.6g}  nu = {:.6g}  LPS: K = {:.8g}  "
+                     "G = {:.8g}  horizon = {:.6g}  critical_stretch s0 = {:.8g}\n", i, j,
+                     youngs[i][j], fracture_energy[i][j],
+                     youngs[i][j] / (2.0 * shear[i][j]) - 1.0,    // G = E / (2 (1 + nu))
+                     bulk[i][j], shear[i][j], horizon[i][j], critical_stretch[i][j]);
 }
 
 std::string PairBBPDLPSKernel::report_rules() const

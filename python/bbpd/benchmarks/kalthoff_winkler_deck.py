@@ -47,6 +47,7 @@ DECKS = {
     "paper-lps-nu025": ("the paper's loading on bbpd/lps/KERNEL with the bond-based nu = 1/4",
                         {"family": "lps", "nu": 0.25}),
 }
+INPUT_GC = 6.9e4    # in.kalthoff_winkler's default G_c (J/m^2), the paper's
 BOND_DECK = {"paper-lps": "paper", "standard-lps": "standard",    # the same loading, bond-based
              "paper-lps-nu025": "paper"}
 # (what changes, deck, the deck it changes from): the model family at the same nu, then nu alone
@@ -82,6 +83,8 @@ def run_case(workdir, deck, kernel, dx, nprocs=1, reuse=False):
     r["nprocs"] = case["nprocs"]
     out = projectile.row(r)
     out.update(deck=deck, v0=r["v0"], rho=loaded_density(workdir))
+    if out["Gc"] is None:    # a setup report without the bond-based 'E = .. Gc = ..' line
+        out["Gc"] = float(DECKS[deck][1].get("Gc", INPUT_GC))
     return {c: out[c] for c in COLUMNS}
 
 

@@ -218,7 +218,7 @@ def benchmark_specs(full=False, study=None):
     if study:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
         specs += kalthoff_winkler_study.jobs()
         specs += kalthoff_winkler_grid.jobs()    # the grid's pull (44 runs)
-        specs += kalthoff_winkler_deck.jobs()    # the standard deck beside the paper's (12 runs)
+        specs += kalthoff_winkler_deck.jobs()    # both decks, bond-based and state-based (30 runs)
         specs += kalthoff_winkler_3d.jobs()      # the 3D plate, 4 horizons through it (4 runs)
         specs += kink_convergence.jobs()         # the kink angle against m and R/delta (6 runs)
     return specs
