@@ -86,3 +86,12 @@ def provenance(path):
     command that wrote rows to it."""
     return [ln[2:] for ln in Path(path).read_text().splitlines()
             if ln.startswith(("# made by: ", "# rows added by: "))]
+
+
+def continue_csv(path, command):
+    """(earlier provenance lines, rows so far, this command's line) for a run that adds to the
+    results CSV at path (None: it starts one): an added run keeps the rows and the commands
+    that made them, and names itself 'rows added by'."""
+    if path is None or not Path(path).is_file():
+        return [], [], f"made by: {command}"
+    return provenance(path), read_csv(path)[1], f"rows added by: {command}"

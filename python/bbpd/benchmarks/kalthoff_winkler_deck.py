@@ -219,11 +219,7 @@ def main(argv=None):
                     help="add the rows to --csv, keeping its rows and the commands that made them")
     a = ap.parse_args(argv)
     cmd = "tools/python -m bbpd.benchmarks.kalthoff_winkler_deck " + " ".join(argv or sys.argv[1:])
-    earlier, rows, made = [], [], f"made by: {cmd}"
-    if a.append and a.csv and Path(a.csv).is_file():
-        comments, rows = csvfile.read_csv(a.csv)
-        earlier = [c for c in comments if c.startswith(("made by: ", "rows added by: "))]
-        made = f"rows added by: {cmd}"
+    earlier, rows, made = csvfile.continue_csv(a.csv if a.append else None, cmd)
     for dx in a.dx:
         for deck in a.decks:
             for k in a.kernels:

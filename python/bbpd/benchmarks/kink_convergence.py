@@ -130,7 +130,7 @@ def _kernel_verdict(rows, kernel):
         pairs = [(m, size[m][f"angle_{dist}"] - r[f"angle_{dist}"]) for r in seq
                  for m in [r["m"]] if m in size]
         if pairs:
-            out.append(f"doubling the disk to R/delta = 20 moves it by " + ", ".join(
+            out.append("doubling the disk to R/delta = 20 moves it by " + ", ".join(
                 f"{d:+.1f}° at m = {m:g}" for m, d in pairs))
     return (". ".join(s[0].upper() + s[1:] for s in out) + "." if out else
             f"{kernel[0].upper() + kernel[1:]}: no verdict, it needs two values of m at R/delta = 10.")
@@ -184,11 +184,7 @@ def main(argv=None):
     a = ap.parse_args(argv)
     cases = CASES if not a.cases else [tuple(float(v) for v in c.split(":")) for c in a.cases]
     cmd = "tools/python -m bbpd.benchmarks.kink_convergence " + " ".join(argv or sys.argv[1:])
-    earlier, rows, made = [], [], f"made by: {cmd}"
-    if a.append and a.csv and Path(a.csv).is_file():
-        comments, rows = csvfile.read_csv(a.csv)
-        earlier = [c for c in comments if c.startswith(("made by: ", "rows added by: "))]
-        made = f"rows added by: {cmd}"
+    earlier, rows, made = csvfile.continue_csv(a.csv if a.append else None, cmd)
     for m, rd in cases:
         start = time.perf_counter()
         r = run_case(a.work, m, rd, a.nprocs, a.reuse, a.kernel)
