@@ -4,8 +4,8 @@
 
    Which pairs of atoms are bonded (the family), and per bond the partner
    volume C_v V_j (eq. 19) and the force density per unit elongation
-   c(xi0) C_v V_j / xi0 (eqs. 9, 19, 21); with bbpd/pmb the rules of
-   LAMMPS's peri/pmb (bbpd_pmb_rules.h). The pair style fills one BondLaw with
+   c(xi0) C_v V_j / xi0 (eqs. 9, 19, 21), as the family's weighting
+   (bbpd_bond_weighting.h: the kernel styles', peri/pmb's, peri/lps's) gives them. The pair style fills one BondLaw with
    copies of its calibrated per-type-pair values once it has calibrated them,
    and hands a copy to the bond storage (fix bbpd/bonds), which builds and
    caches with it without knowing the pair: a BondLaw is a value, it points
@@ -15,10 +15,8 @@
 #ifndef BBPD_BOND_LAW_H
 #define BBPD_BOND_LAW_H
 
+#include "bbpd_bond_weighting.h"
 #include "bbpd_kernel.h"
-#include "bbpd_lps.h"
-#include "bbpd_lps_kernel.h"
-#include "bbpd_pmb_rules.h"
 
 #include <cmath>
 #include <vector>
@@ -60,10 +58,7 @@ struct BondLaw {
   Model model = Model::Solid3D;
   double geom = 1.0;                 // cross-section A (1D), thickness h (2D), 1 in 3D
   double spacing = 0.0;              // grid spacing of the partial-volume correction (eq. 19)
-  bool pmb = false;                  // peri/pmb's families, volumes and volume ramp
-  double lattice_constant = 0.0;     // pmb: the ramp's width
-  bool lps = false;                  // with pmb: the coefficient is peri/lps's omega V_j ramp
-  bool lps_kernel = false;           // with lps: omega is the kernel shape, not 1 / |xi|
+  BondWeighting weighting;           // the family's: set by the pair style (bbpd_bond_weighting.h)
   // per type pair, as calibrated by the pair style: c0 (eq. 21; pmb: peri/pmb's c) and delta
   TypePairTable micromodulus, horizon;
   TypePairTable bondless;    // nonzero: the type pair forms no bonds (separate bodies)
@@ -71,34 +66,30 @@ struct BondLaw {
   // reference distance below which a pair is in a family (pmb: up to and including delta)
   double family_cutoff(int itype, int jtype) const
   {
-    return pmb ? horizon(itype, jtype) : horizon(itype, jtype) + 0.5 * spacing;
+    const double delta = horizon(itype, jtype);
+    return std::visit([&](const auto &w) { return w.cutoff(delta, spacing); }, weighting);
   }
   // is a pair at squared reference distance rsq in a family?
   bool bonded(int itype, int jtype, double rsq) const
   {
     if (!bondless.empty() && bondless(itype, jtype) != 0.0) return false;
-    if (pmb) return PMB::in_family(rsq, horizon(itype, jtype));
-    const double rc = family_cutoff(itype, jtype);
-    return rsq < rc * rc;
+    const double delta = horizon(itype, jtype);
+    return std::visit([&](const auto &w) { return w.in_family(rsq, delta, spacing); }, weighting);
   }
-  // partner volume inside the horizon, C_v V_j (eq. 19); pmb counts whole volumes
+  // the partner volume the bond counts (C_v V_j, eq. 19; whole volumes in peri/pmb's family)
   double partner_volume(int itype, int jtype, double xi0, double vj) const
   {
-    if (pmb) return vj;
-    return partial_volume(xi0, horizon(itype, jtype), spacing) * vj;
+    const double delta = horizon(itype, jtype);
+    return std::visit([&](const auto &w) { return w.partner_volume(xi0, delta, spacing, vj); },
+                      weighting);
   }
-  // force density per unit elongation: c(xi0) C_v V_j / xi0; pmb: c V_j times its ramp / xi0;
-  // lps: the bond's weighted partner volume omega(xi0) V_j ramp (bbpd_lps.h)
+  // what the bond storage keeps per bond: the force density per unit elongation
+  // c(xi0) C_v V_j / xi0, or for LPS the weighted partner volume omega(xi0) V_j ramp
   double coefficient(int itype, int jtype, double xi0, double vj) const
   {
-    const double delta = horizon(itype, jtype);
-    if (pmb && lps && lps_kernel)
-      return LPS::weighted_partner_volume_with(LPS::influence_function(kernel, xi0, delta), xi0,
-                                               delta, lattice_constant, vj);
-    if (pmb && lps) return LPS::weighted_partner_volume(xi0, delta, lattice_constant, vj);
-    if (pmb) return micromodulus(itype, jtype) * vj * PMB::volume_scale(xi0, delta, lattice_constant) / xi0;
-    return micromodulus(itype, jtype) * kernel.shape(xi0 / delta) *
-        partner_volume(itype, jtype, xi0, vj) / xi0;
+    const double c0 = micromodulus(itype, jtype), delta = horizon(itype, jtype);
+    return std::visit(
+        [&](const auto &w) { return w.coefficient(kernel, c0, xi0, delta, spacing, vj); }, weighting);
   }
   double spacing_of_volume(double vfrac) const { return grid_spacing_of(model, geom, vfrac); }
 };

@@ -51,6 +51,11 @@ struct CriticalStretchBond {
    stretch of atom a's bonds at the previous step; with CLAMP only compression counts
    (s0_a = s00 - alpha min(0, smin_a)), so a body in pure tension keeps the calibrated s00 */
 template <bool CLAMP> struct SillingAskariRule {
+  // a bond that breaks is dropped at once: no force in that step, its energy booked at its
+  // critical stretch (CriticalStretchBond::broken_energy_share)
+  static constexpr bool FORCE_IN_BREAKING_STEP = false;
+  // the elongation a stretch is read from: the bond model's, as it is
+  template <class V> static V settled_elongation(V elong) { return elong; }
   template <class V> static V critical_stretch(V s00, V alpha, V smin_i, V smin_j)
   {
     const V smax = vmax(smin_i, smin_j);

@@ -51,17 +51,19 @@ namespace PMB {
     return std::min(SHORT_RANGE_BOND_FACTOR * xi0, SHORT_RANGE_LATTICE_FACTOR * lc);
   }
 
-  /* critical stretch of a bond between atoms whose smallest bond stretches at the previous
-     step were smin_i, smin_j: min(s0_i, s0_j) with s0_a = s00 - alpha smin_a. peri/pmb uses
-     smin as is; with 'clamp' only compression counts (s0_a = s00 - alpha min(0, smin_a)), so
-     a body in pure tension keeps the calibrated s00. */
-  inline double critical_stretch(double s00, double alpha, double smin_i, double smin_j, bool clamp)
-  {
-    return clamp ? SillingAskariRule<true>::critical_stretch(s00, alpha, smin_i, smin_j)
-                 : SillingAskariRule<false>::critical_stretch(s00, alpha, smin_i, smin_j);
-  }
-
 }    // namespace PMB
+
+/* peri/pmb's own Silling-Askari rule (bbpd/pmb): smin as is (no clamp), an elongation below
+   NEAR_ZERO read as zero, and a bond that breaks still acts in that step, its energy then
+   being what it carries away (pair_peri_pmb.cpp). The Silling-Askari loop takes it, or
+   SillingAskariRule<true> (bbpd/KERNEL/alpha), as its Rule parameter. */
+struct PeriPmbRule : SillingAskariRule<false> {
+  static constexpr bool FORCE_IN_BREAKING_STEP = true;
+  template <class V> static V settled_elongation(V elong)
+  {
+    return vselect(vabs(elong) < V(PMB::NEAR_ZERO), V(0.0), elong);
+  }
+};
 }    // namespace BBPD
 
 #endif

@@ -56,7 +56,7 @@ inline void lane_sum(const double *ax, const double *ay, const double *az, doubl
    stretch s0_of(j) come from callables (cached or recomputed, one s0 or per type). With
    FRACTURE it returns true if a bond is past s0 or within margin of it, and the lanes are then
    incomplete. */
-template <int FRACTURE, int EV, class Model = CriticalStretchBond, class Idx, class Xi0,
+template <int FRACTURE, int EV, class Model, class Idx, class Xi0,
           class Coef, class S0>
 inline bool row_force_portable(const double *xx, int i, const Idx *bj, int n, Xi0 xi0_of,
                                Coef coef_of, S0 s0_of, double margin, double *ax, double *ay,
@@ -226,7 +226,7 @@ template <int EV, class Model> struct RowLanes {
 /* lanes of the force density on atom i from n bonds (partner bj, reference length and
    coefficient from vals); with FRACTURE returns true if a bond is past s0 or within
    margin of it (elong + margin > s0 xi0; margin is 0 except in periodic boxes) */
-template <int FRACTURE, int EV, class Model = CriticalStretchBond, class Values, class Idx>
+template <int FRACTURE, int EV, class Model, class Values, class Idx>
 inline bool row_force_avx512(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                              double s0, double margin, double *ax, double *ay, double *az,
                              RowTally *tally)
@@ -487,7 +487,7 @@ struct TailGroup4 {
 };
 
 /* the same as row_force_avx512 with two 4-wide halves: lanes 0-3 and 4-7 */
-template <int FRACTURE, int EV, class Model = CriticalStretchBond, class Values, class Idx>
+template <int FRACTURE, int EV, class Model, class Values, class Idx>
 inline bool row_force_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                            double s0, double margin, double *ax, double *ay, double *az,
                            RowTally *tally)

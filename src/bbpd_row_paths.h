@@ -4,7 +4,7 @@
 
    One plugin holds every path its compiler can build: the portable loop (bbpd_row.h,
    compiled with the plugin's own flags), and the AVX2 and AVX-512 kernels of bbpd_row.h and
-   bbpd_pmb_row.h, each compiled for its own instruction set in its own file
+   bbpd_stretch_row.h, each compiled for its own instruction set in its own file
    (bbpd_row_avx2.cpp, bbpd_row_avx512.cpp; CMakeLists.txt sets their flags). The pair styles
    call a SIMD path only where path_supported() says the CPU runs it (cpuid), so no
    instruction the CPU lacks ever executes. All paths give the same bits (bbpd_simd.h).
@@ -52,7 +52,7 @@ using UniformCompactValues = RecomputedValues<CoefFunction, true>;
 #endif
 
 /* the SIMD row kernels of one path (row_force_avx2/avx512 of bbpd_row.h,
-   row_force_stretch_avx2/avx512 of bbpd_pmb_row.h), defined and instantiated in the path's own
+   row_force_stretch_avx2/avx512 of bbpd_stretch_row.h), defined and instantiated in the path's own
    file: a caller sees declarations only, so no copy of them is ever compiled for another
    instruction set */
 struct BBPD_PATH_HIDDEN Avx2Path {
@@ -60,7 +60,7 @@ struct BBPD_PATH_HIDDEN Avx2Path {
   static bool row_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                         double s0, double margin, double *ax, double *ay, double *az,
                         RowTally *tally);
-  template <int EV, bool PMB, bool CLAMP, class Values, class Idx>
+  template <int EV, class Model, class Rule, class Values, class Idx>
   static bool row_force_stretch(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                                 const double *smin, double s00, double alpha, double margin,
                                 double *smin_row, double *ax, double *ay, double *az,
@@ -71,7 +71,7 @@ struct BBPD_PATH_HIDDEN Avx512Path {
   static bool row_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                         double s0, double margin, double *ax, double *ay, double *az,
                         RowTally *tally);
-  template <int EV, bool PMB, bool CLAMP, class Values, class Idx>
+  template <int EV, class Model, class Rule, class Values, class Idx>
   static bool row_force_stretch(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                                 const double *smin, double s00, double alpha, double margin,
                                 double *smin_row, double *ax, double *ay, double *az,

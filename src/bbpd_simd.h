@@ -31,6 +31,8 @@ inline double vsqrt(double a) { return std::sqrt(a); }
 inline double vmin(double a, double b) { return std::min(a, b); }
 inline double vmax(double a, double b) { return std::max(a, b); }
 inline double vabs(double a) { return std::fabs(a); }
+// a in the lanes where m holds, else b
+inline double vselect(bool m, double a, double b) { return m ? a : b; }
 
 #ifdef BBPD_AVX2
 struct Vec4 {
@@ -43,6 +45,8 @@ inline Vec4 operator-(Vec4 a, Vec4 b) { return _mm256_sub_pd(a.v, b.v); }
 inline Vec4 operator*(Vec4 a, Vec4 b) { return _mm256_mul_pd(a.v, b.v); }
 inline Vec4 operator/(Vec4 a, Vec4 b) { return _mm256_div_pd(a.v, b.v); }
 inline Vec4 operator>(Vec4 a, Vec4 b) { return _mm256_cmp_pd(a.v, b.v, _CMP_GT_OQ); }
+inline Vec4 operator<(Vec4 a, Vec4 b) { return _mm256_cmp_pd(a.v, b.v, _CMP_LT_OQ); }
+inline Vec4 vselect(Vec4 m, Vec4 a, Vec4 b) { return _mm256_blendv_pd(b.v, a.v, m.v); }
 inline Vec4 vsqrt(Vec4 a) { return _mm256_sqrt_pd(a.v); }
 inline Vec4 vabs(Vec4 a) { return _mm256_andnot_pd(_mm256_set1_pd(-0.0), a.v); }
 // std::min and std::max lane by lane, NaN and signed zeros included: b < a ? b : a, a < b ? b : a
@@ -61,6 +65,8 @@ inline Vec8 operator-(Vec8 a, Vec8 b) { return _mm512_sub_pd(a.v, b.v); }
 inline Vec8 operator*(Vec8 a, Vec8 b) { return _mm512_mul_pd(a.v, b.v); }
 inline Vec8 operator/(Vec8 a, Vec8 b) { return _mm512_div_pd(a.v, b.v); }
 inline __mmask8 operator>(Vec8 a, Vec8 b) { return _mm512_cmp_pd_mask(a.v, b.v, _CMP_GT_OQ); }
+inline __mmask8 operator<(Vec8 a, Vec8 b) { return _mm512_cmp_pd_mask(a.v, b.v, _CMP_LT_OQ); }
+inline Vec8 vselect(__mmask8 m, Vec8 a, Vec8 b) { return _mm512_mask_mov_pd(b.v, m, a.v); }
 inline Vec8 vsqrt(Vec8 a) { return _mm512_sqrt_pd(a.v); }
 inline Vec8 vabs(Vec8 a) { return _mm512_abs_pd(a.v); }
 inline Vec8 vmin(Vec8 a, Vec8 b) { return _mm512_min_pd(b.v, a.v); }

@@ -366,6 +366,7 @@ void PairBBPD::init_style()
 
   bonds = static_cast<FixBBPDBonds *>(own_fix(BONDS_FIX_ID, "bbpd/bonds"));
   watchdog = static_cast<FixBBPDWatchdog *>(own_fix(WATCHDOG_FIX_ID, "bbpd/watchdog"));
+  law.weighting = BBPD::KernelWeighting();    // a style of another family sets its own in init_rules()
   init_rules();
 
   calibrate();
@@ -374,7 +375,6 @@ void PairBBPD::init_style()
   law.model = model;
   law.geom = geom;
   law.spacing = spacing;
-  law.pmb = pmb_rules();    // a style with them sets law.lattice_constant in init_rules()
   law.micromodulus = BBPD::TypePairTable(atom->ntypes, micromodulus);
   law.horizon = BBPD::TypePairTable(atom->ntypes, horizon);
   law.bondless = BBPD::TypePairTable(atom->ntypes, bondless);

@@ -24,6 +24,7 @@
 #include "bbpd_bond_storage.h"
 #include "bbpd_close_pairs.h"
 #include "bbpd_kernel.h"
+#include "bbpd_plugin_model.h"
 #include "bbpd_row_paths.h"
 #include "pair.h"
 
@@ -93,14 +94,9 @@ class PairBBPD : public Pair {
   double timing_sink = 0.0;
   void report();
   BBPD::BondLaw law;    // what the bond fix builds and caches with, filled in init_style()
-  // what one bond does (elongation, force, energy, breaking): every loop of the style uses it
-  // (doc/architecture.rst, "Adding a bond model"); a test build may put another in its place
-  // (cmake -D BBPD_TEST_BOND_MODEL=NAME: tests/unit/toy_bond_models.h)
-#ifdef BBPD_BOND_MODEL
-  using BondModel = BBPD_BOND_MODEL;
-#else
-  using BondModel = BBPD::CriticalStretchBond;
-#endif
+  // what one bond does (elongation, force, energy, breaking): every loop of the style takes it
+  // (doc/architecture.rst, "Adding a bond model"; bbpd_plugin_model.h names it)
+  using BondModel = BBPD::PluginBondModel;
   double **alpha;       // Silling-Askari: s0 = s00 - alpha * smallest stretch (pair_bbpd_alpha.h)
   void calibrate();     // c0 and s0 of every type pair (init_style)
   BBPD::RunLimits run_limits() const

@@ -7,7 +7,7 @@
 
 #include "pair_bbpd_alpha.h"
 #include "bbpd_pmb_rules.h"
-#include "bbpd_pmb_row.h"
+#include "bbpd_stretch_row.h"
 #include "pair_bbpd_rows.h"
 
 #include "atom.h"
@@ -74,15 +74,18 @@ std::string PairBBPDAlpha::report_rules() const
 /* the bond forces and breaking of one step, in the bbpd order */
 void PairBBPDAlpha::eval_bonds()
 {
-  if (evflag) eval_silling_askari<1, false>();
-  else eval_silling_askari<0, false>();
+  // only compression lowers s0: a body in pure tension keeps the calibrated s00
+  if (evflag) eval_silling_askari<1, BBPD::SillingAskariRule<true>>();
+  else eval_silling_askari<0, BBPD::SillingAskariRule<true>>();
 }
 
 /* ----------------------------------------------------------------------
-   bond forces and breaking with the Silling-Askari critical stretch
+   bond forces and breaking with a Silling-Askari critical stretch: how a stretch is read, the
+   critical stretch and what a breaking bond does in its step come from Rule
+   (bbpd_plugin_model.h lists the rules)
 ------------------------------------------------------------------------- */
 
-template <int EVFLAG, bool PMB> void PairBBPDAlpha::eval_silling_askari()
+template <int EVFLAG, class Rule> void PairBBPDAlpha::eval_silling_askari()
 {
   const double *xx = atom->x[0];
   const int *type = atom->type;
@@ -93,7 +96,6 @@ template <int EVFLAG, bool PMB> void PairBBPDAlpha::eval_silling_askari()
     memory->destroy(smin_new);
     memory->create(smin_new, nmax_smin, "pair:smin_new");
   }
-  constexpr bool clamp = !PMB;    // peri/pmb lowers s0 after tension too
   // one s00 and alpha for every type pair: no per-bond lookups
   bool multi = false;
   const double s00_one = critical_stretch[1][1], alpha_one = alpha[1][1];
@@ -116,12 +118,10 @@ template <int EVFLAG, bool PMB> void PairBBPDAlpha::eval_silling_askari()
     const int itype = type[i];
     const double *xi = atom->x[i];
     const double smin_i = smin[i];
-    // stretch of bond k at current length r (peri/pmb zeroes round-off elongations)
+    // stretch of bond k at current length r, as the rule reads it
     auto stretch_at = [&](int k, double r) {
       const double xi0 = bonds->xi0_of(i, k);
-      double elong = BondModel::elongation(r, xi0);
-      if (PMB && std::fabs(elong) < NEAR_ZERO) elong = 0.0;
-      return BBPD::SillingAskariRule<false>::stretch(elong, xi0);
+      return Rule::stretch(Rule::settled_elongation(BondModel::elongation(r, xi0)), xi0);
     };
     auto stretch_of = [&](int k) {
       const double *xj = atom->x[bonds->partner_of(i, k)];
@@ -134,9 +134,9 @@ template <int EVFLAG, bool PMB> void PairBBPDAlpha::eval_silling_askari()
     };
     auto s0_of = [&](int k) {
       const int j = bonds->partner_of(i, k);
-      if (!multi) return BBPD::PMB::critical_stretch(s00_one, alpha_one, smin_i, smin[j], clamp);
-      return BBPD::PMB::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
-                                         smin_i, smin[j], clamp);
+      if (!multi) return Rule::critical_stretch(s00_one, alpha_one, smin_i, smin[j]);
+      return Rule::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
+                                    smin_i, smin[j]);
     };
     bool done = false;    // fi (and the tallies) summed by the fused kernel
     if (replay) {
@@ -149,14 +149,14 @@ template <int EVFLAG, bool PMB> void PairBBPDAlpha::eval_silling_askari()
         // the row in whatever layout the storage keeps it (FixBBPDBonds::visit_row)
         broken = bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
           auto portable = [&] {
-            return BBPD::row_stretch_portable<PMB, !PMB>(xx, i, bj, vals, n, smin, s00_one,
-                                                         alpha_one, margin, &snew);
+            return BBPD::row_stretch_portable<BondModel, Rule>(xx, i, bj, vals, n, smin, s00_one,
+                                                               alpha_one, margin, &snew);
           };
           // force and stretch in one pass
           return BBPD::on_path(simd_path, [&](auto path) {
             double ax[LANES], ay[LANES], az[LANES];
             RowTally tally;
-            const bool past = decltype(path)::template row_force_stretch<EVFLAG, PMB, !PMB>(
+            const bool past = decltype(path)::template row_force_stretch<EVFLAG, BondModel, Rule>(
                 xx, i, bj, vals, n, smin, s00_one, alpha_one, margin, &snew, ax, ay, az, &tally);
             if (!past) {
               lane_sum(ax, ay, az, fi);
@@ -170,28 +170,28 @@ template <int EVFLAG, bool PMB> void PairBBPDAlpha::eval_silling_askari()
         for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + n; k++) {
           const double s = stretch_of(k);
           snew = std::min(snew, s);
-          broken |= BBPD::SillingAskariRule<false>::past_critical(s, s0_of(k), margin);
+          broken |= Rule::past_critical(s, s0_of(k), margin);
         }
       }
       smin_new[i] = n > 0 ? snew : NO_BOND_STRETCH;
       double fb[3] = {0.0, 0.0, 0.0};
       if (broken)
         bonds->remove_bonds_if(i, [&](int k) {
-          if (!BBPD::SillingAskariRule<false>::past_critical(breaking_stretch(k), s0_of(k), 0.0))
+          if (!Rule::past_critical(breaking_stretch(k), s0_of(k), 0.0))
             return false;
-          // peri/pmb applies the force of a bond in the step it breaks (and its energy then is
-          // what it carries away); bbpd drops it at once, at its critical stretch
-          if (PMB)
+          // a rule may apply the force of a bond in the step it breaks (its energy then is what
+          // it carries away), or drop it at once, at its critical stretch
+          if (Rule::FORCE_IN_BREAKING_STEP)
             bonds->ebroken[i] += broken_bond_force<EVFLAG>(i, k, fb, acc) * atom->vfrac[i];
           else
             book_broken_bond(i, k, s0_of(k));
           return true;
         });
-      if (PMB)
+      if (Rule::FORCE_IN_BREAKING_STEP)
         for (int m = 0; m < 3; m++) fbroken[i][m] = fb[m];
     }
     if (!done) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc, cache);
-    if (PMB)
+    if (Rule::FORCE_IN_BREAKING_STEP)
       for (int m = 0; m < 3; m++) fi[m] += fbroken[i][m];
   });
   // the new smin takes effect at the next step, once sent to the ghosts
@@ -231,7 +231,8 @@ template <int EVFLAG> double PairBBPDAlpha::broken_bond_force(int i, int k, doub
   return eng;
 }
 
-template void PairBBPDAlpha::eval_silling_askari<0, false>();
-template void PairBBPDAlpha::eval_silling_askari<1, false>();
-template void PairBBPDAlpha::eval_silling_askari<0, true>();
-template void PairBBPDAlpha::eval_silling_askari<1, true>();
+#define BBPD_EVAL_SILLING_ASKARI(EVFLAG, RULE) \
+  template void PairBBPDAlpha::eval_silling_askari<EVFLAG, RULE>();
+BBPD_FOR_STRETCH_RULES(BBPD_EVAL_SILLING_ASKARI, 0)
+BBPD_FOR_STRETCH_RULES(BBPD_EVAL_SILLING_ASKARI, 1)
+#undef BBPD_EVAL_SILLING_ASKARI

@@ -38,7 +38,7 @@ class PairBBPDAlpha : public PairBBPD {
 
   // PMB: peri/pmb's order (a bond acts in the step it breaks, round-off elongations are zero,
   // smin is not clamped to compression)
-  template <int EVFLAG, bool PMB> void eval_silling_askari();
+  template <int EVFLAG, class Rule> void eval_silling_askari();
   template <int EVFLAG> double broken_bond_force(int i, int k, double *fb, double *acc);
 };
 

@@ -159,7 +159,7 @@ void PairBBPDLPS::read_restart(FILE *fp)
 void PairBBPDLPS::init_rules()
 {
   PairBBPDPMB::init_rules();
-  law.lps = true;
+  law.weighting = BBPD::LpsWeighting{{lattice_constant}};    // omega V_j ramp in the bond storage
   dimension = LPS::lps_dimension(model);    // 3 for bbpd/lps (model 3d)
   lps_state = static_cast<FixBBPDLPS *>(own_fix(LPS_FIX_ID, "bbpd/lps"));
 }
@@ -366,9 +366,9 @@ template <int EVFLAG> void PairBBPDLPS::eval_lps()
     const double *r_row = bond_length + bonds->bond_start[i];
     const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
     auto s0_with = [&](int j) BBPD_ROW_BODY {
-      if (!multi) return BBPD::PMB::critical_stretch(s00_one, alpha_one, smin_i, smin[j], false);
-      return BBPD::PMB::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
-                                         smin_i, smin[j], false);
+      if (!multi) return StretchRule::critical_stretch(s00_one, alpha_one, smin_i, smin[j]);
+      return StretchRule::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
+                                           smin_i, smin[j]);
     };
     // the row's force into f and its tallies into tally, in row order; with CHECK also its
     // smallest stretch and whether a bond is past its critical stretch; with CACHED the bond

@@ -94,7 +94,8 @@ void PairBBPDLPSKernel::coeff(int narg, char **arg)
 void PairBBPDLPSKernel::init_rules()
 {
   PairBBPDLPS::init_rules();
-  law.lps_kernel = true;    // omega = W(|xi| / delta) in the bond storage
+  // omega = W(|xi| / delta) in the bond storage
+  law.weighting = BBPD::LpsKernelWeighting{{lattice_constant}};
 }
 
 /* the stable time step estimate: the bond as the bond-based bond of the same E and kernel,

@@ -51,8 +51,8 @@ void PairBBPDPMB::settings(int narg, char **arg)
 /* the bond forces and breaking of one step in peri/pmb's order, then its short-range forces */
 void PairBBPDPMB::eval_bonds()
 {
-  if (evflag) eval_silling_askari<1, true>();
-  else eval_silling_askari<0, true>();
+  if (evflag) eval_silling_askari<1, BBPD::PeriPmbRule>();
+  else eval_silling_askari<0, BBPD::PeriPmbRule>();
   compute_short_range();
 }
 
@@ -121,7 +121,7 @@ void PairBBPDPMB::init_rules()
     error->all(FLERR, "Pair style {} needs a lattice with the same constant "
                "in x, y and z (as peri/{})", style, style.substr(5));
   lattice_constant = lat->xlattice;
-  law.lattice_constant = lattice_constant;    // the volume ramp of the bond fix
+  law.weighting = BBPD::PmbWeighting{lattice_constant};    // the families and volume ramp of the bond fix
   // the short-range partners are found among the local and ghost atoms (no neighbour list):
   // the ghosts cover every pair closer than the horizon
   for (int i = 1; i <= atom->ntypes; i++)

@@ -124,6 +124,96 @@ def test_bond_arithmetic_is_found():
     assert bond_arithmetic((SRC / BOND_MODEL).read_text())    # the model itself has them
 
 
+# The loops take the bond model, the breaking rule and the family's weighting as parameters
+# and name none: a model is added beside the others, not swapped in (doc/architecture.rst).
+# The model headers define them; bbpd_plugin_model.h lists those the plugin is compiled with,
+# and a style picks its own where it calls a loop (eval_bonds, init_rules).
+MODEL_HEADERS = ("bbpd_bond_model.h", "bbpd_pmb_rules.h", "bbpd_bond_weighting.h")
+# whole files that are loops, and the loop functions of the pair styles. bbpd/lps's eval_lps
+# (pair_bbpd_lps.cpp) is not among them: the LPS family, with its dilatation pass, still has a
+# loop of its own (doc/architecture.rst, "What is not on the row driver yet").
+LOOP_FILES = ("bbpd_row.h", "bbpd_stretch_row.h", "bbpd_row_path_kernels.h", "bbpd_row_avx2.cpp",
+              "bbpd_row_avx512.cpp", "pair_bbpd_rows.h")
+LOOP_FUNCTIONS = {"pair_bbpd.cpp": ("eval", "row_force"),
+                  "pair_bbpd_alpha.cpp": ("eval_silling_askari", "broken_bond_force")}
+# a family named in code: the template switches the loops had before (bool PMB, law.pmb, ...)
+FAMILY_WORD = r"\b(?:PMB|pmb|LPS|lps)\b"
+
+
+def without_comments(text):
+    code = re.sub(r"/\*.*?\*/", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S)
+    return re.sub(r"//[^\n]*", "", code)
+
+
+def model_names():
+    """the bond models, rules and weightings the model headers define"""
+    names = set()
+    for h in MODEL_HEADERS:
+        names |= set(re.findall(r"^\s*(?:template\s*<[^>]*>\s*)?struct\s+(\w+)",
+                                without_comments((SRC / h).read_text()), re.M))
+    return names
+
+
+def function_bodies(text, name):
+    """the bodies of the member functions NAME defined in text (Class::NAME(...) ... { ... })"""
+    code, bodies = without_comments(text), []
+    for m in re.finditer(rf"^[^\n;]*\b\w+::{name}\s*\(", code, re.M):
+        start = code.index("{", m.end())
+        if ";" in code[m.end():start] and ")" not in code[m.end():start].split(";")[0]:
+            continue    # a call or declaration, not a definition
+        depth, k = 0, start
+        while True:
+            depth += {"{": 1, "}": -1}.get(code[k], 0)
+            k += 1
+            if depth == 0:
+                break
+        bodies.append(code[start:k])
+    return bodies
+
+
+def models_named(code, names):
+    """the model names and family words in a loop's code"""
+    pattern = re.compile(r"\b(?:" + "|".join(sorted(names)) + r")\b|" + FAMILY_WORD)
+    return sorted(set(pattern.findall(code)))
+
+
+def loop_codes():
+    for f in LOOP_FILES:
+        yield f, without_comments((SRC / f).read_text())
+    for f, functions in LOOP_FUNCTIONS.items():
+        for fn in functions:
+            bodies = function_bodies((SRC / f).read_text(), fn)
+            assert bodies, f"{f}: no definition of {fn} found (renamed? update LOOP_FUNCTIONS)"
+            for b in bodies:
+                yield f"{f}:{fn}", b
+
+
+def test_model_headers_define_the_models():
+    assert {"CriticalStretchBond", "SillingAskariRule", "PeriPmbRule", "KernelWeighting",
+            "PmbWeighting", "LpsWeighting", "LpsKernelWeighting"} <= model_names()
+
+
+@pytest.mark.parametrize("where,code", list(loop_codes()), ids=lambda v: v if len(v) < 60 else "")
+def test_no_loop_names_a_model(where, code):
+    named = models_named(code, model_names())
+    assert not named, (f"{where} names {named}: a loop takes the bond model, rule and weighting "
+                       "as parameters (doc/architecture.rst, 'Adding a model')")
+
+
+def test_a_loop_naming_a_model_is_found():
+    """negative control: the Silling-Askari loop as it was, with a switch per family"""
+    before = ("template <int EVFLAG, bool PMB> void PairBBPDAlpha::eval_silling_askari()\n{\n"
+              "  double elong = CriticalStretchBond::elongation(r, xi0);  // PMB: zero\n"
+              "  if (PMB && std::fabs(elong) < NEAR_ZERO) elong = 0.0;\n}\n"
+              "void f() { eval_silling_askari<1, true>(); }\n")
+    bodies = function_bodies(before, "eval_silling_askari")
+    assert len(bodies) == 1
+    assert models_named(bodies[0], model_names()) == ["CriticalStretchBond", "PMB"]
+    assert models_named("  if (law.lps) coef = omega;\n", model_names()) == ["lps"]
+    assert models_named("  const double e = Rule::settled_elongation(Model::elongation(r, xi0));",
+                        model_names()) == []
+
+
 def test_architecture_doc_shows_the_tested_toy_model():
     """the bond model of the walkthrough is the one the unit test runs through every width and
     the test build puts in the plugin (tests/unit/toy_bond_models.h)"""

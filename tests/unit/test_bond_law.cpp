@@ -60,8 +60,7 @@ TEST(BondLaw, PmbUsesWholeVolumesAndTheLatticeRamp)
   Tables t;
   BBPD::BondLaw law = gaussian_law(t);
   law.kernel = BBPD::kernel_info<BBPD::ConstantKernel>();
-  law.pmb = true;
-  law.lattice_constant = DX;
+  law.weighting = BBPD::PmbWeighting{DX};
   EXPECT_EQ(law.family_cutoff(1, 1), DELTA);
   EXPECT_TRUE(law.bonded(1, 1, DELTA * DELTA));    // the horizon itself is in the family
   EXPECT_EQ(law.partner_volume(1, 1, DELTA, VJ), VJ);

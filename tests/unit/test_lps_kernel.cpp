@@ -92,13 +92,12 @@ TEST(LPSKernel, InfluenceFunctionInBondLaw)
   const double *ptr[2] = {rows[0], rows[1]};
   BBPD::BondLaw law;
   law.kernel = BBPD::kernel_info<BBPD::GaussianKernel>();
-  law.pmb = law.lps = true;
-  law.lattice_constant = lc;
+  law.weighting = BBPD::LpsWeighting{{lc}};
   law.horizon = BBPD::TypePairTable(1, ptr);
   law.micromodulus = BBPD::TypePairTable(1, ptr);
   const double xi0 = 1.7e-3;    // inside the ramp-free part
   EXPECT_DOUBLE_EQ(law.coefficient(1, 1, xi0, vj), vj / xi0);
-  law.lps_kernel = true;
+  law.weighting = BBPD::LpsKernelWeighting{{lc}};
   EXPECT_DOUBLE_EQ(law.coefficient(1, 1, xi0, vj), std::exp(-4.0 * std::pow(xi0 / DELTA, 2)) * vj);
   EXPECT_DOUBLE_EQ(LPS::influence_function(KERNELS[1], 0.25 * DELTA, DELTA), 0.75);
 }

@@ -9,6 +9,7 @@
 #include <cfloat>
 
 namespace PMB = BBPD::PMB;
+using BBPD::SillingAskariRule;
 
 namespace {
 
@@ -42,14 +43,25 @@ TEST(PMBRules, CriticalStretchFollowsTheLargerSmallestStretch)
 {
   const double s00 = 5e-4, alpha = 0.25;
   // compression of both atoms raises s0 by alpha times the milder one
-  EXPECT_DOUBLE_EQ(PMB::critical_stretch(s00, alpha, -0.01, -0.002, false), s00 + alpha * 0.002);
-  EXPECT_DOUBLE_EQ(PMB::critical_stretch(s00, alpha, -0.01, -0.002, true), s00 + alpha * 0.002);
+  EXPECT_DOUBLE_EQ(SillingAskariRule<false>::critical_stretch(s00, alpha, -0.01, -0.002), s00 + alpha * 0.002);
+  EXPECT_DOUBLE_EQ(SillingAskariRule<true>::critical_stretch(s00, alpha, -0.01, -0.002), s00 + alpha * 0.002);
   // peri/pmb: tension lowers s0; the clamped rule keeps s00
-  EXPECT_DOUBLE_EQ(PMB::critical_stretch(s00, alpha, 4e-4, -0.01, false), s00 - alpha * 4e-4);
-  EXPECT_EQ(PMB::critical_stretch(s00, alpha, 4e-4, -0.01, true), s00);
+  EXPECT_DOUBLE_EQ(SillingAskariRule<false>::critical_stretch(s00, alpha, 4e-4, -0.01), s00 - alpha * 4e-4);
+  EXPECT_EQ(SillingAskariRule<true>::critical_stretch(s00, alpha, 4e-4, -0.01), s00);
   // an atom without bonds never lowers its partner's critical stretch
-  EXPECT_GT(PMB::critical_stretch(s00, alpha, PMB::NO_BOND_STRETCH, PMB::NO_BOND_STRETCH, false), 1e300);
-  EXPECT_EQ(PMB::critical_stretch(s00, 0.0, PMB::NO_BOND_STRETCH, -0.01, false), s00);
+  EXPECT_GT(SillingAskariRule<false>::critical_stretch(s00, alpha, PMB::NO_BOND_STRETCH, PMB::NO_BOND_STRETCH), 1e300);
+  EXPECT_EQ(SillingAskariRule<false>::critical_stretch(s00, 0.0, PMB::NO_BOND_STRETCH, -0.01), s00);
+}
+
+// peri/pmb reads a round-off elongation as zero, and only that; the other rules read it as it is
+TEST(PMBRules, PeriPmbRuleZeroesRoundOffElongations)
+{
+  EXPECT_EQ(BBPD::PeriPmbRule::settled_elongation(0.5 * PMB::NEAR_ZERO), 0.0);
+  EXPECT_EQ(BBPD::PeriPmbRule::settled_elongation(-0.5 * PMB::NEAR_ZERO), 0.0);
+  EXPECT_EQ(BBPD::PeriPmbRule::settled_elongation(2.0 * PMB::NEAR_ZERO), 2.0 * PMB::NEAR_ZERO);
+  EXPECT_EQ(SillingAskariRule<true>::settled_elongation(0.5 * PMB::NEAR_ZERO), 0.5 * PMB::NEAR_ZERO);
+  EXPECT_TRUE(BBPD::PeriPmbRule::FORCE_IN_BREAKING_STEP);
+  EXPECT_FALSE(SillingAskariRule<true>::FORCE_IN_BREAKING_STEP);
 }
 
 }    // namespace

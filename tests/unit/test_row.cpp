@@ -53,7 +53,7 @@ bool portable(const Row &row, double s0, double *f, RowTally *tally)
   auto xi0_of = [&](int k) { return row.xi0[k]; };
   auto coef_of = [&](int k, double) { return row.coef[k]; };
   auto s0_of = [&](int) { return s0; };
-  const bool broken = BBPD::row_force_portable<FRACTURE, EV>(
+  const bool broken = BBPD::row_force_portable<FRACTURE, EV, BBPD::CriticalStretchBond>(
       row.x.data(), 0, row.bj.data(), NB, xi0_of, coef_of, s0_of, 0.0, ax, ay, az, tally);
   BBPD::lane_sum(ax, ay, az, f);
   return broken;
@@ -103,20 +103,20 @@ TEST(Row, SimdKernelGivesTheSameBits)
     double f[3], fs[3], fc[3], ax[LANES], ay[LANES], az[LANES];
     RowTally tally, tally_simd, tally_class;
     portable<0, 1>(row, 0.0, f, &tally);
-    EXPECT_FALSE((row_force_simd<0, 1>(row.x.data(), 0, row.bj.data(), per_bond, NB, 0.0, 0.0,
+    EXPECT_FALSE((row_force_simd<0, 1, BBPD::CriticalStretchBond>(row.x.data(), 0, row.bj.data(), per_bond, NB, 0.0, 0.0,
                                        ax, ay, az, &tally_simd)));
     BBPD::lane_sum(ax, ay, az, fs);
     EXPECT_EQ(std::memcmp(f, fs, sizeof f), 0) << f[0] << " vs " << fs[0];
     EXPECT_EQ(std::memcmp(tally.eng, tally_simd.eng, sizeof tally.eng), 0);
     EXPECT_EQ(std::memcmp(tally.vir, tally_simd.vir, sizeof tally.vir), 0);
-    EXPECT_FALSE((row_force_simd<0, 1>(row.x.data(), 0, row.bj.data(), by_class, NB, 0.0, 0.0,
+    EXPECT_FALSE((row_force_simd<0, 1, BBPD::CriticalStretchBond>(row.x.data(), 0, row.bj.data(), by_class, NB, 0.0, 0.0,
                                        ax, ay, az, &tally_class)));
     BBPD::lane_sum(ax, ay, az, fc);
     EXPECT_EQ(std::memcmp(f, fc, sizeof f), 0) << f[0] << " vs " << fc[0];
     EXPECT_EQ(std::memcmp(tally.eng, tally_class.eng, sizeof tally.eng), 0);
     // breaking: the same verdict at a critical stretch between the smallest and largest stretch
     EXPECT_EQ((portable<1, 0>(row, 1e-3, f, &tally)),
-              (row_force_simd<1, 0>(row.x.data(), 0, row.bj.data(), per_bond, NB, 1e-3, 0.0, ax,
+              (row_force_simd<1, 0, BBPD::CriticalStretchBond>(row.x.data(), 0, row.bj.data(), per_bond, NB, 1e-3, 0.0, ax,
                                     ay, az, &tally_simd)));
   }
 #endif
@@ -167,9 +167,9 @@ TEST(Row, PartnerOffsetsGiveTheBitsOfIndices)
     double a[3][LANES] = {};
     tally_o = {};
     EXPECT_FALSE(offsets
-        ? (BBPD::row_force_portable<1, 1>(moved.x.data(), CENTRE, moved.off.data(), NB, xi0_of,
+        ? (BBPD::row_force_portable<1, 1, BBPD::CriticalStretchBond>(moved.x.data(), CENTRE, moved.off.data(), NB, xi0_of,
                                           coef_of, s0_of, 0.0, a[0], a[1], a[2], &tally_o))
-        : (BBPD::row_force_portable<1, 1>(moved.x.data(), CENTRE, moved.bj.data(), NB, xi0_of,
+        : (BBPD::row_force_portable<1, 1, BBPD::CriticalStretchBond>(moved.x.data(), CENTRE, moved.bj.data(), NB, xi0_of,
                                           coef_of, s0_of, 0.0, a[0], a[1], a[2], &tally_o)));
     BBPD::lane_sum(a[0], a[1], a[2], fo);
     EXPECT_EQ(std::memcmp(f, fo, sizeof f), 0) << "portable, offsets " << offsets;
@@ -177,19 +177,19 @@ TEST(Row, PartnerOffsetsGiveTheBitsOfIndices)
   }
 #ifdef BBPD_SIMD
   const BBPD::PerBondValues per_bond = {row.xi0.data(), row.coef.data()};
-  EXPECT_FALSE((row_force_simd<1, 1>(moved.x.data(), CENTRE, moved.bj.data(), per_bond, NB, 1.0,
+  EXPECT_FALSE((row_force_simd<1, 1, BBPD::CriticalStretchBond>(moved.x.data(), CENTRE, moved.bj.data(), per_bond, NB, 1.0,
                                      0.0, ax, ay, az, &tally_i)));
   BBPD::lane_sum(ax, ay, az, fi);
-  EXPECT_FALSE((row_force_simd<1, 1>(moved.x.data(), CENTRE, moved.off.data(), per_bond, NB, 1.0,
+  EXPECT_FALSE((row_force_simd<1, 1, BBPD::CriticalStretchBond>(moved.x.data(), CENTRE, moved.off.data(), per_bond, NB, 1.0,
                                      0.0, ax, ay, az, &tally_o)));
   BBPD::lane_sum(ax, ay, az, fo);
   EXPECT_EQ(std::memcmp(f, fi, sizeof f), 0);
   EXPECT_EQ(std::memcmp(f, fo, sizeof f), 0);
   EXPECT_EQ(std::memcmp(tally.vir, tally_o.vir, sizeof tally.vir), 0);
   // breaking: the same verdict from offsets as from indices
-  EXPECT_EQ((row_force_simd<1, 0>(moved.x.data(), CENTRE, moved.bj.data(), per_bond, NB, 1e-3,
+  EXPECT_EQ((row_force_simd<1, 0, BBPD::CriticalStretchBond>(moved.x.data(), CENTRE, moved.bj.data(), per_bond, NB, 1e-3,
                                   0.0, ax, ay, az, &tally_i)),
-            (row_force_simd<1, 0>(moved.x.data(), CENTRE, moved.off.data(), per_bond, NB, 1e-3,
+            (row_force_simd<1, 0, BBPD::CriticalStretchBond>(moved.x.data(), CENTRE, moved.off.data(), per_bond, NB, 1e-3,
                                   0.0, ax, ay, az, &tally_o)));
 #endif
 }

@@ -3,15 +3,16 @@
    BBPD: the stretch pass of the Silling-Askari bond loop over one row.
 
    For the bonds of atom i it returns the smallest stretch and whether a bond is past (or,
-   in a periodic box, within 'margin' of) its critical stretch s00 - alpha max(smin_i, smin_j)
-   (with 'clamp': only compression counts). The AVX-512 kernel does the same IEEE operations
-   (sqrt, division, min, max, compares) as the portable loop, so both give identical bits.
+   in a periodic box, within 'margin' of) its critical stretch. What a bond does comes from
+   the Model parameter (bbpd_bond_model.h), how its stretch is read and its critical stretch
+   found from the Rule parameter (SillingAskariRule<CLAMP>, PeriPmbRule: bbpd_pmb_rules.h);
+   the loops name neither. The SIMD kernels do the same IEEE operations (sqrt, division, min,
+   max, compares) as the portable loop, so all give identical bits.
 ------------------------------------------------------------------------- */
 
-#ifndef BBPD_PMB_ROW_H
-#define BBPD_PMB_ROW_H
+#ifndef BBPD_STRETCH_ROW_H
+#define BBPD_STRETCH_ROW_H
 
-#include "bbpd_pmb_rules.h"
 #include "bbpd_row.h"
 
 #include <algorithm>
@@ -21,7 +22,7 @@
 
 namespace BBPD {
 
-template <bool PMB, bool CLAMP, class Idx, class Values>
+template <class Model, class Rule, class Idx, class Values>
 inline bool row_stretch_portable(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                                  const double *smin, double s00, double alpha, double margin,
                                  double *smin_row)
@@ -33,12 +34,11 @@ inline bool row_stretch_portable(const double *xx, int i, const Idx *bj, const V
     const int j = partner_index(bj, i, k);
     const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
     const double xi0 = vals.xi0_at(k, j);
-    double elong = CriticalStretchBond::elongation(std::sqrt(dx * dx + dy * dy + dz * dz), xi0);
-    if (PMB && std::fabs(elong) < BBPD::PMB::NEAR_ZERO) elong = 0.0;
-    const double s = SillingAskariRule<CLAMP>::stretch(elong, xi0);
+    const double elong =
+        Rule::settled_elongation(Model::elongation(std::sqrt(dx * dx + dy * dy + dz * dz), xi0));
+    const double s = Rule::stretch(elong, xi0);
     snew = std::min(snew, s);
-    broken |= SillingAskariRule<CLAMP>::past_critical(
-        s, SillingAskariRule<CLAMP>::critical_stretch(s00, alpha, smin[i], smin[j]), margin);
+    broken |= Rule::past_critical(s, Rule::critical_stretch(s00, alpha, smin[i], smin[j]), margin);
   }
   *smin_row = snew;
   return broken;
@@ -49,7 +49,7 @@ inline bool row_stretch_portable(const double *xx, int i, const Idx *bj, const V
    lengths and coefficients from vals, as row_force_avx512 takes them): the force lanes and
    tallies are those of row_force_avx512, bit for bit (same operations in the same order), the
    smallest stretch and the breaking flag those of row_stretch_portable */
-template <int EV, bool PMB, bool CLAMP, class Values, class Idx>
+template <int EV, class Model, class Rule, class Values, class Idx>
 inline bool row_force_stretch_avx512(const double *xx, int i, const Idx *bj, const Values &vals,
                                      int n, const double *smin, double s00, double alpha,
                                      double margin, double *smin_row, double *ax, double *ay,
@@ -57,22 +57,19 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const Idx *bj, con
 {
   const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
                 zi = _mm512_set1_pd(xx[3 * i + 2]);
-  using Rule = SillingAskariRule<CLAMP>;
   const __m512d vs00 = _mm512_set1_pd(s00), valpha = _mm512_set1_pd(alpha),
-                vsmin_i = _mm512_set1_pd(smin[i]), zero = _mm512_setzero_pd(),
-                near_zero = _mm512_set1_pd(BBPD::PMB::NEAR_ZERO), one = _mm512_set1_pd(1.0),
+                vsmin_i = _mm512_set1_pd(smin[i]), one = _mm512_set1_pd(1.0),
                 vmargin = _mm512_set1_pd(margin);
-  RowLanes<EV, CriticalStretchBond> lanes;
+  RowLanes<EV, Model> lanes;
   __m512d vmin = _mm512_set1_pd(std::numeric_limits<double>::max());
   __mmask8 broken = 0;
   for (int k = 0; k < n; k += LANES) {
     const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
     const __m256i j1 = load_partners(bj, m, i, k);
-    const BondLanes b = bond_lanes<CriticalStretchBond>(xx, xi, yi, zi, j1, m, vals, k);
+    const BondLanes b = bond_lanes<Model>(xx, xi, yi, zi, j1, m, vals, k);
     lanes.add(m, b);    // the force: as row_force_avx512
     // the stretch: as row_stretch_portable
-    __m512d es = b.elong;
-    if (PMB) es = _mm512_mask_mov_pd(es, _mm512_cmp_pd_mask(_mm512_abs_pd(es), near_zero, _CMP_LT_OQ), zero);
+    const __m512d es = Rule::settled_elongation(Vec8(b.elong)).v;
     const __m512d s = Rule::stretch(Vec8(es), Vec8(_mm512_mask_mov_pd(one, m, b.xi0))).v;
     vmin = _mm512_mask_min_pd(vmin, m, s, vmin);
     const Vec8 s0 = Rule::critical_stretch(Vec8(vs00), Vec8(valpha), Vec8(vsmin_i),
@@ -89,7 +86,7 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const Idx *bj, con
 #ifdef BBPD_AVX2
 /* row_force_stretch_avx512 in two 4-wide halves, as row_force_avx2 (bbpd_row.h) computes the
    force: the same bits (the smallest stretch is a minimum, exact in any order) */
-template <int EV, bool PMB, bool CLAMP, class Values, class Idx>
+template <int EV, class Model, class Rule, class Values, class Idx>
 inline bool row_force_stretch_avx2(const double *xx, int i, const Idx *bj, const Values &vals,
                                    int n, const double *smin, double s00, double alpha,
                                    double margin, double *smin_row, double *ax, double *ay,
@@ -99,15 +96,12 @@ inline bool row_force_stretch_avx2(const double *xx, int i, const Idx *bj, const
                 zi = _mm256_set1_pd(xx[3 * i + 2]), all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
   const __m256d vs00 = _mm256_set1_pd(s00), valpha = _mm256_set1_pd(alpha),
                 vsmin_i = _mm256_set1_pd(smin[i]), zero = _mm256_setzero_pd(),
-                near_zero = _mm256_set1_pd(BBPD::PMB::NEAR_ZERO), one = _mm256_set1_pd(1.0),
-                vmargin = _mm256_set1_pd(margin), sign = _mm256_set1_pd(-0.0);
-  using Rule = SillingAskariRule<CLAMP>;
-  Avx2Lanes<0, EV, CriticalStretchBond> lanes(0.0, 0.0);
+                one = _mm256_set1_pd(1.0), vmargin = _mm256_set1_pd(margin);
+  Avx2Lanes<0, EV, Model> lanes(0.0, 0.0);
   __m256d vmin = _mm256_set1_pd(std::numeric_limits<double>::max()), broken = zero;
   // the stretch of 4 lanes (m: in the row) with the partners' smallest stretches smin_j
   auto stretch = [&](__m256d m, bool masked, __m256d elong, __m256d xi0, __m256d smin_j) {
-    __m256d es = elong;
-    if (PMB) es = _mm256_blendv_pd(es, zero, _mm256_cmp_pd(_mm256_andnot_pd(sign, es), near_zero, _CMP_LT_OQ));
+    const __m256d es = Rule::settled_elongation(Vec4(elong)).v;
     const __m256d s = Rule::stretch(Vec4(es), Vec4(masked ? _mm256_blendv_pd(one, xi0, m) : xi0)).v;
     vmin = masked ? _mm256_blendv_pd(vmin, _mm256_min_pd(s, vmin), m) : _mm256_min_pd(s, vmin);
     const Vec4 s0 = Rule::critical_stretch(Vec4(vs00), Vec4(valpha), Vec4(vsmin_i), Vec4(smin_j));
