@@ -37,7 +37,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import crack_motion, crack_tip, freund, markers, readers
+from bbpd import crack_motion, crack_tip, csvfile, freund, markers, readers
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import mode1
 from bbpd.kernels import COLORS, KERNELS
@@ -62,7 +62,9 @@ CSV_COLUMNS = ("kernel", "dx", "Gc", "dt", "atoms", "loop_s", "ti_pd", "ti_theor
                "ti_err_pct", "J_at_ti_over_Gc", "ti_tip_pd", "ti_tip_err_pct",
                "J_at_ti_tip_over_Gc", "tip_check_dx", "width_3tc_over_delta", "ext_pd_3tc", "ext_toughness_3tc",
                "ext_energy_3tc", "l2_toughness_pct", "l2_energy_pct") + tuple(
-    f"v_{s:g}tc_over_cR" for s in SPEED_TIMES)
+    f"v_{s:g}tc_over_cR" for s in SPEED_TIMES) + ("cpu",)
+TEXT_COLUMNS = ("kernel", "cpu")
+TIMING = "# timing: "
 
 
 def problem(G_c=G_C, sigma0=SIGMA0):
@@ -162,7 +164,7 @@ def run(workdir, kernel="gaussian", dx=0.05, G_c=G_C, dt=None, nprocs=1, t_end=T
                                              * freund.MODE1_VALIDITY_MULTIPLE) / (M * dx)
     res.update({"kernel": kernel, "dt": dt, "nprocs": nprocs, "wall_time": wall,
                 "loop_s": loop_s, "atoms": int(round(10.0 / dx)) * int(round(2 * H / dx)),
-                "t_k": t_k, "J": d[:, 2], "damage_sum": d[:, 5]})
+                "t_k": t_k, "J": d[:, 2], "damage_sum": d[:, 5], "cpu": machine()})
     return res
 
 
@@ -183,15 +185,29 @@ def machine():
     return f"{model}, {isa}"
 
 
-def write_csv(path, rows, command):
+def write_csv(path, rows, provenance):
+    """The results CSV: the commands that made its rows (csvfile.provenance lines), then one
+    row per run; the loop time's CPU is a column, since appended rows may come from another
+    machine."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     with open(path, "w", newline="") as f:
-        f.write(f"# made by: {command}\n# timing: LAMMPS loop time, 1 rank, {machine()}\n")
+        for line in provenance:
+            f.write(f"# {line}\n")
+        f.write(f"{TIMING}LAMMPS loop time, 1 rank, on the CPU of column cpu\n")
         w = csv.writer(f)
         w.writerow(CSV_COLUMNS)
         for r in rows:
-            w.writerow([r[c] if isinstance(r[c], str) else f"{r[c]:.6g}" for c in CSV_COLUMNS])
+            w.writerow([r[c] if c in TEXT_COLUMNS else f"{r[c]:.6g}" for c in CSV_COLUMNS])
+
+
+def merge_rows(earlier, new):
+    """earlier rows with the runs of new added; a new run replaces an earlier one of the same
+    kernel and dx; sorted by dx (coarse first), then kernel as KERNELS lists them"""
+    key = {(r["kernel"], r["dx"]): r for r in earlier}
+    key.update({(r["kernel"], r["dx"]): r for r in new})
+    order = {k: i for i, k in enumerate(KERNELS)}
+    return sorted(key.values(), key=lambda r: (-r["dx"], order.get(r["kernel"], len(order))))
 
 
 def write_histories(path, rows):
@@ -204,25 +220,62 @@ def write_histories(path, rows):
                 w.writerow((r["kernel"], f"{r['dx']:g}", f"{t:.6g}", f"{l:.6g}"))
 
 
+def read_histories(path):
+    """{(kernel, dx): (t, l)} of write_histories' file"""
+    hist = {}
+    for ln in Path(path).read_text().splitlines()[1:]:
+        if ln:
+            k, dx, t, l = ln.split(",")
+            hist.setdefault((k, float(dx)), []).append((float(t), float(l)))
+    return {key: tuple(np.array(v).T) for key, v in hist.items()}
+
+
 def read_rows(path):
-    """The CSV written by write_csv as a list of dicts (kernel a string, the rest floats)."""
-    lines = [ln for ln in Path(path).read_text().splitlines() if ln and not ln.startswith("#")]
-    names = lines[0].split(",")
+    """The CSV written by write_csv as a list of dicts (kernel and cpu strings, the rest
+    floats); a CSV from before the cpu column names its one machine on the timing line."""
+    text = Path(path).read_text().splitlines()
+    timing = [ln[len(TIMING):] for ln in text if ln.startswith(TIMING)]
+    lines = [ln for ln in text if ln and not ln.startswith("#")]
+    names = next(csv.reader([lines[0]]))
     out = []
-    for ln in lines[1:]:
-        vals = ln.split(",")
-        out.append({n: (v if n == "kernel" else float(v)) for n, v in zip(names, vals)})
+    for vals in csv.reader(lines[1:]):
+        row = {n: (v if n in TEXT_COLUMNS else float(v)) for n, v in zip(names, vals)}
+        if "cpu" not in row:
+            row["cpu"] = timing[0].split("1 rank, ", 1)[-1] if timing else "unknown CPU"
+        out.append(row)
     return out
 
 
+def made_by_markdown(provenance):
+    """'Made by `...`' and 'Rows added by `...`' sentences of csvfile.provenance lines."""
+    out = []
+    for line in provenance:
+        what, _, cmd = line.partition(": ")
+        out.append(f"{what[0].upper()}{what[1:]} `{cmd}`.")
+    return " ".join(out)
+
+
+def cpu_markdown(rows):
+    """Which CPU timed which grids (the loop-time column)."""
+    by_cpu = {}
+    for r in rows:
+        by_cpu.setdefault(r["cpu"], []).append(r["dx"])
+    return "Loop times: " + "; ".join(
+        f"{cpu} (dx = {', '.join(f'{d:g}' for d in sorted(set(dxs), reverse=True))} m)"
+        for cpu, dxs in by_cpu.items()) + "."
+
+
 def table_markdown(rows, command=None):
-    """The README table of a results CSV (rows: dicts with the CSV's columns)."""
+    """The README table of a results CSV (rows: dicts with the CSV's columns); command: the
+    command that made it, or the CSV's provenance lines."""
     head = ("| kernel | dx (m) | atoms | first bond: t_i (ms), error (%), J/G_c | "
             "tip moved: t_i (ms), error (%), J/G_c | extension at 3 t_c (m) | "
             "L2 of l(t), K_Ic form (%) | L2 of l(t), energy form (%) | v/c_R at "
             + ", ".join(f"{s:g}" for s in SPEED_TIMES)
             + " t_c | crack half-width at 3 t_c (delta) | loop time (s) |")
-    lines = ([f"Made by `{command}`.", ""] if command else []) + [
+    if isinstance(command, str):
+        command = [f"made by: {command}"]
+    lines = ([made_by_markdown(command), ""] if command else []) + [
         head, "|" + "---|" * (head.count("|") - 1)]
     prob = problem(rows[0]["Gc"]) if rows else problem()
     for r in rows:
@@ -241,6 +294,8 @@ def table_markdown(rows, command=None):
         ext = prob.tip_position(np.array([prob.t_end]), crit)[0][0] - A
         lines.append(f"| theory, {name} | | | {t_i} | {t_i} | {ext:.2f} | | | "
                      + ", ".join(f"{v:.2f}" for v in v_th[crit]) + " | | |")
+    if rows and all("cpu" in r for r in rows):
+        lines += ["", cpu_markdown(rows)]
     return "\n".join(lines)
 
 
@@ -256,13 +311,9 @@ FIGURE_NAMES = ("crack_extension.png", "crack_speed.png", "work_precision.png")
 def figures(histories_csv, results_csv, folder, prefix=""):
     """The figures of the example from its CSVs (see figures_of_rows)."""
     rows = read_rows(results_csv)
-    hist = {}
-    for ln in Path(histories_csv).read_text().splitlines()[1:]:
-        if ln:
-            k, dx, t, l = ln.split(",")
-            hist.setdefault((k, float(dx)), []).append((float(t), float(l)))
+    hist = read_histories(histories_csv)
     for r in rows:
-        r["t_tip"], r["l_pd"] = np.array(hist[(r["kernel"], r["dx"])]).T
+        r["t_tip"], r["l_pd"] = hist[(r["kernel"], r["dx"])]
     return figures_of_rows(rows, folder, prefix)
 
 
@@ -333,7 +384,8 @@ def work_precision_figure(rows, path):
             ax.loglog(x, y, "o-", color=COLORS.get(kernel), label=kernel)
             for r, xi, yi in zip(rs, x, y):
                 ax.annotate(f"{r['dx']:g}", (xi, yi), fontsize=7)
-        ax.set_xlabel(f"loop time (s), 1 rank\n{machine()}", fontsize=7)
+        cpus = sorted({r.get("cpu", machine()) for r in rows})
+        ax.set_xlabel("loop time (s), 1 rank\n" + "; ".join(cpus), fontsize=7)
         ax.set_ylabel(label, fontsize=8)
         ax.legend(fontsize=7)
     fig.tight_layout()
@@ -399,7 +451,10 @@ def main(argv=None):
     ap.add_argument("--Gc", type=float, default=G_C)
     ap.add_argument("--reuse", action="store_true",
                     help="measure the outputs already in --work without running LAMMPS")
-    ap.add_argument("--csv", help="results CSV to write")
+    ap.add_argument("--csv", help="results CSV to write (or, with --append, add to)")
+    ap.add_argument("--append", action="store_true",
+                    help="keep the CSV's rows and tip histories; a run of the same kernel and "
+                         "dx replaces its row")
     ap.add_argument("--figures", help="folder for crack_extension.png and crack_speed.png")
     ap.add_argument("--readme", help="README whose bbpd:table block is rewritten")
     args = ap.parse_args(argv)
@@ -421,13 +476,139 @@ def main(argv=None):
                   f"L2 {res['l2_toughness_pct']:.1f} / {res['l2_energy_pct']:.1f} %, "
                   f"loop {res['loop_s']:.1f} s", flush=True)
     if args.csv:
-        write_csv(args.csv, rows, command)
-        write_histories(Path(args.csv).with_name("tip_histories.csv"), rows)
+        histories = Path(args.csv).with_name("tip_histories.csv")
+        provenance, this = [], f"made by: {command}"
+        if args.append and Path(args.csv).is_file():
+            provenance, this = csvfile.provenance(args.csv), f"rows added by: {command}"
+            earlier = read_rows(args.csv)
+            hist = read_histories(histories)
+            for r in earlier:
+                r["t_tip"], r["l_pd"] = hist[(r["kernel"], r["dx"])]
+            rows = merge_rows(earlier, rows)
+        write_csv(args.csv, rows, provenance + [this])
+        write_histories(histories, rows)
         if args.readme:
-            update_readme(args.readme, table_markdown(read_rows(args.csv), command))
+            update_readme(args.readme, table_markdown(read_rows(args.csv),
+                                                      csvfile.provenance(args.csv)))
         if args.figures:
             figures(Path(args.csv).with_name("tip_histories.csv"), args.csv, args.figures)
 
 
 if __name__ == "__main__":
     main()
+
+
+# --------------------------------------------------------------------------- README findings
+# A halving of dx "settles" the extension at 3 t_c when it moves it by less than this share
+# of the gap between the two forms' predictions: the remaining change could then not carry
+# the crack from one form to the other.
+SETTLED_SHARE_OF_GAP = 0.1
+# the crack band "does not shrink" with the horizon when the finest grid's widest band keeps
+# this share of the next coarser grid's (a band set by the horizon would halve)
+WIDTH_KEPT = 0.75
+
+
+def _span(vals, fmt):
+    lo, hi = min(vals), max(vals)
+    return f"{lo:{fmt}}" if f"{lo:{fmt}}" == f"{hi:{fmt}}" else f"{lo:{fmt}} to {hi:{fmt}}"
+
+
+def _by_dx(rows):
+    dxs = sorted({r["dx"] for r in rows}, reverse=True)
+    return dxs, {d: [r for r in rows if r["dx"] == d] for d in dxs}
+
+
+def extension_changes(rows):
+    """{kernel: [extension change at 3 t_c per halving of dx, coarse first]}"""
+    out = {}
+    for k in sorted({r["kernel"] for r in rows}):
+        ext = [r["ext_pd_3tc"] for r in sorted((r for r in rows if r["kernel"] == k),
+                                               key=lambda r: -r["dx"])]
+        out[k] = [b - a for a, b in zip(ext, ext[1:])]
+    return out
+
+
+def growth_verdict(rows):
+    """Per kernel on the finest grid: (settled, nearest form, last change, gap share)"""
+    dxs, at = _by_dx(rows)
+    gap = abs(rows[0]["ext_energy_3tc"] - rows[0]["ext_toughness_3tc"])
+    out = {}
+    for k, ch in extension_changes(rows).items():
+        fine = next(r for r in at[dxs[-1]] if r["kernel"] == k)
+        near = min(("toughness", "energy"), key=lambda c: abs(fine["ext_pd_3tc"]
+                                                              - fine[f"ext_{c}_3tc"]))
+        last = abs(ch[-1]) if ch else float("inf")
+        out[k] = (last < SETTLED_SHARE_OF_GAP * gap, near, last, gap)
+    return out
+
+
+def findings_markdown(rows):
+    """The README's initiation and growth paragraphs, from the results CSV's rows."""
+    dxs, at = _by_dx(rows)
+    kernels = [k for k in KERNELS if any(r["kernel"] == k for r in rows)]
+    fine = at[dxs[-1]]
+    prob = problem(rows[0]["Gc"])
+    out_step = 100.0 * DUMP_DT / (prob.initiation_time() - prob.t_c)
+    def of(k):
+        return sorted((r for r in rows if r["kernel"] == k), key=lambda r: -r["dx"])
+    first = "; ".join(
+        " / ".join(f"{r['ti_err_pct']:+.1f}" for r in of(k)) + f" % ({k}, J = "
+        + _span([r["J_at_ti_over_Gc"] for r in of(k)], ".2f") + " G_c)" for k in kernels)
+    steps = ", ".join(f"{_span([r['ti_tip_err_pct'] for r in at[d]], '+.1f')} % at {d:g} m"
+                      for d in dxs)
+    between = all(r["ti_pd"] <= r["ti_theory"] <= r["ti_tip_pd"] for r in rows)
+    j_fine = [r["J_at_ti_tip_over_Gc"] for r in fine]
+    init = (f"**Initiation.** The first broken bond comes early, by an amount set by the kernel "
+            f"more than by the grid (dx = {', '.join(f'{d:g}' for d in dxs)} m): {first}, in % "
+            f"of t_i - t_c. The tip's first grid step comes late: {steps} (one tip output is "
+            f"{out_step:.1f} %), and J at that moment is {_span(j_fine, '.2f')} G_c at dx = "
+            f"{dxs[-1]:g} m. " + ("LEFM's t_i lies between the two readings on every run."
+                                  if between else "LEFM's t_i is not always between the two readings."))
+    ext = ", ".join(f"{_span([r['ext_pd_3tc'] for r in at[d]], '.2f')} m at {d:g}" for d in dxs)
+    ch = extension_changes(rows)
+    changes = "; ".join(f"{k} " + " / ".join(f"{c:+.3f}" for c in ch[k]) for k in kernels)
+    l2t = ", ".join(f"{_span([r['l2_toughness_pct'] for r in at[d]], '.1f')}" for d in dxs)
+    l2e = ", ".join(f"{_span([r['l2_energy_pct'] for r in at[d]], '.1f')}" for d in dxs)
+    verdict = growth_verdict(rows)
+    settled = [k for k in kernels if verdict[k][0]]
+    moving = [k for k in kernels if not verdict[k][0]]
+    gap = verdict[kernels[0]][3]
+    names = {"toughness": "K_Ic form", "energy": "energy form"}
+    if settled:
+        near = {verdict[k][1] for k in settled}
+        v_sent = (f"The last halving moves the extension by less than "
+                  f"{SETTLED_SHARE_OF_GAP:g} of the gap between the forms ({gap:.2f} m) for "
+                  f"{' and '.join(settled)} (" + ", ".join(f"{verdict[k][2]:.3f} m" for k in settled)
+                  + f"): there the crack at 3 t_c lies at the "
+                  f"{' and '.join(names[n] for n in sorted(near))}'s value"
+                  + (", a reading one more halving would have to confirm (the change per "
+                     "halving has not shrunk at every step)." if any(
+                         not all(abs(b) < abs(a) for a, b in zip(ch[k], ch[k][1:]))
+                         for k in settled) else "."))
+    else:
+        v_sent = "No kernel has settled: the last halving still moves the extension by more " \
+                 f"than {SETTLED_SHARE_OF_GAP:g} of the gap between the forms ({gap:.2f} m)."
+    if moving:
+        v_sent += (" For " + " and ".join(moving) + " it still moves ("
+                   + ", ".join(f"{verdict[k][2]:.3f} m" for k in moving)
+                   + "), so for them the form the limit follows is not settled.")
+    speeds = "; ".join(
+        f"{s:g} t_c: {_span([r[f'v_{s:g}tc_over_cR'] for r in fine], '.2f')} (theory "
+        f"{prob.tip_position(np.array([s * prob.t_c]), 'toughness')[1][0] / prob.c_r:.2f} / "
+        f"{prob.tip_position(np.array([s * prob.t_c]), 'energy')[1][0] / prob.c_r:.2f})"
+        for s in SPEED_TIMES)
+    width_m = {d: [r["width_3tc_over_delta"] * M * d for r in at[d]] for d in dxs}
+    widths = ", ".join(f"{_span(width_m[d], '.2f')} m at {d:g}" for d in dxs)
+    holds = len(dxs) > 1 and max(width_m[dxs[-1]]) >= WIDTH_KEPT * max(width_m[dxs[-2]])
+    width_sent = ("in metres it does not shrink with the horizon over the last halving, so the "
+                  "damage that leaves the crack line late in the run is set by the loading, "
+                  "not by the grid, and LEFM's straight crack does not describe it." if holds else
+                  "it shrinks with the horizon, as a crack between two rows would.")
+    growth = (f"**Growth.** The extension at 3 t_c (theory {rows[0]['ext_toughness_3tc']:.2f} m "
+              f"in the K_Ic form, {rows[0]['ext_energy_3tc']:.2f} m in the energy form) is "
+              f"{ext}; per halving of dx it changes by {changes} m. The L2 error of l(t) is "
+              f"{l2t} % against the K_Ic form and {l2e} % against the energy form (dx = "
+              f"{', '.join(f'{d:g}' for d in dxs)} m). {v_sent} Speed v/c_R on the finest grid "
+              f"(theory: K_Ic / energy form) at {speeds}. The crack atoms' half-width at 3 t_c is "
+              f"{widths} m: {width_sent}")
+    return init + "\n\n" + growth

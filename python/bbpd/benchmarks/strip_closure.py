@@ -149,6 +149,7 @@ def _taller(r):
     return f"{r['l2_kinetic_taller_pct']:.1f} (x {r['law_shift_taller']:.3f})"
 
 
+CLOSURE_GOAL_DX = 0.025    # m: the grid at which the closure's goal is set
 CLOSURE_GOAL_PCT = 5.0    # L2 of l(t) at the finest grid (issue's criterion)
 
 
@@ -176,8 +177,11 @@ def verdict(rows):
         finest = sel[-1]
         falls = all(b["l2_kinetic_pct"] < a["l2_kinetic_pct"] for a, b in zip(sel, sel[1:]))
         best_const = min(finest["l2_toughness_pct"], finest["l2_energy_pct"])
+        goal = [r for r in sel if r["dx"] == CLOSURE_GOAL_DX and r is not finest]
+        at_goal = (f"at the goal's dx = {CLOSURE_GOAL_DX:g} m {goal[0]['l2_kinetic_pct']:.1f} %, "
+                   if goal else "")
         out.append(f"- **{k}**: L2 {errs} % at dx = " + ", ".join(f"{r['dx']:g}" for r in sel)
-                   + f" m ({'falls' if falls else 'does not fall'} as dx halves); at dx = "
+                   + f" m ({'falls' if falls else 'does not fall'} as dx halves); {at_goal}at dx = "
                    f"{finest['dx']:g} m {finest['l2_kinetic_pct']:.1f} % "
                    + ("meets" if finest["l2_kinetic_pct"] <= CLOSURE_GOAL_PCT else "misses")
                    + f" the {CLOSURE_GOAL_PCT:g} % goal (the better constant-toughness form: {best_const:.1f} %). "

@@ -31,7 +31,11 @@ def _made_by(path):
 
 def propagation_table(data):
     return mode1_propagation.table_markdown(mode1_propagation.read_rows(PROPAGATION_CSV),
-                                            _made_by(PROPAGATION_CSV))
+                                            csvfile.provenance(PROPAGATION_CSV))
+
+
+def propagation_findings(data):
+    return mode1_propagation.findings_markdown(mode1_propagation.read_rows(PROPAGATION_CSV))
 
 
 def kink_table(data):

@@ -1,0 +1,67 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The Mode-I propagation results CSV: rows added to it keep the earlier rows, their
+provenance and their CPU, and the README's findings are computed from the rows (synthetic
+here, so the test needs no run)."""
+import numpy as np
+
+from bbpd import csvfile
+from bbpd.benchmarks import mode1_propagation as mp
+
+
+def row(kernel, dx, ext, cpu="CPU A", **kw):
+    r = {c: 1.0 for c in mp.CSV_COLUMNS}
+    r.update(kernel=kernel, dx=dx, ext_pd_3tc=ext, ext_toughness_3tc=0.77,
+             ext_energy_3tc=0.98, Gc=mp.G_C, cpu=cpu, width_3tc_over_delta=1.0,
+             ti_pd=0.5e-3, ti_theory=0.6e-3, ti_tip_pd=0.7e-3,
+             t_tip=np.array([0.0, 1e-3]), l_pd=np.array([5.0, 5.0 + ext]))
+    r.update(kw)
+    return r
+
+
+def test_append_keeps_rows_provenance_and_cpu(tmp_path):
+    path = tmp_path / "results" / "m.csv"
+    first = [row("gaussian", 0.1, 0.96), row("constant", 0.1, 1.01)]
+    mp.write_csv(path, first, ["made by: first"])
+    mp.write_histories(path.with_name("tip_histories.csv"), first)
+    earlier = mp.read_rows(path)
+    hist = mp.read_histories(path.with_name("tip_histories.csv"))
+    for r in earlier:
+        r["t_tip"], r["l_pd"] = hist[(r["kernel"], r["dx"])]
+    merged = mp.merge_rows(earlier, [row("gaussian", 0.05, 0.89, cpu="CPU B"),
+                                     row("constant", 0.1, 1.00, cpu="CPU B")])
+    mp.write_csv(path, merged, csvfile.provenance(path) + ["rows added by: second"])
+    rows = mp.read_rows(path)
+    assert [(r["kernel"], r["dx"]) for r in rows] == [("constant", 0.1), ("gaussian", 0.1),
+                                                      ("gaussian", 0.05)]
+    assert [r["cpu"] for r in rows] == ["CPU B", "CPU A", "CPU B"]
+    assert rows[0]["ext_pd_3tc"] == 1.0          # the new run replaced the old one
+    assert csvfile.provenance(path) == ["made by: first", "rows added by: second"]
+    table = mp.table_markdown(rows, csvfile.provenance(path))
+    assert "Made by `first`. Rows added by `second`." in table
+    assert "CPU B (dx = 0.1, 0.05 m); CPU A (dx = 0.1 m)" in table
+
+
+def test_a_csv_without_the_cpu_column_takes_its_timing_line(tmp_path):
+    path = tmp_path / "old.csv"
+    cols = [c for c in mp.CSV_COLUMNS if c != "cpu"]
+    path.write_text("# made by: x\n# timing: LAMMPS loop time, 1 rank, AMD EPYC, AVX2\n"
+                    + ",".join(cols) + "\n" + ",".join("gaussian" if c == "kernel" else "1"
+                                                       for c in cols) + "\n")
+    assert mp.read_rows(path)[0]["cpu"] == "AMD EPYC, AVX2"
+
+
+def test_growth_verdict_settles_only_a_small_last_change():
+    gap = 0.98 - 0.77
+    small = mp.SETTLED_SHARE_OF_GAP * gap / 2
+    rows = [row("gaussian", 0.05, 0.90), row("gaussian", 0.025, 0.78),
+            row("gaussian", 0.0125, 0.78 - small),
+            row("constant", 0.05, 0.93), row("constant", 0.025, 0.83),
+            row("constant", 0.0125, 0.77)]
+    v = mp.growth_verdict(rows)
+    assert v["gaussian"][0] and v["gaussian"][1] == "toughness"
+    assert not v["constant"][0]
+    text = mp.findings_markdown(rows)
+    assert "for gaussian" in text and "For constant it still moves (0.060 m)" in text
+    # negative control: the same last step for both kernels settles neither or both
+    rows[5]["ext_pd_3tc"] = 0.83 - small
+    assert mp.growth_verdict(rows)["constant"][0]
