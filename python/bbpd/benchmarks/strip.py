@@ -292,6 +292,15 @@ def speed_at(rows, kernel, m, H_over_delta, Delta):
 CONVERGED_SPEED = 0.02    # v_ss/c_R between two refinements (issue's criterion)
 
 
+def _height_verdict(speeds):
+    """' (the last refinement moves it by ...)' of a sequence [(H/delta, v_ss/c_R)]"""
+    if len(speeds) < 2:
+        return ""
+    d = abs(speeds[-1][1] - speeds[-2][1])
+    return (f" (the last refinement moves it by {d:.4f} c_R: "
+            + ("within" if d <= CONVERGED_SPEED else "more than") + f" {CONVERGED_SPEED:g} c_R)")
+
+
 def summary_text(rows):
     """Sentences computed from the runs: threshold, convergence in H/delta and in m, closure."""
     kernels = sorted({r["kernel"] for r in rows})
@@ -312,17 +321,16 @@ def summary_text(rows):
             else:
                 thr = f"{lo:g} < Delta_c <= {hi:g}"
             parts.append(f"threshold {thr} at m = {m:g}, H/delta = {SWEEP_H_OVER_DELTA:g}")
-        hd = sorted({r["H_over_delta"] for r in rows if r["kernel"] == k and r["m"] == M and r["Delta"] == 2.0})
-        speeds = [(h, speed_at(rows, k, M, h, 2.0)) for h in hd]
-        if speeds:
-            conv = ", ".join(f"{s:.3f} at H/delta = {h:g}" for h, s in speeds)
-            verdict = ""
-            if len(speeds) >= 2:
-                d = abs(speeds[-1][1] - speeds[-2][1])
-                verdict = (f" (the last refinement moves it by {d:.4f} c_R: "
-                           + ("within" if d <= CONVERGED_SPEED else "more than")
-                           + f" {CONVERGED_SPEED:g} c_R)")
-            parts.append(f"v_ss/c_R at Delta = 2, m = {M:g}: {conv}{verdict}")
+        for m in sorted({r["m"] for r in rows if r["kernel"] == k}):
+            hd = sorted({r["H_over_delta"] for r in rows if r["kernel"] == k and r["m"] == m
+                         and r["Delta"] == 2.0 and r["crossed"]})
+            if len(hd) < 2 and m != M:
+                continue    # one height says nothing of the convergence in H
+            speeds = [(h, speed_at(rows, k, m, h, 2.0)) for h in hd]
+            if speeds:
+                parts.append(f"v_ss/c_R at Delta = 2, m = {m:g}: "
+                             + ", ".join(f"{v:.3f} at H/delta = {h:g}" for h, v in speeds)
+                             + _height_verdict(speeds))
         for h in sorted({r["H_over_delta"] for r in rows if r["kernel"] == k}):
             ms = sorted({r["m"] for r in rows if r["kernel"] == k and r["H_over_delta"] == h
                          and r["Delta"] == 2.0})
