@@ -48,8 +48,19 @@ def run(style, steps, workdir):
     rows = {int(m.group(1)): (float(m.group(2)), int(float(m.group(3))))
             for m in re.finditer(r"^\s+(\d+)\s+([0-9.eE+-]+)\s+([0-9.eE+-]+)\s+[0-9.eE+-]+\s*$", out, re.M)}
     mid, last = rows.get(REPORT_STEP, (None, None)), rows[max(rows)]
+    memory = float(re.search(r"^Per MPI rank memory allocation \(min/avg/max\) = \S+ \| \S+ \| "
+                             r"([0-9.eE+-]+) Mbytes", out, re.M).group(1))
     return {"style": style, "steps": steps, "loop_s": loop, "pair_s": pair, "cpu_s": round(cpu, 3),
-            "damage_mid": mid[0], "cracked_mid": mid[1], "damage_end": last[0], "cracked_end": last[1]}
+            "damage_mid": mid[0], "cracked_mid": mid[1], "damage_end": last[0], "cracked_end": last[1],
+            "memory_mb": memory, "bonds": bond_count(out)}
+
+
+def bond_count(out):
+    """Bonds at the setup: peri/lps prints the bond ends ('total # of bonds', each bond twice)."""
+    ours = re.search(r"total bonds (\d+)", out)
+    if ours:
+        return int(ours.group(1))
+    return int(re.search(r"total # of bonds = (\d+)", out).group(1)) // 2
 
 
 def main():
@@ -80,11 +91,14 @@ def main():
     print(f"loop time ratio peri/lps / bbpd/lps: {ratio_min:.2f} (minima), {statistics.median(rounds):.2f} "
           f"(median of the rounds {', '.join(f'{x:.2f}' for x in rounds)}); processor time: "
           f"{cpu_ratio:.2f}; load {load_before} -> {load_after}")
+    for style, rs in by.items():
+        print(f"{style}: memory per rank {rs[0]['memory_mb']:.2f} Mbytes, {rs[0]['bonds']} bonds: "
+              f"{rs[0]['memory_mb'] * 1e6 / rs[0]['bonds']:.1f} bytes per bond")
     if args.csv:
         command = "tools/python perf/lps_vs_peri.py " + " ".join(sys.argv[1:])
         date = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
         fields = ["round", "style", "steps", "loop_s", "pair_s", "cpu_s", "damage_mid", "cracked_mid",
-                  "damage_end", "cracked_end", "cpu", "family", "model", "isa", "load_before",
+                  "damage_end", "cracked_end", "memory_mb", "bonds", "cpu", "family", "model", "isa", "load_before",
                   "load_after", "date", "command"]
         with open(args.csv, "w", newline="") as f:
             w = csv.DictWriter(f, fieldnames=fields)

@@ -74,11 +74,12 @@ def read_table(path, text=(), flags=()):
     """The rows of write_table as dicts: `text` columns strings, `flags` columns bools, the
     rest floats"""
     lines = [ln for ln in Path(path).read_text().splitlines() if ln and not ln.startswith("#")]
-    names = lines[0].split(",")
+    table = list(csv.reader(lines))    # a text cell may hold a comma (quoted by write_table)
+    names = table[0]
 
     def cell(n, v):
         return v if n in text else (v == "True") if n in flags else float(v)
-    return [{n: cell(n, v) for n, v in zip(names, ln.split(","))} for ln in lines[1:]]
+    return [{n: cell(n, v) for n, v in zip(names, cells)} for cells in table[1:]]
 
 
 def provenance(path):

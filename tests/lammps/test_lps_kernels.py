@@ -13,7 +13,8 @@ anisotropy is largest for the constant kernel (its step at the horizon); at m = 
 eps_12 is within 0.7 %, while the same pure shear along the axes (eps_11 = -eps_22) is off by
 -1.04 % in 3D (measured), so the test takes eps_12.
 
-Also: the same bits on 1 and 2 ranks and across write_restart / read_restart, and breaking:
+Also: the same bits on 1 and 2 ranks, on 2 OpenMP threads and across write_restart /
+read_restart, and breaking:
 an isotropically pre-stretched block (every bond at stretch s) keeps all its bonds at
 s = 0.95 s0 and loses them at 1.05 s0, with s0 from G_c (bbpd_lps_kernel.h), computed here
 independently.
@@ -195,6 +196,10 @@ def test_same_bits_on_1_and_2_ranks_and_restart(lmp, tmp_path, kernel, model):
         dmean = ref.thermo_tables(out)[-1]["c_dmean"]
         assert dmean[0] == 0.0 and dmean[-1] > 0.01, dmean    # bonds broke during the run
         states.append(end_of(tmp_path))
+    threaded = head.replace("units si", "package omp 2\nunits si", 1)
+    out = lmp(threaded + f"fix 1 all nve\nrun {RUN_STEPS}\n" + RUN_DUMP).output
+    assert "1 MPI tasks x 2 OpenMP threads" in out
+    states.append(end_of(tmp_path))
     lmp(head + f"fix 1 all nve\nrun {half}\nwrite_restart state.restart\n")
     dim = ref.DIMENSION[model]
     second = ("plugin load bbpdplugin.so\nread_restart state.restart\n" + lattice_line(dim) +

@@ -172,17 +172,23 @@ def run(workdir, kernel="gaussian", dx=0.05, G_c=G_C, dt=None, nprocs=1, t_end=T
 
 def machine():
     """CPU model and vector ISA for the timing columns."""
-    model, flags = platform.processor() or "unknown CPU", set()
+    model, flags, numbers = platform.processor() or "unknown CPU", set(), {}
     try:
         for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
+            key = line.split(":", 1)[0].strip()
+            if key == "model name":
                 model = line.split(":", 1)[1].strip()
-            elif line.startswith("flags"):
+            elif key in ("cpu family", "model"):
+                numbers.setdefault(key, line.split(":", 1)[1].strip())
+            elif key == "flags":
                 flags = set(line.split(":", 1)[1].split())
     except OSError:
         pass
     isa = "AVX-512" if "avx512f" in flags else "AVX2" if "avx2" in flags else "SSE"
-    return f"{model}, {isa}"
+    # a model name alone may not tell the generation apart (AMD EPYC: Zen 3 and Zen 4)
+    ident = (f" (family {numbers['cpu family']} model {numbers['model']})"
+             if len(numbers) == 2 else "")
+    return f"{model}{ident}, {isa}"
 
 
 def write_csv(path, rows, provenance):

@@ -69,7 +69,10 @@ SWEEP_H_OVER_DELTA = 10.0
 RUN_TIMEOUT_S = 6 * 3600
 CSV_COLUMNS = ("kernel", "m", "H_over_delta", "dx", "Delta", "Delta_model", "crossed", "state",
                "v_ss_over_cR", "v_ss", "Gamma_over_Gc", "Phi_over_Gc", "Phi_behind_over_Gc",
-               "Phi_ahead_over_Gc", "closure_pct", "balance_pct", "atoms", "steps", "loop_s")
+               "Phi_ahead_over_Gc", "closure_pct", "balance_pct", "atoms", "steps", "loop_s",
+               "timing")
+TEXT_COLUMNS = ("kernel", "state", "timing")
+TIMING = "# timing: "
 
 
 def wave_speeds():
@@ -151,11 +154,13 @@ def run(workdir, kernel="gaussian", Delta=2.0, dx=DX, m=M, H_over_delta=H_OVER_D
     words = output.split("STRIP: ")[-1].split("\n")[0].split()
     setup = dict(zip(words[0::2], words[1::2]))
     rows = np.loadtxt(workdir / "strip.dat", comments="#", ndmin=2)
-    loop_s = float(re.findall(r"Loop time of ([0-9.eE+-]+) on", output)[-1])    # the crack's run
+    loop = re.findall(r"Loop time of ([0-9.eE+-]+) on (\d+) procs", output)[-1]    # the crack's run
+    loop_s, ranks = float(loop[0]), int(loop[1])
     res = measure(rows, uprime, g, dx)
     res.update({"kernel": kernel, "m": m, "H_over_delta": H_over_delta, "dx": dx,
                 "Delta": Delta, "Delta_model": uprime / G_C, "atoms": int(setup["atoms"]),
                 "steps": int(rows[-1, 0]), "loop_s": loop_s, "wall_s": wall,
+                "timing": f"{ranks} rank{'s' if ranks > 1 else ''}, {machine()}",
                 "t": rows[:, 1], "x": rows[:, 2]})
     return res
 
@@ -164,12 +169,35 @@ def write_csv(path, rows, command, earlier=()):
     """earlier: the 'made by' and 'rows added by' lines of the CSV that --append extends"""
     made = list(earlier) + [f"{'rows added by' if earlier else 'made by'}: {command}"]
     csvfile.write_table(path, rows, CSV_COLUMNS,
-                        made + [f"timing: LAMMPS loop time, 1 rank, {machine()}"])
+                        made + ["timing: LAMMPS loop time; its ranks and CPU in column timing"],
+                        text=TEXT_COLUMNS)
 
 
 def read_rows(path):
-    """The CSV of write_csv as dicts (kernel and state strings, crossed a bool, the rest floats)."""
-    return csvfile.read_table(path, text=("kernel", "state"), flags=("crossed",))
+    """The CSV of write_csv as dicts (kernel, state and timing strings, crossed a bool, the rest
+    floats); a CSV from before the timing column names its one machine on the timing line."""
+    rows = csvfile.read_table(path, text=TEXT_COLUMNS, flags=("crossed",))
+    timing = [ln[len(TIMING):] for ln in Path(path).read_text().splitlines() if ln.startswith(TIMING)]
+    for r in rows:
+        if "timing" not in r:
+            r["timing"] = timing[0].split("loop time, ", 1)[-1] if timing else "unknown"
+    return rows
+
+
+def timing_markdown(rows):
+    """'Loop times: ...': which ranks and CPU timed which runs (appended runs may come from
+    another machine)."""
+    by = {}
+    for r in rows:
+        by.setdefault(r["timing"], []).append(r)
+    if len(by) == 1:
+        return f"Loop times: {next(iter(by))}."
+    main = max(by, key=lambda t: len(by[t]))
+
+    def case(r):
+        return f"{r['kernel']} m = {r['m']:g}, H/delta = {r['H_over_delta']:g}, Delta = {r['Delta']:g}"
+    others = "; ".join(f"{t} ({', '.join(case(r) for r in rs)})" for t, rs in by.items() if t != main)
+    return f"Loop times: {main} (every run but these); {others}."
 
 
 def kinetic_law(rows, kernel, m=5.0, H_over_delta=SWEEP_H_OVER_DELTA):
@@ -191,6 +219,7 @@ def main(argv=None):
     p.add_argument("--csv", help="write (or, with --append, add to) this results CSV")
     p.add_argument("--append", action="store_true")
     p.add_argument("--reuse", action="store_true", help="measure earlier runs in --work")
+    p.add_argument("--nprocs", type=int, default=1, help="MPI ranks of each run (default 1)")
     p.add_argument("--collect", action="store_true",
                    help="measure every run folder in --work (KERNEL-mM-HH-DD) again, run nothing")
     p.add_argument("--figure", help="draw the kinetic-law figure of the CSV's rows here")
@@ -207,7 +236,7 @@ def main(argv=None):
                 for D in a.Delta:
                     wd = Path(a.work) / f"{kernel}-m{m:g}-H{hd:g}-D{D:g}"
                     try:
-                        r = run(wd, kernel, D, DX * M / m, m, hd, reuse=a.reuse)
+                        r = run(wd, kernel, D, DX * M / m, m, hd, nprocs=a.nprocs, reuse=a.reuse)
                     except (LammpsError, subprocess.TimeoutExpired) as exc:    # one failed run must not end the sweep
                         print(f"{wd.name}: FAILED: {exc}", flush=True)
                         continue
@@ -271,7 +300,7 @@ def table_markdown(rows, command=None):
         lines.append(f"| {r['kernel']} | {r['m']:g} | {r['H_over_delta']:g} | {r['Delta']:g} | "
                      f"{r['Delta_model']:.3f} | {run} | {r['balance_pct']:.2f} | {int(r['atoms'])} | "
                      f"{r['loop_s']:.0f} |")
-    return "\n".join(lines)
+    return "\n".join(lines + ["", timing_markdown(rows)] if rows else lines)
 
 
 def threshold(rows, kernel, m=M, H_over_delta=SWEEP_H_OVER_DELTA):
@@ -456,7 +485,7 @@ def work_precision_markdown(rows, Delta=2.0, m=M):
     """Error of v_ss against run time: each kernel's runs at (Delta, m) by strip height, the
     error the difference from its tallest strip (which therefore has none)."""
     head = "| kernel | H/delta | atoms | loop time (s) | v_ss/c_R | difference from the tallest strip (c_R) |"
-    lines = [head, "|---|---|---|---|---|---|"]
+    lines, shown = [head, "|---|---|---|---|---|---|"], []
     for k in sorted({r["kernel"] for r in rows}):
         sel = sorted((r for r in rows if r["kernel"] == k and r["m"] == m and r["Delta"] == Delta
                       and r["crossed"]), key=lambda r: r["H_over_delta"])
@@ -467,7 +496,8 @@ def work_precision_markdown(rows, Delta=2.0, m=M):
             diff = "(reference)" if r is sel[-1] else f"{r['v_ss_over_cR'] - ref:+.3f}"
             lines.append(f"| {k} | {r['H_over_delta']:g} | {int(r['atoms'])} | {r['loop_s']:.0f} | "
                          f"{r['v_ss_over_cR']:.3f} | {diff} |")
-    return "\n".join(lines)
+            shown.append(r)
+    return "\n".join(lines + ["", timing_markdown(shown)] if shown else lines)
 
 
 if __name__ == "__main__":

@@ -1,0 +1,35 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The strip results CSV: every row names the ranks and CPU that timed it (rows appended on
+another machine, or on more ranks, say so), a CSV from before that column takes its timing
+line, and the README's tables say which runs each timing covers (synthetic rows, no run)."""
+from bbpd.benchmarks import strip
+
+
+def row(kernel, m, hd, timing="1 rank, CPU A", v=0.6):
+    r = {c: 1.0 for c in strip.CSV_COLUMNS}
+    r.update(kernel=kernel, m=m, H_over_delta=hd, Delta=2.0, crossed=True, state="crossed",
+             v_ss_over_cR=v, timing=timing)
+    return r
+
+
+def test_timing_column_round_trips_and_names_the_other_runs(tmp_path):
+    path = tmp_path / "strip.csv"
+    rows = [row("gaussian", 4.0, 10.0), row("gaussian", 4.0, 20.0),
+            row("gaussian", 6.0, 40.0, timing="2 ranks, CPU B")]
+    strip.write_csv(path, rows, "first")
+    back = strip.read_rows(path)
+    assert [r["timing"] for r in back] == ["1 rank, CPU A", "1 rank, CPU A", "2 ranks, CPU B"]
+    note = strip.timing_markdown(back)
+    assert note == ("Loop times: 1 rank, CPU A (every run but these); 2 ranks, CPU B "
+                    "(gaussian m = 6, H/delta = 40, Delta = 2).")
+    assert strip.timing_markdown(back[:2]) == "Loop times: 1 rank, CPU A."
+    assert note in strip.table_markdown(back)
+
+
+def test_a_csv_without_the_timing_column_takes_its_timing_line(tmp_path):
+    path = tmp_path / "old.csv"
+    cols = [c for c in strip.CSV_COLUMNS if c != "timing"]
+    cells = {"kernel": "gaussian", "state": "crossed", "crossed": "True"}
+    path.write_text("# made by: x\n# timing: LAMMPS loop time, 1 rank, AMD EPYC, AVX2\n"
+                    + ",".join(cols) + "\n" + ",".join(cells.get(c, "1") for c in cols) + "\n")
+    assert strip.read_rows(path)[0]["timing"] == "1 rank, AMD EPYC, AVX2"
