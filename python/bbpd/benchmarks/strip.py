@@ -326,8 +326,20 @@ def _height_verdict(speeds):
     if len(speeds) < 2:
         return ""
     d = abs(speeds[-1][1] - speeds[-2][1])
-    return (f" (the last refinement moves it by {d:.4f} c_R: "
-            + ("within" if d <= CONVERGED_SPEED else "more than") + f" {CONVERGED_SPEED:g} c_R)")
+    text = (f" (the last refinement moves it by {d:.4f} c_R: "
+            + ("within" if d <= CONVERGED_SPEED else "more than") + f" {CONVERGED_SPEED:g} c_R")
+    if len(speeds) >= 3:
+        # within the criterion is not converged while the changes keep their sign and do not
+        # shrink: the limit then lies beyond the last value by about as much again
+        last, before = speeds[-1][1] - speeds[-2][1], speeds[-2][1] - speeds[-3][1]
+        text += f"; the one before by {abs(before):.4f} c_R: "
+        if last * before < 0.0:
+            text += "the changes alternate in sign"
+        elif abs(last) < abs(before):
+            text += "the change shrinks"
+        else:
+            text += "the change does not shrink, not converged"
+    return text + ")"
 
 
 def summary_text(rows):
