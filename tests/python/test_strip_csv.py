@@ -35,10 +35,10 @@ def test_a_csv_without_the_timing_column_takes_its_timing_line(tmp_path):
     assert strip.read_rows(path)[0]["timing"] == "1 rank, AMD EPYC, AVX2"
 
 
-def test_height_verdict_calls_a_small_change_that_does_not_shrink_not_converged():
-    small_steady = strip._height_verdict([(10, 0.648), (20, 0.629), (40, 0.610)])
+def testheight_verdict_calls_a_small_change_that_does_not_shrink_not_converged():
+    small_steady = strip.height_verdict([(10, 0.648), (20, 0.629), (40, 0.610)])
     assert "within 0.02 c_R" in small_steady and "not converged" in small_steady
-    shrinking = strip._height_verdict([(10, 0.660), (20, 0.640), (40, 0.634)])
+    shrinking = strip.height_verdict([(10, 0.660), (20, 0.640), (40, 0.634)])
     assert "the change shrinks" in shrinking and "not converged" not in shrinking
-    assert "alternate in sign" in strip._height_verdict([(10, 0.653), (20, 0.661), (40, 0.648)])
-    assert "more than 0.02 c_R" in strip._height_verdict([(20, 0.598), (40, 0.571)])
+    assert "alternate in sign" in strip.height_verdict([(10, 0.653), (20, 0.661), (40, 0.648)])
+    assert "more than 0.02 c_R" in strip.height_verdict([(20, 0.598), (40, 0.571)])

@@ -321,7 +321,7 @@ def speed_at(rows, kernel, m, H_over_delta, Delta):
 CONVERGED_SPEED = 0.02    # v_ss/c_R between two refinements (issue's criterion)
 
 
-def _height_verdict(speeds):
+def height_verdict(speeds):
     """' (the last refinement moves it by ...)' of a sequence [(H/delta, v_ss/c_R)]"""
     if len(speeds) < 2:
         return ""
@@ -371,7 +371,7 @@ def summary_text(rows):
             if speeds:
                 parts.append(f"v_ss/c_R at Delta = 2, m = {m:g}: "
                              + ", ".join(f"{v:.3f} at H/delta = {h:g}" for h, v in speeds)
-                             + _height_verdict(speeds))
+                             + height_verdict(speeds))
         for h in sorted({r["H_over_delta"] for r in rows if r["kernel"] == k}):
             ms = sorted({r["m"] for r in rows if r["kernel"] == k and r["H_over_delta"] == h
                          and r["Delta"] == 2.0})
