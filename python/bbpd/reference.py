@@ -133,6 +133,15 @@ def grid_wave_speeds(name, model, E, rho, m, dx, direction=(1.0, 0.0, 0.0),
     return (math.sqrt(float(n @ d @ n) / rho) / kk, math.sqrt(float(t @ d @ t) / rho) / kk)
 
 
+def lame_moduli(model, E, nu):
+    """(lambda, G) of linear elasticity at any Poisson ratio nu; plane stress takes the
+    in-plane lambda' = E nu / (1 - nu^2), plane strain and 3d the classical lambda."""
+    G = E / (2.0 * (1.0 + nu))
+    if model == "plane/stress":
+        return E * nu / (1.0 - nu**2), G
+    return E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)), G
+
+
 def classical_energy_density(model, E, strain):
     """Strain-energy density of linear elasticity with the model's Poisson ratio.
 

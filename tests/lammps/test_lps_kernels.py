@@ -49,11 +49,7 @@ MAX_ENERGY_ERROR = 0.01
 
 def classical_energy(model, E, nu, eps):
     """W = lambda/2 tr(eps)^2 + G eps:eps (plane stress: lambda of plane stress)."""
-    G = E / (2.0 * (1.0 + nu))
-    if model == "plane/stress":
-        lam = E * nu / (1.0 - nu**2)
-    else:
-        lam = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
+    lam, G = ref.lame_moduli(model, E, nu)
     return 0.5 * lam * np.trace(eps) ** 2 + G * np.sum(eps * eps)
 
 

@@ -46,11 +46,7 @@ MAX_SPEED_ERROR = 0.005
 
 
 def classical_speeds(model, E, nu, rho):
-    G = E / (2.0 * (1.0 + nu))
-    if model == "plane/stress":
-        lam = E * nu / (1.0 - nu**2)
-    else:
-        lam = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
+    lam, G = ref.lame_moduli(model, E, nu)
     return math.sqrt((lam + 2.0 * G) / rho), math.sqrt(G / rho)
 
 

@@ -11,6 +11,7 @@ PROPAGATION = "examples/mode1-propagation/README.md"
 KINK = "examples/kink-mixed-mode/README.md"
 STRIP = "examples/strip-steady-crack/README.md"
 BRANCHING = "examples/crack-branching/README.md"
+PERFORMANCE = "doc/performance.md"
 
 # file -> {block name: render(data) -> text}
 BLOCKS = {
@@ -44,4 +45,5 @@ BLOCKS = {
     BRANCHING: {"branching": crack.branching_table,
                 "branching-findings": crack.branching_findings,
                 "branching-cost": crack.branching_cost},
+    PERFORMANCE: {"lps-cylinder": perf.lps_cylinder},
 }

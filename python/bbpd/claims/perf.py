@@ -68,3 +68,37 @@ def zen3_readme(data):
             + ", commands in [doc/performance.md](doc/performance.md)):")
     return (head + "\n\n" + "\n".join(lines) + "\n\nMemory at the margin (max RSS, block 41³ → "
             f"51³): {float(margin['bytes_per_bond']):.1f} bytes per bond.")
+
+
+# perf/lps_vs_peri.py --csv runs of the peri/lps cylinder, one file per CPU, in the doc's order,
+# with the CPU's vector ISA (the CSVs' isa column lists the paths the plugin build holds)
+LPS_FILES = ((RESULTS / "spr-lps-cylinder.csv", "AVX-512"), (RESULTS / "zen3-lps-cylinder.csv", "AVX2"))
+
+
+def lps_cylinder(data):
+    """doc/performance.md's bbpd/lps against peri/lps: per CPU the minimum loop and processor
+    times of the rounds, their ratios, and LAMMPS's memory per rank where the CSV has it."""
+    head = ("| CPU | vector ISA | `peri/lps` loop, min (s) | `bbpd/lps` loop, min (s) | loop ratio "
+            "(rounds) | processor time ratio | memory per rank: `peri/lps` / `bbpd/lps` (MB) | "
+            "bytes per bond |")
+    lines = [head, "|" + "---|" * 8]
+    for path, isa in LPS_FILES:
+        rows = _rows(path)
+        by = {s: [r for r in rows if r["style"] == s] for s in ("peri/lps", "bbpd/lps")}
+        loop = {s: min(float(r["loop_s"]) for r in rs) for s, rs in by.items()}
+        cpu = {s: min(float(r["cpu_s"]) for r in rs) for s, rs in by.items()}
+        rounds = ", ".join(f"{float(b['loop_s']) / float(a['loop_s']):.2f}"
+                           for a, b in zip(by["bbpd/lps"], by["peri/lps"]))
+        r0 = rows[0]
+        if r0.get("memory_mb"):
+            mem = {s: float(rs[0]["memory_mb"]) for s, rs in by.items()}
+            per_bond = {s: mem[s] * 1e6 / float(rs[0]["bonds"]) for s, rs in by.items()}
+            memory = (f"{mem['peri/lps']:.2f} / {mem['bbpd/lps']:.2f} | "
+                      f"{per_bond['peri/lps']:.1f} / {per_bond['bbpd/lps']:.1f}")
+        else:
+            memory = "not recorded | "
+        lines.append(f"| {r0['cpu']} (family {r0['family']} model {r0['model']}) | "
+                     f"{isa} | {loop['peri/lps']:.2f} | "
+                     f"{loop['bbpd/lps']:.2f} | **{loop['peri/lps'] / loop['bbpd/lps']:.2f}** "
+                     f"({rounds}) | {cpu['peri/lps'] / cpu['bbpd/lps']:.2f} | {memory} |")
+    return "\n".join(lines)
