@@ -585,25 +585,32 @@ void PairBBPD::tally_short_range(int i, double e, double fpair, double dx, doubl
   }
 }
 
+/* the rows of the critical-stretch rule (eq. 24): a bond breaks once its stretch passes s0,
+   one for every type pair or (MULTI) per type pair, and exerts no force from then on; without
+   FRACTURE nothing breaks */
 template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
 {
-  const int *type = atom->type;
-  for_each_row<EVFLAG>([&](int i, double *fi, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
-    const double *s0row = MULTI ? critical_stretch[type[i]] : nullptr;
-    if (!FRACTURE) {
-      row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc, cache);
-    } else if (row_force<EVFLAG, 1, MULTI>(i, fi, s0row, acc, cache)) {
-      // a bond of the row is (near) past its critical stretch: remove such bonds
-      // (irreversibly, in row order), then sum the row again
-      bonds->remove_bonds_if(i, [&](int k) {
-        const int j = bonds->partner_of(i, k);
-        const double s0 = MULTI ? s0row[type[j]] : s0_single;
-        if (!past_critical(i, j, bonds->xi0_of(i, k), s0)) return false;
-        book_broken_bond(i, k, s0);
-        return true;
-      });
-      row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc, cache);
+  struct Row {
+    PairBBPD &p;
+    int i;
+    double *acc;
+    BBPD::CoefCache *cache;
+    const double *s0row;    // MULTI: the critical stretches of atom i's type with each type
+    bool sum_and_check(double *fi) { return p.row_force<EVFLAG, FRACTURE, MULTI>(i, fi, s0row, acc, cache); }
+    bool breaks(int k)
+    {
+      const int j = p.bonds->partner_of(i, k);
+      const double s0 = MULTI ? s0row[p.atom->type[j]] : p.s0_single;
+      if (!p.past_critical(i, j, p.bonds->xi0_of(i, k), s0)) return false;
+      p.book_broken_bond(i, k, s0);
+      return true;
     }
+    void sum(double *fi) { p.row_force<EVFLAG, 0, MULTI>(i, fi, s0row, acc, cache); }
+    void finish(double *) {}
+  };
+  const int *type = atom->type;
+  eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
+    return Row{*this, i, acc, cache, MULTI ? critical_stretch[type[i]] : nullptr};
   });
 }
 

@@ -113,6 +113,9 @@ class PairBBPD : public Pair {
   // row(i, fi, acc, cache) sums the force density of atom i into fi (and, with EVFLAG, its
   // energy and virial into acc); defined in pair_bbpd_rows.h
   template <int EVFLAG, class Row> void for_each_row(Row row);
+  // the one row driver of the bond forces and breaking over for_each_row: row_of(i, acc, cache)
+  // gives the style's view of row i (bond model, breaking rule, state); pair_bbpd_rows.h
+  template <int EVFLAG, class RowOf> void eval_rows(RowOf row_of);
   [[noreturn]] void nonfinite_error(int i);
   void add_row_force(int i, const double *fi, int &bad);
   void finish_eval(int bad, bool evflag_on, const double *totals);

@@ -87,9 +87,6 @@ void PairBBPDAlpha::eval_bonds()
 
 template <int EVFLAG, class Rule> void PairBBPDAlpha::eval_silling_askari()
 {
-  const double *xx = atom->x[0];
-  const int *type = atom->type;
-  double *smin = atom->s0;    // smallest bond stretch at the previous step, ghosts included
   const int nlocal = atom->nlocal;
   if (nlocal > nmax_smin) {
     nmax_smin = atom->nmax;
@@ -105,7 +102,6 @@ template <int EVFLAG, class Rule> void PairBBPDAlpha::eval_silling_askari()
   // a second evaluation of the last step (setup of a new run, read_restart): no breaking,
   // no new smallest stretches, and the bonds that broke then act again
   const bool replay = update->setupflag && update->ntimestep == alpha_state->last_step;
-  double **fbroken = alpha_state->fbroken;
   // in a periodic box the two ends of a bond see each other through images that round
   // differently: a row with a bond within 'margin' (stretch) of breaking is decided again
   // from breaking_length(), which both ends compute alike. The margin bounds the stretch
@@ -114,87 +110,112 @@ template <int EVFLAG, class Rule> void PairBBPDAlpha::eval_silling_askari()
   const bool canonical = bonds->raw_positions();
   const double margin = canonical && break_margin > 0.0
       ? STRETCH_MARGIN_FACTOR * break_margin / bonds->min_reference_length() : 0.0;
-  for_each_row<EVFLAG>([&](int i, double *fi, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
-    const int itype = type[i];
-    const double *xi = atom->x[i];
-    const double smin_i = smin[i];
-    // stretch of bond k at current length r, as the rule reads it
-    auto stretch_at = [&](int k, double r) {
-      const double xi0 = bonds->xi0_of(i, k);
-      return Rule::stretch(Rule::settled_elongation(BondModel::elongation(r, xi0)), xi0);
-    };
-    auto stretch_of = [&](int k) {
-      const double *xj = atom->x[bonds->partner_of(i, k)];
-      const double dx = xj[0] - xi[0], dy = xj[1] - xi[1], dz = xj[2] - xi[2];
-      return stretch_at(k, std::sqrt(dx * dx + dy * dy + dz * dz));
-    };
-    // the stretch that decides breaking: the same at both ends of the bond
-    auto breaking_stretch = [&](int k) {
-      return canonical ? stretch_at(k, breaking_length(i, bonds->partner_of(i, k))) : stretch_of(k);
-    };
-    auto s0_of = [&](int k) {
-      const int j = bonds->partner_of(i, k);
-      if (!multi) return Rule::critical_stretch(s00_one, alpha_one, smin_i, smin[j]);
-      return Rule::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
-                                    smin_i, smin[j]);
-    };
-    bool done = false;    // fi (and the tallies) summed by the fused kernel
-    if (replay) {
-      smin_new[i] = smin_i;
-    } else {
+  // the row of atom i: its critical stretches from the smallest stretches of the last step;
+  // snew, its smallest stretch now; fb, the forces of the bonds it breaks in this step
+  struct Row {
+    PairBBPDAlpha &p;
+    int i;
+    double *acc;
+    BBPD::CoefCache *cache;
+    bool replay, multi, canonical;
+    double s00_one, alpha_one, margin;
+    double fb[3];
+    bool sum_and_check(double *fi)
+    {
+      if (replay) {
+        p.smin_new[i] = p.atom->s0[i];
+        p.row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc, cache);
+        return false;
+      }
       double snew = std::numeric_limits<double>::max();
-      bool broken = false;
-      const int n = bonds->nbond[i];
+      bool broken = false, summed = false;
+      const int n = p.bonds->nbond[i];
+      const double *xx = p.atom->x[0], *smin = p.atom->s0;
       if (!multi) {
         // the row in whatever layout the storage keeps it (FixBBPDBonds::visit_row)
-        broken = bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
+        broken = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
           auto portable = [&] {
             return BBPD::row_stretch_portable<BondModel, Rule>(xx, i, bj, vals, n, smin, s00_one,
                                                                alpha_one, margin, &snew);
           };
           // force and stretch in one pass
-          return BBPD::on_path(simd_path, [&](auto path) {
+          return BBPD::on_path(p.simd_path, [&](auto path) {
             double ax[LANES], ay[LANES], az[LANES];
             RowTally tally;
             const bool past = decltype(path)::template row_force_stretch<EVFLAG, BondModel, Rule>(
                 xx, i, bj, vals, n, smin, s00_one, alpha_one, margin, &snew, ax, ay, az, &tally);
             if (!past) {
               lane_sum(ax, ay, az, fi);
-              if (EVFLAG) tally_lanes(i, tally, acc);
-              done = true;
+              if (EVFLAG) p.tally_lanes(i, tally, acc);
+              summed = true;
             }
             return past;
           }, portable);
         });
       } else {
-        for (int k = bonds->bond_start[i]; k < bonds->bond_start[i] + n; k++) {
+        for (int k = p.bonds->bond_start[i]; k < p.bonds->bond_start[i] + n; k++) {
           const double s = stretch_of(k);
           snew = std::min(snew, s);
           broken |= Rule::past_critical(s, s0_of(k), margin);
         }
       }
-      smin_new[i] = n > 0 ? snew : NO_BOND_STRETCH;
-      double fb[3] = {0.0, 0.0, 0.0};
-      if (broken)
-        bonds->remove_bonds_if(i, [&](int k) {
-          if (!Rule::past_critical(breaking_stretch(k), s0_of(k), 0.0))
-            return false;
-          // a rule may apply the force of a bond in the step it breaks (its energy then is what
-          // it carries away), or drop it at once, at its critical stretch
-          if (Rule::FORCE_IN_BREAKING_STEP)
-            bonds->ebroken[i] += broken_bond_force<EVFLAG>(i, k, fb, acc) * atom->vfrac[i];
-          else
-            book_broken_bond(i, k, s0_of(k));
-          return true;
-        });
-      if (Rule::FORCE_IN_BREAKING_STEP)
-        for (int m = 0; m < 3; m++) fbroken[i][m] = fb[m];
+      p.smin_new[i] = n > 0 ? snew : NO_BOND_STRETCH;
+      if (!broken && !summed) p.row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc, cache);
+      return broken;
     }
-    if (!done) row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc, cache);
-    if (Rule::FORCE_IN_BREAKING_STEP)
-      for (int m = 0; m < 3; m++) fi[m] += fbroken[i][m];
+    bool breaks(int k)
+    {
+      if (!Rule::past_critical(breaking_stretch(k), s0_of(k), 0.0)) return false;
+      // a rule may apply the force of a bond in the step it breaks (its energy then is what it
+      // carries away), or drop it at once, at its critical stretch
+      if (Rule::FORCE_IN_BREAKING_STEP)
+        p.bonds->ebroken[i] += p.broken_bond_force<EVFLAG>(i, k, fb, acc) * p.atom->vfrac[i];
+      else
+        p.book_broken_bond(i, k, s0_of(k));
+      return true;
+    }
+    void sum(double *fi) { p.row_force<EVFLAG, 0, 0>(i, fi, nullptr, acc, cache); }
+    void finish(double *fi)
+    {
+      if (!Rule::FORCE_IN_BREAKING_STEP) return;
+      double *fbroken = p.alpha_state->fbroken[i];
+      if (!replay)
+        for (int m = 0; m < 3; m++) fbroken[m] = fb[m];
+      for (int m = 0; m < 3; m++) fi[m] += fbroken[m];
+    }
+    // stretch of bond k at current length r, as the rule reads it
+    double stretch_at(int k, double r) const
+    {
+      const double xi0 = p.bonds->xi0_of(i, k);
+      return Rule::stretch(Rule::settled_elongation(BondModel::elongation(r, xi0)), xi0);
+    }
+    double stretch_of(int k) const
+    {
+      const double *xi = p.atom->x[i], *xj = p.atom->x[p.bonds->partner_of(i, k)];
+      const double dx = xj[0] - xi[0], dy = xj[1] - xi[1], dz = xj[2] - xi[2];
+      return stretch_at(k, std::sqrt(dx * dx + dy * dy + dz * dz));
+    }
+    // the stretch that decides breaking: the same at both ends of the bond
+    double breaking_stretch(int k) const
+    {
+      return canonical ? stretch_at(k, p.breaking_length(i, p.bonds->partner_of(i, k))) : stretch_of(k);
+    }
+    double s0_of(int k) const
+    {
+      const int j = p.bonds->partner_of(i, k);
+      const double *smin = p.atom->s0;
+      if (!multi) return Rule::critical_stretch(s00_one, alpha_one, smin[i], smin[j]);
+      const int itype = p.atom->type[i], jtype = p.atom->type[j];
+      return Rule::critical_stretch(p.critical_stretch[itype][jtype], p.alpha[itype][jtype],
+                                    smin[i], smin[j]);
+    }
+  };
+  eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
+    return Row{*this, i, acc, cache, replay, multi, canonical, s00_one, alpha_one, margin,
+               {0.0, 0.0, 0.0}};
   });
   // the new smin takes effect at the next step, once sent to the ghosts
+  double *smin = atom->s0;    // smallest bond stretch at the previous step, ghosts included
   for (int i = 0; i < nlocal; i++) smin[i] = smin_new[i];
   alpha_state->last_step = update->ntimestep;
 }

@@ -304,6 +304,157 @@ void PairBBPDLPS::add_bond_force(int i, int j, double xi0, double wv, double *f,
   }
 }
 
+/* the row of local atom i in the bond loop of eval_lps: the LPS force state of its bonds
+   (theta and m of both ends), with peri/lps's Silling-Askari breaking (a bond acts in the step
+   it breaks) and its tallies */
+template <int EVFLAG> struct PairBBPDLPS::Row {
+  PairBBPDLPS &p;
+  int i;
+  double *acc;
+  BBPD::CoefCache *cache;
+  bool replay, canonical, multi;    // as in eval_lps
+  double s00_one, alpha_one;
+  LPS::Moduli mod;                  // i's type
+  LPS::AtomState si;
+  double theta_i, theta_third_i, smin_i;
+  const double *r_row;    // the bond lengths of the dilatation pass (the row as it was then)
+  double tally[7];        // the row's energy and virial
+  double fb[3];           // the forces of the bonds it breaks
+  int nlost;              // how many bonds it breaks
+
+  Row(PairBBPDLPS &pair, int atom_i, double *acc_, BBPD::CoefCache *cache_, bool replay_,
+      bool canonical_, bool multi_, double s00, double alpha) :
+      p(pair), i(atom_i), acc(acc_), cache(cache_), replay(replay_), canonical(canonical_),
+      multi(multi_), s00_one(s00), alpha_one(alpha), mod(p.moduli_of_type(p.atom->type[i])),
+      si(p.atom_states[i]), theta_i(p.lps_state->dilatation[i]),
+      theta_third_i(LPS::third(theta_i, p.dimension)), smin_i(p.atom->s0[i]),
+      r_row(p.bond_length + p.bonds->bond_start[i]), fb{0.0, 0.0, 0.0}, nlost(0)
+  {
+  }
+  double s0_with(int j) const
+  {
+    const double *smin = p.atom->s0;
+    if (!multi) return StretchRule::critical_stretch(s00_one, alpha_one, smin_i, smin[j]);
+    const int itype = p.atom->type[i], jtype = p.atom->type[j];
+    return StretchRule::critical_stretch(p.critical_stretch[itype][jtype], p.alpha[itype][jtype],
+                                         smin_i, smin[j]);
+  }
+  // the row's force into f and its tallies into tally, in row order; with CHECK also its
+  // smallest stretch and whether a bond is past its critical stretch; with CACHED the bond
+  // lengths of the dilatation pass
+  template <bool CHECK, bool CACHED> bool row_sum(double *f, double &snew)
+  {
+    const double *xx = p.atom->x[0];
+    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
+    const LPS::AtomState *states = p.atom_states;
+    const int n = p.bonds->nbond[i];
+    return p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
+      double ax = 0.0, ay = 0.0, az = 0.0;
+      double eng = 0.0, v0 = 0.0, v1 = 0.0, v2 = 0.0, v3 = 0.0, v4 = 0.0, v5 = 0.0;
+      bool past = false;
+      for (int k = 0; k < n; k++) {
+        const int j = BBPD::partner_index(bj, i, k);
+        const double xi0 = vals.xi0_at(k, j), wv = vals.coef_at(k, j);
+        const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
+        const double r = CACHED ? r_row[k] : std::sqrt(dx * dx + dy * dy + dz * dz);
+        const double e = LPS::elongation(r, xi0);
+        const double t = LPS::force_state(mod, wv, xi0, e, si, states[j]);
+        const double fpl = r > 0.0 ? t / r : 0.0;
+        ax += fpl * dx;
+        ay += fpl * dy;
+        az += fpl * dz;
+        if (EVFLAG) {    // sums of the bonds' terms, the factors applied once per row
+          const double ed = LPS::deviatoric_extension(e, xi0, theta_third_i);
+          eng += wv * (ed * ed);
+          v0 += fpl * dx * dx;
+          v1 += fpl * dy * dy;
+          v2 += fpl * dz * dz;
+          v3 += fpl * dx * dy;
+          v4 += fpl * dx * dz;
+          v5 += fpl * dy * dz;
+        }
+        if (CHECK) {
+          const double s = canonical
+              ? StretchRule::stretch(LPS::elongation(p.breaking_length(i, j), xi0), xi0)
+              : StretchRule::stretch(e, xi0);
+          snew = std::min(snew, s);
+          past |= StretchRule::past_critical(s, s0_with(j), 0.0);
+        }
+      }
+      f[0] = ax;
+      f[1] = ay;
+      f[2] = az;
+      // atom i's deviatoric energy (bbpd/lps: half of it, as peri/lps) and half the virial
+      tally[0] = p.deviatoric_share * LPS::deviatoric_energy_of(mod, si.inv_m, eng);
+      const double v[6] = {v0, v1, v2, v3, v4, v5};
+      for (int c = 0; c < 6; c++) tally[1 + c] = -BondModel::virial_share(1.0, v[c], 1.0);
+      return past;
+    });
+  }
+  bool sum_and_check(double *fi)
+  {
+    double snew = std::numeric_limits<double>::max();
+    if (replay) {
+      p.smin_new[i] = smin_i;
+      row_sum<false, true>(fi, snew);
+      return false;
+    }
+    const bool had_bonds = p.bonds->nbond[i] > 0;
+    const bool broken = row_sum<true, true>(fi, snew);
+    p.smin_new[i] = had_bonds ? snew : BBPD::PMB::NO_BOND_STRETCH;
+    return broken;
+  }
+  // a bond past its critical stretch breaks, adding its force (fbroken, applied again by a
+  // second evaluation of this step) and taking its energy with it
+  bool breaks(int k)
+  {
+    const double *xx = p.atom->x[0];
+    const int j = p.bonds->partner_of(i, k);
+    const double xi0 = p.bonds->xi0_of(i, k);
+    const double r = canonical ? p.breaking_length(i, j) : [&] {
+      const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
+                   dz = xx[3 * j + 2] - xx[3 * i + 2];
+      return std::sqrt(dx * dx + dy * dy + dz * dz);
+    }();
+    if (!StretchRule::past_critical(StretchRule::stretch(LPS::elongation(r, xi0), xi0), s0_with(j), 0.0))
+      return false;
+    double bond_tally[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    p.add_bond_force<1>(i, j, xi0, p.bonds->coef_of(i, k, xi0), fb, bond_tally);
+    // the energy the bond held at atom i goes with it (term 3 of compute bbpd/energy)
+    p.bonds->ebroken[i] += bond_tally[0] * p.atom->vfrac[i];
+    if (EVFLAG) {
+      for (int c = 0; c < 7; c++) acc[c] += bond_tally[c];
+      if (p.eflag_atom) p.eatom[i] += bond_tally[0];
+      for (int c = 0; c < 6 && p.vflag_atom; c++) p.vatom[i][c] += bond_tally[1 + c];
+    }
+    nlost++;
+    return true;
+  }
+  void sum(double *fi)
+  {
+    double snew = 0.0;    // not read
+    row_sum<false, false>(fi, snew);    // the row has shifted
+  }
+  void finish(double *fi)
+  {
+    double *fbroken = p.alpha_state->fbroken[i];
+    if (!replay) {
+      for (int c = 0; c < 3; c++) fbroken[c] = fb[c];
+      p.lps_state->lost[i] = nlost;
+    }
+    for (int c = 0; c < 3; c++) fi[c] += fbroken[c];
+    if (EVFLAG) {
+      tally[0] += LPS::dilatation_energy(mod.bulk, theta_i);
+      acc[0] += tally[0];
+      if (p.eflag_atom) p.eatom[i] += tally[0];
+      for (int c = 0; c < 6; c++) {
+        acc[1 + c] += tally[1 + c];
+        if (p.vflag_atom) p.vatom[i][c] += tally[1 + c];
+      }
+    }
+  }
+};
+
 template <int EVFLAG> void PairBBPDLPS::eval_lps()
 {
   const int nlocal = atom->nlocal;
@@ -347,10 +498,6 @@ template <int EVFLAG> void PairBBPDLPS::eval_lps()
   comm->forward_comm(this);
 
   // 2. the bonds: forces, and breaking (peri/lps: a bond acts in the step it breaks)
-  const double *xx = atom->x[0];
-  const int *type = atom->type;
-  double *smin = atom->s0;    // smallest bond stretch at the previous step, ghosts included
-  double **fbroken = alpha_state->fbroken;
   const bool canonical = bonds->raw_positions();    // periodic: both ends decide alike
   // one s00 and alpha for every type pair: no per-bond lookups
   bool multi = false;
@@ -358,118 +505,11 @@ template <int EVFLAG> void PairBBPDLPS::eval_lps()
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = 1; j <= atom->ntypes; j++)
       if (critical_stretch[i][j] != s00_one || alpha[i][j] != alpha_one) multi = true;
-  for_each_row<EVFLAG>([&](int i, double *fi, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
-    const int itype = type[i];
-    const LPS::Moduli mod = moduli_of_type(itype);    // i's type
-    const LPS::AtomState si = atom_states[i];
-    const double theta_i = theta[i], theta_third_i = LPS::third(theta_i, dimension), smin_i = smin[i];
-    const double *r_row = bond_length + bonds->bond_start[i];
-    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
-    auto s0_with = [&](int j) BBPD_ROW_BODY {
-      if (!multi) return StretchRule::critical_stretch(s00_one, alpha_one, smin_i, smin[j]);
-      return StretchRule::critical_stretch(critical_stretch[itype][type[j]], alpha[itype][type[j]],
-                                           smin_i, smin[j]);
-    };
-    // the row's force into f and its tallies into tally, in row order; with CHECK also its
-    // smallest stretch and whether a bond is past its critical stretch; with CACHED the bond
-    // lengths of the dilatation pass (the row as it was then)
-    double tally[7];
-    auto row_sum = [&](auto check, auto cached, double *f, double &snew) {
-      constexpr bool CHECK = decltype(check)::value, CACHED = decltype(cached)::value;
-      const int n = bonds->nbond[i];
-      return bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
-        double ax = 0.0, ay = 0.0, az = 0.0;
-        double eng = 0.0, v0 = 0.0, v1 = 0.0, v2 = 0.0, v3 = 0.0, v4 = 0.0, v5 = 0.0;
-        bool past = false;
-        for (int k = 0; k < n; k++) {
-          const int j = BBPD::partner_index(bj, i, k);
-          const double xi0 = vals.xi0_at(k, j), wv = vals.coef_at(k, j);
-          const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
-          const double r = CACHED ? r_row[k] : std::sqrt(dx * dx + dy * dy + dz * dz);
-          const double e = LPS::elongation(r, xi0);
-          const double t = LPS::force_state(mod, wv, xi0, e, si, atom_states[j]);
-          const double fpl = r > 0.0 ? t / r : 0.0;
-          ax += fpl * dx;
-          ay += fpl * dy;
-          az += fpl * dz;
-          if (EVFLAG) {    // sums of the bonds' terms, the factors applied once per row
-            const double ed = LPS::deviatoric_extension(e, xi0, theta_third_i);
-            eng += wv * (ed * ed);
-            v0 += fpl * dx * dx;
-            v1 += fpl * dy * dy;
-            v2 += fpl * dz * dz;
-            v3 += fpl * dx * dy;
-            v4 += fpl * dx * dz;
-            v5 += fpl * dy * dz;
-          }
-          if (CHECK) {
-            const double s = canonical
-                ? StretchRule::stretch(LPS::elongation(breaking_length(i, j), xi0), xi0)
-                : StretchRule::stretch(e, xi0);
-            snew = std::min(snew, s);
-            past |= StretchRule::past_critical(s, s0_with(j), 0.0);
-          }
-        }
-        f[0] = ax;
-        f[1] = ay;
-        f[2] = az;
-        // atom i's deviatoric energy (bbpd/lps: half of it, as peri/lps) and half the virial
-        tally[0] = deviatoric_share * LPS::deviatoric_energy_of(mod, si.inv_m, eng);
-        const double v[6] = {v0, v1, v2, v3, v4, v5};
-        for (int c = 0; c < 6; c++) tally[1 + c] = -BondModel::virial_share(1.0, v[c], 1.0);
-        return past;
-      });
-    };
-    double snew = std::numeric_limits<double>::max();
-    if (replay) {
-      smin_new[i] = smin_i;
-      row_sum(std::false_type(), std::true_type(), fi, snew);
-    } else {
-      const bool had_bonds = bonds->nbond[i] > 0;
-      const bool broken = row_sum(std::true_type(), std::true_type(), fi, snew);
-      smin_new[i] = had_bonds ? snew : BBPD::PMB::NO_BOND_STRETCH;
-      double fb[3] = {0.0, 0.0, 0.0};
-      int nlost = 0;
-      if (broken) {
-        // remove the bonds past their critical stretch, in row order, each adding its force
-        // (fbroken, applied again by a second evaluation of this step), then sum the rest
-        nlost = bonds->remove_bonds_if(i, [&](int k) {
-          const int j = bonds->partner_of(i, k);
-          const double xi0 = bonds->xi0_of(i, k);
-          const double r = canonical ? breaking_length(i, j) : [&] {
-            const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
-            return std::sqrt(dx * dx + dy * dy + dz * dz);
-          }();
-          if (!StretchRule::past_critical(StretchRule::stretch(LPS::elongation(r, xi0), xi0), s0_with(j), 0.0))
-            return false;
-          double bond_tally[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-          add_bond_force<1>(i, j, xi0, bonds->coef_of(i, k, xi0), fb, bond_tally);
-          // the energy the bond held at atom i goes with it (term 3 of compute bbpd/energy)
-          bonds->ebroken[i] += bond_tally[0] * atom->vfrac[i];
-          if (EVFLAG) {
-            for (int c = 0; c < 7; c++) acc[c] += bond_tally[c];
-            if (eflag_atom) eatom[i] += bond_tally[0];
-            for (int c = 0; c < 6 && vflag_atom; c++) vatom[i][c] += bond_tally[1 + c];
-          }
-          return true;
-        });
-        row_sum(std::false_type(), std::false_type(), fi, snew);    // the row has shifted
-      }
-      for (int c = 0; c < 3; c++) fbroken[i][c] = fb[c];
-      lost[i] = nlost;
-    }
-    for (int c = 0; c < 3; c++) fi[c] += fbroken[i][c];
-    if (EVFLAG) {
-      tally[0] += LPS::dilatation_energy(mod.bulk, theta_i);
-      acc[0] += tally[0];
-      if (eflag_atom) eatom[i] += tally[0];
-      for (int c = 0; c < 6; c++) {
-        acc[1 + c] += tally[1 + c];
-        if (vflag_atom) vatom[i][c] += tally[1 + c];
-      }
-    }
+  eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
+    return Row<EVFLAG>(*this, i, acc, cache, replay, canonical, multi, s00_one, alpha_one);
   });
   // the new smin takes effect at the next step, once sent to the ghosts
+  double *smin = atom->s0;    // smallest bond stretch at the previous step, ghosts included
   for (int i = 0; i < nlocal; i++) smin[i] = smin_new[i];
   alpha_state->last_step = update->ntimestep;
 }

@@ -68,6 +68,8 @@ class PairBBPDLPS : public PairBBPDPMB {
   void sum_weighted_volumes();
   double dilatation_of(int i, double *r);
   template <int EVFLAG> void eval_lps();
+  // the row of an atom in eval_lps: its force state and breaking (pair_bbpd_lps.cpp)
+  template <int EVFLAG> struct Row;
   template <int EVFLAG>
   void add_bond_force(int i, int j, double xi0, double wv, double *f, double *acc);
 };

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
-   BBPD plugin: PairBBPD::for_each_row, the threaded loop over the rows of the
-   local atoms that every bond loop of the pair styles runs in (pair_bbpd.cpp,
-   pair_bbpd_alpha.cpp include it). Every atom sums only its own bonds, so the
-   threads share nothing but the energy/virial totals, and the forces are the
-   same bits for any number of threads.
+   BBPD plugin: PairBBPD::eval_rows, the one row driver of the pair styles' bond
+   forces and breaking, and for_each_row, the threaded loop over the rows of the
+   local atoms it runs in (pair_bbpd.cpp, pair_bbpd_alpha.cpp, pair_bbpd_lps.cpp
+   include it). Every atom sums only its own bonds, so the threads share nothing
+   but the energy/virial totals, and the forces are the same bits for any number
+   of threads.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_BBPD_ROWS_H
@@ -14,6 +15,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "fix_bbpd_bonds.h"
 
 // a row body passed to for_each_row is inlined into the loop, as a loop body written there is
 // (as a call per row, the bbpd/pmb cylinder ran 4 % more instructions under callgrind)
@@ -49,6 +51,29 @@ template <int EVFLAG, class Row> void PairBBPD::for_each_row(Row row)
     if (EVFLAG) add_thread_totals(totals, acc);
   }
   finish_eval(bad, EVFLAG, totals);
+}
+
+/* The bond forces and breaking of one step, for every style. row_of(i, acc, cache) returns the
+   row of atom i as its style sees it (its bond model, breaking rule and per-atom state: a small
+   value type of the style's eval function), which provides
+     bool sum_and_check(fi): sum the row's force density into fi (its tallies into acc); true if
+         a bond of the row may be past breaking, and fi is then to be summed again;
+     bool breaks(k): does bond k break now? (and book what it carries away);
+     void sum(fi): sum the row again, over the bonds left;
+     void finish(fi): what the row adds after its bonds (forces of broken bonds, state).
+   A style without breaking returns false from sum_and_check at compile time, and the removal
+   is compiled out. */
+template <int EVFLAG, class RowOf> void PairBBPD::eval_rows(RowOf row_of)
+{
+  for_each_row<EVFLAG>([&](int i, double *fi, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
+    auto row = row_of(i, acc, cache);
+    if (row.sum_and_check(fi)) {
+      // remove the bonds that break (irreversibly, in row order), then sum the row again
+      bonds->remove_bonds_if(i, [&](int k) BBPD_ROW_BODY { return row.breaks(k); });
+      row.sum(fi);
+    }
+    row.finish(fi);
+  });
 }
 
 }    // namespace LAMMPS_NS

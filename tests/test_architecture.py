@@ -129,9 +129,10 @@ def test_bond_arithmetic_is_found():
 # The model headers define them; bbpd_plugin_model.h lists those the plugin is compiled with,
 # and a style picks its own where it calls a loop (eval_bonds, init_rules).
 MODEL_HEADERS = ("bbpd_bond_model.h", "bbpd_pmb_rules.h", "bbpd_bond_weighting.h")
-# whole files that are loops, and the loop functions of the pair styles. bbpd/lps's eval_lps
-# (pair_bbpd_lps.cpp) is not among them: the LPS family, with its dilatation pass, still has a
-# loop of its own (doc/architecture.rst, "What is not on the row driver yet").
+# whole files that are loops (pair_bbpd_rows.h: the row driver eval_rows of every style), and
+# the loop functions of the pair styles. bbpd/lps's rows (PairBBPDLPS::Row, pair_bbpd_lps.cpp)
+# are not among them: they are the LPS model itself, whose force state is not a bond model yet
+# (doc/architecture.rst, "The row driver").
 LOOP_FILES = ("bbpd_row.h", "bbpd_stretch_row.h", "bbpd_row_path_kernels.h", "bbpd_row_avx2.cpp",
               "bbpd_row_avx512.cpp", "pair_bbpd_rows.h")
 LOOP_FUNCTIONS = {"pair_bbpd.cpp": ("eval", "row_force"),
@@ -212,6 +213,35 @@ def test_a_loop_naming_a_model_is_found():
     assert models_named("  if (law.lps) coef = omega;\n", model_names()) == ["lps"]
     assert models_named("  const double e = Rule::settled_elongation(Model::elongation(r, xi0));",
                         model_names()) == []
+
+
+def row_loops_outside_the_driver(files):
+    """{file: n}: calls of the threaded row loop for_each_row outside the row driver
+    (PairBBPD::eval_rows), in the code of files {name: text}"""
+    found = {}
+    for name, text in files.items():
+        code = without_comments(text)
+        for body in function_bodies(code, "eval_rows"):
+            code = code.replace(body, "")
+        calls = len(re.findall(r"\bfor_each_row\s*<", code))    # its definition has no <...>
+        if calls:
+            found[name] = calls
+    return found
+
+
+def test_every_style_runs_its_rows_through_the_driver():
+    files = {f.name: f.read_text() for f in sorted(SRC.glob("*.cpp")) + sorted(SRC.glob("*.h"))}
+    assert "eval_rows" in without_comments(files["pair_bbpd_rows.h"])
+    for name in ("pair_bbpd.cpp", "pair_bbpd_alpha.cpp", "pair_bbpd_lps.cpp"):
+        assert re.search(r"\beval_rows\s*<", without_comments(files[name])), name
+    assert row_loops_outside_the_driver(files) == {}
+
+
+def test_a_row_loop_outside_the_driver_is_found():
+    """negative control: the LPS loop as it was, a for_each_row of its own"""
+    before = ("template <int EVFLAG> void PairBBPDLPS::eval_lps()\n{\n"
+              "  for_each_row<EVFLAG>([&](int i, double *fi, double *acc, CoefCache *c) {});\n}\n")
+    assert row_loops_outside_the_driver({"pair_bbpd_lps.cpp": before}) == {"pair_bbpd_lps.cpp": 1}
 
 
 def test_architecture_doc_shows_the_tested_toy_model():
