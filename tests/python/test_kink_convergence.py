@@ -41,3 +41,27 @@ def test_each_kernel_has_its_own_sentence_and_the_gaussians_comes_first():
 def test_time_step_rule_is_the_kink_tests():
     for m, factor in kc.kinkbench.DTFACTOR.items():
         assert float(kc.case_vars(m, 10)["dtfactor"]) == factor
+
+
+def test_each_mix_is_a_sequence_of_its_own():
+    rows = [row(10, 10, -62.0, -63.8), row(15, 10, -63.0, -64.0),
+            dict(row(10, 20, -30.0, -31.0), psi=45.0, alpha=22.5),
+            dict(row(15, 20, -30.5, -31.2), psi=45.0, alpha=22.5)]
+    text = kc.verdict(rows)
+    # the pure Mode II sequence keeps only its own rows, and comes first
+    assert "Gaussian, at 2 horizons, R/delta = 10: -62.0° at m = 10, -63.0° at m = 15;" in text
+    mixed = "Gaussian, psi = 45°, alpha = 22.5°, at 2 horizons, R/delta = 20: -30.0° at m = 10, -30.5° at m = 15;"
+    assert mixed in text and text.index("Gaussian, at 2") < text.index(mixed)
+    assert "moves it by -0.5°: settled within 1°" in text
+    full = [dict(r, dx_mm=5.0 / r["m"], atoms=1, steps=1, K_init_over_Kc=0.5,
+                 extension_over_delta=5.0, loop_s=1.0, nprocs=2) for r in rows]
+    assert "| gaussian | 45 | 22.5 | 10 | 20 |" in kc.table(full)
+    assert kc.case_folder(10, 20, psi=45.0, alpha=22.5) == "m10-R20-psi45-alpha22.5"
+    assert kc.case_folder(10, 20) == "m10-R20"    # the pure Mode II runs keep their folders
+
+
+def test_a_larger_disk_with_two_values_of_m_has_its_own_sentence():
+    rows = [row(5, 20, -66.0, -71.7), row(10, 20, -62.1, -64.7)]
+    text = kc.verdict(rows)
+    assert "R/delta = 20: -66.0° at m = 5, -62.1° at m = 10" in text
+    assert "moves it by +3.9°: not settled" in text

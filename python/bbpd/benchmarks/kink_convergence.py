@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The kink test's convergence: the pure Mode II kink angle against m and R/delta.
+"""The kink test's convergence: the kink angle against m and R/delta, pure Mode II by default.
 
 A pure-K problem has no length scale, so the angle at which the crack of
 examples/kink-mixed-mode/in.kink leaves the tip is a property of the model at a given m =
@@ -10,7 +10,9 @@ Mode II (psi = 90 deg, crack along the rows) at delta = 5 mm for
   m = 5, 10, 15, 20 at R/delta = 10 (R = 50 mm, the kink test's disk), and
   m = 5, 10 at R/delta = 20 (R = 100 mm),
 
-measured as bbpd.benchmarks.kink measures (angle at 2 and 4 horizons from the tip). The time
+measured as bbpd.benchmarks.kink measures (angle at 2 and 4 horizons from the tip); --psi and
+--alpha run the same cases at another mode mix and crack direction (the kink test's
+MIXES_DEG and ALPHAS_DEG), each (kernel, psi, alpha) a sequence of its own. The time
 step is DT_PER_M * m * dx / c_d, the kink test's rule (0.8 at m = 5, 1.6 at m = 10): the
 stable step of a bond family scales with the horizon, not with dx.
 
@@ -20,6 +22,9 @@ Command line (from the repository root):
   # another kernel's cases, added to the same CSV:
   tools/python -m bbpd.benchmarks.kink_convergence --work /tmp/kink-conv --kernel constant \
       --cases 10:10 15:10 --append --csv examples/kink-mixed-mode/results/kink_convergence.csv
+  # another mix and crack direction:
+  tools/python -m bbpd.benchmarks.kink_convergence --work /tmp/kink-conv --psi 45 --alpha 22.5 \
+      --cases 10:20 --nprocs 2 --append --csv examples/kink-mixed-mode/results/kink_convergence.csv
 """
 
 import argparse
@@ -47,19 +52,26 @@ COLUMNS = ("kernel", "psi", "alpha", "m", "R_over_delta", "dx_mm", "atoms", "ste
            "hoop_strain", "energy", "loop_s", "nprocs")
 
 
-def case_vars(m, r_over_delta, kernel=KERNEL):
+def case_vars(m, r_over_delta, kernel=KERNEL, psi=PSI, alpha=ALPHA):
     dx = DELTA / m
-    return {"kernel": kernel, "psi": repr(PSI), "alpha": repr(ALPHA), "dx": repr(dx),
+    return {"kernel": kernel, "psi": repr(float(psi)), "alpha": repr(float(alpha)), "dx": repr(dx),
             "m": repr(float(m)), "R": repr(r_over_delta * DELTA),
             "dtfactor": repr(DT_PER_M * m)}
 
 
-def run_case(workdir, m, r_over_delta, nprocs=1, reuse=False, kernel=KERNEL):
-    wd = Path(workdir) / (f"m{m:g}-R{r_over_delta:g}" if kernel == KERNEL else
-                          f"{kernel}-m{m:g}-R{r_over_delta:g}")
+def case_folder(m, r_over_delta, kernel=KERNEL, psi=PSI, alpha=ALPHA):
+    """the run's folder name: the pure Mode II Gaussian cases keep their short names"""
+    name = f"m{m:g}-R{r_over_delta:g}" if kernel == KERNEL else f"{kernel}-m{m:g}-R{r_over_delta:g}"
+    if (float(psi), float(alpha)) != (PSI, ALPHA):
+        name += f"-psi{float(psi):g}-alpha{float(alpha):g}"
+    return name
+
+
+def run_case(workdir, m, r_over_delta, nprocs=1, reuse=False, kernel=KERNEL, psi=PSI, alpha=ALPHA):
+    wd = Path(workdir) / case_folder(m, r_over_delta, kernel, psi, alpha)
     if not (reuse and (wd / "final.dump").is_file()):
         run_lammps(str(kinkbench.EXAMPLE), wd, nprocs=nprocs,
-                   vars=case_vars(m, r_over_delta, kernel),
+                   vars=case_vars(m, r_over_delta, kernel, psi, alpha),
                    timeout=4 * 3600)
     r = kinkbench.analyse(wd)
     row = {"kernel": r["kernel"], "psi": r["psi"], "alpha": r["alpha"], "m": float(m),
@@ -76,14 +88,26 @@ def _f(v, spec=".1f"):
     return "-" if v is None else format(v, spec)
 
 
+def mix_of(r):
+    """(psi, alpha) of a row (the rows of pure Mode II along the rows may omit them)"""
+    return (float(r.get("psi", PSI)), float(r.get("alpha", ALPHA)))
+
+
+def _order(r):
+    psi, alpha = mix_of(r)
+    return (r["kernel"] != KERNEL, r["kernel"], -psi, alpha, r["R_over_delta"], r["m"])
+
+
 def table(rows, command=None):
-    head = ("| kernel | m | R/delta | dx (mm) | atoms | steps | K at 1st break / K_c | extension (delta) | "
-            "angle at 2 delta | angle at 4 delta | hoop stress | hoop strain | max G | loop (s) | "
-            "ranks |")
-    lines = [head, "|" + "---|" * 15]
-    for r in sorted(rows, key=lambda r: (r["kernel"] != KERNEL, r["kernel"], r["R_over_delta"], r["m"])):
+    head = ("| kernel | psi | alpha | m | R/delta | dx (mm) | atoms | steps | K at 1st break / K_c | "
+            "extension (delta) | angle at 2 delta | angle at 4 delta | hoop stress | hoop strain | "
+            "max G | loop (s) | ranks |")
+    lines = [head, "|" + "---|" * 17]
+    for r in sorted(rows, key=_order):
+        psi, alpha = mix_of(r)
         lines.append("| " + " | ".join([
-            r["kernel"], f"{r['m']:g}", f"{r['R_over_delta']:g}", f"{r['dx_mm']:.3g}", _f(r["atoms"], ".0f"),
+            r["kernel"], f"{psi:g}", f"{alpha:g}", f"{r['m']:g}", f"{r['R_over_delta']:g}",
+            f"{r['dx_mm']:.3g}", _f(r["atoms"], ".0f"),
             _f(r["steps"], ".0f"), _f(r["K_init_over_Kc"], ".3f"),
             _f(r["extension_over_delta"], ".1f"), _f(r["angle_2d"]), _f(r["angle_4d"]),
             _f(r["hoop_stress"]), _f(r["hoop_strain"]), _f(r["energy"]), _f(r["loop_s"], ".0f"),
@@ -99,41 +123,47 @@ NAMES = {"hoop_stress": "max. hoop stress", "hoop_strain": "max. hoop strain",
 
 
 def verdict(rows):
-    """The sentences on the sequence in m at the kink test's R/delta, and on R/delta: which
-    criterion the finest m lies nearest, and whether the last refinement settled it; the
-    Gaussian kernel's first, then each other kernel's."""
-    kernels = sorted({r["kernel"] for r in rows}, key=lambda k: (k != KERNEL, k))
-    parts = [_kernel_verdict([r for r in rows if r["kernel"] == k], k) for k in kernels]
+    """The sentences on each sequence in m at a fixed R/delta (the kink test's 10 and every
+    larger disk with two values of m), and on doubling the disk: which criterion the finest m
+    lies nearest, and whether the last refinement settled it; per kernel (the Gaussian's first)
+    and per mode mix and crack direction (pure Mode II along the rows first)."""
+    groups = sorted({(r["kernel"],) + mix_of(r) for r in rows},
+                    key=lambda g: (g[0] != KERNEL, g[0], -g[1], g[2]))
+    parts = [_group_verdict([r for r in rows if (r["kernel"],) + mix_of(r) == g], *g) for g in groups]
     return " ".join(parts) if parts else "No verdict: it needs two values of m at R/delta = 10."
 
 
-def _kernel_verdict(rows, kernel):
+def _group_verdict(rows, kernel, psi=PSI, alpha=ALPHA):
+    where = kernel if (psi, alpha) == (PSI, ALPHA) else f"{kernel}, psi = {psi:g}°, alpha = {alpha:g}°"
     out = []
     for dist in ("2d", "4d"):
-        seq = sorted((r for r in rows if r["R_over_delta"] == 10.0 and r[f"angle_{dist}"]
-                      is not None), key=lambda r: r["m"])
-        if len(seq) < 2:
-            continue
-        last, prev = seq[-1], seq[-2]
-        step = last[f"angle_{dist}"] - prev[f"angle_{dist}"]
-        near = min(NAMES, key=lambda c: abs(last[f"angle_{dist}"] - last[c]))
-        s = (f"{kernel}, at {dist[0]} horizons, R/delta = 10: " + ", ".join(
-            f"{r[f'angle_{dist}']:.1f}° at m = {r['m']:g}" for r in seq)
-             + f"; the finest lies nearest the {NAMES[near]} criterion "
-             f"({last[f'angle_{dist}'] - last[near]:+.1f}° from {last[near]:.1f}°), and the last "
-             f"refinement (m = {prev['m']:g} to {last['m']:g}) moves it by {step:+.1f}°: ")
-        s += ("settled within {:g}°".format(SETTLED_DEG) if abs(step) <= SETTLED_DEG
-              else f"not settled (more than {SETTLED_DEG:g}°)")
-        out.append(s)
+        sizes = sorted({r["R_over_delta"] for r in rows if r["R_over_delta"] >= 10.0})
+        for rd in sizes:
+            seq = sorted((r for r in rows if r["R_over_delta"] == rd and r[f"angle_{dist}"]
+                          is not None), key=lambda r: r["m"])
+            if len(seq) < 2:
+                continue
+            last, prev = seq[-1], seq[-2]
+            step = last[f"angle_{dist}"] - prev[f"angle_{dist}"]
+            near = min(NAMES, key=lambda c: abs(last[f"angle_{dist}"] - last[c]))
+            s = (f"{where}, at {dist[0]} horizons, R/delta = {rd:g}: " + ", ".join(
+                f"{r[f'angle_{dist}']:.1f}° at m = {r['m']:g}" for r in seq)
+                 + f"; the finest lies nearest the {NAMES[near]} criterion "
+                 f"({last[f'angle_{dist}'] - last[near]:+.1f}° from {last[near]:.1f}°), and the last "
+                 f"refinement (m = {prev['m']:g} to {last['m']:g}) moves it by {step:+.1f}°: ")
+            s += ("settled within {:g}°".format(SETTLED_DEG) if abs(step) <= SETTLED_DEG
+                  else f"not settled (more than {SETTLED_DEG:g}°)")
+            out.append(s)
+        base = {r["m"]: r for r in rows if r["R_over_delta"] == 10.0 and r[f"angle_{dist}"] is not None}
         size = {r["m"]: r for r in rows if r["R_over_delta"] == 20.0 and r[f"angle_{dist}"]
                 is not None}
-        pairs = [(m, size[m][f"angle_{dist}"] - r[f"angle_{dist}"]) for r in seq
-                 for m in [r["m"]] if m in size]
+        pairs = [(m, size[m][f"angle_{dist}"] - base[m][f"angle_{dist}"]) for m in sorted(base)
+                 if m in size]
         if pairs:
-            out.append("doubling the disk to R/delta = 20 moves it by " + ", ".join(
+            out.append(f"at {dist[0]} horizons, doubling the disk to R/delta = 20 moves it by " + ", ".join(
                 f"{d:+.1f}° at m = {m:g}" for m, d in pairs))
     return (". ".join(s[0].upper() + s[1:] for s in out) + "." if out else
-            f"{kernel[0].upper() + kernel[1:]}: no verdict, it needs two values of m at R/delta = 10.")
+            f"{where[0].upper() + where[1:]}: no verdict, it needs two values of m at one R/delta.")
 
 
 # ---------------------------------------------------------------------------- report
@@ -177,6 +207,10 @@ def main(argv=None):
     ap.add_argument("--nprocs", type=int, default=1)
     ap.add_argument("--cases", nargs="+", help="M:R_OVER_DELTA pairs (default: all)")
     ap.add_argument("--kernel", default=KERNEL, choices=KERNELS)
+    ap.add_argument("--psi", type=float, default=PSI, choices=kinkbench.MIXES_DEG,
+                    help="mode mix arctan(K_II/K_I) in degrees (default: pure Mode II)")
+    ap.add_argument("--alpha", type=float, default=ALPHA, choices=kinkbench.ALPHAS_DEG,
+                    help="crack direction to the grid's rows in degrees")
     ap.add_argument("--reuse", action="store_true")
     ap.add_argument("--csv")
     ap.add_argument("--append", action="store_true",
@@ -187,8 +221,8 @@ def main(argv=None):
     earlier, rows, made = csvfile.continue_csv(a.csv if a.append else None, cmd)
     for m, rd in cases:
         start = time.perf_counter()
-        r = run_case(a.work, m, rd, a.nprocs, a.reuse, a.kernel)
-        print(f"m {m:g} R/delta {rd:g}: angle {_f(r['angle_2d'])} / {_f(r['angle_4d'])} deg "
+        r = run_case(a.work, m, rd, a.nprocs, a.reuse, a.kernel, a.psi, a.alpha)
+        print(f"psi {a.psi:g} alpha {a.alpha:g} m {m:g} R/delta {rd:g}: angle {_f(r['angle_2d'])} / {_f(r['angle_4d'])} deg "
               f"(2 / 4 delta), loop {_f(r['loop_s'], '.0f')} s, wall "
               f"{time.perf_counter() - start:.0f} s", flush=True)
         rows.append(r)
