@@ -10,6 +10,7 @@
 #include "pair_bbpd_rows.h"
 
 #include "bbpd_lps_kernel.h"
+#include "bbpd_lps_row.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -339,57 +340,31 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
     return StretchRule::critical_stretch(p.critical_stretch[itype][jtype], p.alpha[itype][jtype],
                                          smin_i, smin[j]);
   }
-  // the row's force into f and its tallies into tally, in row order; with CHECK also its
+  // the row's force into f and its tallies into tally (bbpd_lps_row.h); with CHECK also its
   // smallest stretch and whether a bond is past its critical stretch; with CACHED the bond
   // lengths of the dilatation pass
   template <bool CHECK, bool CACHED> bool row_sum(double *f, double &snew)
   {
     const double *xx = p.atom->x[0];
-    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
-    const LPS::AtomState *states = p.atom_states;
-    const int n = p.bonds->nbond[i];
-    return p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
-      double ax = 0.0, ay = 0.0, az = 0.0;
-      double eng = 0.0, v0 = 0.0, v1 = 0.0, v2 = 0.0, v3 = 0.0, v4 = 0.0, v5 = 0.0;
-      bool past = false;
-      for (int k = 0; k < n; k++) {
-        const int j = BBPD::partner_index(bj, i, k);
-        const double xi0 = vals.xi0_at(k, j), wv = vals.coef_at(k, j);
-        const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
-        const double r = CACHED ? r_row[k] : std::sqrt(dx * dx + dy * dy + dz * dz);
-        const double e = LPS::elongation(r, xi0);
-        const double t = LPS::force_state(mod, wv, xi0, e, si, states[j]);
-        const double fpl = r > 0.0 ? t / r : 0.0;
-        ax += fpl * dx;
-        ay += fpl * dy;
-        az += fpl * dz;
-        if (EVFLAG) {    // sums of the bonds' terms, the factors applied once per row
-          const double ed = LPS::deviatoric_extension(e, xi0, theta_third_i);
-          eng += wv * (ed * ed);
-          v0 += fpl * dx * dx;
-          v1 += fpl * dy * dy;
-          v2 += fpl * dz * dz;
-          v3 += fpl * dx * dy;
-          v4 += fpl * dx * dz;
-          v5 += fpl * dy * dz;
-        }
-        if (CHECK) {
-          const double s = canonical
-              ? StretchRule::stretch(LPS::elongation(p.breaking_length(i, j), xi0), xi0)
-              : StretchRule::stretch(e, xi0);
-          snew = std::min(snew, s);
-          past |= StretchRule::past_critical(s, s0_with(j), 0.0);
-        }
-      }
-      f[0] = ax;
-      f[1] = ay;
-      f[2] = az;
-      // atom i's deviatoric energy (bbpd/lps: half of it, as peri/lps) and half the virial
-      tally[0] = p.deviatoric_share * LPS::deviatoric_energy_of(mod, si.inv_m, eng);
-      const double v[6] = {v0, v1, v2, v3, v4, v5};
-      for (int c = 0; c < 6; c++) tally[1 + c] = -BondModel::virial_share(1.0, v[c], 1.0);
-      return past;
+    // the stretch that decides breaking: in a periodic box the one both ends compute alike
+    auto check = [&](int j, double e, double xi0) BBPD_ROW_BODY {
+      const double s = canonical
+          ? StretchRule::stretch(LPS::elongation(p.breaking_length(i, j), xi0), xi0)
+          : StretchRule::stretch(e, xi0);
+      snew = std::min(snew, s);
+      return StretchRule::past_critical(s, s0_with(j), 0.0);
+    };
+    LPS::RowSums sums;
+    const bool past = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
+      return LPS::row_sums<EVFLAG != 0, CHECK, CACHED>(xx, i, bj, vals, p.bonds->nbond[i], r_row,
+                                                      p.atom_states, mod, theta_third_i, check,
+                                                      sums);
     });
+    for (int c = 0; c < 3; c++) f[c] = sums.f[c];
+    // atom i's deviatoric energy (bbpd/lps: half of it, as peri/lps) and half the virial
+    tally[0] = p.deviatoric_share * LPS::deviatoric_energy_of(mod, si.inv_m, sums.wv_ed2);
+    for (int c = 0; c < 6; c++) tally[1 + c] = -BondModel::virial_share(1.0, sums.fdd[c], 1.0);
+    return past;
   }
   bool sum_and_check(double *fi)
   {

@@ -131,8 +131,8 @@ def test_bond_arithmetic_is_found():
 MODEL_HEADERS = ("bbpd_bond_model.h", "bbpd_pmb_rules.h", "bbpd_bond_weighting.h")
 # whole files that are loops (pair_bbpd_rows.h: the row driver eval_rows of every style), and
 # the loop functions of the pair styles. bbpd/lps's rows (PairBBPDLPS::Row, pair_bbpd_lps.cpp)
-# are not among them: they are the LPS model itself, whose force state is not a bond model yet
-# (doc/architecture.rst, "The row driver").
+# and their bond loop (bbpd_lps_row.h) are not among them: they are the LPS model itself, whose
+# force state reads both ends and is not a bond model (doc/architecture.rst, "The row driver").
 LOOP_FILES = ("bbpd_row.h", "bbpd_stretch_row.h", "bbpd_row_path_kernels.h", "bbpd_row_avx2.cpp",
               "bbpd_row_avx512.cpp", "pair_bbpd_rows.h")
 LOOP_FUNCTIONS = {"pair_bbpd.cpp": ("eval", "row_force"),
