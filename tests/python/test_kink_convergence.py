@@ -65,3 +65,17 @@ def test_a_larger_disk_with_two_values_of_m_has_its_own_sentence():
     text = kc.verdict(rows)
     assert "R/delta = 20: -66.0° at m = 5, -62.1° at m = 10" in text
     assert "moves it by +3.9°: not settled" in text
+
+
+def test_each_run_names_the_cpu_that_timed_it():
+    old = [dict(row(10, 10, -62.0, -63.8)), dict(row(15, 10, -63.0, -64.0))]
+    comments = ["made by: x", "timing: LAMMPS loop time, Intel(R) Xeon(R) Processor, AVX-512, shared machine"]
+    rows = kc.with_cpu(old, comments)
+    assert {r["cpu"] for r in rows} == {"Intel(R) Xeon(R) Processor, AVX-512"}
+    rows.append(dict(row(10, 20, -30.0, -31.0), psi=45.0, alpha=0.0, cpu="AMD EPYC (family 25 model 1), AVX2"))
+    text = kc.loop_times(rows)
+    assert text.startswith("Loop times: Intel(R) Xeon(R) Processor, AVX-512 (every run but these); ")
+    assert "AMD EPYC (family 25 model 1), AVX2 (gaussian psi = 45, alpha = 0, m = 10, R/delta = 20)" in text
+    assert kc.loop_times(rows[:2]) == "Loop times: Intel(R) Xeon(R) Processor, AVX-512."
+    # a CSV without the line: unknown, never another machine's name
+    assert kc.with_cpu(old, ["made by: x"])[0]["cpu"] == "unknown"

@@ -49,7 +49,8 @@ CASES = ((5, 10), (10, 10), (5, 20), (15, 10), (10, 20), (20, 10))
 SETTLED_DEG = 1.0                   # the last refinement in m moves the angle by less
 COLUMNS = ("kernel", "psi", "alpha", "m", "R_over_delta", "dx_mm", "atoms", "steps",
            "K_init_over_Kc", "extension_over_delta", "angle_2d", "angle_4d", "hoop_stress",
-           "hoop_strain", "energy", "loop_s", "nprocs")
+           "hoop_strain", "energy", "loop_s", "nprocs", "cpu")
+TIMING = "timing: "    # the CSV's comment line naming the CPU of rows without a cpu column
 
 
 def case_vars(m, r_over_delta, kernel=KERNEL, psi=PSI, alpha=ALPHA):
@@ -80,7 +81,7 @@ def run_case(workdir, m, r_over_delta, nprocs=1, reuse=False, kernel=KERNEL, psi
            "extension_over_delta": r["extension_over_delta"], "angle_2d": r["angle_2d"],
            "angle_4d": r["angle_4d"], "hoop_stress": r["hoop_stress"],
            "hoop_strain": r["hoop_strain"], "energy": r["energy"], "loop_s": r["loop_s"],
-           "nprocs": r["nprocs"]}
+           "nprocs": r["nprocs"], "cpu": machine()}
     return row
 
 
@@ -113,9 +114,36 @@ def table(rows, command=None):
             _f(r["hoop_stress"]), _f(r["hoop_strain"]), _f(r["energy"]), _f(r["loop_s"], ".0f"),
             _f(r["nprocs"], ".0f")]) + " |")
     out = "\n".join(lines)
+    if rows and all(r.get("cpu") for r in rows):
+        out += "\n\n" + loop_times(rows)
     made = [command] if isinstance(command, str) else list(command or [])
     intro = " ".join(f"{'Made by' if k == 0 else 'Rows added by'} `{c}`." for k, c in enumerate(made))
     return intro + "\n\n" + out if made else out
+
+
+def loop_times(rows):
+    """'Loop times: ...': the CPU that timed each run (appended runs may come from another
+    machine)."""
+    by = {}
+    for r in sorted(rows, key=_order):
+        by.setdefault(r["cpu"], []).append(r)
+    if len(by) == 1:
+        return f"Loop times: {next(iter(by))}."
+    main = max(by, key=lambda c: len(by[c]))
+
+    def case(r):
+        psi, alpha = mix_of(r)
+        return f"{r['kernel']} psi = {psi:g}, alpha = {alpha:g}, m = {r['m']:g}, R/delta = {r['R_over_delta']:g}"
+    others = "; ".join(f"{c} ({', '.join(case(r) for r in rs)})" for c, rs in by.items() if c != main)
+    return f"Loop times: {main} (every run but these); {others}."
+
+
+def with_cpu(rows, comments):
+    """rows with their cpu: a CSV from before the cpu column names its one CPU on its timing
+    line ('timing: LAMMPS loop time, CPU, shared machine')"""
+    line = next((c[len(TIMING):] for c in comments if c.startswith(TIMING)), "")
+    cpu = line.split("loop time, ", 1)[-1].removesuffix(", shared machine") if line else "unknown"
+    return [dict(r, cpu=r.get("cpu") or cpu) for r in rows]
 
 
 NAMES = {"hoop_stress": "max. hoop stress", "hoop_strain": "max. hoop strain",
@@ -198,7 +226,8 @@ def section(specs, results, figdir, notes):
         table, verdict)
 
 def read_rows(path=CSV):
-    return csvfile.read_csv(path)[1]
+    comments, rows = csvfile.read_csv(path)
+    return with_cpu(rows, comments)
 
 
 def main(argv=None):
@@ -219,6 +248,8 @@ def main(argv=None):
     cases = CASES if not a.cases else [tuple(float(v) for v in c.split(":")) for c in a.cases]
     cmd = "tools/python -m bbpd.benchmarks.kink_convergence " + " ".join(argv or sys.argv[1:])
     earlier, rows, made = csvfile.continue_csv(a.csv if a.append else None, cmd)
+    if rows:
+        rows = with_cpu(rows, csvfile.read_csv(a.csv)[0])
     for m, rd in cases:
         start = time.perf_counter()
         r = run_case(a.work, m, rd, a.nprocs, a.reuse, a.kernel, a.psi, a.alpha)
@@ -227,8 +258,8 @@ def main(argv=None):
               f"{time.perf_counter() - start:.0f} s", flush=True)
         rows.append(r)
         if a.csv:    # after every run: a stopped sweep keeps what it measured
-            csvfile.write_csv(a.csv, rows, comments=[
-                *earlier, made, f"timing: LAMMPS loop time, {machine()}, shared machine"])
+            csvfile.write_csv(a.csv, [{c: r.get(c) for c in COLUMNS} for r in rows], comments=[
+                *earlier, made, f"{TIMING}LAMMPS loop time (s); the CPU of each run in column cpu"])
     print(verdict(rows))
     return 0
 
