@@ -40,5 +40,7 @@ def testheight_verdict_calls_a_small_change_that_does_not_shrink_not_converged()
     assert "within 0.02 c_R" in small_steady and "not converged" in small_steady
     shrinking = strip.height_verdict([(10, 0.660), (20, 0.640), (40, 0.634)])
     assert "the change shrinks" in shrinking and "not converged" not in shrinking
-    assert "alternate in sign" in strip.height_verdict([(10, 0.653), (20, 0.661), (40, 0.648)])
+    assert "alternate in sign and do not shrink, not converged" in strip.height_verdict(
+        [(10, 0.653), (20, 0.661), (40, 0.648)])
+    assert "alternate in sign and shrink)" in strip.height_verdict([(10, 0.633), (20, 0.665), (40, 0.660)])
     assert "more than 0.02 c_R" in strip.height_verdict([(20, 0.598), (40, 0.571)])

@@ -334,7 +334,8 @@ def height_verdict(speeds):
         last, before = speeds[-1][1] - speeds[-2][1], speeds[-2][1] - speeds[-3][1]
         text += f"; the one before by {abs(before):.4f} c_R: "
         if last * before < 0.0:
-            text += "the changes alternate in sign"
+            text += "the changes alternate in sign and " + (
+                "shrink" if abs(last) < abs(before) else "do not shrink, not converged")
         elif abs(last) < abs(before):
             text += "the change shrinks"
         else:
