@@ -79,3 +79,9 @@ def test_each_run_names_the_cpu_that_timed_it():
     assert kc.loop_times(rows[:2]) == "Loop times: Intel(R) Xeon(R) Processor, AVX-512."
     # a CSV without the line: unknown, never another machine's name
     assert kc.with_cpu(old, ["made by: x"])[0]["cpu"] == "unknown"
+
+
+def test_a_straight_crack_reads_zero_not_minus_zero():
+    assert kc._f(-1e-15) == "0.0" and kc._f(-0.04) == "0.0" and kc._f(-0.06) == "-0.1"
+    assert kc._f(None) == "-"
+    assert kc._signed(-0.04) == "+0.0" and kc._signed(-0.06) == "-0.1" and kc._signed(1.0) == "+1.0"

@@ -86,7 +86,16 @@ def run_case(workdir, m, r_over_delta, nprocs=1, reuse=False, kernel=KERNEL, psi
 
 
 def _f(v, spec=".1f"):
-    return "-" if v is None else format(v, spec)
+    if v is None:
+        return "-"
+    text = format(v, spec)
+    # a straight crack measured as -1e-15 deg is 0.0, not -0.0
+    return text[1:] if text.startswith("-") and float(text) == 0.0 else text
+
+
+def _signed(v):
+    """v to 0.1 with its sign, +0.0 for a zero however it rounds"""
+    return "+0.0" if float(format(v, ".1f")) == 0.0 else format(v, "+.1f")
 
 
 def mix_of(r):
@@ -175,10 +184,10 @@ def _group_verdict(rows, kernel, psi=PSI, alpha=ALPHA):
             step = last[f"angle_{dist}"] - prev[f"angle_{dist}"]
             near = min(NAMES, key=lambda c: abs(last[f"angle_{dist}"] - last[c]))
             s = (f"{where}, at {dist[0]} horizons, R/delta = {rd:g}: " + ", ".join(
-                f"{r[f'angle_{dist}']:.1f}° at m = {r['m']:g}" for r in seq)
+                f"{_f(r[f'angle_{dist}'])}° at m = {r['m']:g}" for r in seq)
                  + f"; the finest lies nearest the {NAMES[near]} criterion "
-                 f"({last[f'angle_{dist}'] - last[near]:+.1f}° from {last[near]:.1f}°), and the last "
-                 f"refinement (m = {prev['m']:g} to {last['m']:g}) moves it by {step:+.1f}°: ")
+                 f"({_signed(last[f'angle_{dist}'] - last[near])}° from {_f(last[near])}°), and the last "
+                 f"refinement (m = {prev['m']:g} to {last['m']:g}) moves it by {_signed(step)}°: ")
             s += ("settled within {:g}°".format(SETTLED_DEG) if abs(step) <= SETTLED_DEG
                   else f"not settled (more than {SETTLED_DEG:g}°)")
             out.append(s)
@@ -189,7 +198,7 @@ def _group_verdict(rows, kernel, psi=PSI, alpha=ALPHA):
                  if m in size]
         if pairs:
             out.append(f"at {dist[0]} horizons, doubling the disk to R/delta = 20 moves it by " + ", ".join(
-                f"{d:+.1f}° at m = {m:g}" for m, d in pairs))
+                f"{_signed(d)}° at m = {m:g}" for m, d in pairs))
     return (". ".join(s[0].upper() + s[1:] for s in out) + "." if out else
             f"{where[0].upper() + where[1:]}: no verdict, it needs two values of m at one R/delta.")
 
