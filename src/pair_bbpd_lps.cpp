@@ -322,6 +322,7 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
   double tally[7];        // the row's energy and virial
   double fb[3];           // the forces of the bonds it breaks
   int nlost;              // how many bonds it breaks
+  double snew;            // its smallest stretch now (summed with CHECK)
 
   Row(PairBBPDLPS &pair, int atom_i, double *acc_, BBPD::CoefCache *cache_, bool replay_,
       bool canonical_, bool multi_, double s00, double alpha) :
@@ -329,7 +330,8 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
       multi(multi_), s00_one(s00), alpha_one(alpha), mod(p.moduli_of_type(p.atom->type[i])),
       si(p.atom_states[i]), theta_i(p.lps_state->dilatation[i]),
       theta_third_i(LPS::third(theta_i, p.dimension)), smin_i(p.atom->s0[i]),
-      r_row(p.bond_length + p.bonds->bond_start[i]), fb{0.0, 0.0, 0.0}, nlost(0)
+      r_row(p.bond_length + p.bonds->bond_start[i]), fb{0.0, 0.0, 0.0}, nlost(0),
+      snew(std::numeric_limits<double>::max())
   {
   }
   double s0_with(int j) const
@@ -340,17 +342,21 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
     return StretchRule::critical_stretch(p.critical_stretch[itype][jtype], p.alpha[itype][jtype],
                                          smin_i, smin[j]);
   }
+  // the stretch that decides breaking of the bond to j at elongation e: in a periodic box the
+  // one both ends compute alike
+  double breaking_stretch(int j, double e, double xi0) const
+  {
+    return canonical ? StretchRule::stretch(LPS::elongation(p.breaking_length(i, j), xi0), xi0)
+                     : StretchRule::stretch(e, xi0);
+  }
   // the row's force into f and its tallies into tally (bbpd_lps_row.h); with CHECK also its
-  // smallest stretch and whether a bond is past its critical stretch; with CACHED the bond
-  // lengths of the dilatation pass
-  template <bool CHECK, bool CACHED> bool row_sum(double *f, double &snew)
+  // smallest stretch (snew) and whether a bond is past its critical stretch; with CACHED the
+  // bond lengths of the dilatation pass
+  template <bool CHECK, bool CACHED> bool row_sum(double *f)
   {
     const double *xx = p.atom->x[0];
-    // the stretch that decides breaking: in a periodic box the one both ends compute alike
     auto check = [&](int j, double e, double xi0) BBPD_ROW_BODY {
-      const double s = canonical
-          ? StretchRule::stretch(LPS::elongation(p.breaking_length(i, j), xi0), xi0)
-          : StretchRule::stretch(e, xi0);
+      const double s = breaking_stretch(j, e, xi0);
       snew = std::min(snew, s);
       return StretchRule::past_critical(s, s0_with(j), 0.0);
     };
@@ -368,14 +374,13 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
   }
   bool sum_and_check(double *fi)
   {
-    double snew = std::numeric_limits<double>::max();
     if (replay) {
       p.smin_new[i] = smin_i;
-      row_sum<false, true>(fi, snew);
+      row_sum<false, true>(fi);
       return false;
     }
     const bool had_bonds = p.bonds->nbond[i] > 0;
-    const bool broken = row_sum<true, true>(fi, snew);
+    const bool broken = row_sum<true, true>(fi);
     p.smin_new[i] = had_bonds ? snew : BBPD::PMB::NO_BOND_STRETCH;
     return broken;
   }
@@ -386,13 +391,10 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
     const double *xx = p.atom->x[0];
     const int j = p.bonds->partner_of(i, k);
     const double xi0 = p.bonds->xi0_of(i, k);
-    const double r = canonical ? p.breaking_length(i, j) : [&] {
-      const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
-                   dz = xx[3 * j + 2] - xx[3 * i + 2];
-      return std::sqrt(dx * dx + dy * dy + dz * dz);
-    }();
-    if (!StretchRule::past_critical(StretchRule::stretch(LPS::elongation(r, xi0), xi0), s0_with(j), 0.0))
-      return false;
+    const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
+                 dz = xx[3 * j + 2] - xx[3 * i + 2];
+    const double e = LPS::elongation(std::sqrt(dx * dx + dy * dy + dz * dz), xi0);
+    if (!StretchRule::past_critical(breaking_stretch(j, e, xi0), s0_with(j), 0.0)) return false;
     double bond_tally[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     p.add_bond_force<1>(i, j, xi0, p.bonds->coef_of(i, k, xi0), fb, bond_tally);
     // the energy the bond held at atom i goes with it (term 3 of compute bbpd/energy)
@@ -405,11 +407,7 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
     nlost++;
     return true;
   }
-  void sum(double *fi)
-  {
-    double snew = 0.0;    // not read
-    row_sum<false, false>(fi, snew);    // the row has shifted
-  }
+  void sum(double *fi) { row_sum<false, false>(fi); }    // the row has shifted
   void finish(double *fi)
   {
     double *fbroken = p.alpha_state->fbroken[i];

@@ -96,3 +96,17 @@ def continue_csv(path, command):
     if path is None or not Path(path).is_file():
         return [], [], f"made by: {command}"
     return provenance(path), read_csv(path)[1], f"rows added by: {command}"
+
+
+def loop_times_note(rows, key, case):
+    """'Loop times: ...' under a benchmark's table: which machine (row[key]: CPU, ranks) timed
+    which runs, the most common one for every run but those named by case(row) (appended runs
+    may come from another machine)."""
+    by = {}
+    for r in rows:
+        by.setdefault(r[key], []).append(r)
+    if len(by) == 1:
+        return f"Loop times: {next(iter(by))}."
+    main = max(by, key=lambda t: len(by[t]))
+    others = "; ".join(f"{t} ({', '.join(case(r) for r in rs)})" for t, rs in by.items() if t != main)
+    return f"Loop times: {main} (every run but these); {others}."

@@ -133,18 +133,10 @@ def table(rows, command=None):
 def loop_times(rows):
     """'Loop times: ...': the CPU that timed each run (appended runs may come from another
     machine)."""
-    by = {}
-    for r in sorted(rows, key=_order):
-        by.setdefault(r["cpu"], []).append(r)
-    if len(by) == 1:
-        return f"Loop times: {next(iter(by))}."
-    main = max(by, key=lambda c: len(by[c]))
-
     def case(r):
         psi, alpha = mix_of(r)
         return f"{r['kernel']} psi = {psi:g}, alpha = {alpha:g}, m = {r['m']:g}, R/delta = {r['R_over_delta']:g}"
-    others = "; ".join(f"{c} ({', '.join(case(r) for r in rs)})" for c, rs in by.items() if c != main)
-    return f"Loop times: {main} (every run but these); {others}."
+    return csvfile.loop_times_note(sorted(rows, key=_order), "cpu", case)
 
 
 def with_cpu(rows, comments):
@@ -258,7 +250,7 @@ def main(argv=None):
     cmd = "tools/python -m bbpd.benchmarks.kink_convergence " + " ".join(argv or sys.argv[1:])
     earlier, rows, made = csvfile.continue_csv(a.csv if a.append else None, cmd)
     if rows:
-        rows = with_cpu(rows, csvfile.read_csv(a.csv)[0])
+        rows = read_rows(a.csv)    # with the CPU of rows from before the cpu column
     for m, rd in cases:
         start = time.perf_counter()
         r = run_case(a.work, m, rd, a.nprocs, a.reuse, a.kernel, a.psi, a.alpha)

@@ -187,17 +187,9 @@ def read_rows(path):
 def timing_markdown(rows):
     """'Loop times: ...': which ranks and CPU timed which runs (appended runs may come from
     another machine)."""
-    by = {}
-    for r in rows:
-        by.setdefault(r["timing"], []).append(r)
-    if len(by) == 1:
-        return f"Loop times: {next(iter(by))}."
-    main = max(by, key=lambda t: len(by[t]))
-
     def case(r):
         return f"{r['kernel']} m = {r['m']:g}, H/delta = {r['H_over_delta']:g}, Delta = {r['Delta']:g}"
-    others = "; ".join(f"{t} ({', '.join(case(r) for r in rs)})" for t, rs in by.items() if t != main)
-    return f"Loop times: {main} (every run but these); {others}."
+    return csvfile.loop_times_note(rows, "timing", case)
 
 
 def kinetic_law(rows, kernel, m=5.0, H_over_delta=SWEEP_H_OVER_DELTA):
