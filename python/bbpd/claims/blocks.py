@@ -45,5 +45,5 @@ BLOCKS = {
     BRANCHING: {"branching": crack.branching_table,
                 "branching-findings": crack.branching_findings,
                 "branching-cost": crack.branching_cost},
-    PERFORMANCE: {"lps-cylinder": perf.lps_cylinder},
+    PERFORMANCE: {"lps-cylinder": perf.lps_cylinder, "row-driver": perf.row_driver},
 }
