@@ -11,7 +11,9 @@ def test_settled_sequence_names_its_criterion():
     rows = [row(5, 10, -90.0, -87.0), row(10, 10, -62.0, -63.8), row(15, 10, -63.0, -64.0),
             row(20, 10, -63.4, -64.2), row(10, 20, -62.5, -64.0)]
     text = kc.verdict(rows)
-    assert "the finest lies nearest the max. hoop strain criterion (+0.2° from -63.6°)" in text
+    # m = 20 at 2 horizons: atan(1 / 80) = 0.7 deg, and -63.4 lies 0.2 deg from hoop strain
+    assert ("the finest (± 0.7°) lies nearest the max. hoop strain criterion (+0.2° from -63.6°: "
+            "within its error bar)") in text
     assert "moves it by -0.4°: settled within 1°" in text
     assert "R/delta = 20 moves it by -0.5° at m = 10" in text
 
@@ -20,7 +22,24 @@ def test_moving_sequence_is_not_settled():
     rows = [row(10, 10, -62.0, -63.0), row(15, 10, -66.0, -67.0), row(20, 10, -69.5, -70.0)]
     text = kc.verdict(rows)
     assert "nearest the max. hoop stress criterion" in text
-    assert "not settled (more than 1°)" in text
+    assert "not settled (more than 1°, and more than the two error bars, ± 0.5 and ± 0.4°)" in text
+
+
+def test_error_bars_are_the_grids_resolution_and_say_what_a_step_can_tell():
+    # half a spacing across the path, n horizons = n m spacings out
+    assert abs(kc.resolution_deg(10, "2d") - 1.432) < 1e-3
+    assert abs(kc.resolution_deg(10, "4d") - 0.716) < 1e-3
+    assert kc.resolution_deg(15, "4d") < kc.resolution_deg(15, "2d") < kc.resolution_deg(10, "2d")
+    # a step of 1.5 deg between m = 10 and 15 at 2 horizons (bars 1.4 and 1.0) cannot be told apart
+    rows = [row(10, 20, -62.0, -64.7), row(15, 20, -63.5, -64.8)]
+    text = kc.verdict(rows)
+    assert "moves it by -1.5°: not settled (more than 1°, within the two error bars, ± 1.4 and ± 1.0°)" in text
+    # 1.2 deg beyond hoop strain at 4 horizons, m = 15 (bar 0.5): outside
+    assert "(-1.2° from -63.6°: outside its error bar)" in text
+    full = [dict(r, dx_mm=5.0 / r["m"], atoms=1, steps=1, K_init_over_Kc=0.5, psi=90.0, alpha=0.0,
+                 extension_over_delta=5.0, loop_s=1.0, nprocs=2) for r in rows]
+    table = kc.table(full)
+    assert "| -63.5 ± 1.0 | -64.8 ± 0.5 |" in table and kc.RESOLUTION_NOTE in table
 
 
 def test_one_run_says_nothing():
@@ -85,3 +104,24 @@ def test_a_straight_crack_reads_zero_not_minus_zero():
     assert kc._f(-1e-15) == "0.0" and kc._f(-0.04) == "0.0" and kc._f(-0.06) == "-0.1"
     assert kc._f(None) == "-"
     assert kc._signed(-0.04) == "+0.0" and kc._signed(-0.06) == "-0.1" and kc._signed(1.0) == "+1.0"
+
+
+def test_the_figure_draws_every_mix_with_its_error_bars(tmp_path):
+    rows = [dict(row(10, 20, -62.1, -64.7), psi=90.0, alpha=0.0),
+            dict(row(15, 20, -61.1, -64.8), psi=90.0, alpha=0.0),
+            dict(row(10, 20, -47.1, -50.3), psi=45.0, alpha=22.5, hoop_stress=-53.1,
+                 hoop_strain=-49.7, energy=-57.3),
+            dict(row(5, 20, -56.7, None), psi=45.0, alpha=22.5, hoop_stress=-53.1,
+                 hoop_strain=-49.7, energy=-57.3),
+            dict(row(10, 20, 0.0, 0.0), psi=0.0, alpha=0.0)]   # pure Mode I: no panel
+    out = tmp_path / "k.png"
+    kc.figure(rows, out)
+    assert out.stat().st_size > 10_000
+
+
+def test_pure_mode_one_names_no_nearest_criterion():
+    rows = [dict(row(5, 20, 0.0, 0.0), psi=0.0, alpha=0.0, hoop_stress=0.0, hoop_strain=0.0, energy=0.0),
+            dict(row(10, 20, -1e-16, 0.0), psi=0.0, alpha=0.0, hoop_stress=0.0, hoop_strain=0.0, energy=0.0)]
+    text = kc.verdict(rows)
+    assert "the three criteria agree (0.0°) and the finest (± 1.4°) lies +0.0° from them (within its error bar)" in text
+    assert "nearest" not in text

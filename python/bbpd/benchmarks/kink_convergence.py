@@ -28,6 +28,7 @@ Command line (from the repository root):
 """
 
 import argparse
+import math
 import sys
 import time
 from pathlib import Path
@@ -47,6 +48,12 @@ DT_PER_M = 0.16                     # dtfactor / m of the kink test (kink.DTFACT
 # (m, R/delta), cheapest first: a sweep stopped early keeps the cases that finished
 CASES = ((5, 10), (10, 10), (5, 20), (15, 10), (10, 20), (20, 10))
 SETTLED_DEG = 1.0                   # the last refinement in m moves the angle by less
+# The angle's error bar is the grid's resolution: the path is the centroid of a band of two to
+# three crack atoms (bbpd.crack_path), and one more atom row on one side of the band moves the
+# centroid across the path by half a spacing. At d = n horizons = n m spacings from the tip that
+# turns the direction by atan(LATERAL_QUANTUM_DX / (n m)).
+LATERAL_QUANTUM_DX = 0.5
+HORIZONS = {f"{n:g}d": n for n in kinkbench.DISTANCES}    # where the angles are measured
 COLUMNS = ("kernel", "psi", "alpha", "m", "R_over_delta", "dx_mm", "atoms", "steps",
            "K_init_over_Kc", "extension_over_delta", "angle_2d", "angle_4d", "hoop_stress",
            "hoop_strain", "energy", "loop_s", "nprocs", "cpu")
@@ -85,6 +92,17 @@ def run_case(workdir, m, r_over_delta, nprocs=1, reuse=False, kernel=KERNEL, psi
     return row
 
 
+def resolution_deg(m, dist):
+    """the error bar (deg) of an angle measured `dist` ('2d', '4d') from the tip at m = delta/dx"""
+    return math.degrees(math.atan(LATERAL_QUANTUM_DX / (HORIZONS[dist] * m)))
+
+
+def _angle(r, dist):
+    """'angle +- resolution' for the table"""
+    a = r[f"angle_{dist}"]
+    return "-" if a is None else f"{_f(a)} ± {resolution_deg(r['m'], dist):.1f}"
+
+
 def _f(v, spec=".1f"):
     if v is None:
         return "-"
@@ -119,15 +137,19 @@ def table(rows, command=None):
             r["kernel"], f"{psi:g}", f"{alpha:g}", f"{r['m']:g}", f"{r['R_over_delta']:g}",
             f"{r['dx_mm']:.3g}", _f(r["atoms"], ".0f"),
             _f(r["steps"], ".0f"), _f(r["K_init_over_Kc"], ".3f"),
-            _f(r["extension_over_delta"], ".1f"), _f(r["angle_2d"]), _f(r["angle_4d"]),
+            _f(r["extension_over_delta"], ".1f"), _angle(r, "2d"), _angle(r, "4d"),
             _f(r["hoop_stress"]), _f(r["hoop_strain"]), _f(r["energy"]), _f(r["loop_s"], ".0f"),
             _f(r["nprocs"], ".0f")]) + " |")
-    out = "\n".join(lines)
+    out = "\n".join(lines) + "\n\n" + RESOLUTION_NOTE
     if rows and all(r.get("cpu") for r in rows):
         out += "\n\n" + loop_times(rows)
     made = [command] if isinstance(command, str) else list(command or [])
     intro = " ".join(f"{'Made by' if k == 0 else 'Rows added by'} `{c}`." for k, c in enumerate(made))
     return intro + "\n\n" + out if made else out
+
+
+RESOLUTION_NOTE = ("Angles ± the grid's resolution: half a spacing across the path at 2 or 4 "
+                   "horizons from the tip, atan(1 / (2 n m)) for n horizons.")
 
 
 def loop_times(rows):
@@ -147,6 +169,7 @@ def with_cpu(rows, comments):
     return [dict(r, cpu=r.get("cpu") or cpu) for r in rows]
 
 
+AGREE_DEG = 0.05     # criteria closer than the table's last digit name no nearest one (pure Mode I)
 NAMES = {"hoop_stress": "max. hoop stress", "hoop_strain": "max. hoop strain",
          "energy": "max. energy release rate"}
 
@@ -175,13 +198,22 @@ def _group_verdict(rows, kernel, psi=PSI, alpha=ALPHA):
             last, prev = seq[-1], seq[-2]
             step = last[f"angle_{dist}"] - prev[f"angle_{dist}"]
             near = min(NAMES, key=lambda c: abs(last[f"angle_{dist}"] - last[c]))
+            bar, bar_prev = resolution_deg(last["m"], dist), resolution_deg(prev["m"], dist)
+            off = last[f"angle_{dist}"] - last[near]
             s = (f"{where}, at {dist[0]} horizons, R/delta = {rd:g}: " + ", ".join(
                 f"{_f(r[f'angle_{dist}'])}° at m = {r['m']:g}" for r in seq)
-                 + f"; the finest lies nearest the {NAMES[near]} criterion "
-                 f"({_signed(last[f'angle_{dist}'] - last[near])}° from {_f(last[near])}°), and the last "
+                 + (f"; the finest (± {bar:.1f}°) lies nearest the {NAMES[near]} criterion "
+                    f"({_signed(off)}° from {_f(last[near])}°: "
+                    if max(last[c] for c in NAMES) - min(last[c] for c in NAMES) > AGREE_DEG else
+                    f"; the three criteria agree ({_f(last[near])}°) and the finest (± {bar:.1f}°) "
+                    f"lies {_signed(off)}° from them (")
+                 + ("within" if abs(off) <= bar else "outside") + " its error bar), and the last "
                  f"refinement (m = {prev['m']:g} to {last['m']:g}) moves it by {_signed(step)}°: ")
             s += ("settled within {:g}°".format(SETTLED_DEG) if abs(step) <= SETTLED_DEG
-                  else f"not settled (more than {SETTLED_DEG:g}°)")
+                  else f"not settled (more than {SETTLED_DEG:g}°")
+            if abs(step) > SETTLED_DEG:
+                s += (", and more than the two error bars, ± {:.1f} and ± {:.1f}°)" if abs(step) > bar + bar_prev
+                      else ", within the two error bars, ± {:.1f} and ± {:.1f}°)").format(bar_prev, bar)
             out.append(s)
         base = {r["m"]: r for r in rows if r["R_over_delta"] == 10.0 and r[f"angle_{dist}"] is not None}
         size = {r["m"]: r for r in rows if r["R_over_delta"] == 20.0 and r[f"angle_{dist}"]
@@ -193,6 +225,48 @@ def _group_verdict(rows, kernel, psi=PSI, alpha=ALPHA):
                 f"{_signed(d)}° at m = {m:g}" for m, d in pairs))
     return (". ".join(s[0].upper() + s[1:] for s in out) + "." if out else
             f"{where[0].upper() + where[1:]}: no verdict, it needs two values of m at one R/delta.")
+
+
+FIGURE = kinkbench.FOLDER / "kink_convergence.png"
+
+
+def figure(rows, path=FIGURE):
+    """The angle at 2 and 4 horizons against m with its error bar, one panel per distance and
+    mode mix (pure Mode II first), each (kernel, crack direction, R/delta) a line, and the three
+    criteria of that mix as horizontal lines."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    mixes = sorted({mix_of(r)[0] for r in rows if mix_of(r)[0] > 0.0}, reverse=True)
+    fig, axes = plt.subplots(len(mixes), 2, figsize=(10, 3.6 * len(mixes)), squeeze=False)
+    try:
+        for ax_row, psi in zip(axes, mixes):
+            on = [r for r in rows if mix_of(r)[0] == psi]
+            for ax, dist in zip(ax_row, HORIZONS):
+                for c, style in zip(NAMES, ("-", "--", ":")):
+                    ax.axhline(on[0][c], color="k", ls=style, lw=0.9, label=NAMES[c])
+                lines = sorted({(r["kernel"], mix_of(r)[1], r["R_over_delta"]) for r in on},
+                               key=lambda k: (k[0] != KERNEL, k))
+                for kernel, alpha, rd in lines:
+                    seq = sorted((r for r in on if (r["kernel"], mix_of(r)[1], r["R_over_delta"])
+                                  == (kernel, alpha, rd) and r[f"angle_{dist}"] is not None),
+                                 key=lambda r: r["m"])
+                    shift = (0.25 * (alpha > 0.0) - 0.25 * (rd < 20.0)    # keep the bars apart
+                             + 0.12 * (KERNELS.index(kernel) - 1))
+                    ax.errorbar([r["m"] + shift for r in seq], [r[f"angle_{dist}"] for r in seq],
+                                yerr=[resolution_deg(r["m"], dist) for r in seq], capsize=3,
+                                color=kinkbench.COLORS[kernel], marker="o" if alpha == 0.0 else "D",
+                                ls="-" if rd >= 20.0 else ":", mfc="none" if rd < 20.0 else None,
+                                label=f"{kernel}, crack {alpha:g}°, R/δ = {rd:g}")
+                ax.set_title(f"psi = {psi:g}°, angle at {HORIZONS[dist]:g} horizons", fontsize=10)
+                ax.set_xlabel("m = δ/dx")
+                ax.grid(alpha=0.3)
+            ax_row[0].set_ylabel("kink angle (deg)")
+            ax_row[1].legend(fontsize=6.5, loc="best")
+        fig.tight_layout()
+        fig.savefig(path, dpi=120)
+    finally:
+        plt.close(fig)
 
 
 # ---------------------------------------------------------------------------- report
@@ -245,7 +319,11 @@ def main(argv=None):
     ap.add_argument("--csv")
     ap.add_argument("--append", action="store_true",
                     help="add the runs to --csv, keeping its rows and the commands that made them")
+    ap.add_argument("--figure", help="draw the angle against m of the CSV's rows here (no runs)")
     a = ap.parse_args(argv)
+    if a.figure:
+        figure(read_rows(a.csv or CSV), a.figure)
+        return 0
     cases = CASES if not a.cases else [tuple(float(v) for v in c.split(":")) for c in a.cases]
     cmd = "tools/python -m bbpd.benchmarks.kink_convergence " + " ".join(argv or sys.argv[1:])
     earlier, rows, made = csvfile.continue_csv(a.csv if a.append else None, cmd)
