@@ -137,6 +137,10 @@ def measure(t_k, k_cols, t_tip, ext_tip, dx, G_c=G_C):
     return res
 
 
+# a run's wall-time limit: dx = 0.00625 m (a million atoms) takes about an hour of 2 cores
+RUN_TIMEOUT_S = 4 * 3600
+
+
 def run(workdir, kernel="gaussian", dx=0.05, G_c=G_C, dt=None, nprocs=1, t_end=T_END,
         reuse=False):
     """Run the example once and measure it (see measure()); reuse=True measures the
@@ -150,7 +154,8 @@ def run(workdir, kernel="gaussian", dx=0.05, G_c=G_C, dt=None, nprocs=1, t_end=T
     if reuse:
         output = (workdir / "log.lammps").read_text()
     else:
-        output = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_).output
+        output = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_,
+                            timeout=RUN_TIMEOUT_S).output
     wall = time.perf_counter() - start
     loop_s, _ = readers.loop_time(output)
     d = np.loadtxt(workdir / "k.dat", comments="#", ndmin=2)
