@@ -44,3 +44,19 @@ def testheight_verdict_calls_a_small_change_that_does_not_shrink_not_converged()
         [(10, 0.653), (20, 0.661), (40, 0.648)])
     assert "alternate in sign and shrink)" in strip.height_verdict([(10, 0.633), (20, 0.665), (40, 0.660)])
     assert "more than 0.02 c_R" in strip.height_verdict([(20, 0.598), (40, 0.571)])
+
+
+def test_the_height_change_is_followed_across_m():
+    rows = [row("gaussian", 4.0, 10.0, v=0.619), row("gaussian", 4.0, 20.0, v=0.598),
+            row("gaussian", 5.0, 10.0, v=0.647), row("gaussian", 5.0, 20.0, v=0.629),
+            row("gaussian", 8.0, 10.0, v=0.658), row("gaussian", 8.0, 20.0, v=0.655),
+            row("gaussian", 6.0, 20.0, v=0.653)]      # one height: not in the sentence
+    text = strip.height_change_against_m(rows, "gaussian")
+    assert text == ("doubling H from 10 to 20 horizons (Delta = 2) moves v_ss/c_R by -0.0210 at "
+                    "m = 4, -0.0180 at m = 5, -0.0030 at m = 8: the change shrinks at every step in m")
+    rows[5]["v_ss_over_cR"] = 0.690
+    assert "does not shrink at every step in m" in strip.height_change_against_m(rows, "gaussian")
+    # a run that did not cross, or a single m, says nothing
+    rows[5].update(crossed=False, state="branched")
+    assert strip.height_change_against_m(rows[:2] + rows[4:], "gaussian") == ""
+    assert "doubling H from 10 to 20 horizons" in strip.summary_text(rows[:4])

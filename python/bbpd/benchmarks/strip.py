@@ -335,6 +335,24 @@ def height_verdict(speeds):
     return text + ")"
 
 
+def height_change_against_m(rows, kernel, h0=10.0, h1=20.0, Delta=2.0):
+    """'the doubling of H from h0 to h1 horizons moves v_ss ... at m = ...: ...' for every m
+    with crossing runs at both heights ('' for fewer than two such m): whether the strip's
+    height matters less as the bond family gets finer"""
+    steps = []
+    for m in sorted({r["m"] for r in rows if r["kernel"] == kernel}):
+        a, b = speed_at(rows, kernel, m, h0, Delta), speed_at(rows, kernel, m, h1, Delta)
+        if a and b:    # None: not run; 0.0: did not cross
+            steps.append((m, b - a))
+    if len(steps) < 2:
+        return ""
+    sizes = [abs(d) for _, d in steps]
+    trend = ("shrinks at every step in m" if all(y < x for x, y in zip(sizes, sizes[1:]))
+             else "does not shrink at every step in m")
+    return (f"doubling H from {h0:g} to {h1:g} horizons (Delta = {Delta:g}) moves v_ss/c_R by "
+            + ", ".join(f"{d:+.4f} at m = {m:g}" for m, d in steps) + f": the change {trend}")
+
+
 def summary_text(rows):
     """Sentences computed from the runs: threshold, convergence in H/delta and in m, closure."""
     kernels = sorted({r["kernel"] for r in rows})
@@ -377,6 +395,9 @@ def summary_text(rows):
                     for m, s in sp) + "; over the grid's own c_R: " +
                     ", ".join(f"{s / grid_rayleigh_ratio(k, m):.3f}" if state[m] == "crossed"
                               else state[m] for m, s in sp))
+        change = height_change_against_m(rows, k)
+        if change:
+            parts.append(change)
         ms_all = sorted({r["m"] for r in rows if r["kernel"] == k})
         parts.append("the grid's own c_R over c_R: " + ", ".join(
             f"{grid_rayleigh_ratio(k, m):.3f} at m = {m:g}" for m in ms_all))
