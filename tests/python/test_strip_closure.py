@@ -27,7 +27,8 @@ def test_taller_shift_is_none_without_both_heights_or_when_a_run_did_not_cross()
 
 def closure(l2, l2_taller, shift=1.05):
     return {"kernel": "constant", "dx": 0.025, "law_points": 4, "law_u_min": 0.5, "law_u_max": 0.8,
-            "inside_law_pct": 70.0, "l2_kinetic_pct": l2, "l2_toughness_pct": 13.0,
+            "inside_law_pct": 70.0, "below_law_pct": 25.0, "above_law_pct": 5.0,
+            "l2_kinetic_pct": l2, "l2_toughness_pct": 13.0,
             "l2_energy_pct": 12.0, "ext_pd_3tc": 0.83, "ext_kinetic_3tc": 0.74,
             "ext_energy_3tc": 0.98, "law_shift_taller": shift, "l2_kinetic_taller_pct": l2_taller}
 
@@ -37,3 +38,9 @@ def test_the_sentence_says_whether_the_height_can_close_the_gap():
     assert "can account for the gap" in sc.verdict([closure(19.6, 4.0)])
     assert "taller" not in sc.verdict([closure(19.6, float("nan"), float("nan"))])
     assert "| - |" in sc.table_markdown([closure(19.6, float("nan"), float("nan"))])
+
+
+def test_the_sentence_splits_the_speeds_outside_the_law():
+    text = sc.verdict([closure(19.6, 17.6)])
+    assert ("at such speeds in 70 % of the window, slower in 25 % (the law interpolated from rest) "
+            "and faster in 5 % (held at its fastest value)") in text

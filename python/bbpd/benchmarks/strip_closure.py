@@ -31,7 +31,8 @@ ROOT = Path(__file__).resolve().parents[3]
 HISTORIES = ROOT / "examples" / "mode1-propagation" / "results" / "tip_histories.csv"
 STRIP_CSV = ROOT / "examples" / "strip-steady-crack" / "results" / "strip.csv"
 M_MODE1 = mp.M    # the Mode-I scene's delta/dx: the law must be measured at the same m
-CSV_COLUMNS = ("kernel", "dx", "law_points", "law_u_min", "law_u_max", "inside_law_pct",
+CSV_COLUMNS = ("kernel", "dx", "law_points", "law_u_min", "law_u_max", "inside_law_pct", "below_law_pct",
+               "above_law_pct",
                "l2_kinetic_pct", "l2_toughness_pct", "l2_energy_pct", "ext_pd_3tc",
                "ext_kinetic_3tc", "ext_energy_3tc", "law_shift_taller", "l2_kinetic_taller_pct")
 TALLER_H_OVER_DELTA = 20.0    # the next strip height of the sweep, to see what the law's height moves
@@ -80,6 +81,8 @@ def compare(law, t, l_pd, problem=None):
     _, v = prob.tip_position(tt, crack_motion.KINETIC, law=law)
     u = v / prob.c_r
     res["inside_law_pct"] = 100.0 * float(np.mean((u >= law.u[1]) & (u <= law.u[-1])))
+    res["below_law_pct"] = 100.0 * float(np.mean(u < law.u[1]))
+    res["above_law_pct"] = 100.0 * float(np.mean(u > law.u[-1]))
     for name, crit, lw in (("kinetic", crack_motion.KINETIC, law),
                            ("toughness", crack_motion.TOUGHNESS, None),
                            ("energy", crack_motion.ENERGY, None)):
@@ -188,8 +191,10 @@ def verdict(rows):
                    f"The law is measured for v/c_R from {finest['law_u_min']:.2f} (the slowest steady "
                    f"crack of the runs) to {finest['law_u_max']:.2f} "
                    f"({int(finest['law_points'])} runs); the predicted crack runs at such speeds in "
-                   f"{finest['inside_law_pct']:.0f} % of the window, elsewhere the law is interpolated "
-                   "from rest or held at its fastest value."
+                   f"{finest['inside_law_pct']:.0f} % of the window, slower in "
+                   f"{finest['below_law_pct']:.0f} % (the law interpolated from rest) and faster in "
+                   f"{finest['above_law_pct']:.0f} % (held at its "
+                   "fastest value)."
                    + _taller_sentence(finest))
     return "\n".join(out)
 
