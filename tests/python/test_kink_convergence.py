@@ -125,3 +125,24 @@ def test_pure_mode_one_names_no_nearest_criterion():
     text = kc.verdict(rows)
     assert "the three criteria agree (0.0°) and the finest (± 1.4°) lies +0.0° from them (within its error bar)" in text
     assert "nearest" not in text
+
+
+def test_the_whole_sweep_has_its_own_verdict_only_when_complete():
+    crit = {90.0: (-70.53, -63.61, -75.23), 67.5: (-62.9, -57.6, -67.7), 45.0: (-53.13, -49.67, -57.33),
+            22.5: (-36.1, -34.9, -39.0)}
+    def mixed(psi, alpha, a2, a4, m=10):
+        hs, hn, en = crit[psi]
+        return dict(row(m, 20, a2, a4), psi=psi, alpha=alpha, hoop_stress=hs, hoop_strain=hn, energy=en)
+    # every angle 0.5 deg beyond hoop strain along the rows and 1.5 deg at 22.5 deg
+    rows = [mixed(p, a, crit[p][1] - 0.5 - a / 22.5, crit[p][1] - 0.5 - a / 22.5)
+            for p in crit for a in (0.0, 22.5)]
+    text = kc.sweep_verdict(rows)
+    assert text.startswith("Gaussian, m = 10, R/delta = 20, the whole mixed-mode sweep (8 runs: "
+                           "psi = 22.5, 45, 67.5, 90°, both crack directions), at 2 horizons")
+    assert "nearest by RMS max. hoop strain" in text
+    assert "mean -1.0 ± 0.2" in text     # four -0.5 and four -1.5: standard deviation 0.53 / sqrt(8)
+    assert "moves the angle by 1.0° on average (at most 1.0°)" in text
+    # one run missing: no verdict for that group
+    assert kc.sweep_verdict(rows[1:]).startswith("No (kernel, m, R/delta)")
+    # a pure Mode I run beside the sweep is left out of it
+    assert kc.sweep_verdict(rows + [dict(row(10, 20, 0.0, 0.0), psi=0.0, alpha=0.0)]) == text

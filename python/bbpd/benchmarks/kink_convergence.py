@@ -269,6 +269,37 @@ def figure(rows, path=FIGURE):
         plt.close(fig)
 
 
+def sweep_verdict(rows):
+    """Sentences on every (kernel, m, R/delta) that has run the whole mixed-mode sweep (every
+    psi of the kink test but pure Mode I, in both crack directions): at each distance the RMS
+    and mean deviation from each criterion with its standard error, which criteria the mean
+    admits (bbpd.benchmarks.kink's test: |mean| <= 2 standard errors), and the grid's pull
+    (mean |angle at 22.5 deg - angle along the rows|)."""
+    mixes = [p for p in kinkbench.MIXES_DEG if p > 0.0]
+    need = {(p, a) for p in mixes for a in kinkbench.ALPHAS_DEG}
+    out = []
+    for kernel, m, rd in sorted({(r["kernel"], r["m"], r["R_over_delta"]) for r in rows},
+                                key=lambda g: (g[0] != KERNEL, g)):
+        sel = [r for r in rows if (r["kernel"], r["m"], r["R_over_delta"]) == (kernel, m, rd)]
+        if not need <= {mix_of(r) for r in sel}:
+            continue
+        # the kink test's verdict reads one grid's rows: dx and the ramp are this group's
+        as_kink = [dict(r, psi=mix_of(r)[0], alpha=mix_of(r)[1], dx=m, ncross=kinkbench.NCROSS)
+                   for r in sel if mix_of(r) in need]
+        for dist in HORIZONS:
+            v = kinkbench.verdict(as_kink, dist, dx=m)
+            dev = ", ".join(f"{NAMES[c]} {v['rms'][c]:.1f} (mean {v['bias'][c]:+.1f} ± {v['se'][c]:.1f})"
+                            for c in NAMES)
+            out.append(f"{kernel[0].upper() + kernel[1:]}, m = {m:g}, R/delta = {rd:g}, the whole "
+                       f"mixed-mode sweep ({v['n']} runs: psi = "
+                       + ", ".join(f"{p:g}" for p in sorted(mixes)) + "°, both crack directions), at "
+                       f"{HORIZONS[dist]:g} horizons: RMS deviation (mean ± its standard error) {dev}°; "
+                       f"nearest by RMS {NAMES[v['best']]}. {kinkbench.consistency(v)} The crack's "
+                       f"direction to the grid moves the angle by {v['pull_mean']:.1f}° on average "
+                       f"(at most {v['pull_max']:.1f}°).")
+    return " ".join(out) if out else "No (kernel, m, R/delta) has run the whole mixed-mode sweep."
+
+
 # ---------------------------------------------------------------------------- report
 
 REPORT_TITLE = "Kink test: convergence of the pure Mode II angle in m and in the disk's size"

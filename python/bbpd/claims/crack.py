@@ -118,3 +118,7 @@ def kink_convergence_table(data):
 
 def kink_convergence_verdict(data):
     return kink_convergence.verdict(kink_convergence.read_rows())
+
+
+def kink_convergence_sweep(data):
+    return kink_convergence.sweep_verdict(kink_convergence.read_rows())
