@@ -65,3 +65,17 @@ def test_growth_verdict_settles_only_a_small_last_change():
     # negative control: the same last step for both kernels settles neither or both
     rows[5]["ext_pd_3tc"] = 0.83 - small
     assert mp.growth_verdict(rows)["constant"][0]
+
+
+def test_a_grid_run_by_one_kernel_is_that_kernels_finest():
+    rows = [row("gaussian", 0.025, 0.78), row("gaussian", 0.0125, 0.77), row("gaussian", 0.00625, 0.74),
+            row("constant", 0.025, 0.83), row("constant", 0.0125, 0.77)]
+    assert [(r["kernel"], r["dx"]) for r in mp.finest_rows(rows)] == [("constant", 0.0125),
+                                                                      ("gaussian", 0.00625)]
+    assert mp.finest_grids(rows) == "dx = 0.0125 m, gaussian 0.00625 m"
+    assert mp.finest_grids(rows[:2] + rows[3:]) == "dx = 0.0125 m"
+    v = mp.growth_verdict(rows)
+    # the Gaussian's last change is its own halving to 0.00625 m, the constant's to 0.0125 m
+    assert abs(v["gaussian"][2] - 0.03) < 1e-9 and abs(v["constant"][2] - 0.06) < 1e-9
+    text = mp.findings_markdown(rows)
+    assert "at dx = 0.0125 m, gaussian 0.00625 m." in text

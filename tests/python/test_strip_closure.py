@@ -36,6 +36,9 @@ def closure(l2, l2_taller, shift=1.05):
 def test_the_sentence_says_whether_the_height_can_close_the_gap():
     assert "accounts for less than the gap" in sc.verdict([closure(19.6, 17.6)])
     assert "can account for the gap" in sc.verdict([closure(19.6, 4.0)])
+    # on a grid where the closure already meets the goal there is no gap to account for
+    met = sc.verdict([closure(3.9, 3.8)])
+    assert "the goal is met with the law of either height" in met and "gap" not in met.split("goal (")[1]
     assert "taller" not in sc.verdict([closure(19.6, float("nan"), float("nan"))])
     assert "| - |" in sc.table_markdown([closure(19.6, float("nan"), float("nan"))])
 

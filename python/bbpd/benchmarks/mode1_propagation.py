@@ -529,6 +529,21 @@ def _by_dx(rows):
     return dxs, {d: [r for r in rows if r["dx"] == d] for d in dxs}
 
 
+def finest_rows(rows):
+    """each kernel's run on its finest grid (a finer grid may have run one kernel only)"""
+    return [min((r for r in rows if r["kernel"] == k), key=lambda r: r["dx"])
+            for k in KERNELS if any(r["kernel"] == k for r in rows)]
+
+
+def finest_grids(rows):
+    """'dx = 0.0125 m' when every kernel's finest grid is the same, else
+    'dx = 0.0125 m, gaussian 0.00625 m'"""
+    fine = finest_rows(rows)
+    common = max(r["dx"] for r in fine)
+    others = [r for r in fine if r["dx"] != common]
+    return f"dx = {common:g} m" + "".join(f", {r['kernel']} {r['dx']:g} m" for r in others)
+
+
 def extension_changes(rows):
     """{kernel: [extension change at 3 t_c per halving of dx, coarse first]}"""
     out = {}
@@ -541,11 +556,11 @@ def extension_changes(rows):
 
 def growth_verdict(rows):
     """Per kernel on the finest grid: (settled, nearest form, last change, gap share)"""
-    dxs, at = _by_dx(rows)
     gap = abs(rows[0]["ext_energy_3tc"] - rows[0]["ext_toughness_3tc"])
     out = {}
+    finest = {r["kernel"]: r for r in finest_rows(rows)}
     for k, ch in extension_changes(rows).items():
-        fine = next(r for r in at[dxs[-1]] if r["kernel"] == k)
+        fine = finest[k]
         near = min(("toughness", "energy"), key=lambda c: abs(fine["ext_pd_3tc"]
                                                               - fine[f"ext_{c}_3tc"]))
         last = abs(ch[-1]) if ch else float("inf")
@@ -557,7 +572,7 @@ def findings_markdown(rows):
     """The README's initiation and growth paragraphs, from the results CSV's rows."""
     dxs, at = _by_dx(rows)
     kernels = [k for k in KERNELS if any(r["kernel"] == k for r in rows)]
-    fine = at[dxs[-1]]
+    fine = finest_rows(rows)
     prob = problem(rows[0]["Gc"])
     out_step = 100.0 * DUMP_DT / (prob.initiation_time() - prob.t_c)
     def of(k):
@@ -572,8 +587,8 @@ def findings_markdown(rows):
     init = (f"**Initiation.** The first broken bond comes early, by an amount set by the kernel "
             f"more than by the grid (dx = {', '.join(f'{d:g}' for d in dxs)} m): {first}, in % "
             f"of t_i - t_c. The tip's first grid step comes late: {steps} (one tip output is "
-            f"{out_step:.1f} %), and J at that moment is {_span(j_fine, '.2f')} G_c at dx = "
-            f"{dxs[-1]:g} m. " + ("LEFM's t_i lies between the two readings on every run."
+            f"{out_step:.1f} %), and J at that moment is {_span(j_fine, '.2f')} G_c at "
+            f"{finest_grids(rows)}. " + ("LEFM's t_i lies between the two readings on every run."
                                   if between else "LEFM's t_i is not always between the two readings."))
     ext = ", ".join(f"{_span([r['ext_pd_3tc'] for r in at[d]], '.2f')} m at {d:g}" for d in dxs)
     ch = extension_changes(rows)
@@ -610,7 +625,11 @@ def findings_markdown(rows):
         for s in SPEED_TIMES)
     width_m = {d: [r["width_3tc_over_delta"] * M * d for r in at[d]] for d in dxs}
     widths = ", ".join(f"{_span(width_m[d], '.2f')} m at {d:g}" for d in dxs)
-    holds = len(dxs) > 1 and max(width_m[dxs[-1]]) >= WIDTH_KEPT * max(width_m[dxs[-2]])
+    # each kernel's widest band on its finest grid against its next coarser one
+    def kept(k):
+        w = [r["width_3tc_over_delta"] * M * r["dx"] for r in of(k)]
+        return len(w) > 1 and w[-1] >= WIDTH_KEPT * w[-2]
+    holds = len(dxs) > 1 and any(kept(k) for k in kernels)
     width_sent = ("in metres it does not shrink with the horizon over the last halving, so the "
                   "damage that leaves the crack line late in the run is set by the loading, "
                   "not by the grid, and LEFM's straight crack does not describe it." if holds else
@@ -620,6 +639,6 @@ def findings_markdown(rows):
               f"{ext}; per halving of dx it changes by {changes} m. The L2 error of l(t) is "
               f"{l2t} % against the K_Ic form and {l2e} % against the energy form (dx = "
               f"{', '.join(f'{d:g}' for d in dxs)} m). {v_sent} Speed v/c_R on the finest grid "
-              f"(theory: K_Ic / energy form) at {speeds}. The crack atoms' half-width at 3 t_c is "
+              f"({finest_grids(rows)}; theory: K_Ic / energy form) at {speeds}. The crack atoms' half-width at 3 t_c is "
               f"{widths} m: {width_sent}")
     return init + "\n\n" + growth
