@@ -185,6 +185,19 @@ def verdict(rows):
     return " ".join(parts) if parts else "No verdict: it needs two values of m at R/delta = 10."
 
 
+def _nearest_phrase(angle, last, near, bar):
+    """'; the finest (± bar) lies nearest the X criterion (+d from a: within its error bar)' for
+    the finest run `last` measured at `angle`, or, where the three criteria agree (pure Mode I),
+    how far it lies from their common angle"""
+    off = angle - last[near]
+    where = ("within" if abs(off) <= bar else "outside") + " its error bar)"
+    if max(last[c] for c in NAMES) - min(last[c] for c in NAMES) <= AGREE_DEG:
+        return (f"; the three criteria agree ({_f(last[near])}°) and the finest (± {bar:.1f}°) "
+                f"lies {_signed(off)}° from them ({where}")
+    return (f"; the finest (± {bar:.1f}°) lies nearest the {NAMES[near]} criterion "
+            f"({_signed(off)}° from {_f(last[near])}°: {where}")
+
+
 def _group_verdict(rows, kernel, psi=PSI, alpha=ALPHA):
     where = kernel if (psi, alpha) == (PSI, ALPHA) else f"{kernel}, psi = {psi:g}°, alpha = {alpha:g}°"
     out = []
@@ -199,15 +212,9 @@ def _group_verdict(rows, kernel, psi=PSI, alpha=ALPHA):
             step = last[f"angle_{dist}"] - prev[f"angle_{dist}"]
             near = min(NAMES, key=lambda c: abs(last[f"angle_{dist}"] - last[c]))
             bar, bar_prev = resolution_deg(last["m"], dist), resolution_deg(prev["m"], dist)
-            off = last[f"angle_{dist}"] - last[near]
             s = (f"{where}, at {dist[0]} horizons, R/delta = {rd:g}: " + ", ".join(
                 f"{_f(r[f'angle_{dist}'])}° at m = {r['m']:g}" for r in seq)
-                 + (f"; the finest (± {bar:.1f}°) lies nearest the {NAMES[near]} criterion "
-                    f"({_signed(off)}° from {_f(last[near])}°: "
-                    if max(last[c] for c in NAMES) - min(last[c] for c in NAMES) > AGREE_DEG else
-                    f"; the three criteria agree ({_f(last[near])}°) and the finest (± {bar:.1f}°) "
-                    f"lies {_signed(off)}° from them (")
-                 + ("within" if abs(off) <= bar else "outside") + " its error bar), and the last "
+                 + _nearest_phrase(last[f"angle_{dist}"], last, near, bar) + ", and the last "
                  f"refinement (m = {prev['m']:g} to {last['m']:g}) moves it by {_signed(step)}°: ")
             s += ("settled within {:g}°".format(SETTLED_DEG) if abs(step) <= SETTLED_DEG
                   else f"not settled (more than {SETTLED_DEG:g}°")

@@ -137,7 +137,8 @@ def measure(t_k, k_cols, t_tip, ext_tip, dx, G_c=G_C):
     return res
 
 
-# a run's wall-time limit: dx = 0.00625 m (a million atoms) takes about an hour of 2 cores
+# a run's wall-time limit: dx = 0.00625 m (a million atoms) took 18 min on 2 Zen 4 cores, longer
+# on slower or shared machines
 RUN_TIMEOUT_S = 4 * 3600
 
 
