@@ -67,6 +67,9 @@ SWEEP_H_OVER_DELTA = 10.0
 # a run at H/delta = 40 took 1150 s of loop on one core of a quiet machine; on a shared one
 # (load 6-8) a run at H/delta = 20, m = 5 overran LAMMPS's default 30 min
 RUN_TIMEOUT_S = 6 * 3600
+# a tip further than this many horizons from y = 0 has turned or branched: the run's state is
+# 'branched', and in.strip stops the run there (-var offplane)
+OFF_PLANE_HORIZONS = 1.0
 CSV_COLUMNS = ("kernel", "m", "H_over_delta", "dx", "Delta", "Delta_model", "crossed", "state",
                "v_ss_over_cR", "v_ss", "Gamma_over_Gc", "Phi_over_Gc", "Phi_behind_over_Gc",
                "Phi_ahead_over_Gc", "closure_pct", "balance_pct", "atoms", "steps", "loop_s",
@@ -107,7 +110,7 @@ def measure(rows, uprime, g, h, Gc=G_C):
     crossed = bool(x[-1] >= L - 0.5 * H - 2.0 * g["delta"])
     # a crack that left the plane y = 0 by more than a horizon has branched or turned (the
     # tracker follows its longest branch)
-    off_plane = bool(np.max(np.abs(rows[:, 3])) > g["delta"])
+    off_plane = bool(np.max(np.abs(rows[:, 3])) > OFF_PLANE_HORIZONS * g["delta"])
     state = "branched" if off_plane else "crossed" if crossed else "arrested"
     mid = (x >= a + MIDDLE_START_H * H) & (x <= L - MIDDLE_END_H * H)
     nan = float("nan")
@@ -142,7 +145,8 @@ def run(workdir, kernel="gaussian", Delta=2.0, dx=DX, m=M, H_over_delta=H_OVER_D
     workdir = Path(workdir)
     g = geometry(dx, m, H_over_delta)
     vars_ = {"kernel": kernel, "dx": dx, "m": m, "Delta": Delta, "H": f"{g['H']:.10g}",
-             "L": f"{g['L']:.10g}", "a": f"{g['a']:.10g}", "E": E, "rho": RHO, "Gc": G_C}
+             "L": f"{g['L']:.10g}", "a": f"{g['a']:.10g}", "E": E, "rho": RHO, "Gc": G_C,
+             "offplane": OFF_PLANE_HORIZONS}
     start = time.perf_counter()
     if reuse:
         output = (workdir / "log.lammps").read_text()
