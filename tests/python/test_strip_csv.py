@@ -2,6 +2,11 @@
 """The strip results CSV: every row names the ranks and CPU that timed it (rows appended on
 another machine, or on more ranks, say so), a CSV from before that column takes its timing
 line, and the README's tables say which runs each timing covers (synthetic rows, no run)."""
+import math
+
+import numpy as np
+import pytest
+
 from bbpd.benchmarks import strip
 
 
@@ -60,3 +65,36 @@ def test_the_height_change_is_followed_across_m():
     rows[5].update(crossed=False, state="branched")
     assert strip.height_change_against_m(rows[:2] + rows[4:], "gaussian") == ""
     assert "doubling H from 10 to 20 horizons" in strip.summary_text(rows[:4])
+
+
+def test_a_crack_that_leaves_its_plane_is_branched_where_it_left(tmp_path):
+    g = strip.geometry()
+    delta, H, a = g["delta"], g["H"], g["a"]
+    n = 40
+    rows = np.zeros((n, 15))
+    rows[:, 1] = np.linspace(0.0, 1e-4, n)
+    rows[:, 2] = a + np.linspace(0.0, 3.0 * H, n)        # tip x
+    rows[:, 3] = -0.5 * strip.DX                          # on the plane, between two rows
+    rows[30:, 3] = -2.0 * delta                           # off it from the 31st output on
+    res = strip.measure(rows, 1.0, g, strip.DX)
+    assert res["state"] == "branched" and not res["crossed"]
+    assert res["left_plane_over_H"] == pytest.approx((rows[30, 2] - a) / H)
+    rows[:, 3] = -0.5 * strip.DX
+    assert math.isnan(strip.measure(rows, 1.0, g, strip.DX)["left_plane_over_H"])
+    # the CSV keeps it, the table and the summary say it; a CSV from before the column reads NaN
+    r = {c: 1.0 for c in strip.CSV_COLUMNS}
+    r.update(kernel="gaussian", m=4.0, H_over_delta=80.0, Delta=2.0, crossed=False,
+             state="branched", timing="1 rank, CPU A", left_plane_over_H=1.4925)
+    strip.write_csv(tmp_path / "s.csv", [r], "x")
+    back = strip.read_rows(tmp_path / "s.csv")[0]
+    assert back["left_plane_over_H"] == pytest.approx(1.4925)
+    assert "no (branched at a + 1.49 H)" in strip.table_markdown([back])
+    assert "Delta = 2 (m = 4, H/delta = 80, off the plane at a + 1.49 H)" in strip.summary_text([back])
+    old = tmp_path / "old.csv"
+    cols = [c for c in strip.CSV_COLUMNS if c != "left_plane_over_H"]
+    old.write_text(",".join(cols) + "\n" + ",".join(
+        {"kernel": "gaussian", "state": "branched", "crossed": "False", "timing": "t"}.get(c, "1")
+        for c in cols) + "\n")
+    back = strip.read_rows(old)[0]
+    assert math.isnan(back["left_plane_over_H"])
+    assert "no (branched) |" in strip.table_markdown([back])

@@ -73,3 +73,6 @@ def test_run_stops_once_the_crack_leaves_its_plane(tmp_path):
     y = np.abs(np.loadtxt(tmp_path / "strip.dat", ndmin=2)[:, 3])
     delta = strip.OFF_PLANE_HORIZONS * strip.DX * strip.M     # the horizon: dx m = DX M
     assert y[-1] > delta and np.count_nonzero(y > delta) == 1
+    x = np.loadtxt(tmp_path / "strip.dat", ndmin=2)[-1, 2]
+    g = strip.geometry(H_over_delta=CASE["H_over_delta"])
+    assert res["left_plane_over_H"] == pytest.approx((x - g["a"]) / g["H"])

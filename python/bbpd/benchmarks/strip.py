@@ -32,6 +32,7 @@ Command line (from the repository root):
 """
 
 import argparse
+import math
 import re
 import subprocess
 import sys
@@ -73,7 +74,7 @@ OFF_PLANE_HORIZONS = 1.0
 CSV_COLUMNS = ("kernel", "m", "H_over_delta", "dx", "Delta", "Delta_model", "crossed", "state",
                "v_ss_over_cR", "v_ss", "Gamma_over_Gc", "Phi_over_Gc", "Phi_behind_over_Gc",
                "Phi_ahead_over_Gc", "closure_pct", "balance_pct", "atoms", "steps", "loop_s",
-               "timing")
+               "timing", "left_plane_over_H")
 TEXT_COLUMNS = ("kernel", "state", "timing")
 TIMING = "# timing: "
 
@@ -110,13 +111,16 @@ def measure(rows, uprime, g, h, Gc=G_C):
     crossed = bool(x[-1] >= L - 0.5 * H - 2.0 * g["delta"])
     # a crack that left the plane y = 0 by more than a horizon has branched or turned (the
     # tracker follows its longest branch)
-    off_plane = bool(np.max(np.abs(rows[:, 3])) > OFF_PLANE_HORIZONS * g["delta"])
+    away = np.abs(rows[:, 3]) > OFF_PLANE_HORIZONS * g["delta"]
+    off_plane = bool(np.any(away))
     state = "branched" if off_plane else "crossed" if crossed else "arrested"
     mid = (x >= a + MIDDLE_START_H * H) & (x <= L - MIDDLE_END_H * H)
     nan = float("nan")
     res = {"crossed": crossed and not off_plane, "state": state, "v_ss": 0.0, "v_ss_over_cR": 0.0, "Gamma_over_Gc": nan,
            "Phi_over_Gc": nan, "Phi_behind_over_Gc": nan, "Phi_ahead_over_Gc": nan,
-           "closure_pct": nan}
+           "closure_pct": nan,
+           # where the tip first stood off the plane, in strip heights past the seed's end
+           "left_plane_over_H": float((x[np.argmax(away)] - a) / H) if off_plane else nan}
     res["balance_pct"] = 100.0 * float(np.max(np.abs(bal - bal[0])) / max(B[-1], 1e-300))
     if state != "crossed" or np.count_nonzero(mid) < MIN_MIDDLE_POINTS:
         return res
@@ -185,6 +189,8 @@ def read_rows(path):
     for r in rows:
         if "timing" not in r:
             r["timing"] = timing[0].split("loop time, ", 1)[-1] if timing else "unknown"
+        # a CSV from before the column: where its branched cracks left the plane is not known
+        r.setdefault("left_plane_over_H", float("nan"))
     return rows
 
 
@@ -291,6 +297,8 @@ def table_markdown(rows, command=None):
             run = (f"yes | {r['v_ss_over_cR']:.3f} | {r['Gamma_over_Gc']:.3f} | "
                    f"{r['Phi_over_Gc']:.3f} ({r['Phi_behind_over_Gc']:.3f} + {r['Phi_ahead_over_Gc']:.3f}) | "
                    f"{r['closure_pct']:+.1f}")
+        elif not math.isnan(r["left_plane_over_H"]):
+            run = f"no ({r['state']} at a + {r['left_plane_over_H']:.2f} H) | | | | "
         else:
             run = f"no ({r['state']}) | | | | "
         lines.append(f"| {r['kernel']} | {r['m']:g} | {r['H_over_delta']:g} | {r['Delta']:g} | "
@@ -357,6 +365,12 @@ def height_change_against_m(rows, kernel, h0=10.0, h1=20.0, Delta=2.0):
             + ", ".join(f"{d:+.4f} at m = {m:g}" for m, d in steps) + f": the change {trend}")
 
 
+def _where(r):
+    """', off the plane at a + 1.49 H' of a branched run that measured it, else ''"""
+    x = r.get("left_plane_over_H", float("nan"))
+    return "" if math.isnan(x) else f", off the plane at a + {x:.2f} H"
+
+
 def summary_text(rows):
     """Sentences computed from the runs: threshold, convergence in H/delta and in m, closure."""
     kernels = sorted({r["kernel"] for r in rows})
@@ -406,11 +420,11 @@ def summary_text(rows):
         parts.append("the grid's own c_R over c_R: " + ", ".join(
             f"{grid_rayleigh_ratio(k, m):.3f} at m = {m:g}" for m in ms_all))
         for state, what in (("branched", "branched or turned"), ("unsteady", "unsteady (Gamma > U')")):
-            ds = sorted({(r["m"], r["H_over_delta"], r["Delta"]) for r in rows
+            ds = sorted({(r["m"], r["H_over_delta"], r["Delta"], _where(r)) for r in rows
                          if r["kernel"] == k and r["state"] == state})
             if ds:
-                parts.append(f"{what} at " + ", ".join(f"Delta = {d:g} (m = {m:g}, H/delta = {h:g})"
-                                                       for m, h, d in ds))
+                parts.append(f"{what} at " + ", ".join(
+                    f"Delta = {d:g} (m = {m:g}, H/delta = {h:g}{w})" for m, h, d, w in ds))
         out.append(f"- **{k}**: " + "; ".join(parts) + ".")
     closed = [r for r in rows if r["crossed"]]
     if closed:
