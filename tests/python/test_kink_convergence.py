@@ -146,3 +146,60 @@ def test_the_whole_sweep_has_its_own_verdict_only_when_complete():
     assert kc.sweep_verdict(rows[1:]).startswith("No (kernel, m, R/delta)")
     # a pure Mode I run beside the sweep is left out of it
     assert kc.sweep_verdict(rows + [dict(row(10, 20, 0.0, 0.0), psi=0.0, alpha=0.0)]) == text
+
+
+CRIT = {90.0: (-70.53, -63.61, -75.23), 67.5: (-62.9, -57.6, -67.7), 45.0: (-53.13, -49.67, -57.33),
+        22.5: (-36.1, -34.9, -39.0)}
+
+
+def sweep(m, offset, spread=0.5, criterion=1):
+    """a whole mixed-mode sweep at m: every angle `offset` from the criterion CRIT[psi][criterion],
+    +- spread alternately over the eight runs (so the mean is `offset`)"""
+    out = []
+    for k, (psi, alpha) in enumerate((p, a) for p in CRIT for a in (0.0, 22.5)):
+        hs, hn, en = CRIT[psi]
+        angle = CRIT[psi][criterion] + offset + (spread if k % 2 else -spread)
+        out.append(dict(row(m, 20, angle, angle), psi=psi, alpha=alpha, hoop_stress=hs,
+                        hoop_strain=hn, energy=en))
+    return out
+
+
+def test_the_trend_across_m_names_the_criterion_the_sweep_approaches():
+    # 1.0 deg beyond hoop strain at m = 10, 0.3 deg at m = 15: nearest both times, RMS falling
+    text = kc.sweep_trend(sweep(10, -1.0) + sweep(15, -0.3))
+    assert text.startswith("Gaussian, R/delta = 20, the whole mixed-mode sweep at m = 10, 15, 2 "
+                           "horizons out: nearest by RMS max. hoop strain, max. hoop strain")
+    assert ("The sequence approaches max. hoop strain: the nearest at m = 10 and 15, its RMS "
+            "falling from 1.1 to 0.6°, admitted by the test at m = 15.") in text
+    # the finest m decides: a third, coarser sweep does not change the sentence's verdict
+    assert kc.sweep_trend(sweep(5, -4.0) + sweep(10, -1.0) + sweep(15, -0.3)).count(
+        "The sequence approaches max. hoop strain") == 2
+
+
+def test_the_trend_says_not_settled_and_why():
+    # moving away from hoop strain: nearest both times, but the RMS grows
+    grows = kc.sweep_trend(sweep(10, -0.3, spread=2.0) + sweep(15, -1.0, spread=2.0))
+    assert "Not settled: max. hoop strain stays the nearest, but from m = 10 to 15 its RMS grows" in grows
+    # the nearest changes from hoop strain to hoop stress
+    changes = kc.sweep_trend(sweep(10, -0.3) + sweep(15, 0.2, criterion=0))
+    assert ("Not settled: from m = 10 to 15 the nearest criterion changes from max. hoop strain to "
+            "max. hoop stress.") in changes
+    # every run 2.5 +- 0.1 deg beyond criteria that agree: a bias of 30 standard errors
+    agree = [dict(r, hoop_stress=r["hoop_strain"], energy=r["hoop_strain"])
+             for r in sweep(10, -3.0, spread=0.1) + sweep(15, -2.5, spread=0.1)]
+    none = kc.sweep_trend(agree)
+    assert "At m = 15 the two-standard-error test admits none of the criteria: none fits." in none
+    assert "approaches" not in none
+    # nearest both times, its RMS falling, but excluded by the test at the finest m
+    # (hoop strain 1.5 then 1.0 +- 0.2 deg away; hoop stress 3 deg either side, mean 0, so the
+    # test admits it with the larger RMS)
+    excluded = kc.sweep_trend([
+        dict(r, hoop_stress=r["angle_2d"] + (3.0 if k % 4 < 2 else -3.0), energy=r["angle_2d"] + 10.0)
+        for k, r in enumerate(sweep(10, -1.5, spread=0.2) + sweep(15, -1.0, spread=0.2))])
+    assert ("Not settled: max. hoop strain stays the nearest with its RMS falling, but at m = 15 "
+            "the test excludes it.") in excluded
+
+
+def test_the_trend_needs_two_whole_sweeps():
+    assert kc.sweep_trend(sweep(10, -1.0)).startswith("No trend across m")
+    assert kc.sweep_trend(sweep(10, -1.0) + sweep(15, -0.3)[1:]).startswith("No trend across m")

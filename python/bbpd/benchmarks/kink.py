@@ -217,9 +217,14 @@ def grid_offset(lab_deg):
     return abs((lab_deg + 22.5) % 45.0 - 22.5)
 
 
+def admitted(v):
+    """The criteria the mean deviation admits: |mean| <= 2 standard errors."""
+    return [c for c in CRITERIA if abs(v["bias"][c]) <= 2.0 * v["se"][c]]
+
+
 def consistency(v):
-    """Which criteria the mean deviation admits: |mean| <= 2 standard errors."""
-    ok = [c for c in CRITERIA if abs(v["bias"][c]) <= 2.0 * v["se"][c]]
+    """Which criteria the mean deviation admits, as a sentence (admitted's test)."""
+    ok = admitted(v)
     out = [c for c in CRITERIA if c not in ok]
     text = "With |mean| <= 2 standard errors as the test, the runs are consistent with " + (
         " and ".join(CRITERION_NAMES[c] for c in ok) if ok else "none of the criteria")

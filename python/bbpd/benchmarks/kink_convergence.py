@@ -276,35 +276,98 @@ def figure(rows, path=FIGURE):
         plt.close(fig)
 
 
-def sweep_verdict(rows):
-    """Sentences on every (kernel, m, R/delta) that has run the whole mixed-mode sweep (every
-    psi of the kink test but pure Mode I, in both crack directions): at each distance the RMS
-    and mean deviation from each criterion with its standard error, which criteria the mean
-    admits (bbpd.benchmarks.kink's test: |mean| <= 2 standard errors), and the grid's pull
-    (mean |angle at 22.5 deg - angle along the rows|)."""
+def _whole_sweeps(rows):
+    """{(kernel, m, R/delta): its rows as the kink test's verdict reads them} for every group
+    that has run the whole mixed-mode sweep (every psi of the kink test but pure Mode I, in
+    both crack directions), the Gaussian's first"""
     mixes = [p for p in kinkbench.MIXES_DEG if p > 0.0]
     need = {(p, a) for p in mixes for a in kinkbench.ALPHAS_DEG}
-    out = []
+    out = {}
     for kernel, m, rd in sorted({(r["kernel"], r["m"], r["R_over_delta"]) for r in rows},
                                 key=lambda g: (g[0] != KERNEL, g)):
         sel = [r for r in rows if (r["kernel"], r["m"], r["R_over_delta"]) == (kernel, m, rd)]
-        if not need <= {mix_of(r) for r in sel}:
-            continue
-        # the kink test's verdict reads one grid's rows: dx and the ramp are this group's
-        as_kink = [dict(r, psi=mix_of(r)[0], alpha=mix_of(r)[1], dx=m, ncross=kinkbench.NCROSS)
-                   for r in sel if mix_of(r) in need]
+        if need <= {mix_of(r) for r in sel}:
+            # the kink test's verdict reads one grid's rows: dx and the ramp are this group's
+            out[kernel, m, rd] = [dict(r, psi=mix_of(r)[0], alpha=mix_of(r)[1], dx=m,
+                                       ncross=kinkbench.NCROSS) for r in sel if mix_of(r) in need]
+    return out
+
+
+def _sweep_mixes():
+    return ", ".join(f"{p:g}" for p in sorted(p for p in kinkbench.MIXES_DEG if p > 0.0))
+
+
+def sweep_verdict(rows):
+    """Sentences on every (kernel, m, R/delta) that has run the whole mixed-mode sweep: at each
+    distance the RMS and mean deviation from each criterion with its standard error, which
+    criteria the mean admits (bbpd.benchmarks.kink's test: |mean| <= 2 standard errors), and
+    the grid's pull (mean |angle at 22.5 deg - angle along the rows|)."""
+    out = []
+    for (kernel, m, rd), as_kink in _whole_sweeps(rows).items():
         for dist in HORIZONS:
             v = kinkbench.verdict(as_kink, dist, dx=m)
             dev = ", ".join(f"{NAMES[c]} {v['rms'][c]:.1f} (mean {v['bias'][c]:+.1f} ± {v['se'][c]:.1f})"
                             for c in NAMES)
             out.append(f"{kernel[0].upper() + kernel[1:]}, m = {m:g}, R/delta = {rd:g}, the whole "
-                       f"mixed-mode sweep ({v['n']} runs: psi = "
-                       + ", ".join(f"{p:g}" for p in sorted(mixes)) + "°, both crack directions), at "
-                       f"{HORIZONS[dist]:g} horizons: RMS deviation (mean ± its standard error) {dev}°; "
-                       f"nearest by RMS {NAMES[v['best']]}. {kinkbench.consistency(v)} The crack's "
+                       f"mixed-mode sweep ({v['n']} runs: psi = {_sweep_mixes()}°, both crack "
+                       f"directions), at {HORIZONS[dist]:g} horizons: RMS deviation (mean ± its "
+                       f"standard error) {dev}°; nearest by RMS {NAMES[v['best']]}. "
+                       f"{kinkbench.consistency(v)} The crack's "
                        f"direction to the grid moves the angle by {v['pull_mean']:.1f}° on average "
                        f"(at most {v['pull_max']:.1f}°).")
     return " ".join(out) if out else "No (kernel, m, R/delta) has run the whole mixed-mode sweep."
+
+
+def _across(per_m, value, fmt=".1f"):
+    """'a, b, c': value(v) of each m's verdict v, in the order of per_m"""
+    return ", ".join(format(value(v), fmt) for v in per_m.values())
+
+
+def sweep_trend(rows):
+    """The whole mixed-mode sweep followed across m, per kernel and R/delta with two or more
+    complete sweeps, at each distance: the nearest criterion by RMS, each criterion's RMS and
+    the grid's pull at each m, and the verdict on the limit, read off the two finest m:
+    - 'none of the criteria fits' when the two-standard-error test admits none at the finest m;
+    - 'approaches X' when X is the nearest by RMS at both, its RMS does not grow from the one to
+      the other and the test admits X at the finest m;
+    - else 'not settled', saying why (the nearest changes, or its RMS grows, or the test
+      excludes it)."""
+    sweeps = _whole_sweeps(rows)
+    out = []
+    for kernel, rd in sorted({(k, rd) for k, _, rd in sweeps}, key=lambda g: (g[0] != KERNEL, g)):
+        ms = sorted(m for k, m, r in sweeps if (k, r) == (kernel, rd))
+        if len(ms) < 2:
+            continue
+        for dist in HORIZONS:
+            v = {m: dict(kinkbench.verdict(sweeps[kernel, m, rd], dist, dx=m), m=m) for m in ms}
+            prev, last = v[ms[-2]], v[ms[-1]]
+            best, best_prev = last["best"], prev["best"]
+            rms_text = "; ".join(f"{NAMES[c]} {_across(v, lambda x: x['rms'][c])}" for c in NAMES)
+            head = (f"{kernel[0].upper() + kernel[1:]}, R/delta = {rd:g}, the whole mixed-mode sweep "
+                    f"at m = {_across(v, lambda x: x['m'], 'g')}, {HORIZONS[dist]:g} horizons out: "
+                    f"nearest by RMS {_across(v, lambda x: NAMES[x['best']], 's')}; RMS {rms_text}°; "
+                    f"the grid's pull {_across(v, lambda x: x['pull_mean'])}°. ")
+            admitted = kinkbench.admitted(last)
+            step = f"m = {ms[-2]:g} to {ms[-1]:g}"
+            if not admitted:
+                tail = (f"At m = {ms[-1]:g} the two-standard-error test admits none of the criteria: "
+                        "none fits.")
+            elif best != best_prev:
+                tail = (f"Not settled: from {step} the nearest criterion changes from "
+                        f"{NAMES[best_prev]} to {NAMES[best]}.")
+            elif last["rms"][best] > prev["rms"][best]:
+                tail = (f"Not settled: {NAMES[best]} stays the nearest, but from {step} its RMS "
+                        f"grows from {prev['rms'][best]:.1f} to {last['rms'][best]:.1f}°.")
+            elif best not in admitted:
+                tail = (f"Not settled: {NAMES[best]} stays the nearest with its RMS falling, but at "
+                        f"m = {ms[-1]:g} the test excludes it.")
+            else:
+                tail = (f"The sequence approaches {NAMES[best]}: the nearest at m = {ms[-2]:g} and "
+                        f"{ms[-1]:g}, its RMS falling from {prev['rms'][best]:.1f} to "
+                        f"{last['rms'][best]:.1f}°, admitted by the test at m = {ms[-1]:g}.")
+            out.append(head + tail)
+    return (" ".join(out) if out else
+            "No trend across m: no (kernel, R/delta) has run the whole mixed-mode sweep at two m.")
 
 
 # ---------------------------------------------------------------------------- report

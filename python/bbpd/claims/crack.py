@@ -122,3 +122,7 @@ def kink_convergence_verdict(data):
 
 def kink_convergence_sweep(data):
     return kink_convergence.sweep_verdict(kink_convergence.read_rows())
+
+
+def kink_convergence_trend(data):
+    return kink_convergence.sweep_trend(kink_convergence.read_rows())
