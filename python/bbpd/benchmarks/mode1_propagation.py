@@ -268,13 +268,8 @@ def made_by_markdown(provenance):
 
 
 def cpu_markdown(rows):
-    """Which CPU timed which grids (the loop-time column)."""
-    by_cpu = {}
-    for r in rows:
-        by_cpu.setdefault(r["cpu"], []).append(r["dx"])
-    return "Loop times: " + "; ".join(
-        f"{cpu} (dx = {', '.join(f'{d:g}' for d in sorted(set(dxs), reverse=True))} m)"
-        for cpu, dxs in by_cpu.items()) + "."
+    """Which CPU timed which runs (the loop-time column; a grid may have been timed on two)."""
+    return csvfile.loop_times_note(rows, "cpu", lambda r: f"{r['kernel']} at dx = {r['dx']:g} m")
 
 
 def table_markdown(rows, command=None):
