@@ -169,8 +169,8 @@ def test_the_trend_across_m_names_the_criterion_the_sweep_approaches():
     text = kc.sweep_trend(sweep(10, -1.0) + sweep(15, -0.3))
     assert text.startswith("Gaussian, R/delta = 20, the whole mixed-mode sweep at m = 10, 15, 2 "
                            "horizons out: nearest by RMS max. hoop strain, max. hoop strain")
-    assert ("The sequence approaches max. hoop strain: the nearest at m = 10 and 15, its RMS "
-            "falling from 1.1 to 0.6°, admitted by the test at m = 15.") in text
+    assert ("The sequence approaches max. hoop strain: among the nearest at m = 10 and the nearest "
+            "at 15, its RMS falling from 1.1 to 0.6°, admitted by the test at m = 15.") in text
     # the finest m decides: a third, coarser sweep does not change the sentence's verdict
     assert kc.sweep_trend(sweep(5, -4.0) + sweep(10, -1.0) + sweep(15, -0.3)).count(
         "The sequence approaches max. hoop strain") == 2
@@ -203,3 +203,15 @@ def test_the_trend_says_not_settled_and_why():
 def test_the_trend_needs_two_whole_sweeps():
     assert kc.sweep_trend(sweep(10, -1.0)).startswith("No trend across m")
     assert kc.sweep_trend(sweep(10, -1.0) + sweep(15, -0.3)[1:]).startswith("No trend across m")
+
+
+def test_criteria_closer_than_the_grids_resolution_are_both_nearest():
+    # at m = 15 hoop stress moved to within 0.4 deg of hoop strain in every run: their RMS values
+    # lie closer than the grid's resolution (2 horizons: atan(1 / 60) = 0.95 deg), a tie
+    rows = sweep(10, -1.0) + sweep(15, -0.3)
+    tied = [dict(r, hoop_stress=r["hoop_strain"] + (0.4 if k % 2 else -0.4)) if r["m"] == 15.0 else r
+            for k, r in enumerate(rows)]
+    text = kc.sweep_trend(tied)
+    assert "Not settled: at m = 15 max. hoop stress and max. hoop strain lie equally near" in text
+    assert "closer than the grid's resolution, ± 1.0°" in text     # 2 horizons, m = 15
+    assert "approaches" not in text

@@ -323,13 +323,24 @@ def _across(per_m, value, fmt=".1f"):
     return ", ".join(format(value(v), fmt) for v in per_m.values())
 
 
+def _nearest(v, dist):
+    """the criteria whose RMS in verdict v (of m = v['m']) lies within the grid's resolution of
+    the smallest: those the sweep cannot tell apart"""
+    least = min(v["rms"].values())
+    return [c for c in NAMES if v["rms"][c] - least <= resolution_deg(v["m"], dist)]
+
+
 def sweep_trend(rows):
     """The whole mixed-mode sweep followed across m, per kernel and R/delta with two or more
     complete sweeps, at each distance: the nearest criterion by RMS, each criterion's RMS and
-    the grid's pull at each m, and the verdict on the limit, read off the two finest m:
+    the grid's pull at each m, and the verdict on the limit, read off the two finest m. RMS
+    values closer than the grid's resolution at that distance (resolution_deg) cannot be told
+    apart: those criteria are all nearest.
     - 'none of the criteria fits' when the two-standard-error test admits none at the finest m;
-    - 'approaches X' when X is the nearest by RMS at both, its RMS does not grow from the one to
-      the other and the test admits X at the finest m;
+    - 'not settled' when two criteria are nearest at the finest m;
+    - 'approaches X' when X is the one nearest at the finest m and among the nearest at the m
+      before, its RMS does not grow from the one to the other and the test admits X at the
+      finest m;
     - else 'not settled', saying why (the nearest changes, or its RMS grows, or the test
       excludes it)."""
     sweeps = _whole_sweeps(rows)
@@ -341,20 +352,25 @@ def sweep_trend(rows):
         for dist in HORIZONS:
             v = {m: dict(kinkbench.verdict(sweeps[kernel, m, rd], dist, dx=m), m=m) for m in ms}
             prev, last = v[ms[-2]], v[ms[-1]]
-            best, best_prev = last["best"], prev["best"]
+            best = last["best"]
             rms_text = "; ".join(f"{NAMES[c]} {_across(v, lambda x: x['rms'][c])}" for c in NAMES)
             head = (f"{kernel[0].upper() + kernel[1:]}, R/delta = {rd:g}, the whole mixed-mode sweep "
                     f"at m = {_across(v, lambda x: x['m'], 'g')}, {HORIZONS[dist]:g} horizons out: "
                     f"nearest by RMS {_across(v, lambda x: NAMES[x['best']], 's')}; RMS {rms_text}°; "
                     f"the grid's pull {_across(v, lambda x: x['pull_mean'])}°. ")
             admitted = kinkbench.admitted(last)
+            near, near_prev = _nearest(last, dist), _nearest(prev, dist)
             step = f"m = {ms[-2]:g} to {ms[-1]:g}"
             if not admitted:
                 tail = (f"At m = {ms[-1]:g} the two-standard-error test admits none of the criteria: "
                         "none fits.")
-            elif best != best_prev:
+            elif len(near) > 1:
+                tail = (f"Not settled: at m = {ms[-1]:g} " + " and ".join(NAMES[c] for c in near)
+                        + " lie equally near (RMS " + " and ".join(f"{last['rms'][c]:.1f}" for c in near)
+                        + f"°, closer than the grid's resolution, ± {resolution_deg(ms[-1], dist):.1f}°).")
+            elif best not in near_prev:
                 tail = (f"Not settled: from {step} the nearest criterion changes from "
-                        f"{NAMES[best_prev]} to {NAMES[best]}.")
+                        + " and ".join(NAMES[c] for c in near_prev) + f" to {NAMES[best]}.")
             elif last["rms"][best] > prev["rms"][best]:
                 tail = (f"Not settled: {NAMES[best]} stays the nearest, but from {step} its RMS "
                         f"grows from {prev['rms'][best]:.1f} to {last['rms'][best]:.1f}°.")
@@ -362,8 +378,8 @@ def sweep_trend(rows):
                 tail = (f"Not settled: {NAMES[best]} stays the nearest with its RMS falling, but at "
                         f"m = {ms[-1]:g} the test excludes it.")
             else:
-                tail = (f"The sequence approaches {NAMES[best]}: the nearest at m = {ms[-2]:g} and "
-                        f"{ms[-1]:g}, its RMS falling from {prev['rms'][best]:.1f} to "
+                tail = (f"The sequence approaches {NAMES[best]}: among the nearest at m = {ms[-2]:g} "
+                        f"and the nearest at {ms[-1]:g}, its RMS falling from {prev['rms'][best]:.1f} to "
                         f"{last['rms'][best]:.1f}°, admitted by the test at m = {ms[-1]:g}.")
             out.append(head + tail)
     return (" ".join(out) if out else
