@@ -613,7 +613,8 @@ def findings_markdown(rows):
     if moving:
         v_sent += (" For " + " and ".join(moving) + " it still moves ("
                    + ", ".join(f"{verdict[k][2]:.3f} m" for k in moving)
-                   + "), so for them the form the limit follows is not settled.")
+                   + f"), so for {'them' if len(moving) > 1 else 'it'} the form the limit "
+                   "follows is not settled.")
     speeds = "; ".join(
         f"{s:g} t_c: {_span([r[f'v_{s:g}tc_over_cR'] for r in fine], '.2f')} (theory "
         f"{prob.tip_position(np.array([s * prob.t_c]), 'toughness')[1][0] / prob.c_r:.2f} / "
