@@ -215,3 +215,28 @@ def test_criteria_closer_than_the_grids_resolution_are_both_nearest():
     assert "Not settled: at m = 15 max. hoop stress and max. hoop strain lie equally near" in text
     assert "closer than the grid's resolution, ± 1.0°" in text     # 2 horizons, m = 15
     assert "approaches" not in text
+
+
+def test_a_partial_finest_sweep_is_followed_over_the_same_mixes():
+    # whole sweeps at m = 10 and 15, and at m = 20 only psi = 90 and 45 along the rows, moving
+    # from 0.3 deg beyond hoop strain (m = 15) to 2 deg beyond it
+    part = [dict(r, angle_2d=r["hoop_strain"] - 2.0, angle_4d=r["hoop_strain"] - 2.0)
+            for r in sweep(20, 0.0) if r["psi"] in (90.0, 45.0) and r["alpha"] == 0.0]
+    rows = sweep(10, -1.0) + sweep(15, -0.3) + part
+    text = kc.subset_trend(rows)
+    assert text.startswith("Gaussian, R/delta = 20, the 2 mixes run so far at m = 20 (psi = 90° along "
+                           "the rows, psi = 45° along the rows) followed over m = 10, 15, 20, 2 horizons out")
+    # both mixes are even runs of sweep() (offset - spread): 1.5 deg beyond hoop strain at
+    # m = 10, 0.8 at m = 15, 2.0 at m = 20 (over the whole sweep the RMS would be 1.1 and 0.6)
+    assert "max. hoop strain 1.5, 0.8, 2.0" in text
+    assert "From m = 15 to 20 the nearest at 20: max. hoop strain's RMS grows from 0.8 to 2.0°" in text
+    assert "not the limit" in text and "approaches" not in text
+    # the whole trend still reads the complete sweeps only
+    assert "at m = 10, 15, 2 horizons out" in kc.sweep_trend(rows)
+
+
+def test_the_subset_trend_needs_a_partial_finest_m_and_a_whole_coarser_sweep():
+    nothing = "Every finest m has run the whole mixed-mode sweep or none of it."
+    assert kc.subset_trend(sweep(10, -1.0) + sweep(15, -0.3)) == nothing     # finest m complete
+    lone = [r for r in sweep(20, 0.0) if r["psi"] == 90.0] + [r for r in sweep(15, 0.0) if r["psi"] == 90.0]
+    assert kc.subset_trend(lone) == nothing      # no coarser whole sweep to hold it against

@@ -386,6 +386,67 @@ def sweep_trend(rows):
             "No trend across m: no (kernel, R/delta) has run the whole mixed-mode sweep at two m.")
 
 
+def _mixes_at(rows, kernel, m, rd):
+    """the mixed-mode (psi, alpha) pairs run for (kernel, m, R/delta)"""
+    return {mix_of(r) for r in rows
+            if (r["kernel"], r["m"], r["R_over_delta"]) == (kernel, m, rd) and mix_of(r)[0] > 0.0}
+
+
+def _mix_list(mixes):
+    return ", ".join(f"psi = {p:g}° " + ("along the rows" if a == 0.0 else f"at {a:g}°")
+                     for p, a in sorted(mixes, key=lambda x: (-x[0], x[1])))
+
+
+def subset_trend(rows):
+    """Where the finest m has run only part of the mixed-mode sweep that a coarser m ran whole
+    (same kernel and R/delta): those mixes followed across
+    every m that ran them all, per kernel and R/delta, at each distance: each criterion's RMS
+    over the same mixes and the nearest (criteria within the grid's resolution of the smallest
+    RMS tie), and whether the RMS of the finest m's nearest falls or grows over the last step.
+    A part of the sweep names no limit: sweep_trend does, once the finest m is complete."""
+    whole = _whole_sweeps(rows)
+    out = []
+    for kernel, rd in sorted({(r["kernel"], r["R_over_delta"]) for r in rows},
+                             key=lambda g: (g[0] != KERNEL, g)):
+        finest = max(r["m"] for r in rows if (r["kernel"], r["R_over_delta"]) == (kernel, rd))
+        mixes = _mixes_at(rows, kernel, finest, rd)
+        if (not mixes or (kernel, finest, rd) in whole
+                or not any((k, r_) == (kernel, rd) for k, _, r_ in whole)):
+            continue    # complete, or no coarser m ran the whole sweep to hold it against
+        ms = sorted(m for m in {r["m"] for r in rows if (r["kernel"], r["R_over_delta"]) == (kernel, rd)}
+                    if mixes <= _mixes_at(rows, kernel, m, rd))
+        if len(ms) < 2:
+            continue
+        for dist in HORIZONS:
+            key = f"angle_{dist}"
+            per_m = {}
+            for m in ms:
+                sel = [r for r in rows if (r["kernel"], r["m"], r["R_over_delta"]) == (kernel, m, rd)
+                       and mix_of(r) in mixes and r[key] is not None]
+                if len(sel) != len(mixes):
+                    break       # a run that measured no angle this far out: no RMS over the set
+                per_m[m] = {"m": m, "rms": {c: kinkbench.rms([r[key] - r[c] for r in sel]) for c in NAMES}}
+            if len(per_m) < 2:
+                continue
+            seq = list(per_m)
+            last, prev = per_m[seq[-1]], per_m[seq[-2]]
+            near = _nearest(last, dist)
+            rms_text = "; ".join(f"{NAMES[c]} {_across(per_m, lambda x: x['rms'][c])}" for c in NAMES)
+            nearest_text = ", ".join(
+                f"at m = {m:g} " + " and ".join(NAMES[c] for c in _nearest(v, dist))
+                + (" (tied)" if len(_nearest(v, dist)) > 1 else "") for m, v in per_m.items())
+            count = "the one mix" if len(mixes) == 1 else f"the {len(mixes)} mixes"
+            s = (f"{kernel[0].upper() + kernel[1:]}, R/delta = {rd:g}, {count} run so far at m = {finest:g} "
+                 f"({_mix_list(mixes)}) followed over m = {_across(per_m, lambda x: x['m'], 'g')}, "
+                 f"{HORIZONS[dist]:g} horizons out: RMS {rms_text}°; nearest {nearest_text}. ")
+            moves = [f"{NAMES[c]}'s RMS {'falls' if last['rms'][c] < prev['rms'][c] else 'grows'} "
+                     f"from {prev['rms'][c]:.1f} to {last['rms'][c]:.1f}°" for c in near]
+            s += (f"From m = {seq[-2]:g} to {seq[-1]:g} the nearest at {seq[-1]:g}: " + "; ".join(moves)
+                  + f". A part of the sweep: it says which way these mixes move, not the limit.")
+            out.append(s)
+    return " ".join(out) if out else "Every finest m has run the whole mixed-mode sweep or none of it."
+
+
 # ---------------------------------------------------------------------------- report
 
 REPORT_TITLE = "Kink test: convergence of the pure Mode II angle in m and in the disk's size"

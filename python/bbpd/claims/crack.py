@@ -126,3 +126,7 @@ def kink_convergence_sweep(data):
 
 def kink_convergence_trend(data):
     return kink_convergence.sweep_trend(kink_convergence.read_rows())
+
+
+def kink_convergence_subset(data):
+    return kink_convergence.subset_trend(kink_convergence.read_rows())
