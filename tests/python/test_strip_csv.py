@@ -98,3 +98,16 @@ def test_a_crack_that_leaves_its_plane_is_branched_where_it_left(tmp_path):
     back = strip.read_rows(old)[0]
     assert math.isnan(back["left_plane_over_H"])
     assert "no (branched) |" in strip.table_markdown([back])
+
+
+def test_a_taller_strip_that_branched_ends_the_height_sequence_in_its_sentence():
+    rows = [row("gaussian", 4.0, 10.0, v=0.619), row("gaussian", 4.0, 20.0, v=0.598),
+            row("gaussian", 4.0, 40.0, v=0.571), row("gaussian", 4.0, 80.0, v=0.0)]
+    rows[3].update(crossed=False, state="branched", left_plane_over_H=1.55)
+    text = strip.summary_text(rows)
+    assert ("0.571 at H/delta = 40 (the last refinement moves it by 0.0270 c_R: more than 0.02 c_R; "
+            "the one before by 0.0210 c_R: the change does not shrink, not converged), and at "
+            "H/delta = 80 the crack branched or turned, off the plane at a + 1.55 H: no steady "
+            "speed there") in text
+    # every height crossed: nothing added
+    assert "no steady speed there" not in strip.summary_text(rows[:3])

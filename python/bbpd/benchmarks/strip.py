@@ -323,6 +323,8 @@ def speed_at(rows, kernel, m, H_over_delta, Delta):
 
 
 CONVERGED_SPEED = 0.02    # v_ss/c_R between two refinements (issue's criterion)
+STATE_WORDS = {"branched": "branched or turned", "arrested": "arrested",
+               "unsteady": "ran unsteadily (Gamma > U')"}
 
 
 def height_verdict(speeds):
@@ -397,10 +399,17 @@ def summary_text(rows):
             if len(hd) < 2 and m != M:
                 continue    # one height says nothing of the convergence in H
             speeds = [(h, speed_at(rows, k, m, h, 2.0)) for h in hd]
+            # a height at which the crack did not run steadily ends the sequence in H: say so
+            # beside it, not only in the list of branched runs
+            lost = sorted((r["H_over_delta"], STATE_WORDS.get(r["state"], r["state"]), _where(r))
+                          for r in rows if r["kernel"] == k and r["m"] == m and r["Delta"] == 2.0
+                          and not r["crossed"] and len(hd) >= 2)
             if speeds:
                 parts.append(f"v_ss/c_R at Delta = 2, m = {m:g}: "
                              + ", ".join(f"{v:.3f} at H/delta = {h:g}" for h, v in speeds)
-                             + height_verdict(speeds))
+                             + height_verdict(speeds)
+                             + "".join(f", and at H/delta = {h:g} the crack {s}{w}: no steady speed "
+                                       "there" for h, s, w in lost))
         for h in sorted({r["H_over_delta"] for r in rows if r["kernel"] == k}):
             ms = sorted({r["m"] for r in rows if r["kernel"] == k and r["H_over_delta"] == h
                          and r["Delta"] == 2.0})
