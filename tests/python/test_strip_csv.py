@@ -111,3 +111,15 @@ def test_a_taller_strip_that_branched_ends_the_height_sequence_in_its_sentence()
             "speed there") in text
     # every height crossed: nothing added
     assert "no steady speed there" not in strip.summary_text(rows[:3])
+
+
+def test_the_largest_drift_is_named_apart_when_its_run_did_not_cross():
+    rows = [row("gaussian", 4.0, 10.0), row("gaussian", 4.0, 20.0), row("gaussian", 3.0, 20.0)]
+    for r, drift, closure in zip(rows, (0.2, 0.3, 1.24), (0.5, -1.7, 0.0)):
+        r.update(balance_pct=drift, closure_pct=closure)
+    text = strip.summary_text(rows)
+    assert "drifts by at most 1.24 % of the broken-bond energy in them." in text   # all crossed
+    rows[2].update(crossed=False, state="branched")
+    text = strip.summary_text(rows)
+    assert ("drifts by at most 0.30 % of the broken-bond energy in them, and by 1.24 % in the "
+            "branched run gaussian, m = 3, H/delta = 20, Delta = 2, the largest of all 3 runs.") in text

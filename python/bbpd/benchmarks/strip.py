@@ -438,11 +438,18 @@ def summary_text(rows):
     closed = [r for r in rows if r["crossed"]]
     if closed:
         worst = max(closed, key=lambda r: abs(r["closure_pct"]))
-        out.append(f"- Closure Gamma + Phi = U' over the {len(closed)} runs that crossed: within "
-                   f"{abs(worst['closure_pct']):.1f} % (worst: {worst['kernel']}, m = {worst['m']:g}, "
-                   f"H/delta = {worst['H_over_delta']:g}, Delta = {worst['Delta']:g}); the energy "
-                   f"balance of compute bbpd/energy drifts by at most "
-                   f"{max(r['balance_pct'] for r in rows):.2f} % of the broken-bond energy.")
+        drift = max(rows, key=lambda r: r["balance_pct"])
+        text = (f"- Closure Gamma + Phi = U' over the {len(closed)} runs that crossed: within "
+                f"{abs(worst['closure_pct']):.1f} % (worst: {worst['kernel']}, m = {worst['m']:g}, "
+                f"H/delta = {worst['H_over_delta']:g}, Delta = {worst['Delta']:g}); the energy "
+                f"balance of compute bbpd/energy drifts by at most "
+                f"{max(r['balance_pct'] for r in closed):.2f} % of the broken-bond energy in them")
+        if not drift["crossed"]:
+            # the largest drift of all runs is one that did not run steadily: name it apart
+            text += (f", and by {drift['balance_pct']:.2f} % in the {drift['state']} run "
+                     f"{drift['kernel']}, m = {drift['m']:g}, H/delta = {drift['H_over_delta']:g}, "
+                     f"Delta = {drift['Delta']:g}, the largest of all {len(rows)} runs")
+        out.append(text + ".")
     return "\n".join(out)
 
 
