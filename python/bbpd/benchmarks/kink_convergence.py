@@ -430,17 +430,16 @@ def subset_trend(rows):
                 continue
             seq = list(per_m)
             last, prev = per_m[seq[-1]], per_m[seq[-2]]
-            near = _nearest(last, dist)
             rms_text = "; ".join(f"{NAMES[c]} {_across(per_m, lambda x: x['rms'][c])}" for c in NAMES)
-            nearest_text = ", ".join(
-                f"at m = {m:g} " + " and ".join(NAMES[c] for c in _nearest(v, dist))
-                + (" (tied)" if len(_nearest(v, dist)) > 1 else "") for m, v in per_m.items())
+            ties = {m: _nearest(v, dist) for m, v in per_m.items()}
+            nearest_text = ", ".join(f"at m = {m:g} " + " and ".join(NAMES[c] for c in t)
+                                     + (" (tied)" if len(t) > 1 else "") for m, t in ties.items())
             count = "the one mix" if len(mixes) == 1 else f"the {len(mixes)} mixes"
             s = (f"{kernel[0].upper() + kernel[1:]}, R/delta = {rd:g}, {count} run so far at m = {finest:g} "
                  f"({_mix_list(mixes)}) followed over m = {_across(per_m, lambda x: x['m'], 'g')}, "
                  f"{HORIZONS[dist]:g} horizons out: RMS {rms_text}°; nearest {nearest_text}. ")
             moves = [f"{NAMES[c]}'s RMS {'falls' if last['rms'][c] < prev['rms'][c] else 'grows'} "
-                     f"from {prev['rms'][c]:.1f} to {last['rms'][c]:.1f}°" for c in near]
+                     f"from {prev['rms'][c]:.1f} to {last['rms'][c]:.1f}°" for c in ties[seq[-1]]]
             s += (f"From m = {seq[-2]:g} to {seq[-1]:g} the nearest at {seq[-1]:g}: " + "; ".join(moves)
                   + f". A part of the sweep: it says which way these mixes move, not the limit.")
             out.append(s)

@@ -401,9 +401,10 @@ def summary_text(rows):
             speeds = [(h, speed_at(rows, k, m, h, 2.0)) for h in hd]
             # a height at which the crack did not run steadily ends the sequence in H: say so
             # beside it, not only in the list of branched runs
-            lost = sorted((r["H_over_delta"], STATE_WORDS.get(r["state"], r["state"]), _where(r))
-                          for r in rows if r["kernel"] == k and r["m"] == m and r["Delta"] == 2.0
-                          and not r["crossed"] and len(hd) >= 2)
+            lost = [] if len(hd) < 2 else sorted(
+                (r["H_over_delta"], STATE_WORDS.get(r["state"], r["state"]), _where(r))
+                for r in rows if r["kernel"] == k and r["m"] == m and r["Delta"] == 2.0
+                and not r["crossed"])
             if speeds:
                 parts.append(f"v_ss/c_R at Delta = 2, m = {m:g}: "
                              + ", ".join(f"{v:.3f} at H/delta = {h:g}" for h, v in speeds)
