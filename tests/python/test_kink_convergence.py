@@ -240,3 +240,30 @@ def test_the_subset_trend_needs_a_partial_finest_m_and_a_whole_coarser_sweep():
     assert kc.subset_trend(sweep(10, -1.0) + sweep(15, -0.3)) == nothing     # finest m complete
     lone = [r for r in sweep(20, 0.0) if r["psi"] == 90.0] + [r for r in sweep(15, 0.0) if r["psi"] == 90.0]
     assert kc.subset_trend(lone) == nothing      # no coarser whole sweep to hold it against
+
+
+def test_kernel_comparison_holds_the_kernels_against_one_another_over_the_mixes_they_share():
+    gauss = sweep(15, -0.3)                       # the whole sweep, near hoop strain
+    near = [dict(r, kernel="constant", angle_2d=r["angle_2d"] - 0.5, angle_4d=r["angle_4d"] - 0.5)
+            for r in sweep(15, -0.3) if r["alpha"] == 0.0 and r["psi"] in (90.0, 67.5)]
+    text = kc.kernel_comparison(gauss + near)
+    # only the two mixes both kernels ran, the Gaussian first
+    assert text.startswith("m = 15, R/delta = 20, the 2 mixes run by every kernel here (psi = 90° "
+                           "along the rows, psi = 67.5° along the rows), 2 horizons out: RMS Gaussian")
+    assert "The kernels' angles lie 0.5° apart on average and at most 0.5°" in text
+    assert "within the two runs' error bars (± 1.0° each)" in text
+    assert text.count("The kernel does not change the nearest criterion (max. hoop strain).") == 2
+    # a constant kernel at hoop stress instead: the nearest criterion differs, the spread is real
+    far = [dict(r, kernel="constant", angle_2d=r["hoop_stress"], angle_4d=r["hoop_stress"]) for r in near]
+    text = kc.kernel_comparison(gauss + far)
+    assert text.count("The kernel changes the nearest criterion.") == 2
+    assert "beyond the two runs' error bars (± 0.5° each)" in text
+
+
+def test_kernel_comparison_needs_two_kernels_on_two_mixes():
+    nothing = "No (m, R/delta) has more than one kernel over more than one mixed mode."
+    assert kc.kernel_comparison(sweep(15, -0.3)) == nothing                 # one kernel
+    lone = [dict(r, kernel="constant") for r in sweep(15, -0.3) if r["psi"] == 90.0 and r["alpha"] == 0.0]
+    assert kc.kernel_comparison(sweep(15, -0.3) + lone) == nothing          # pure Mode II alone
+    other_m = [dict(r, kernel="constant", m=10.0) for r in sweep(15, -0.3)]
+    assert kc.kernel_comparison(sweep(15, -0.3) + other_m) == nothing       # not at one m

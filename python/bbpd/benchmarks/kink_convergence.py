@@ -446,6 +446,64 @@ def subset_trend(rows):
     return " ".join(out) if out else "Every finest m has run the whole mixed-mode sweep or none of it."
 
 
+# a comparison over the mode mix needs more than one mix: pure Mode II alone is in verdict()
+KERNEL_COMPARISON_MIN_MIXES = 2
+
+
+def _capital(kernel):
+    return kernel[0].upper() + kernel[1:]
+
+
+def kernel_comparison(rows):
+    """Per (m, R/delta) run by more than one kernel, over the mixed-mode mixes every such kernel
+    ran (at least KERNEL_COMPARISON_MIN_MIXES), at each distance: each kernel's RMS from each
+    criterion and its nearest (criteria within the grid's resolution of the smallest RMS tie),
+    and how far the kernels' angles lie apart (largest minus smallest, per mix), held against
+    the two runs' error bars. Whether the kernel changes the nearest criterion is computed: the
+    kernels agree when one criterion is among the nearest of every kernel."""
+    out = []
+    for m, rd in sorted({(r["m"], r["R_over_delta"]) for r in rows}, key=lambda g: (g[1], g[0])):
+        kernels = sorted({r["kernel"] for r in rows if (r["m"], r["R_over_delta"]) == (m, rd)
+                          and mix_of(r)[0] > 0.0}, key=lambda k: (k != KERNEL, k))
+        if len(kernels) < 2:
+            continue
+        mixes = set.intersection(*(_mixes_at(rows, k, m, rd) for k in kernels))
+        if len(mixes) < KERNEL_COMPARISON_MIN_MIXES:
+            continue
+        for dist in HORIZONS:
+            key = f"angle_{dist}"
+            runs = {(r["kernel"], mix_of(r)): r for r in rows
+                    if (r["m"], r["R_over_delta"]) == (m, rd) and r["kernel"] in kernels
+                    and mix_of(r) in mixes}
+            measured = sorted(x for x in mixes if all(runs[k, x][key] is not None for k in kernels))
+            if len(measured) < KERNEL_COMPARISON_MIN_MIXES:
+                continue
+            per_k = {k: {"m": m, "rms": {c: kinkbench.rms([runs[k, x][key] - runs[k, x][c] for x in measured])
+                                         for c in NAMES}} for k in kernels}
+            ties = {k: _nearest(v, dist) for k, v in per_k.items()}
+            spread = {x: max(runs[k, x][key] for k in kernels) - min(runs[k, x][key] for k in kernels)
+                      for x in measured}
+            widest = max(spread, key=spread.get)
+            bar = resolution_deg(m, dist)
+            rms_text = "; ".join(f"{_capital(k)} " + ", ".join(f"{NAMES[c]} {per_k[k]['rms'][c]:.1f}"
+                                                              for c in NAMES) for k in kernels)
+            near_text = ", ".join(f"{_capital(k)} " + " and ".join(NAMES[c] for c in ties[k])
+                                  + (" (tied)" if len(ties[k]) > 1 else "") for k in kernels)
+            common = [c for c in NAMES if all(c in ties[k] for k in kernels)]
+            within = ("within" if spread[widest] <= 2.0 * bar else "beyond")
+            s = (f"m = {m:g}, R/delta = {rd:g}, the {len(measured)} mixes run by every kernel here "
+                 f"({_mix_list(measured)}), {HORIZONS[dist]:g} horizons out: RMS {rms_text}°; nearest "
+                 f"{near_text}. The kernels' angles lie {_f(sum(spread.values()) / len(spread))}° apart "
+                 f"on average and at most {_f(spread[widest])}° ({_mix_list([widest])}), {within} the "
+                 f"two runs' error bars (± {bar:.1f}° each). ")
+            s += (f"The kernel does not change the nearest criterion ("
+                  + " and ".join(NAMES[c] for c in common) + ")." if common else
+                  "The kernel changes the nearest criterion.")
+            out.append(s)
+    return (" ".join(out) if out else
+            "No (m, R/delta) has more than one kernel over more than one mixed mode.")
+
+
 # ---------------------------------------------------------------------------- report
 
 REPORT_TITLE = "Kink test: convergence of the pure Mode II angle in m and in the disk's size"

@@ -130,3 +130,7 @@ def kink_convergence_trend(data):
 
 def kink_convergence_subset(data):
     return kink_convergence.subset_trend(kink_convergence.read_rows())
+
+
+def kink_convergence_kernels(data):
+    return kink_convergence.kernel_comparison(kink_convergence.read_rows())
