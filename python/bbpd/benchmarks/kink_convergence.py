@@ -116,6 +116,11 @@ def _signed(v):
     return "+0.0" if float(format(v, ".1f")) == 0.0 else format(v, "+.1f")
 
 
+def _capital(text):
+    """text with its first letter a capital (a kernel's name opening a sentence)"""
+    return text[0].upper() + text[1:]
+
+
 def mix_of(r):
     """(psi, alpha) of a row (the rows of pure Mode II along the rows may omit them)"""
     return (float(r.get("psi", PSI)), float(r.get("alpha", ALPHA)))
@@ -230,8 +235,8 @@ def _group_verdict(rows, kernel, psi=PSI, alpha=ALPHA):
         if pairs:
             out.append(f"at {dist[0]} horizons, doubling the disk to R/delta = 20 moves it by " + ", ".join(
                 f"{_signed(d)}° at m = {m:g}" for m, d in pairs))
-    return (". ".join(s[0].upper() + s[1:] for s in out) + "." if out else
-            f"{where[0].upper() + where[1:]}: no verdict, it needs two values of m at one R/delta.")
+    return (". ".join(_capital(s) for s in out) + "." if out else
+            f"{_capital(where)}: no verdict, it needs two values of m at one R/delta.")
 
 
 FIGURE = kinkbench.FOLDER / "kink_convergence.png"
@@ -308,7 +313,7 @@ def sweep_verdict(rows):
             v = kinkbench.verdict(as_kink, dist, dx=m)
             dev = ", ".join(f"{NAMES[c]} {v['rms'][c]:.1f} (mean {v['bias'][c]:+.1f} ± {v['se'][c]:.1f})"
                             for c in NAMES)
-            out.append(f"{kernel[0].upper() + kernel[1:]}, m = {m:g}, R/delta = {rd:g}, the whole "
+            out.append(f"{_capital(kernel)}, m = {m:g}, R/delta = {rd:g}, the whole "
                        f"mixed-mode sweep ({v['n']} runs: psi = {_sweep_mixes()}°, both crack "
                        f"directions), at {HORIZONS[dist]:g} horizons: RMS deviation (mean ± its "
                        f"standard error) {dev}°; nearest by RMS {NAMES[v['best']]}. "
@@ -354,7 +359,7 @@ def sweep_trend(rows):
             prev, last = v[ms[-2]], v[ms[-1]]
             best = last["best"]
             rms_text = "; ".join(f"{NAMES[c]} {_across(v, lambda x: x['rms'][c])}" for c in NAMES)
-            head = (f"{kernel[0].upper() + kernel[1:]}, R/delta = {rd:g}, the whole mixed-mode sweep "
+            head = (f"{_capital(kernel)}, R/delta = {rd:g}, the whole mixed-mode sweep "
                     f"at m = {_across(v, lambda x: x['m'], 'g')}, {HORIZONS[dist]:g} horizons out: "
                     f"nearest by RMS {_across(v, lambda x: NAMES[x['best']], 's')}; RMS {rms_text}°; "
                     f"the grid's pull {_across(v, lambda x: x['pull_mean'])}°. ")
@@ -435,7 +440,7 @@ def subset_trend(rows):
             nearest_text = ", ".join(f"at m = {m:g} " + " and ".join(NAMES[c] for c in t)
                                      + (" (tied)" if len(t) > 1 else "") for m, t in ties.items())
             count = "the one mix" if len(mixes) == 1 else f"the {len(mixes)} mixes"
-            s = (f"{kernel[0].upper() + kernel[1:]}, R/delta = {rd:g}, {count} run so far at m = {finest:g} "
+            s = (f"{_capital(kernel)}, R/delta = {rd:g}, {count} run so far at m = {finest:g} "
                  f"({_mix_list(mixes)}) followed over m = {_across(per_m, lambda x: x['m'], 'g')}, "
                  f"{HORIZONS[dist]:g} horizons out: RMS {rms_text}°; nearest {nearest_text}. ")
             moves = [f"{NAMES[c]}'s RMS {'falls' if last['rms'][c] < prev['rms'][c] else 'grows'} "
@@ -448,10 +453,6 @@ def subset_trend(rows):
 
 # a comparison over the mode mix needs more than one mix: pure Mode II alone is in verdict()
 KERNEL_COMPARISON_MIN_MIXES = 2
-
-
-def _capital(kernel):
-    return kernel[0].upper() + kernel[1:]
 
 
 def kernel_comparison(rows):
