@@ -267,3 +267,15 @@ def test_kernel_comparison_needs_two_kernels_on_two_mixes():
     assert kc.kernel_comparison(sweep(15, -0.3) + lone) == nothing          # pure Mode II alone
     other_m = [dict(r, kernel="constant", m=10.0) for r in sweep(15, -0.3)]
     assert kc.kernel_comparison(sweep(15, -0.3) + other_m) == nothing       # not at one m
+
+
+def test_an_exclusion_smaller_than_the_grid_resolves_is_said_to_be():
+    # 0.5 deg beyond hoop strain with almost no scatter: the standard error excludes it, but
+    # 0.5 deg is within one angle's bar at 2 horizons (m = 15: 1.0) and not at 4 (0.48)
+    text = kc.sweep_verdict(sweep(15, -0.5, spread=0.05))
+    assert text.count("exclude max. hoop stress") == 2 and "and max. hoop strain (BBPD kinks more by 0.5" in text
+    assert text.count("Of these, max. hoop strain's mean (-0.5°) lies within one angle's error bar "
+                      "(± 1.0°): excluded by less than the grid resolves.") == 1
+    # an exclusion by more than the bar, or a criterion the test admits, gets no such sentence
+    assert "Of these" not in kc.sweep_verdict(sweep(15, -2.0, spread=0.05))
+    assert "Of these" not in kc.sweep_verdict(sweep(15, -0.5, spread=2.0))

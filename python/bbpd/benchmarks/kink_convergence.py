@@ -317,10 +317,23 @@ def sweep_verdict(rows):
                        f"mixed-mode sweep ({v['n']} runs: psi = {_sweep_mixes()}°, both crack "
                        f"directions), at {HORIZONS[dist]:g} horizons: RMS deviation (mean ± its "
                        f"standard error) {dev}°; nearest by RMS {NAMES[v['best']]}. "
-                       f"{kinkbench.consistency(v)} The crack's "
+                       f"{kinkbench.consistency(v)}{_unresolved(v, m, dist)} The crack's "
                        f"direction to the grid moves the angle by {v['pull_mean']:.1f}° on average "
                        f"(at most {v['pull_max']:.1f}°).")
     return " ".join(out) if out else "No (kernel, m, R/delta) has run the whole mixed-mode sweep."
+
+
+def _unresolved(v, m, dist):
+    """' ...' naming the criteria the two-standard-error test excludes by a mean deviation no
+    larger than one angle's error bar (resolution_deg): the standard error of the mean falls
+    with the number of runs, the grid's resolution does not, so such an exclusion says less
+    than the grid can resolve"""
+    bar = resolution_deg(m, dist)
+    close = [c for c in NAMES if c not in kinkbench.admitted(v) and abs(v["bias"][c]) <= bar]
+    if not close:
+        return ""
+    return (" Of these, " + " and ".join(f"{NAMES[c]}'s mean ({_signed(v['bias'][c])}°)" for c in close)
+            + f" lies within one angle's error bar (± {bar:.1f}°): excluded by less than the grid resolves.")
 
 
 def _across(per_m, value, fmt=".1f"):
