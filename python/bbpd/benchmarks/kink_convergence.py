@@ -415,6 +415,12 @@ def _mix_list(mixes):
                      for p, a in sorted(mixes, key=lambda x: (-x[0], x[1])))
 
 
+def _rms_from_criteria(sel, key, m):
+    """{'m': m, 'rms': {criterion: RMS of (angle `key` - criterion) over the rows sel}}: what
+    _nearest reads"""
+    return {"m": m, "rms": {c: kinkbench.rms([r[key] - r[c] for r in sel]) for c in NAMES}}
+
+
 def subset_trend(rows):
     """Where the finest m has run only part of the mixed-mode sweep that a coarser m ran whole
     (same kernel and R/delta): those mixes followed across
@@ -443,7 +449,7 @@ def subset_trend(rows):
                        and mix_of(r) in mixes and r[key] is not None]
                 if len(sel) != len(mixes):
                     break       # a run that measured no angle this far out: no RMS over the set
-                per_m[m] = {"m": m, "rms": {c: kinkbench.rms([r[key] - r[c] for r in sel]) for c in NAMES}}
+                per_m[m] = _rms_from_criteria(sel, key, m)
             if len(per_m) < 2:
                 continue
             seq = list(per_m)
@@ -492,8 +498,7 @@ def kernel_comparison(rows):
             measured = sorted(x for x in mixes if all(runs[k, x][key] is not None for k in kernels))
             if len(measured) < KERNEL_COMPARISON_MIN_MIXES:
                 continue
-            per_k = {k: {"m": m, "rms": {c: kinkbench.rms([runs[k, x][key] - runs[k, x][c] for x in measured])
-                                         for c in NAMES}} for k in kernels}
+            per_k = {k: _rms_from_criteria([runs[k, x] for x in measured], key, m) for k in kernels}
             ties = {k: _nearest(v, dist) for k, v in per_k.items()}
             spread = {x: max(runs[k, x][key] for k in kernels) - min(runs[k, x][key] for k in kernels)
                       for x in measured}
