@@ -279,3 +279,32 @@ def test_an_exclusion_smaller_than_the_grid_resolves_is_said_to_be():
     # an exclusion by more than the bar, or a criterion the test admits, gets no such sentence
     assert "Of these" not in kc.sweep_verdict(sweep(15, -2.0, spread=0.05))
     assert "Of these" not in kc.sweep_verdict(sweep(15, -0.5, spread=2.0))
+
+
+def test_the_limit_sentence_names_a_criterion_only_where_every_distance_approaches_it():
+    both = kc.limit_sentence(sweep(10, -1.0) + sweep(15, -0.3))
+    assert both == ("The kink test's whole mixed-mode sweep followed in m (Gaussian, R/delta = 20, "
+                    "m = 10, 15): 2 horizons from the tip it approaches max. hoop strain; 4 horizons "
+                    "from the tip it approaches max. hoop strain; so the kink follows max. hoop strain.")
+    # tied at m = 15 (hoop stress within 0.4 deg of hoop strain in every run): no criterion named
+    rows = sweep(10, -1.0) + sweep(15, -0.3)
+    tied = [dict(r, hoop_stress=r["hoop_strain"] + (0.4 if k % 2 else -0.4)) if r["m"] == 15.0 else r
+            for k, r in enumerate(rows)]
+    text = kc.limit_sentence(tied)
+    assert "not settled (max. hoop stress and max. hoop strain equally near at m = 15)" in text
+    assert text.endswith("so which criterion the kink follows is not settled.")
+    assert "the kink follows max." not in text
+    # moving away from hoop strain: not settled either
+    grows = kc.limit_sentence(sweep(10, -0.3, spread=2.0) + sweep(15, -1.0, spread=2.0))
+    assert grows.endswith("is not settled.") and "approaches" not in grows
+    # another kernel's sweeps say nothing about the Gaussian
+    other = [dict(r, kernel="constant") for r in rows]
+    assert "no verdict on the limit for the gaussian kernel" in kc.limit_sentence(other)
+    assert kc.limit_sentence(other, "constant").endswith("so the kink follows max. hoop strain.")
+
+
+def test_the_kalthoff_winkler_summary_carries_the_kink_tests_limit():
+    from bbpd.claims import crack
+    text = crack.kw_summary(None)
+    assert kc.limit_sentence(kc.read_rows()) in text
+    assert "puts BBPD's critical stretch on" not in text

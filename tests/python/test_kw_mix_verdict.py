@@ -56,3 +56,37 @@ def test_committed_mix_names_both_instants():
 def test_needs_two_setups_per_definition(bad):
     with pytest.raises(ValueError, match="at least two setups"):
         grid.mix_verdict(mix((65.0, 73.0, 78.0), (65.0, 73.0, 78.0)), bad, 1.0)
+
+
+FINEST = {"kernel": "gaussian", "m": 20.0, "R_over_delta": 20.0, "angle_2d": -62.0, "angle_4d": -65.0}
+
+
+def tips(ki, psi, psi_band):
+    return {"KI": ki, "psi": psi, "psi_band": psi_band, "angle_deg": 59.0, "dx": 2e-3}
+
+
+def test_the_kink_readme_reading_is_computed_from_the_mix():
+    limit = "LIMIT SENTENCE."
+    text = kink_kalthoff_winkler.reading(tips(-51e6, 113.0, 97.0), 5.0, FINEST, limit)
+    assert "K_I -51.0 MPa m^1/2 (the notch faces are pressed together" in text
+    assert "both beyond pure Mode II (psi = 90°)" in text and "(m = 5)" in text
+    assert "kinks at 62.0 / 65.0° (2 / 4 horizons), against 59.0°" in text
+    assert "at both instants and states only what both support" in text
+    assert text.endswith(limit)
+    # one instant inside the kink test's range, K_I opening: neither claim is made
+    inside = kink_kalthoff_winkler.reading(tips(10e6, 113.0, 85.0), 5.0, FINEST, limit)
+    assert "beyond pure Mode II" not in inside and "pressed together" not in inside
+    assert "K_I +10.0 MPa m^1/2" in inside
+
+
+def test_the_k0_check_sentence_reads_the_check_and_the_default_run():
+    from bbpd.benchmarks import kink
+    check = {"kernel": "gaussian", "psi": 90.0, "alpha": 0.0, "dx": 5e-4, "delta": 5e-3, "K0": 0.3,
+             "K_init_over_Kc": 0.49, "angle_2d": -59.6, "angle_4d": -62.8}
+    default = {"kernel": "gaussian", "psi": 90.0, "alpha": 0.0, "dx": 5e-4, "ncross": kink.NCROSS,
+               "angle_2d": -62.1, "angle_4d": -63.8}
+    other = dict(default, dx=1e-3, angle_2d=-90.0, angle_4d=-87.1)
+    text = kink.k0_sentence(check, [other, default])
+    assert "m = 10 psi = 90° case (crack along the rows) with K0 = 0.3 instead of 0.5" in text
+    assert "during the slow ramp" in text and "(-62.1 / -63.8 with the default), 2.5 / 1.0 deg apart" in text
+    assert "still on the fast ramp" in kink.k0_sentence(dict(check, K_init_over_Kc=0.25), [default])

@@ -371,10 +371,11 @@ def mix_verdict(mix, angles, dx_mm):
     return text
 
 
-def summary(proj_rows, grid_rows, kink_rows, mix):
+def summary(proj_rows, grid_rows, kink_rows, mix, kink_limit):
     """The summary of the Kalthoff-Winkler setups against the experiment's 70 deg and what the
     kink test says about it, computed from projectile.csv, grid_pull.csv, the kink test's
-    kink.csv and its Kalthoff-Winkler mix (kalthoff_winkler_mix.json)."""
+    kink.csv and its Kalthoff-Winkler mix (kalthoff_winkler_mix.json); kink_limit is the kink
+    test's sentence on its limit in m (kink_convergence.limit_sentence)."""
     found = hits(proj_rows, grid_rows)
     fine = min(float(r["dx_mm"]) for r in proj_rows if r["setup"] == "2d")
     text = ("**Summary.** Setups with 70 ± 2° and cracks that cross the plate: "
@@ -396,11 +397,10 @@ def summary(proj_rows, grid_rows, kink_rows, mix):
                  and r["alpha"] == 0.0 and r["dx"] == min(k["dx"] for k in kink_rows))
     text += (f" With the paper's G_c the {fine:g} mm cracks run at {_span(ang['fit'])} by the fit "
              f"angle (their direction 10–50 mm from the tip) and {_span(ang['chord'])} by the "
-             "chord, over both loadings and the square, perturbed and rotated grids. The kink "
-             "test puts BBPD's critical stretch on the maximum hoop-strain criterion: on its fine "
-             f"grid pure Mode II kinks at {mode2['angle_2d']:.1f} / {mode2['angle_4d']:.1f}° (2 / "
-             f"4 horizons) against {mode2['hoop_strain']:.1f}° (hoop strain) and "
-             f"{mode2['hoop_stress']:.1f}° (hoop stress).")
+             "chord, over both loadings and the square, perturbed and rotated grids. On the kink "
+             f"test's m = {mode2['m']:g} grid pure Mode II kinks at {mode2['angle_2d']:.1f} / "
+             f"{mode2['angle_4d']:.1f}° (2 / 4 horizons) against {mode2['hoop_strain']:.1f}° (hoop "
+             f"strain) and {mode2['hoop_stress']:.1f}° (hoop stress). {kink_limit}")
     text += " " + mix_verdict(mix, {d: ang[d] for d in MEASURED}, fine)
     chord_pull = [q["pull"] for k, q in pull(grid_rows).items() if k[2] == fine and k[3] == "chord"]
     if at_fine and fine_defs == ["chord"] and chord_pull:

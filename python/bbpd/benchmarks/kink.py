@@ -312,6 +312,28 @@ def fine_paragraphs(rows):
     return parts
 
 
+K0_CHECK = FOLDER / "results" / "k0_check.json"
+K0_DEFAULT = 0.5    # in.kink's K0: K reaches K0 K_c at the end of the fast ramp
+
+
+def k0_sentence(check, rows):
+    """Whether a run hangs on the fast ramp: the case of k0_check.json (K0 lowered) beside the
+    same case at the default K0 in rows (kink.csv), and where in the ramp its first bond broke."""
+    same = next(r for r in rows if (r["kernel"], r["psi"], r["alpha"], r["dx"]) ==
+                (check["kernel"], check["psi"], check["alpha"], check["dx"])
+                and r["ncross"] == NCROSS)
+    during = ("during the slow ramp" if check["K_init_over_Kc"] > check["K0"]
+              else "still on the fast ramp")
+    crack = "along the rows" if check["alpha"] == 0.0 else f"at {check['alpha']:g}° to the rows"
+    return (f"The {check['kernel']} kernel's m = {check['delta'] / check['dx']:g} psi = {check['psi']:g}° case "
+            f"(crack {crack}) "
+            f"with K0 = {check['K0']:g} instead of {K0_DEFAULT:g} (`results/k0_check.json`, its "
+            f"command inside): the first bond breaks at {check['K_init_over_Kc']:.2f} K_c, {during}, "
+            f"and the angle is {check['angle_2d']:.1f} / {check['angle_4d']:.1f} deg at 2 / 4 "
+            f"horizons ({same['angle_2d']:.1f} / {same['angle_4d']:.1f} with the default), "
+            f"{abs(check['angle_2d'] - same['angle_2d']):.1f} / {abs(check['angle_4d'] - same['angle_4d']):.1f} deg apart.")
+
+
 def verdict_sentence(rows):
     parts = [grid_paragraph(rows, dist, COARSE[0], "coarse-grid") for dist in ("2d", "4d")]
     locked = [r for r in rows if r["psi"] > 0 and r["angle_2d"] is not None

@@ -348,19 +348,19 @@ def _nearest(v, dist):
     return [c for c in NAMES if v["rms"][c] - least <= resolution_deg(v["m"], dist)]
 
 
-def sweep_trend(rows):
+def limits(rows):
     """The whole mixed-mode sweep followed across m, per kernel and R/delta with two or more
-    complete sweeps, at each distance: the nearest criterion by RMS, each criterion's RMS and
-    the grid's pull at each m, and the verdict on the limit, read off the two finest m. RMS
-    values closer than the grid's resolution at that distance (resolution_deg) cannot be told
-    apart: those criteria are all nearest.
-    - 'none of the criteria fits' when the two-standard-error test admits none at the finest m;
-    - 'not settled' when two criteria are nearest at the finest m;
-    - 'approaches X' when X is the one nearest at the finest m and among the nearest at the m
-      before, its RMS does not grow from the one to the other and the test admits X at the
+    complete sweeps, at each distance: a list of dicts with kernel, rd, dist, ms, v (each m's
+    verdict), 'limit' (the criterion the sequence approaches, or None) and 'state', the verdict
+    on the limit read off the two finest m. RMS values closer than the grid's resolution at that
+    distance (resolution_deg) cannot be told apart: those criteria are all nearest.
+    - 'none fits' when the two-standard-error test admits none at the finest m;
+    - 'tied' when two criteria are nearest at the finest m;
+    - 'approaches' when limit is the one nearest at the finest m and among the nearest at the m
+      before, its RMS does not grow from the one to the other and the test admits it at the
       finest m;
-    - else 'not settled', saying why (the nearest changes, or its RMS grows, or the test
-      excludes it)."""
+    - else 'changes' (the nearest changes), 'grows' (its RMS grows) or 'excluded' (the test
+      excludes it): not settled."""
     sweeps = _whole_sweeps(rows)
     out = []
     for kernel, rd in sorted({(k, rd) for k, _, rd in sweeps}, key=lambda g: (g[0] != KERNEL, g)):
@@ -371,37 +371,94 @@ def sweep_trend(rows):
             v = {m: dict(kinkbench.verdict(sweeps[kernel, m, rd], dist, dx=m), m=m) for m in ms}
             prev, last = v[ms[-2]], v[ms[-1]]
             best = last["best"]
-            rms_text = "; ".join(f"{NAMES[c]} {_across(v, lambda x: x['rms'][c])}" for c in NAMES)
-            head = (f"{_capital(kernel)}, R/delta = {rd:g}, the whole mixed-mode sweep "
-                    f"at m = {_across(v, lambda x: x['m'], 'g')}, {HORIZONS[dist]:g} horizons out: "
-                    f"nearest by RMS {_across(v, lambda x: NAMES[x['best']], 's')}; RMS {rms_text}°; "
-                    f"the grid's pull {_across(v, lambda x: x['pull_mean'])}°. ")
-            admitted = kinkbench.admitted(last)
             near, near_prev = _nearest(last, dist), _nearest(prev, dist)
-            step = f"m = {ms[-2]:g} to {ms[-1]:g}"
-            if not admitted:
-                tail = (f"At m = {ms[-1]:g} the two-standard-error test admits none of the criteria: "
-                        "none fits.")
+            if not kinkbench.admitted(last):
+                state = "none fits"
             elif len(near) > 1:
-                tail = (f"Not settled: at m = {ms[-1]:g} " + " and ".join(NAMES[c] for c in near)
-                        + " lie equally near (RMS " + " and ".join(f"{last['rms'][c]:.1f}" for c in near)
-                        + f"°, closer than the grid's resolution, ± {resolution_deg(ms[-1], dist):.1f}°).")
+                state = "tied"
             elif best not in near_prev:
-                tail = (f"Not settled: from {step} the nearest criterion changes from "
-                        + " and ".join(NAMES[c] for c in near_prev) + f" to {NAMES[best]}.")
+                state = "changes"
             elif last["rms"][best] > prev["rms"][best]:
-                tail = (f"Not settled: {NAMES[best]} stays the nearest, but from {step} its RMS "
-                        f"grows from {prev['rms'][best]:.1f} to {last['rms'][best]:.1f}°.")
-            elif best not in admitted:
-                tail = (f"Not settled: {NAMES[best]} stays the nearest with its RMS falling, but at "
-                        f"m = {ms[-1]:g} the test excludes it.")
+                state = "grows"
+            elif best not in kinkbench.admitted(last):
+                state = "excluded"
             else:
-                tail = (f"The sequence approaches {NAMES[best]}: among the nearest at m = {ms[-2]:g} "
-                        f"and the nearest at {ms[-1]:g}, its RMS falling from {prev['rms'][best]:.1f} to "
-                        f"{last['rms'][best]:.1f}°, admitted by the test at m = {ms[-1]:g}.")
-            out.append(head + tail)
+                state = "approaches"
+            out.append(dict(kernel=kernel, rd=rd, dist=dist, ms=ms, v=v, state=state, near=near,
+                            near_prev=near_prev, limit=best if state == "approaches" else None))
+    return out
+
+
+def _limit_tail(t):
+    """the sentence on the limit of one entry of limits()"""
+    ms, dist, v = t["ms"], t["dist"], t["v"]
+    prev, last = v[ms[-2]], v[ms[-1]]
+    best = last["best"]
+    step = f"m = {ms[-2]:g} to {ms[-1]:g}"
+    if t["state"] == "none fits":
+        return f"At m = {ms[-1]:g} the two-standard-error test admits none of the criteria: none fits."
+    if t["state"] == "tied":
+        return (f"Not settled: at m = {ms[-1]:g} " + " and ".join(NAMES[c] for c in t["near"])
+                + " lie equally near (RMS " + " and ".join(f"{last['rms'][c]:.1f}" for c in t["near"])
+                + f"°, closer than the grid's resolution, ± {resolution_deg(ms[-1], dist):.1f}°).")
+    if t["state"] == "changes":
+        return (f"Not settled: from {step} the nearest criterion changes from "
+                + " and ".join(NAMES[c] for c in t["near_prev"]) + f" to {NAMES[best]}.")
+    if t["state"] == "grows":
+        return (f"Not settled: {NAMES[best]} stays the nearest, but from {step} its RMS "
+                f"grows from {prev['rms'][best]:.1f} to {last['rms'][best]:.1f}°.")
+    if t["state"] == "excluded":
+        return (f"Not settled: {NAMES[best]} stays the nearest with its RMS falling, but at "
+                f"m = {ms[-1]:g} the test excludes it.")
+    return (f"The sequence approaches {NAMES[best]}: among the nearest at m = {ms[-2]:g} "
+            f"and the nearest at {ms[-1]:g}, its RMS falling from {prev['rms'][best]:.1f} to "
+            f"{last['rms'][best]:.1f}°, admitted by the test at m = {ms[-1]:g}.")
+
+
+def sweep_trend(rows):
+    """limits() as sentences: per kernel, R/delta and distance the nearest criterion by RMS,
+    each criterion's RMS and the grid's pull at each m, and the verdict on the limit."""
+    out = []
+    for t in limits(rows):
+        v = t["v"]
+        rms_text = "; ".join(f"{NAMES[c]} {_across(v, lambda x: x['rms'][c])}" for c in NAMES)
+        out.append(f"{_capital(t['kernel'])}, R/delta = {t['rd']:g}, the whole mixed-mode sweep "
+                   f"at m = {_across(v, lambda x: x['m'], 'g')}, {HORIZONS[t['dist']]:g} horizons out: "
+                   f"nearest by RMS {_across(v, lambda x: NAMES[x['best']], 's')}; RMS {rms_text}°; "
+                   f"the grid's pull {_across(v, lambda x: x['pull_mean'])}°. " + _limit_tail(t))
     return (" ".join(out) if out else
             "No trend across m: no (kernel, R/delta) has run the whole mixed-mode sweep at two m.")
+
+
+def limit_sentence(rows, kernel=KERNEL):
+    """One sentence for other READMEs: what the kink test's sweep in m says about the limit for
+    `kernel`, in the largest disk (R/delta) with two complete sweeps, at each distance; a
+    criterion is named only where the sequence approaches it."""
+    mine = [t for t in limits(rows) if t["kernel"] == kernel]
+    if not mine:
+        return (f"The kink test's sweep in m has no verdict on the limit for the {kernel} kernel "
+                "yet (no R/delta with the whole mixed-mode sweep at two m).")
+    rd = max(t["rd"] for t in mine)
+    mine = [t for t in mine if t["rd"] == rd]
+    parts = []
+    for t in mine:
+        where = f"{HORIZONS[t['dist']]:g} horizons from the tip"
+        if t["limit"] is not None:
+            parts.append(f"{where} it approaches {NAMES[t['limit']]}")
+        elif t["state"] == "tied":
+            parts.append(f"{where} it is not settled (" + " and ".join(NAMES[c] for c in t["near"])
+                         + f" equally near at m = {t['ms'][-1]:g})")
+        elif t["state"] == "none fits":
+            parts.append(f"{where} none of the criteria fits")
+        else:
+            parts.append(f"{where} it is not settled")
+    settled = all(t["limit"] is not None for t in mine)
+    same = len({t["limit"] for t in mine}) == 1
+    verdict = (f"the kink follows {NAMES[mine[0]['limit']]}" if settled and same else
+               "which criterion the kink follows is not settled")
+    return (f"The kink test's whole mixed-mode sweep followed in m ({_capital(kernel)}, "
+            f"R/delta = {rd:g}, m = {', '.join(f'{m:g}' for m in mine[0]['ms'])}): "
+            + "; ".join(parts) + f"; so {verdict}.")
 
 
 def _mixes_at(rows, kernel, m, rd):

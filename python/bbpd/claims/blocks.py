@@ -36,6 +36,8 @@ BLOCKS = {
     PROPAGATION: {"mode1-propagation": crack.propagation_table,
                   "mode1-propagation-findings": crack.propagation_findings},
     KINK: {"kink": crack.kink_table, "kink-kw": crack.kink_kw_table,
+           "kink-kw-reading": crack.kink_kw_reading,
+           "kink-k0-check": crack.kink_k0_check,
            "kink-convergence": crack.kink_convergence_table,
            "kink-convergence-verdict": crack.kink_convergence_verdict,
            "kink-convergence-sweep": crack.kink_convergence_sweep,

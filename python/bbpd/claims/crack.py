@@ -42,6 +42,10 @@ def kink_table(data):
     return kink.table(kink.read_rows(kink.RESULTS))
 
 
+def kink_k0_check(data):
+    return kink.k0_sentence(json.loads(kink.K0_CHECK.read_text()), kink.read_rows(kink.RESULTS))
+
+
 def branching_table(data):
     return branching.readme_table()
 
@@ -58,6 +62,16 @@ def kink_kw_table(data):
     return kink_kalthoff_winkler.table(json.loads(kink_kalthoff_winkler.SUMMARY.read_text()))
 
 
+def kink_kw_reading(data):
+    conv = kink_convergence.read_rows()
+    pure_mode2 = [r for r in conv if r["kernel"] == kink_convergence.KERNEL and r["psi"] == 90.0
+                  and r["alpha"] == 0.0]
+    finest = max(pure_mode2, key=lambda r: (r["R_over_delta"], r["m"]))
+    coarse_m = min(r["m"] for r in kink.read_rows(kink.RESULTS))
+    return kink_kalthoff_winkler.reading(json.loads(kink_kalthoff_winkler.SUMMARY.read_text()),
+                                         coarse_m, finest, kink_convergence.limit_sentence(conv))
+
+
 def projectile_table(data):
     return projectile.markdown(projectile.read_csv(PROJECTILE_CSV))
 
@@ -70,7 +84,8 @@ def grid_pull_table(data):
 def kw_summary(data):
     return grid.summary(projectile.read_csv(PROJECTILE_CSV), grid.read_rows(grid.CSV)[1],
                         kink.read_rows(kink.RESULTS),
-                        json.loads(kink_kalthoff_winkler.SUMMARY.read_text()))
+                        json.loads(kink_kalthoff_winkler.SUMMARY.read_text()),
+                        kink_convergence.limit_sentence(kink_convergence.read_rows()))
 
 
 def strip_table(data):
