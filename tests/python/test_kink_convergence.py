@@ -308,3 +308,22 @@ def test_the_kalthoff_winkler_summary_carries_the_kink_tests_limit():
     text = crack.kw_summary(None)
     assert kc.limit_sentence(kc.read_rows()) in text
     assert "puts BBPD's critical stretch on" not in text
+
+
+def test_the_coverage_lists_what_of_the_plan_is_left():
+    rows = [dict(r, loop_s=100.0 + k, cpu="CPU A", nprocs=2.0) for k, r in enumerate(sweep(15, -0.3))]
+    rows += [dict(r, kernel=k, loop_s=50.0, cpu="CPU B", nprocs=2.0) for k in ("constant", "triangular")
+             for r in sweep(15, -0.3)]
+    text = kc.coverage(rows)
+    assert "Gaussian m = 15: whole (loop 100-107 s for the 8 of them on CPU A, 2 ranks)" in text
+    assert "Gaussian m = 10: 0 of 8; Gaussian m = 15" in text
+    assert "Left: Gaussian m = 10: psi = 90° along the rows" in text
+    assert "Constant m = 15: whole" in text and "Triangular m = 15: whole" in text
+    # the m = 20 sweep with one run missing, and a run on another machine: the majority's times
+    part = [dict(r, loop_s=2000.0, cpu="CPU A", nprocs=2.0) for r in sweep(20, -0.3)[:7]]
+    part[0] = dict(part[0], loop_s=9000.0, cpu="CPU C")
+    text = kc.coverage(rows + part)
+    assert "Gaussian m = 20: 7 of 8 (loop 2000-2000 s for the 6 of them on CPU A, 2 ranks)" in text
+    assert "Gaussian m = 20: psi = 22.5° at 22.5°." in text
+    whole = [dict(r, m=m, loop_s=1.0, cpu="CPU A", nprocs=2.0) for m in (10.0, 20.0) for r in sweep(15, -0.3)]
+    assert kc.coverage(rows + whole).endswith("Every run of it is in.")

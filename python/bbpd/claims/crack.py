@@ -131,6 +131,10 @@ def kink_convergence_table(data):
                                   [ln.split(": ", 1)[1] for ln in csvfile.provenance(kink_convergence.CSV)])
 
 
+def kink_convergence_coverage(data):
+    return kink_convergence.coverage(kink_convergence.read_rows())
+
+
 def kink_convergence_verdict(data):
     return kink_convergence.verdict(kink_convergence.read_rows())
 
