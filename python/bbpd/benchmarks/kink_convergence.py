@@ -646,6 +646,7 @@ def section(specs, results, figdir, notes):
         "examples/kink-mixed-mode/README.md.",
         table, verdict)
 
+
 def read_rows(path=CSV):
     comments, rows = csvfile.read_csv(path)
     return with_cpu(rows, comments)
