@@ -327,3 +327,9 @@ def test_the_coverage_lists_what_of_the_plan_is_left():
     assert "Gaussian m = 20: psi = 22.5° at 22.5°." in text
     whole = [dict(r, m=m, loop_s=1.0, cpu="CPU A", nprocs=2.0) for m in (10.0, 20.0) for r in sweep(15, -0.3)]
     assert kc.coverage(rows + whole).endswith("Every run of it is in.")
+
+
+def test_an_rms_change_below_the_shown_digit_holds():
+    assert kc._rms_move("X", 2.7403, 2.7372) == "X's RMS holds at 2.7°"
+    assert kc._rms_move("X", 1.4, 1.1) == "X's RMS falls from 1.4 to 1.1°"
+    assert kc._rms_move("X", 0.8, 2.0) == "X's RMS grows from 0.8 to 2.0°"

@@ -513,6 +513,16 @@ def _rms_from_criteria(sel, key, m):
     return {"m": m, "rms": {c: kinkbench.rms([r[key] - r[c] for r in sel]) for c in NAMES}}
 
 
+RMS_SHOWN_DEG = 0.05    # half the last digit the sentences show: a smaller change is not told
+
+
+def _rms_move(name, before, after):
+    """"X's RMS falls from a to b°", or "holds at a°" when the change is below what is shown"""
+    if abs(after - before) < RMS_SHOWN_DEG:
+        return f"{name}'s RMS holds at {after:.1f}°"
+    return f"{name}'s RMS {'falls' if after < before else 'grows'} from {before:.1f} to {after:.1f}°"
+
+
 def subset_trend(rows):
     """Where the finest m has run only part of the mixed-mode sweep that a coarser m ran whole
     (same kernel and R/delta): those mixes followed across
@@ -554,8 +564,7 @@ def subset_trend(rows):
             s = (f"{_capital(kernel)}, R/delta = {rd:g}, {count} run so far at m = {finest:g} "
                  f"({_mix_list(mixes)}) followed over m = {_across(per_m, lambda x: x['m'], 'g')}, "
                  f"{HORIZONS[dist]:g} horizons out: RMS {rms_text}°; nearest {nearest_text}. ")
-            moves = [f"{NAMES[c]}'s RMS {'falls' if last['rms'][c] < prev['rms'][c] else 'grows'} "
-                     f"from {prev['rms'][c]:.1f} to {last['rms'][c]:.1f}°" for c in ties[seq[-1]]]
+            moves = [_rms_move(NAMES[c], prev["rms"][c], last["rms"][c]) for c in ties[seq[-1]]]
             s += (f"From m = {seq[-2]:g} to {seq[-1]:g} the nearest at {seq[-1]:g}: " + "; ".join(moves)
                   + f". A part of the sweep: it says which way these mixes move, not the limit.")
             out.append(s)
