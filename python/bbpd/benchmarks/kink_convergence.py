@@ -461,9 +461,9 @@ def limit_sentence(rows, kernel=KERNEL):
             + "; ".join(parts) + f"; so {verdict}.")
 
 
-# The sweep issue 38 asks for: the whole mixed-mode sweep (both crack directions) in the disk
-# R/delta = PLAN_R_OVER_DELTA, for the Gaussian kernel at m = 10, 15, 20 and for the constant and
-# triangular kernels at m = 15
+# The planned sweep, what the kink verdict needs: the whole mixed-mode sweep (both crack
+# directions) in the disk R/delta = PLAN_R_OVER_DELTA, for the Gaussian kernel at m = 10, 15, 20
+# and for the constant and triangular kernels at m = 15
 PLAN = {"gaussian": (10, 15, 20), "constant": (15,), "triangular": (15,)}
 PLAN_R_OVER_DELTA = 20
 
@@ -491,7 +491,7 @@ def coverage(rows):
             parts.append(f"{_capital(kernel)} m = {m:g}: {state}")
             if need - done:
                 left.append(f"{_capital(kernel)} m = {m:g}: {_mix_list(need - done)}")
-    text = (f"The sweep issue 38 asks for, at R/delta = {rd:g} over psi = {_sweep_mixes()}° in both "
+    text = (f"The planned sweep, at R/delta = {rd:g} over psi = {_sweep_mixes()}° in both "
             "crack directions: " + "; ".join(parts) + ". ")
     return text + ("Left: " + "; ".join(left) + "." if left else "Every run of it is in.")
 
