@@ -331,5 +331,6 @@ def test_the_coverage_lists_what_of_the_plan_is_left():
 
 def test_an_rms_change_below_the_shown_digit_holds():
     assert kc._rms_move("X", 2.7403, 2.7372) == "X's RMS holds at 2.7°"
+    assert kc._rms_move("X", 2.58, 2.64) == "X's RMS holds at 2.6°"     # the digits shown agree
     assert kc._rms_move("X", 1.4, 1.1) == "X's RMS falls from 1.4 to 1.1°"
     assert kc._rms_move("X", 0.8, 2.0) == "X's RMS grows from 0.8 to 2.0°"

@@ -513,12 +513,9 @@ def _rms_from_criteria(sel, key, m):
     return {"m": m, "rms": {c: kinkbench.rms([r[key] - r[c] for r in sel]) for c in NAMES}}
 
 
-RMS_SHOWN_DEG = 0.05    # half the last digit the sentences show: a smaller change is not told
-
-
 def _rms_move(name, before, after):
-    """"X's RMS falls from a to b°", or "holds at a°" when the change is below what is shown"""
-    if abs(after - before) < RMS_SHOWN_DEG:
+    """"X's RMS falls from a to b°", or "holds at a°" when the two show the same digits"""
+    if f"{before:.1f}" == f"{after:.1f}":
         return f"{name}'s RMS holds at {after:.1f}°"
     return f"{name}'s RMS {'falls' if after < before else 'grows'} from {before:.1f} to {after:.1f}°"
 
