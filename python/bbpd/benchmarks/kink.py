@@ -325,13 +325,14 @@ def k0_sentence(check, rows):
     during = ("during the slow ramp" if check["K_init_over_Kc"] > check["K0"]
               else "still on the fast ramp")
     crack = "along the rows" if check["alpha"] == 0.0 else f"at {check['alpha']:g}° to the rows"
-    return (f"The {check['kernel']} kernel's m = {check['delta'] / check['dx']:g} psi = {check['psi']:g}° case "
-            f"(crack {crack}) "
-            f"with K0 = {check['K0']:g} instead of {K0_DEFAULT:g} (`results/k0_check.json`, its "
-            f"command inside): the first bond breaks at {check['K_init_over_Kc']:.2f} K_c, {during}, "
-            f"and the angle is {check['angle_2d']:.1f} / {check['angle_4d']:.1f} deg at 2 / 4 "
-            f"horizons ({same['angle_2d']:.1f} / {same['angle_4d']:.1f} with the default), "
-            f"{abs(check['angle_2d'] - same['angle_2d']):.1f} / {abs(check['angle_4d'] - same['angle_4d']):.1f} deg apart.")
+    apart = [abs(check[f"angle_{d}"] - same[f"angle_{d}"]) for d in ("2d", "4d")]
+    return (f"The {check['kernel']} kernel's m = {check['delta'] / check['dx']:g} "
+            f"psi = {check['psi']:g}° case (crack {crack}) with K0 = {check['K0']:g} instead of "
+            f"{K0_DEFAULT:g} (`results/k0_check.json`, its command inside): the first bond breaks "
+            f"at {check['K_init_over_Kc']:.2f} K_c, {during}, and the angle is "
+            f"{check['angle_2d']:.1f} / {check['angle_4d']:.1f} deg at 2 / 4 horizons "
+            f"({same['angle_2d']:.1f} / {same['angle_4d']:.1f} with the default), "
+            f"{apart[0]:.1f} / {apart[1]:.1f} deg apart.")
 
 
 def verdict_sentence(rows):

@@ -285,8 +285,7 @@ def _whole_sweeps(rows):
     """{(kernel, m, R/delta): its rows as the kink test's verdict reads them} for every group
     that has run the whole mixed-mode sweep (every psi of the kink test but pure Mode I, in
     both crack directions), the Gaussian's first"""
-    mixes = [p for p in kinkbench.MIXES_DEG if p > 0.0]
-    need = {(p, a) for p in mixes for a in kinkbench.ALPHAS_DEG}
+    need = _sweep_need()
     out = {}
     for kernel, m, rd in sorted({(r["kernel"], r["m"], r["R_over_delta"]) for r in rows},
                                 key=lambda g: (g[0] != KERNEL, g)):
@@ -296,6 +295,12 @@ def _whole_sweeps(rows):
             out[kernel, m, rd] = [dict(r, psi=mix_of(r)[0], alpha=mix_of(r)[1], dx=m,
                                        ncross=kinkbench.NCROSS) for r in sel if mix_of(r) in need]
     return out
+
+
+def _sweep_need():
+    """the (psi, alpha) pairs of the whole mixed-mode sweep: every psi of the kink test but pure
+    Mode I, in both crack directions"""
+    return {(p, a) for p in kinkbench.MIXES_DEG if p > 0.0 for a in kinkbench.ALPHAS_DEG}
 
 
 def _sweep_mixes():
@@ -372,7 +377,8 @@ def limits(rows):
             prev, last = v[ms[-2]], v[ms[-1]]
             best = last["best"]
             near, near_prev = _nearest(last, dist), _nearest(prev, dist)
-            if not kinkbench.admitted(last):
+            admitted = kinkbench.admitted(last)
+            if not admitted:
                 state = "none fits"
             elif len(near) > 1:
                 state = "tied"
@@ -380,7 +386,7 @@ def limits(rows):
                 state = "changes"
             elif last["rms"][best] > prev["rms"][best]:
                 state = "grows"
-            elif best not in kinkbench.admitted(last):
+            elif best not in admitted:
                 state = "excluded"
             else:
                 state = "approaches"
@@ -471,7 +477,7 @@ PLAN_R_OVER_DELTA = 20
 def coverage(rows):
     """What of PLAN has run (computed from the CSV): per kernel and m the mixed-mode runs in,
     the ones left, and each group's loop time with the CPU and rank count that timed it."""
-    need = {(p, a) for p in kinkbench.MIXES_DEG if p > 0.0 for a in kinkbench.ALPHAS_DEG}
+    need = _sweep_need()
     rd = PLAN_R_OVER_DELTA
     parts, left = [], []
     for kernel, ms in PLAN.items():

@@ -144,9 +144,9 @@ def reading(r, coarse_m, finest, kink_limit):
              f"R/delta = {finest['R_over_delta']:g}, crack along the rows) kinks at "
              f"{-finest['angle_2d']:.1f} / {-finest['angle_4d']:.1f}° (2 / 4 horizons), against "
              f"{r['angle_deg']:.1f}° for this Kalthoff-Winkler run ({r['dx'] * 1e3:g} mm). The "
-             "criteria move with the mix (the table gives them at both instants): the Kalthoff-Winkler README's "
-             "summary holds its angles against them at both instants and states only what both "
-             f"support. {kink_limit}")
+             "criteria move with the mix (the table gives them at both instants): the "
+             "Kalthoff-Winkler README's summary holds its angles against them at both instants "
+             f"and states only what both support. {kink_limit}")
     return text
 
 
