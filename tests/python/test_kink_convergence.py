@@ -176,6 +176,32 @@ def test_the_trend_across_m_names_the_criterion_the_sweep_approaches():
         "The sequence approaches max. hoop strain") == 2
 
 
+def test_none_fits_names_the_criteria_the_kink_lies_between():
+    # every run 2 deg beyond hoop strain, 2.5 deg short of a hoop stress that kinks more still:
+    # the test admits neither, and the mean lies between the two
+    rows = [dict(r, hoop_stress=r["angle_2d"] - 2.5, energy=r["angle_2d"] - 8.0)
+            for r in sweep(10, -3.0, spread=0.1) + sweep(15, -2.0, spread=0.1)]
+    text = kc.sweep_trend(rows)
+    assert ("At m = 15 the two-standard-error test admits none of the criteria: none fits; the mean "
+            "lies between max. hoop strain (BBPD kinks more by 2.0 ± 0.0°) and max. hoop stress "
+            "(less by 2.5 ± 0.0°).") in text
+    assert ("The mean deviation at m = 10, 15: from max. hoop strain -3.0, -2.0; from max. hoop "
+            "stress +2.5, +2.5°; it moves towards max. hoop strain at every step in m.") in text
+    assert ("4 horizons from the tip none of the criteria fits (the kink lies between max. hoop "
+            "strain and max. hoop stress, its mean moving towards max. hoop strain at every step "
+            "in m)") in kc.limit_sentence(rows)
+    # the same mean at both m: between the two, moving towards neither
+    still = [dict(r, hoop_stress=r["angle_2d"] - 2.5, energy=r["angle_2d"] - 8.0)
+             for r in sweep(10, -2.0, spread=0.1) + sweep(15, -2.0, spread=0.1)]
+    assert "moving towards" not in kc.limit_sentence(still)
+    assert "from max. hoop stress +2.5, +2.5°." in kc.sweep_trend(still)
+    # kinking beyond every criterion: between none of them
+    beyond = [dict(r, hoop_stress=r["angle_2d"] + 1.0, energy=r["angle_2d"] + 5.0) for r in rows]
+    assert "the kink lies between" not in kc.limit_sentence(beyond)
+    assert "BBPD kinks more than every criterion, by 1.0 ± 0.0° than the nearest, max. hoop stress" \
+        in kc.sweep_trend(beyond)
+
+
 def test_the_trend_says_not_settled_and_why():
     # moving away from hoop strain: nearest both times, but the RMS grows
     grows = kc.sweep_trend(sweep(10, -0.3, spread=2.0) + sweep(15, -1.0, spread=2.0))
@@ -188,7 +214,8 @@ def test_the_trend_says_not_settled_and_why():
     agree = [dict(r, hoop_stress=r["hoop_strain"], energy=r["hoop_strain"])
              for r in sweep(10, -3.0, spread=0.1) + sweep(15, -2.5, spread=0.1)]
     none = kc.sweep_trend(agree)
-    assert "At m = 15 the two-standard-error test admits none of the criteria: none fits." in none
+    assert ("At m = 15 the two-standard-error test admits none of the criteria: none fits; BBPD "
+            "kinks more than every criterion, by 2.5 ± 0.0° than the nearest") in none
     assert "approaches" not in none
     # nearest both times, its RMS falling, but excluded by the test at the finest m
     # (hoop strain 1.5 then 1.0 +- 0.2 deg away; hoop stress 3 deg either side, mean 0, so the

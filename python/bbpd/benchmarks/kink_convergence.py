@@ -402,7 +402,14 @@ def _limit_tail(t):
     best = last["best"]
     step = f"m = {ms[-2]:g} to {ms[-1]:g}"
     if t["state"] == "none fits":
-        return f"At m = {ms[-1]:g} the two-standard-error test admits none of the criteria: none fits."
+        pair = _between(last) or ()
+        means = "; ".join(f"from {NAMES[c]} {_across(v, lambda x: x['bias'][c], '+.1f')}" for c in pair)
+        towards = _towards(t)
+        return (f"At m = {ms[-1]:g} the two-standard-error test admits none of the criteria: none "
+                f"fits; {_bracket(last)}."
+                + (f" The mean deviation at m = {_across(v, lambda x: x['m'], 'g')}: {means}°" if pair else "")
+                + (f"; it moves towards {NAMES[towards]} at every step in m." if towards else
+                   "." if pair else ""))
     if t["state"] == "tied":
         return (f"Not settled: at m = {ms[-1]:g} " + " and ".join(NAMES[c] for c in t["near"])
                 + " lie equally near (RMS " + " and ".join(f"{last['rms'][c]:.1f}" for c in t["near"])
@@ -419,6 +426,41 @@ def _limit_tail(t):
     return (f"The sequence approaches {NAMES[best]}: among the nearest at m = {ms[-2]:g} "
             f"and the nearest at {ms[-1]:g}, its RMS falling from {prev['rms'][best]:.1f} to "
             f"{last['rms'][best]:.1f}°, admitted by the test at m = {ms[-1]:g}.")
+
+
+def _between(v):
+    """(the criterion nearest the mean of verdict v among those it kinks beyond, the nearest
+    among those it falls short of), or None when it lies beyond (or short of) every one; the
+    sign is kinkbench.consistency's: a positive mean deviation kinks less"""
+    more = [c for c in NAMES if v["bias"][c] < 0.0]
+    less = [c for c in NAMES if v["bias"][c] >= 0.0]
+    if not (more and less):
+        return None
+    return tuple(min(side, key=lambda c: abs(v["bias"][c])) for side in (more, less))
+
+
+def _towards(t):
+    """the criterion the mean angle of one entry of limits() moves towards at every step in m
+    (its mean deviation keeps its sign and shrinks), or None"""
+    bias = {c: [t["v"][m]["bias"][c] for m in t["ms"]] for c in NAMES}
+    for c, b in bias.items():
+        if all(x * y > 0.0 and abs(y) < abs(x) for x, y in zip(b, b[1:])):
+            return c
+    return None
+
+
+def _bracket(v):
+    """where the mean angle of verdict v lies among the criteria, as a clause"""
+    def dev(c):
+        return f"{abs(v['bias'][c]):.1f} ± {v['se'][c]:.1f}°"
+    pair = _between(v)
+    if pair:
+        more, less = pair
+        return (f"the mean lies between {NAMES[more]} (BBPD kinks more by {dev(more)}) and "
+                f"{NAMES[less]} (less by {dev(less)})")
+    nearest = min(NAMES, key=lambda c: abs(v["bias"][c]))
+    word = "more" if v["bias"][nearest] < 0.0 else "less"
+    return f"BBPD kinks {word} than every criterion, by {dev(nearest)} than the nearest, {NAMES[nearest]}"
 
 
 def sweep_trend(rows):
@@ -455,7 +497,12 @@ def limit_sentence(rows, kernel=KERNEL):
             parts.append(f"{where} it is not settled (" + " and ".join(NAMES[c] for c in t["near"])
                          + f" equally near at m = {t['ms'][-1]:g})")
         elif t["state"] == "none fits":
-            parts.append(f"{where} none of the criteria fits")
+            pair = _between(t["v"][t["ms"][-1]])
+            towards = _towards(t)
+            parts.append(f"{where} none of the criteria fits" + (
+                " (the kink lies between " + " and ".join(NAMES[c] for c in pair)
+                + (f", its mean moving towards {NAMES[towards]} at every step in m" if towards else "")
+                + ")" if pair else ""))
         else:
             parts.append(f"{where} it is not settled")
     settled = all(t["limit"] is not None for t in mine)

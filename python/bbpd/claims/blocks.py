@@ -16,7 +16,8 @@ PERFORMANCE = "doc/performance.md"
 # file -> {block name: render(data) -> text}
 BLOCKS = {
     README: {"benchmarks": readme.benchmarks, "quickstart-times": readme.quickstart_times,
-             "reproduce-runs": readme.reproduce_runs, "zen3-avx2-readme": perf.zen3_readme},
+             "reproduce-runs": readme.reproduce_runs, "zen3-avx2-readme": perf.zen3_readme,
+             "kink-limit": crack.kink_limit},
     MODE1: {"mode1-table2": mode1.table2, "mode1-table3": mode1.table3,
             "mode1-findings": mode1.findings, "mode1-jtable": mode1.jtable,
             "mode1-jfindings": mode1.jfindings, "mode1-tips": mode1.tips_table,

@@ -81,6 +81,10 @@ def grid_pull_table(data):
     return grid.markdown(rows, comments)
 
 
+def kink_limit(data):
+    return kink_convergence.limit_sentence(kink_convergence.read_rows())
+
+
 def kw_summary(data):
     return grid.summary(projectile.read_csv(PROJECTILE_CSV), grid.read_rows(grid.CSV)[1],
                         kink.read_rows(kink.RESULTS),
