@@ -164,16 +164,37 @@ def sweep(m, offset, spread=0.5, criterion=1):
     return out
 
 
+def settling(*ms_offsets):
+    """whole sweeps at (m, offset) whose mixes scatter the other way at each next m, so that
+    each mix's step differs and the mean step is within two of its standard errors"""
+    return [r for k, (m, off) in enumerate(ms_offsets) for r in sweep(m, off, 0.5 * (-1) ** k)]
+
+
 def test_the_trend_across_m_names_the_criterion_the_sweep_approaches():
     # 1.0 deg beyond hoop strain at m = 10, 0.3 deg at m = 15: nearest both times, RMS falling
-    text = kc.sweep_trend(sweep(10, -1.0) + sweep(15, -0.3))
+    text = kc.sweep_trend(settling((10, -1.0), (15, -0.3)))
     assert text.startswith("Gaussian, R/delta = 20, the whole mixed-mode sweep at m = 10, 15, 2 "
                            "horizons out: nearest by RMS max. hoop strain, max. hoop strain")
     assert ("The sequence approaches max. hoop strain: among the nearest at m = 10 and the nearest "
-            "at 15, its RMS falling from 1.1 to 0.6°, admitted by the test at m = 15.") in text
+            "at 15, its RMS falling from 1.1 to 0.6°, admitted by the test at m = 15; from m = 10 "
+            "to 15 the mean moves by +0.7 ± 0.4° (paired by mix; positive: the crack kinks less), "
+            "within two standard errors: no drift shown.") in text
     # the finest m decides: a third, coarser sweep does not change the sentence's verdict
-    assert kc.sweep_trend(sweep(5, -4.0) + sweep(10, -1.0) + sweep(15, -0.3)).count(
+    assert kc.sweep_trend(settling((5, -4.0), (10, -1.0), (15, -0.3))).count(
         "The sequence approaches max. hoop strain") == 2
+
+
+def test_a_sweep_that_still_drifts_is_not_settled():
+    # every mix moves by the same +0.7 deg from m = 10 to 15: near hoop strain, its RMS falling
+    # and admitted, but the whole sweep still moves, past any standard error
+    rows = sweep(10, -1.0) + sweep(15, -0.3)
+    text = kc.sweep_trend(rows)
+    assert ("Not settled: max. hoop strain stays the nearest with its RMS falling and the test "
+            "admits it at m = 15, but from m = 10 to 15 the mean moves by +0.7 ± 0.0° (paired by "
+            "mix; positive: the crack kinks less), more than two standard errors: the sequence "
+            "still drifts.") in text
+    assert "approaches" not in text
+    assert kc.limit_sentence(rows).endswith("so which criterion the kink follows is not settled.")
 
 
 def test_none_fits_names_the_criteria_the_kink_lies_between():
@@ -186,15 +207,15 @@ def test_none_fits_names_the_criteria_the_kink_lies_between():
             "lies between max. hoop strain (BBPD kinks more by 2.0 ± 0.0°) and max. hoop stress "
             "(less by 2.5 ± 0.0°).") in text
     assert ("The mean deviation at m = 10, 15: from max. hoop strain -3.0, -2.0; from max. hoop "
-            "stress +2.5, +2.5°; it moves towards max. hoop strain at every step in m.") in text
+            "stress +2.5, +2.5°; from m = 10 to 15 the mean moves by +1.0 ± 0.0°") in text
     assert ("4 horizons from the tip none of the criteria fits (the kink lies between max. hoop "
-            "strain and max. hoop stress, its mean moving towards max. hoop strain at every step "
-            "in m)") in kc.limit_sentence(rows)
-    # the same mean at both m: between the two, moving towards neither
+            "strain and max. hoop stress, still drifting)") in kc.limit_sentence(rows)
+    # the same mean at both m: between the two, no drift
     still = [dict(r, hoop_stress=r["angle_2d"] - 2.5, energy=r["angle_2d"] - 8.0)
-             for r in sweep(10, -2.0, spread=0.1) + sweep(15, -2.0, spread=0.1)]
-    assert "moving towards" not in kc.limit_sentence(still)
-    assert "from max. hoop stress +2.5, +2.5°." in kc.sweep_trend(still)
+             for r in settling((10, -2.0), (15, -2.0))]
+    assert ("(the kink lies between max. hoop strain and max. hoop stress);"
+            in kc.limit_sentence(still))
+    assert "within two standard errors: no drift shown." in kc.sweep_trend(still)
     # kinking beyond every criterion: between none of them
     beyond = [dict(r, hoop_stress=r["angle_2d"] + 1.0, energy=r["angle_2d"] + 5.0) for r in rows]
     assert "the kink lies between" not in kc.limit_sentence(beyond)
@@ -235,7 +256,7 @@ def test_the_trend_needs_two_whole_sweeps():
 def test_criteria_closer_than_the_grids_resolution_are_both_nearest():
     # at m = 15 hoop stress moved to within 0.4 deg of hoop strain in every run: their RMS values
     # lie closer than the grid's resolution (2 horizons: atan(1 / 60) = 0.95 deg), a tie
-    rows = sweep(10, -1.0) + sweep(15, -0.3)
+    rows = settling((10, -1.0), (15, -0.3))
     tied = [dict(r, hoop_stress=r["hoop_strain"] + (0.4 if k % 2 else -0.4)) if r["m"] == 15.0 else r
             for k, r in enumerate(rows)]
     text = kc.sweep_trend(tied)
@@ -309,12 +330,12 @@ def test_an_exclusion_smaller_than_the_grid_resolves_is_said_to_be():
 
 
 def test_the_limit_sentence_names_a_criterion_only_where_every_distance_approaches_it():
-    both = kc.limit_sentence(sweep(10, -1.0) + sweep(15, -0.3))
+    both = kc.limit_sentence(settling((10, -1.0), (15, -0.3)))
     assert both == ("The kink test's whole mixed-mode sweep followed in m (Gaussian, R/delta = 20, "
                     "m = 10, 15): 2 horizons from the tip it approaches max. hoop strain; 4 horizons "
                     "from the tip it approaches max. hoop strain; so the kink follows max. hoop strain.")
     # tied at m = 15 (hoop stress within 0.4 deg of hoop strain in every run): no criterion named
-    rows = sweep(10, -1.0) + sweep(15, -0.3)
+    rows = settling((10, -1.0), (15, -0.3))
     tied = [dict(r, hoop_stress=r["hoop_strain"] + (0.4 if k % 2 else -0.4)) if r["m"] == 15.0 else r
             for k, r in enumerate(rows)]
     text = kc.limit_sentence(tied)

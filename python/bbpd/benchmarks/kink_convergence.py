@@ -29,6 +29,7 @@ Command line (from the repository root):
 
 import argparse
 import math
+import statistics
 import sys
 import time
 from pathlib import Path
@@ -362,10 +363,12 @@ def limits(rows):
     - 'none fits' when the two-standard-error test admits none at the finest m;
     - 'tied' when two criteria are nearest at the finest m;
     - 'approaches' when limit is the one nearest at the finest m and among the nearest at the m
-      before, its RMS does not grow from the one to the other and the test admits it at the
-      finest m;
-    - else 'changes' (the nearest changes), 'grows' (its RMS grows) or 'excluded' (the test
-      excludes it): not settled."""
+      before, its RMS does not grow from the one to the other, the test admits it at the
+      finest m and the last step moves the mean by no more than the test's standard errors;
+    - else 'changes' (the nearest changes), 'grows' (its RMS grows), 'excluded' (the test
+      excludes it) or 'drifts' (the last step moves the mean): not settled.
+    'step' is the last step in m: the mean over the mixes of each mix's change of angle, with
+    its standard error (paired by mix, so the mixes' own spread cancels)."""
     sweeps = _whole_sweeps(rows)
     out = []
     for kernel, rd in sorted({(k, rd) for k, _, rd in sweeps}, key=lambda g: (g[0] != KERNEL, g)):
@@ -375,6 +378,7 @@ def limits(rows):
         for dist in HORIZONS:
             v = {m: dict(kinkbench.verdict(sweeps[kernel, m, rd], dist, dx=m), m=m) for m in ms}
             prev, last = v[ms[-2]], v[ms[-1]]
+            step = _step(sweeps[kernel, ms[-2], rd], sweeps[kernel, ms[-1], rd], dist)
             best = last["best"]
             near, near_prev = _nearest(last, dist), _nearest(prev, dist)
             admitted = kinkbench.admitted(last)
@@ -388,11 +392,37 @@ def limits(rows):
                 state = "grows"
             elif best not in admitted:
                 state = "excluded"
+            elif _drifts(step):
+                state = "drifts"
             else:
                 state = "approaches"
             out.append(dict(kernel=kernel, rd=rd, dist=dist, ms=ms, v=v, state=state, near=near,
-                            near_prev=near_prev, limit=best if state == "approaches" else None))
+                            near_prev=near_prev, step=step,
+                            limit=best if state == "approaches" else None))
     return out
+
+
+def _step(before, after, dist):
+    """(mean, standard error) over the mixes of the change of the angle at dist from the rows
+    `before` to the rows `after` (two whole sweeps), paired by mix"""
+    key = f"angle_{dist}"
+    a = {mix_of(r): r[key] for r in before}
+    d = [r[key] - a[mix_of(r)] for r in after]
+    return statistics.fmean(d), statistics.stdev(d) / math.sqrt(len(d))
+
+
+def _drifts(step):
+    """the last step moves the mean by more than the two-standard-error test allows"""
+    return abs(step[0]) > kinkbench.TEST_SE * step[1]
+
+
+def _step_text(t):
+    """the last step in m of one entry of limits(), and whether it drifts"""
+    mean, se = t["step"]
+    verdict = ("more than two standard errors: the sequence still drifts" if _drifts(t["step"])
+               else "within two standard errors: no drift shown")
+    return (f"from m = {t['ms'][-2]:g} to {t['ms'][-1]:g} the mean moves by {mean:+.1f} ± {se:.1f}° "
+            f"(paired by mix; positive: the crack kinks less), {verdict}")
 
 
 def _limit_tail(t):
@@ -402,14 +432,11 @@ def _limit_tail(t):
     best = last["best"]
     step = f"m = {ms[-2]:g} to {ms[-1]:g}"
     if t["state"] == "none fits":
-        pair = _between(last) or ()
-        means = "; ".join(f"from {NAMES[c]} {_across(v, lambda x: x['bias'][c], '+.1f')}" for c in pair)
-        towards = _towards(t)
+        means = "; ".join(f"from {NAMES[c]} {_across(v, lambda x: x['bias'][c], '+.1f')}"
+                          for c in _between(last) or (min(NAMES, key=lambda c: abs(last["bias"][c])),))
         return (f"At m = {ms[-1]:g} the two-standard-error test admits none of the criteria: none "
-                f"fits; {_bracket(last)}."
-                + (f" The mean deviation at m = {_across(v, lambda x: x['m'], 'g')}: {means}°" if pair else "")
-                + (f"; it moves towards {NAMES[towards]} at every step in m." if towards else
-                   "." if pair else ""))
+                f"fits; {_bracket(last)}. The mean deviation at m = "
+                f"{_across(v, lambda x: x['m'], 'g')}: {means}°; {_step_text(t)}.")
     if t["state"] == "tied":
         return (f"Not settled: at m = {ms[-1]:g} " + " and ".join(NAMES[c] for c in t["near"])
                 + " lie equally near (RMS " + " and ".join(f"{last['rms'][c]:.1f}" for c in t["near"])
@@ -420,12 +447,15 @@ def _limit_tail(t):
     if t["state"] == "grows":
         return (f"Not settled: {NAMES[best]} stays the nearest, but from {step} its RMS "
                 f"grows from {prev['rms'][best]:.1f} to {last['rms'][best]:.1f}°.")
+    if t["state"] == "drifts":
+        return (f"Not settled: {NAMES[best]} stays the nearest with its RMS falling and the test "
+                f"admits it at m = {ms[-1]:g}, but {_step_text(t)}.")
     if t["state"] == "excluded":
         return (f"Not settled: {NAMES[best]} stays the nearest with its RMS falling, but at "
                 f"m = {ms[-1]:g} the test excludes it.")
     return (f"The sequence approaches {NAMES[best]}: among the nearest at m = {ms[-2]:g} "
             f"and the nearest at {ms[-1]:g}, its RMS falling from {prev['rms'][best]:.1f} to "
-            f"{last['rms'][best]:.1f}°, admitted by the test at m = {ms[-1]:g}.")
+            f"{last['rms'][best]:.1f}°, admitted by the test at m = {ms[-1]:g}; {_step_text(t)}.")
 
 
 def _between(v):
@@ -437,16 +467,6 @@ def _between(v):
     if not (more and less):
         return None
     return tuple(min(side, key=lambda c: abs(v["bias"][c])) for side in (more, less))
-
-
-def _towards(t):
-    """the criterion the mean angle of one entry of limits() moves towards at every step in m
-    (its mean deviation keeps its sign and shrinks), or None"""
-    bias = {c: [t["v"][m]["bias"][c] for m in t["ms"]] for c in NAMES}
-    for c, b in bias.items():
-        if all(x * y > 0.0 and abs(y) < abs(x) for x, y in zip(b, b[1:])):
-            return c
-    return None
 
 
 def _bracket(v):
@@ -498,11 +518,9 @@ def limit_sentence(rows, kernel=KERNEL):
                          + f" equally near at m = {t['ms'][-1]:g})")
         elif t["state"] == "none fits":
             pair = _between(t["v"][t["ms"][-1]])
-            towards = _towards(t)
             parts.append(f"{where} none of the criteria fits" + (
                 " (the kink lies between " + " and ".join(NAMES[c] for c in pair)
-                + (f", its mean moving towards {NAMES[towards]} at every step in m" if towards else "")
-                + ")" if pair else ""))
+                + (", still drifting" if _drifts(t["step"]) else "") + ")" if pair else ""))
         else:
             parts.append(f"{where} it is not settled")
     settled = all(t["limit"] is not None for t in mine)
