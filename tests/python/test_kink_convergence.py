@@ -382,3 +382,9 @@ def test_an_rms_change_below_the_shown_digit_holds():
     assert kc._rms_move("X", 2.58, 2.64) == "X's RMS holds at 2.6°"     # the digits shown agree
     assert kc._rms_move("X", 1.4, 1.1) == "X's RMS falls from 1.4 to 1.1°"
     assert kc._rms_move("X", 0.8, 2.0) == "X's RMS grows from 0.8 to 2.0°"
+
+
+def test_the_report_section_carries_the_committed_limit():
+    # the whole sweeps take days: REPORT.md states their limit from the committed CSV, run or not
+    sentence = kc.limit_sentence(kc.read_rows())
+    assert sentence in kc.section([], {}, None, [])["setup"]

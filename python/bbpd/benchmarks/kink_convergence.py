@@ -713,14 +713,17 @@ def jobs(nprocs=1):
 
 
 def section(specs, results, figdir, notes):
-    """The kink convergence section of REPORT.md (tools/reproduce --full)."""
+    """The kink convergence section of REPORT.md (tools/reproduce --full), with the limit
+    that the committed whole sweeps name (they take days, so no report run remakes them)."""
+    committed = (f"The committed whole mixed-mode sweeps ({CSV.relative_to(kinkbench.ROOT)}): "
+                 + limit_sentence(read_rows()))
     return jobmod.rows_section(
         REPORT_TITLE, specs, results,
         f"Not run by default ({len(jobs())} runs, about an hour): `tools/reproduce --full` runs "
         "them; the last measured table is in examples/kink-mixed-mode/README.md, 'Convergence "
-        "in m and in the disk's size'.",
+        f"in m and in the disk's size'. {committed}",
         f"Gaussian kernel, pure Mode II, crack along the rows, delta = {DELTA * 1e3:g} mm; see "
-        "examples/kink-mixed-mode/README.md.",
+        f"examples/kink-mixed-mode/README.md. {committed}",
         table, verdict)
 
 

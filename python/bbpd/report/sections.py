@@ -102,6 +102,8 @@ def kink_section(specs, results, figdir, notes):
 
 def strip_section(specs, results, figdir, notes):
     return strip.section(specs, results, figdir, notes)
+
+
 def branching_section(specs, results, figdir, notes):
     return branching.section(specs, results, figdir, notes)
 
