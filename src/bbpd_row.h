@@ -91,6 +91,27 @@ inline bool row_force_portable(const double *xx, int i, const Idx *bj, int n, Xi
   return FRACTURE && broken;
 }
 
+#ifdef BBPD_SIMD
+/* Full vectors of bonds (no lane off) read the partner positions and the class entries with
+   plain loads, 4 partners at a time: on AMD Zen 3 a 4-wide gather, and on Zen 5 an 8-wide one,
+   costs more than the loads and unpacks that give the same values (doc/performance.md). */
+
+// x, y and z of the partners j[0..3]: (x, y) and (y, z) of each partner, 16 bytes each, paired
+// in 32-byte registers and unpacked
+inline void load_positions(const double *xx, const int *j, __m256d &x, __m256d &y, __m256d &z)
+{
+  const double *p0 = xx + 3 * j[0], *p1 = xx + 3 * j[1], *p2 = xx + 3 * j[2], *p3 = xx + 3 * j[3];
+  auto pair = [](const double *lo, const double *hi) {
+    return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(lo)), _mm_loadu_pd(hi), 1);
+  };
+  const __m256d a02 = pair(p0, p2), a13 = pair(p1, p3);            // x0 y0 x2 y2, x1 y1 x3 y3
+  const __m256d b02 = pair(p0 + 1, p2 + 1), b13 = pair(p1 + 1, p3 + 1);    // y z of the same
+  x = _mm256_unpacklo_pd(a02, a13);
+  y = _mm256_unpackhi_pd(a02, a13);
+  z = _mm256_unpackhi_pd(b02, b13);
+}
+#endif
+
 #ifdef BBPD_AVX512
 // reference lengths and coefficients of bonds k..k+7 (lanes off in m: zero)
 inline void load_values(const PerBondValues &v, __mmask8 m, int k, __m256i, __m512d &xi0,
@@ -102,6 +123,14 @@ inline void load_values(const PerBondValues &v, __mmask8 m, int k, __m256i, __m5
 inline void load_values(const ClassValues &v, __mmask8 m, int k, __m256i, __m512d &xi0,
                         __m512d &coef)
 {
+  if (m == 0xFF) {
+    const auto *c = v.cls + k;
+    xi0 = _mm512_setr_pd(v.xi0[c[0]], v.xi0[c[1]], v.xi0[c[2]], v.xi0[c[3]], v.xi0[c[4]],
+                         v.xi0[c[5]], v.xi0[c[6]], v.xi0[c[7]]);
+    coef = _mm512_setr_pd(v.coef[c[0]], v.coef[c[1]], v.coef[c[2]], v.coef[c[3]], v.coef[c[4]],
+                          v.coef[c[5]], v.coef[c[6]], v.coef[c[7]]);
+    return;
+  }
   const __m256i c = _mm256_cvtepu16_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i *>(v.cls + k)));
   xi0 = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c, v.xi0, 8);
   coef = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c, v.coef, 8);
@@ -176,10 +205,22 @@ inline BondLanes bond_lanes(const double *xx, __m512d xi, __m512d yi, __m512d zi
                             __mmask8 m, const Values &vals, int k)
 {
   BondLanes b;
-  const __m256i j3 = _mm256_mullo_epi32(j1, _mm256_set1_epi32(3));
-  b.dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(xi, m, j3, xx, 8), xi);
-  b.dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(yi, m, j3, xx + 1, 8), yi);
-  b.dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(zi, m, j3, xx + 2, 8), zi);
+  if (m == 0xFF) {
+    alignas(32) int j[LANES];
+    _mm256_store_si256(reinterpret_cast<__m256i *>(j), j1);
+    __m256d x[2], y[2], z[2];
+    load_positions(xx, j, x[0], y[0], z[0]);
+    load_positions(xx, j + 4, x[1], y[1], z[1]);
+    auto join = [](__m256d lo, __m256d hi) { return _mm512_insertf64x4(_mm512_castpd256_pd512(lo), hi, 1); };
+    b.dx = _mm512_sub_pd(join(x[0], x[1]), xi);
+    b.dy = _mm512_sub_pd(join(y[0], y[1]), yi);
+    b.dz = _mm512_sub_pd(join(z[0], z[1]), zi);
+  } else {
+    const __m256i j3 = _mm256_mullo_epi32(j1, _mm256_set1_epi32(3));
+    b.dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(xi, m, j3, xx, 8), xi);
+    b.dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(yi, m, j3, xx + 1, 8), yi);
+    b.dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(zi, m, j3, xx + 2, 8), zi);
+  }
   const __m512d rsq = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(b.dx, b.dx), _mm512_mul_pd(b.dy, b.dy)),
                                     _mm512_mul_pd(b.dz, b.dz));
   b.r = _mm512_sqrt_pd(rsq);
@@ -334,24 +375,8 @@ inline __m128i load_partners(const PartnerOffset *bj, __m128i m32, int i, int k)
   return _mm_and_si128(_mm_add_epi32(d, _mm_set1_epi32(i)), m32);
 }
 
-/* Full groups of 4 bonds (no lane off) read the partner positions and the class entries with
-   plain loads: on AMD Zen 3 a 4-wide gather costs more than the loads and unpacks that give the
-   same values (doc/performance.md). The masked tail of a row keeps the gathers. */
-
-// x, y and z of the partners j[0..3]: (x, y) and (y, z) of each partner, 16 bytes each, paired
-// in 32-byte registers and unpacked
-inline void load_positions(const double *xx, const int *j, __m256d &x, __m256d &y, __m256d &z)
-{
-  const double *p0 = xx + 3 * j[0], *p1 = xx + 3 * j[1], *p2 = xx + 3 * j[2], *p3 = xx + 3 * j[3];
-  auto pair = [](const double *lo, const double *hi) {
-    return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(lo)), _mm_loadu_pd(hi), 1);
-  };
-  const __m256d a02 = pair(p0, p2), a13 = pair(p1, p3);            // x0 y0 x2 y2, x1 y1 x3 y3
-  const __m256d b02 = pair(p0 + 1, p2 + 1), b13 = pair(p1 + 1, p3 + 1);    // y z of the same
-  x = _mm256_unpacklo_pd(a02, a13);
-  y = _mm256_unpackhi_pd(a02, a13);
-  z = _mm256_unpackhi_pd(b02, b13);
-}
+/* Full groups of 4 bonds (no lane off) read the partner positions (load_positions, above)
+   and the class entries with plain loads; the masked tail of a row keeps the gathers. */
 
 // reference lengths and coefficients of the full group k..k+3
 template <class Idx>

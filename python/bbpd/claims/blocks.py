@@ -17,6 +17,7 @@ PERFORMANCE = "doc/performance.md"
 BLOCKS = {
     README: {"benchmarks": readme.benchmarks, "quickstart-times": readme.quickstart_times,
              "reproduce-runs": readme.reproduce_runs, "zen3-avx2-readme": perf.zen3_readme,
+             "zen5-findings-readme": perf.zen5_findings,
              "kink-limit": crack.kink_limit},
     MODE1: {"mode1-table2": mode1.table2, "mode1-table3": mode1.table3,
             "mode1-findings": mode1.findings, "mode1-jtable": mode1.jtable,
@@ -53,5 +54,7 @@ BLOCKS = {
     BRANCHING: {"branching": crack.branching_table,
                 "branching-findings": crack.branching_findings,
                 "branching-cost": crack.branching_cost},
-    PERFORMANCE: {"lps-cylinder": perf.lps_cylinder, "row-driver": perf.row_driver},
+    PERFORMANCE: {"lps-cylinder": perf.lps_cylinder, "row-driver": perf.row_driver,
+                  "zen5-simd": perf.zen5_simd, "zen5-floor": perf.zen5_floor,
+                  "zen5-findings": perf.zen5_findings},
 }

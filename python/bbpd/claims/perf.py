@@ -133,3 +133,122 @@ def row_driver(data):
             f"{loop['peri/lps'] / loop['bbpd/lps']:.2f}. {r0['cpu']} (family {r0['family']} model "
             f"{r0['model']}), {r0['path'].upper()} path, load {_loads(before)} before and "
             f"{_loads(after)} after.")
+
+
+# One CPU's run-time SIMD choice (doc/performance.md): perf/pair_vs_pmb.py --simd PATH and
+# perf/row_floor.py --path PATH, each into perf/results/<prefix>-simd-PATH.csv and
+# <prefix>-row-floor-PATH.csv, and the other scenes with auto in <prefix>-simd-auto-bench-cylinder-memory.csv
+SIMD_PATHS = ("auto", "avx512", "avx2", "portable")
+FLOOR_PATHS = ("avx512", "avx2", "portable")
+SIMD_SCENES = (("plate 2D", "plate"), ("block 3D", "block"))
+# a path measured again after a change of its kernel keeps the earlier CSVs under this suffix
+BEFORE = "gathers"
+BEFORE_LABEL = "before: 8-wide gathers"
+
+
+def _scene(rows, prefix):
+    return next(r for r in rows if r["scene"].startswith(prefix))
+
+
+def _ratio(r):
+    return float(r["pmb_loop_ms"]) / float(r["ours_loop_ms"])
+
+
+def simd_table(prefix):
+    """Per simd keyword, the plate and block against peri/pmb (each within its own invocation),
+    the path that ran and the load; the best ratio of each scene in bold."""
+    runs = {p: _rows(RESULTS / f"{prefix}-simd-{p}.csv") for p in SIMD_PATHS}
+    best = {s: max(SIMD_PATHS, key=lambda p: _ratio(_scene(runs[p], s))) for s, _ in SIMD_SCENES}
+    lines = ["| `simd` | plate 2D: ours / `peri/pmb` (ms/step) | ratio | block 3D 41^3: ours / "
+             "`peri/pmb` (ms/step) | ratio | path run | load |", "|---|---|---|---|---|---|---|"]
+    before = {f"{p} ({BEFORE_LABEL})": _rows(path) for p in SIMD_PATHS
+              if (path := RESULTS / f"{prefix}-simd-{p}-{BEFORE}.csv").exists()}
+    for p, rows in {**runs, **before}.items():
+        cells = []
+        for s, _ in SIMD_SCENES:
+            r = _scene(rows, s)
+            ratio = f"{_ratio(r):.1f}"
+            cells.append(f"{_ms(r['ours_loop_ms'])} / {_ms(r['pmb_loop_ms'])} | "
+                         + (f"**{ratio}**" if best[s] == p else ratio))
+        ran = ", ".join(_scene(rows, s)["path"] for s, _ in SIMD_SCENES)
+        lines.append(f"| {p} | {' | '.join(cells)} | {ran} | {_loads(rows)} |")
+    return "\n".join(lines)
+
+
+def floor_table(prefix):
+    """Per path the 3D block held still: the kernel's pair time against its floor (no_memory)."""
+    lines = ["| path (3D block held still, `perf/row_floor.py`) | kernel ms/step | floor "
+             "(`no_memory`) ms/step | ratio | load |", "|---|---|---|---|---|"]
+    files = [(p, RESULTS / f"{prefix}-row-floor-{p}.csv") for p in FLOOR_PATHS]
+    files += [(f"{p} ({BEFORE_LABEL})", path) for p in FLOOR_PATHS
+              if (path := RESULTS / f"{prefix}-row-floor-{p}-{BEFORE}.csv").exists()]
+    for p, path in files:
+        rows = {r["variant"]: r for r in _rows(path)}
+        kernel, floor = float(rows["baseline"]["pair_ms"]), float(rows["no_memory"]["pair_ms"])
+        load = rows["baseline"]["load"].split()[0]
+        lines.append(f"| {p} | {kernel:.2f} | {floor:.2f} | {kernel / floor:.2f} | {load} |")
+    return "\n".join(lines)
+
+
+def simd_findings(prefix):
+    """What the tables of one CPU say: which path auto ran, how far it lies from the best forced
+    path, the floors, and the other scenes with auto."""
+    runs = {p: _rows(RESULTS / f"{prefix}-simd-{p}.csv") for p in SIMD_PATHS}
+    r0 = runs["auto"][0]
+    out = [f"CPU `{r0['cpu']}` (family {r0['family']}, model {r0['model']}), the plugin's paths "
+           f"{r0['isa']}, {r0['date']}."]
+    for s, name in SIMD_SCENES:
+        forced = {p: _ratio(_scene(runs[p], s)) for p in SIMD_PATHS if p != "auto"}
+        own = {p: float(_scene(runs[p], s)["ours_loop_ms"]) for p in forced}
+        top, quick = max(forced, key=forced.get), min(own, key=own.get)
+        auto = _scene(runs["auto"], s)
+        out.append(f"{name.capitalize()}: auto ran {auto['path']} ({_ratio(auto):.1f}× `peri/pmb`, "
+                   f"{_ms(auto['ours_loop_ms'])} ms/step); the fastest forced path is {top} by "
+                   f"ratio ({forced[top]:.1f}×) and {quick} by our own loop time "
+                   f"({_ms(own[quick])} ms/step), the portable loop {forced['portable']:.1f}×.")
+    pmb = {name: [float(_scene(runs[p], s)["pmb_loop_ms"]) for p in SIMD_PATHS] for s, name in SIMD_SCENES}
+    out.append(f"`peri/pmb`'s own time over the {len(SIMD_PATHS)} invocations: "
+               + ", ".join(f"{name} {_ms(min(v))}-{_ms(max(v))} ms/step "
+                           f"({100.0 * (max(v) / min(v) - 1.0):.0f} % apart)" for name, v in pmb.items())
+               + ": ratios of different invocations differ by that much before the paths do.")
+    floors = {}
+    for p in FLOOR_PATHS:
+        rows = {r["variant"]: r for r in _rows(RESULTS / f"{prefix}-row-floor-{p}.csv")}
+        floors[p] = float(rows["baseline"]["pair_ms"]) / float(rows["no_memory"]["pair_ms"])
+    out.append("Kernel over its floor on the block held still: "
+               + ", ".join(f"{p} {v:.2f}×" for p, v in floors.items()) + ".")
+    for p in SIMD_PATHS:
+        path = RESULTS / f"{prefix}-simd-{p}-{BEFORE}.csv"
+        if p == "auto" or not path.exists():
+            continue
+        old = _rows(path)
+        out.append(f"The {p} kernel with gathers for full vectors (rows '{BEFORE_LABEL}') and "
+                   "now: "
+                   + ", ".join(f"{name} {_ms(_scene(old, s)['ours_loop_ms'])} → "
+                               f"{_ms(_scene(runs[p], s)['ours_loop_ms'])} ms/step" for s, name in SIMD_SCENES)
+                   + " with plain loads.")
+    other = _rows(RESULTS / f"{prefix}-simd-auto-bench-cylinder-memory.csv")
+    parts = []
+    for label, name, _ in SCENES[2:]:
+        r = next((x for x in other if x["scene"].startswith(label)), None)
+        if r is not None:
+            parts.append(f"{name.split(',')[0]} {_ms(r['ours_loop_ms'])} / {_ms(r['pmb_loop_ms'])} "
+                         f"ms/step, {_ratio(r):.1f}× (auto: {r['path']})")
+    margin = next((x for x in other if x["scene"].startswith(MARGIN)), None)
+    if margin is not None:
+        parts.append(f"memory {float(margin['bytes_per_bond']):.1f} bytes per bond at the margin")
+    if parts:
+        out.append("With auto, load " + _loads(other) + ": " + "; ".join(parts) + ".")
+    return " ".join(out)
+
+
+def zen5_simd(data):
+    return simd_table("zen5")
+
+
+def zen5_floor(data):
+    return floor_table("zen5")
+
+
+def zen5_findings(data):
+    return simd_findings("zen5")
