@@ -433,7 +433,7 @@ def _limit_tail(t):
     step = f"m = {ms[-2]:g} to {ms[-1]:g}"
     if t["state"] == "none fits":
         means = "; ".join(f"from {NAMES[c]} {_across(v, lambda x: x['bias'][c], '+.1f')}"
-                          for c in _between(last) or (min(NAMES, key=lambda c: abs(last["bias"][c])),))
+                          for c in _between(last) or (_nearest_mean(last),))
         return (f"At m = {ms[-1]:g} the two-standard-error test admits none of the criteria: none "
                 f"fits; {_bracket(last)}. The mean deviation at m = "
                 f"{_across(v, lambda x: x['m'], 'g')}: {means}°; {_step_text(t)}.")
@@ -469,6 +469,11 @@ def _between(v):
     return tuple(min(side, key=lambda c: abs(v["bias"][c])) for side in (more, less))
 
 
+def _nearest_mean(v):
+    """the criterion the mean angle of verdict v lies nearest"""
+    return min(NAMES, key=lambda c: abs(v["bias"][c]))
+
+
 def _bracket(v):
     """where the mean angle of verdict v lies among the criteria, as a clause"""
     def dev(c):
@@ -478,7 +483,7 @@ def _bracket(v):
         more, less = pair
         return (f"the mean lies between {NAMES[more]} (BBPD kinks more by {dev(more)}) and "
                 f"{NAMES[less]} (less by {dev(less)})")
-    nearest = min(NAMES, key=lambda c: abs(v["bias"][c]))
+    nearest = _nearest_mean(v)
     word = "more" if v["bias"][nearest] < 0.0 else "less"
     return f"BBPD kinks {word} than every criterion, by {dev(nearest)} than the nearest, {NAMES[nearest]}"
 

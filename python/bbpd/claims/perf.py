@@ -154,15 +154,32 @@ def _ratio(r):
     return float(r["pmb_loop_ms"]) / float(r["ours_loop_ms"])
 
 
+def _simd_runs(prefix):
+    """{simd keyword: rows of its pair_vs_pmb.py CSV}"""
+    return {p: _rows(RESULTS / f"{prefix}-simd-{p}.csv") for p in SIMD_PATHS}
+
+
+def _earlier(prefix, kind, paths):
+    """{path: its earlier CSV} for the paths measured again (kind: 'simd' or 'row-floor')"""
+    return {p: path for p in paths if (path := RESULTS / f"{prefix}-{kind}-{p}-{BEFORE}.csv").exists()}
+
+
+def _floor(path):
+    """(kernel pair ms/step, floor pair ms/step, load) of a row_floor.py CSV"""
+    rows = {r["variant"]: r for r in _rows(path)}
+    return (float(rows["baseline"]["pair_ms"]), float(rows["no_memory"]["pair_ms"]),
+            rows["baseline"]["load"].split()[0])
+
+
 def simd_table(prefix):
     """Per simd keyword, the plate and block against peri/pmb (each within its own invocation),
     the path that ran and the load; the best ratio of each scene in bold."""
-    runs = {p: _rows(RESULTS / f"{prefix}-simd-{p}.csv") for p in SIMD_PATHS}
+    runs = _simd_runs(prefix)
     best = {s: max(SIMD_PATHS, key=lambda p: _ratio(_scene(runs[p], s))) for s, _ in SIMD_SCENES}
     lines = ["| `simd` | plate 2D: ours / `peri/pmb` (ms/step) | ratio | block 3D 41^3: ours / "
              "`peri/pmb` (ms/step) | ratio | path run | load |", "|---|---|---|---|---|---|---|"]
-    before = {f"{p} ({BEFORE_LABEL})": _rows(path) for p in SIMD_PATHS
-              if (path := RESULTS / f"{prefix}-simd-{p}-{BEFORE}.csv").exists()}
+    before = {f"{p} ({BEFORE_LABEL})": _rows(path)
+              for p, path in _earlier(prefix, "simd", SIMD_PATHS).items()}
     for p, rows in {**runs, **before}.items():
         cells = []
         for s, _ in SIMD_SCENES:
@@ -180,12 +197,10 @@ def floor_table(prefix):
     lines = ["| path (3D block held still, `perf/row_floor.py`) | kernel ms/step | floor "
              "(`no_memory`) ms/step | ratio | load |", "|---|---|---|---|---|"]
     files = [(p, RESULTS / f"{prefix}-row-floor-{p}.csv") for p in FLOOR_PATHS]
-    files += [(f"{p} ({BEFORE_LABEL})", path) for p in FLOOR_PATHS
-              if (path := RESULTS / f"{prefix}-row-floor-{p}-{BEFORE}.csv").exists()]
+    files += [(f"{p} ({BEFORE_LABEL})", path)
+              for p, path in _earlier(prefix, "row-floor", FLOOR_PATHS).items()]
     for p, path in files:
-        rows = {r["variant"]: r for r in _rows(path)}
-        kernel, floor = float(rows["baseline"]["pair_ms"]), float(rows["no_memory"]["pair_ms"])
-        load = rows["baseline"]["load"].split()[0]
+        kernel, floor, load = _floor(path)
         lines.append(f"| {p} | {kernel:.2f} | {floor:.2f} | {kernel / floor:.2f} | {load} |")
     return "\n".join(lines)
 
@@ -193,7 +208,7 @@ def floor_table(prefix):
 def simd_findings(prefix):
     """What the tables of one CPU say: which path auto ran, how far it lies from the best forced
     path, the floors, and the other scenes with auto."""
-    runs = {p: _rows(RESULTS / f"{prefix}-simd-{p}.csv") for p in SIMD_PATHS}
+    runs = _simd_runs(prefix)
     r0 = runs["auto"][0]
     out = [f"CPU `{r0['cpu']}` (family {r0['family']}, model {r0['model']}), the plugin's paths "
            f"{r0['isa']}, {r0['date']}."]
@@ -211,15 +226,11 @@ def simd_findings(prefix):
                + ", ".join(f"{name} {_ms(min(v))}-{_ms(max(v))} ms/step "
                            f"({100.0 * (max(v) / min(v) - 1.0):.0f} % apart)" for name, v in pmb.items())
                + ": ratios of different invocations differ by that much before the paths do.")
-    floors = {}
-    for p in FLOOR_PATHS:
-        rows = {r["variant"]: r for r in _rows(RESULTS / f"{prefix}-row-floor-{p}.csv")}
-        floors[p] = float(rows["baseline"]["pair_ms"]) / float(rows["no_memory"]["pair_ms"])
+    floors = {p: _floor(RESULTS / f"{prefix}-row-floor-{p}.csv") for p in FLOOR_PATHS}
     out.append("Kernel over its floor on the block held still: "
-               + ", ".join(f"{p} {v:.2f}×" for p, v in floors.items()) + ".")
-    for p in SIMD_PATHS:
-        path = RESULTS / f"{prefix}-simd-{p}-{BEFORE}.csv"
-        if p == "auto" or not path.exists():
+               + ", ".join(f"{p} {k / f:.2f}×" for p, (k, f, _) in floors.items()) + ".")
+    for p, path in _earlier(prefix, "simd", SIMD_PATHS).items():
+        if p == "auto":
             continue
         old = _rows(path)
         out.append(f"The {p} kernel with gathers for full vectors (rows '{BEFORE_LABEL}') and "
