@@ -47,7 +47,7 @@ numfig = False
 
 # Markdown pages written beside the RST ones (benchmarks.rst renders them; the
 # raw files are copied too so that they can be linked)
-html_extra_path = [f for f in ("performance.md", "stability.md") if os.path.isfile(os.path.join(here, f))]
+html_extra_path = [f for f in ("performance.md", "stability.md", "verification.md") if os.path.isfile(os.path.join(here, f))]
 
 
 class LAMMPSLexer(RegexLexer):

@@ -70,8 +70,8 @@ def test_old_wording_is_reported(rel):
 
 def test_old_headline_without_cpu_is_reported():
     text = text_of(README).replace(
-        "runs faster than LAMMPS's own\n`peri/pmb` on the same plate",
-        "runs 17.6x faster than LAMMPS's own\n`peri/pmb` on the same plate")
+        "## Two commands (Debian 12)\n",
+        "## Two commands (Debian 12)\n\nThe plugin runs 17.6x faster than LAMMPS's own `peri/pmb`.\n")
     assert "17.6x" in text
     problems = claims.check_text(README, text)
     assert any("speed ratio '17.6x' without a CPU" in p for p in problems), problems

@@ -463,8 +463,8 @@ def test_bad_input_stops_with_error(tmp_path, text, expected):
 
 
 def test_readme_counts_these_cases():
-    """README's 'Verified against theory' list states how many bad-input cases there are"""
-    readme = (ROOT / "README.md").read_text()
+    """doc/verification.md's 'Verified against theory' list states how many bad-input cases there are"""
+    readme = (ROOT / "doc" / "verification.md").read_text()
     stated = re.search(r"(\d+) bad-input cases each end in a LAMMPS `ERROR:`", readme)
     assert stated and int(stated.group(1)) == len(list(params()))
 

@@ -18,21 +18,6 @@ def test_the_simd_table_gives_the_intel_figures_typed_before():
     assert "| avx512 | 56.40 | 50.06 | 1.13 |" in floor and "| avx2 | 71.40 | 52.93 | 1.35 |" in floor
 
 
-def test_the_findings_name_autos_choice_and_the_fastest_forced_path():
-    text = perf.simd_findings("spr")
-    # by ratio avx512 on the plate, though avx2's own loop time was the shorter (peri/pmb's time
-    # moved between the invocations)
-    assert ("Plate: auto ran avx512 (16.2× `peri/pmb`, 5.35 ms/step); the fastest forced path is "
-            "avx512 by ratio (16.6×) and avx2 by our own loop time (4.72 ms/step), the portable "
-            "loop 11.2×.") in text
-    assert ("Block: auto ran avx2 (9.9× `peri/pmb`, 80.99 ms/step); the fastest forced path is "
-            "avx2 by ratio (10.4×) and avx2 by our own loop time (77.32 ms/step)") in text
-    assert "plate 72.68-86.40 ms/step (19 % apart)" in text
-    assert "avx512 1.13×, avx2 1.35×, portable 1.02×" in text
-    assert "LAMMPS's benchmark scene 1.18 / 37.74 ms/step, 31.9× (auto: avx512)" in text
-    assert "memory 17.9 bytes per bond at the margin" in text
-
-
 def test_the_bold_ratio_follows_the_data(tmp_path, monkeypatch):
     # make the portable loop the fastest on the plate: the bold moves to it
     for path in perf.RESULTS.glob("spr-*"):
@@ -47,6 +32,15 @@ def test_the_bold_ratio_follows_the_data(tmp_path, monkeypatch):
     assert "**16.6**" not in table
 
 
+def test_the_scene_table_takes_each_scene_from_the_last_file():
+    """README's table: plate and block from the simd-auto CSV, bench and cylinder from the
+    other, each ratio peri/pmb over ours of its row"""
+    table = perf.scene_table(perf.ZEN5_AUTO_FILES)
+    assert "| plate 200 × 100, 785 k bonds | 2.13 ms/step | 49.82 ms/step | 23.3× |" in table
+    assert "| `bbpd/pmb` cylinder, 1000 steps | 1.63 s | 10.55 s | 6.5× |" in table
+    assert "18.0 bytes per bond" in table and "family 26 model 2" in table
+
+
 def test_a_kernel_measured_again_keeps_its_earlier_row(tmp_path, monkeypatch):
     for path in perf.RESULTS.glob("spr-*"):
         shutil.copy(path, tmp_path / path.name)
@@ -58,5 +52,3 @@ def test_a_kernel_measured_again_keeps_its_earlier_row(tmp_path, monkeypatch):
     assert f"| avx512 ({perf.BEFORE_LABEL}) | 7.50 / 84.31 | 11.2 |" in table
     assert "**16.6**" in table    # the earlier row is never the best
     assert f"| avx512 ({perf.BEFORE_LABEL}) | 138.53 | 136.23 | 1.02 |" in perf.floor_table("spr")
-    assert ("plate 7.50 → 4.89 ms/step, block 140.5 → 80.15 ms/step with plain loads."
-            in perf.simd_findings("spr"))

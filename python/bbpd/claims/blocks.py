@@ -3,6 +3,7 @@
 from . import crack, kw, mode1, mode2, perf, readme
 
 README = "README.md"
+VERIFICATION = "doc/verification.md"
 MODE1 = "examples/mode1-semi-infinite/README.md"
 MODE2 = "examples/mode2-central-crack/README.md"
 KW = "examples/kalthoff-winkler/README.md"
@@ -15,10 +16,8 @@ PERFORMANCE = "doc/performance.md"
 
 # file -> {block name: render(data) -> text}
 BLOCKS = {
-    README: {"benchmarks": readme.benchmarks, "quickstart-times": readme.quickstart_times,
-             "reproduce-runs": readme.reproduce_runs, "zen3-avx2-readme": perf.zen3_readme,
-             "zen5-findings-readme": perf.zen5_findings,
-             "kink-limit": crack.kink_limit},
+    README: {"zen5-readme": perf.zen5_readme},
+    VERIFICATION: {"benchmarks": readme.benchmarks, "quickstart-times": readme.quickstart_times},
     MODE1: {"mode1-table2": mode1.table2, "mode1-table3": mode1.table3,
             "mode1-findings": mode1.findings, "mode1-jtable": mode1.jtable,
             "mode1-jfindings": mode1.jfindings, "mode1-tips": mode1.tips_table,
@@ -54,7 +53,7 @@ BLOCKS = {
     BRANCHING: {"branching": crack.branching_table,
                 "branching-findings": crack.branching_findings,
                 "branching-cost": crack.branching_cost},
-    PERFORMANCE: {"lps-cylinder": perf.lps_cylinder, "row-driver": perf.row_driver,
+    PERFORMANCE: {"zen3-avx2": perf.zen3_avx2, "lps-cylinder": perf.lps_cylinder, "row-driver": perf.row_driver,
                   "zen5-simd": perf.zen5_simd, "zen5-floor": perf.zen5_floor,
-                  "zen5-findings": perf.zen5_findings},
+                  "spr-simd": perf.spr_simd, "spr-floor": perf.spr_floor},
 }

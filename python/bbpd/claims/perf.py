@@ -16,6 +16,8 @@ SCENES = (("plate 2D", "plate 200 × 100, 785 k bonds", "ms/step"),
           ("LAMMPS bench", "LAMMPS's benchmark scene, periodic 16³, 250 k bonds", "ms/step"),
           ("cylinder", "`bbpd/pmb` cylinder, 1000 steps", "s"))
 MARGIN = "memory: bytes per bond at the margin"
+# the newest CPU with simd auto (README.md): plate and block, then the other scenes
+ZEN5_AUTO_FILES = (RESULTS / "zen5-simd-auto.csv", RESULTS / "zen5-simd-auto-bench-cylinder-memory.csv")
 
 
 def _rows(path):
@@ -34,10 +36,11 @@ def _loads(rows):
     return f"{min(values):.1f}-{max(values):.1f}"
 
 
-def zen3_readme(data):
-    """The Zen 3 table: each scene from the last file that measured it."""
+def scene_table(files):
+    """Each scene of pair_vs_pmb.py from the last of files that measured it: ours against
+    peri/pmb, the ratio, the path run, and the memory per bond at the margin."""
     rows, source = {}, {}
-    for path in ZEN3_FILES:
+    for path in files:
         for r in _rows(path):
             rows[r["scene"]] = r
             source[r["scene"]] = path.name
@@ -57,17 +60,26 @@ def zen3_readme(data):
     used.append(margin_scene)
     margin = rows[margin_scene]
     r0 = rows[used[0]]
-    files = sorted({source[s] for s in used}, key=[p.name for p in ZEN3_FILES].index)
+    names = [p.name for p in files]
     reps = {s: rows[s]["reps"] for s in used[:-1]}
     common = max(set(reps.values()), key=list(reps.values()).count)
     odd = [f"{s.split(',')[0].split(' 2D')[0].split(' 3D')[0]}: {n}" for s, n in reps.items() if n != common]
     runs = f"minimum of {common} alternating runs" + (f" ({'; '.join(odd)})" if odd else "")
-    head = (f"On an {r0['cpu']} Zen 3 (family {r0['family']} model {r0['model']}, "
-            f"{r0['isa']} kernel, one core, load {_loads([rows[s] for s in used])}, {runs};\n"
-            + ", ".join(f"`perf/results/{f}`" for f in files)
-            + ", commands in [doc/performance.md](doc/performance.md)):")
+    path = {rows[s].get("path") or r0["isa"] for s in used[:-1]}
+    head = (f"{r0['cpu']} family {r0['family']} model {r0['model']}, {'/'.join(sorted(path))} "
+            f"path, one core, load {_loads([rows[s] for s in used])}, {runs}, {r0['date'][:10]}; "
+            + ", ".join(f"`perf/results/{f}`" for f in sorted({source[s] for s in used}, key=names.index))
+            + ":")
     return (head + "\n\n" + "\n".join(lines) + "\n\nMemory at the margin (max RSS, block 41³ → "
             f"51³): {float(margin['bytes_per_bond']):.1f} bytes per bond.")
+
+
+def zen3_avx2(data):
+    return scene_table(ZEN3_FILES)
+
+
+def zen5_readme(data):
+    return scene_table(ZEN5_AUTO_FILES)
 
 
 # perf/lps_vs_peri.py --csv runs of the peri/lps cylinder, one file per CPU, in the doc's order,
@@ -205,54 +217,6 @@ def floor_table(prefix):
     return "\n".join(lines)
 
 
-def simd_findings(prefix):
-    """What the tables of one CPU say: which path auto ran, how far it lies from the best forced
-    path, the floors, and the other scenes with auto."""
-    runs = _simd_runs(prefix)
-    r0 = runs["auto"][0]
-    out = [f"CPU `{r0['cpu']}` (family {r0['family']}, model {r0['model']}), the plugin's paths "
-           f"{r0['isa']}, {r0['date']}."]
-    for s, name in SIMD_SCENES:
-        forced = {p: _ratio(_scene(runs[p], s)) for p in SIMD_PATHS if p != "auto"}
-        own = {p: float(_scene(runs[p], s)["ours_loop_ms"]) for p in forced}
-        top, quick = max(forced, key=forced.get), min(own, key=own.get)
-        auto = _scene(runs["auto"], s)
-        out.append(f"{name.capitalize()}: auto ran {auto['path']} ({_ratio(auto):.1f}× `peri/pmb`, "
-                   f"{_ms(auto['ours_loop_ms'])} ms/step); the fastest forced path is {top} by "
-                   f"ratio ({forced[top]:.1f}×) and {quick} by our own loop time "
-                   f"({_ms(own[quick])} ms/step), the portable loop {forced['portable']:.1f}×.")
-    pmb = {name: [float(_scene(runs[p], s)["pmb_loop_ms"]) for p in SIMD_PATHS] for s, name in SIMD_SCENES}
-    out.append(f"`peri/pmb`'s own time over the {len(SIMD_PATHS)} invocations: "
-               + ", ".join(f"{name} {_ms(min(v))}-{_ms(max(v))} ms/step "
-                           f"({100.0 * (max(v) / min(v) - 1.0):.0f} % apart)" for name, v in pmb.items())
-               + ": ratios of different invocations differ by that much before the paths do.")
-    floors = {p: _floor(RESULTS / f"{prefix}-row-floor-{p}.csv") for p in FLOOR_PATHS}
-    out.append("Kernel over its floor on the block held still: "
-               + ", ".join(f"{p} {k / f:.2f}×" for p, (k, f, _) in floors.items()) + ".")
-    for p, path in _earlier(prefix, "simd", SIMD_PATHS).items():
-        if p == "auto":
-            continue
-        old = _rows(path)
-        out.append(f"The {p} kernel with gathers for full vectors (rows '{BEFORE_LABEL}') and "
-                   "now: "
-                   + ", ".join(f"{name} {_ms(_scene(old, s)['ours_loop_ms'])} → "
-                               f"{_ms(_scene(runs[p], s)['ours_loop_ms'])} ms/step" for s, name in SIMD_SCENES)
-                   + " with plain loads.")
-    other = _rows(RESULTS / f"{prefix}-simd-auto-bench-cylinder-memory.csv")
-    parts = []
-    for label, name, _ in SCENES[2:]:
-        r = next((x for x in other if x["scene"].startswith(label)), None)
-        if r is not None:
-            parts.append(f"{name.split(',')[0]} {_ms(r['ours_loop_ms'])} / {_ms(r['pmb_loop_ms'])} "
-                         f"ms/step, {_ratio(r):.1f}× (auto: {r['path']})")
-    margin = next((x for x in other if x["scene"].startswith(MARGIN)), None)
-    if margin is not None:
-        parts.append(f"memory {float(margin['bytes_per_bond']):.1f} bytes per bond at the margin")
-    if parts:
-        out.append("With auto, load " + _loads(other) + ": " + "; ".join(parts) + ".")
-    return " ".join(out)
-
-
 def zen5_simd(data):
     return simd_table("zen5")
 
@@ -261,5 +225,9 @@ def zen5_floor(data):
     return floor_table("zen5")
 
 
-def zen5_findings(data):
-    return simd_findings("zen5")
+def spr_simd(data):
+    return simd_table("spr")
+
+
+def spr_floor(data):
+    return floor_table("spr")
