@@ -43,23 +43,40 @@ def vector_isa(flags):
     return "AVX-512" if "avx512f" in flags else "AVX2" if "avx2" in flags else "no AVX2"
 
 
-def machine():
-    """'CPU model (vector ISA), N cores, OS': timings depend on all three."""
-    cpu, flags = "unknown CPU", set()
+def _cpuinfo():
+    """(model name, {'cpu family': .., 'model': ..}, flags) of the first CPU in /proc/cpuinfo"""
+    model, numbers, flags = platform.processor() or "unknown CPU", {}, set()
     try:
         for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name") and cpu == "unknown CPU":
-                cpu = line.split(":", 1)[1].strip()
-            if line.startswith("flags") and not flags:
-                flags = set(line.split(":", 1)[1].split())
+            key, _, value = (s.strip() for s in line.partition(":"))
+            if key == "model name" and model in ("unknown CPU", platform.processor()):
+                model = value
+            elif key in ("cpu family", "model"):
+                numbers.setdefault(key, value)
+            elif key == "flags" and not flags:
+                flags = set(value.split())
     except OSError:
         pass
-    if flags:
-        cpu = f"{cpu} ({vector_isa(flags)})"
+    return model, numbers, flags
+
+
+def cpu():
+    """'CPU model (family F model M), ISA' for the timing columns of the benchmarks' CSVs: a
+    model name alone may not tell the generation apart (AMD EPYC: Zen 3 and Zen 4)"""
+    model, numbers, flags = _cpuinfo()
+    isa = "AVX-512" if "avx512f" in flags else "AVX2" if "avx2" in flags else "SSE"
+    ident = f" (family {numbers['cpu family']} model {numbers['model']})" if len(numbers) == 2 else ""
+    return f"{model}{ident}, {isa}"
+
+
+def machine():
+    """'CPU model (vector ISA), N cores, OS': timings depend on all three."""
+    model, _, flags = _cpuinfo()
+    name = f"{model} ({vector_isa(flags)})" if flags else model
     osname = platform.platform()
     try:
         rel = dict(re.findall(r'^(\w+)="?([^"\n]*)"?', Path("/etc/os-release").read_text(), re.M))
         osname = f"{rel.get('PRETTY_NAME', osname)}, Linux {platform.release()}"
     except OSError:
         pass
-    return f"{cpu}, {os.cpu_count()} cores, {osname}"
+    return f"{name}, {os.cpu_count()} cores, {osname}"

@@ -205,10 +205,10 @@ def test_branched_crack_shows_in_the_spread():
 
 def test_readme_markers_are_replaced_in_place():
     """Several tables share the end marker: each body goes between its own pair."""
-    from bbpd.benchmarks import kink as bench
+    from bbpd import markers
     text = ("a\n<!-- bbpd:table kink -->\nold1\n<!-- /bbpd:table -->\nb\n"
             "<!-- bbpd:table kink-kw -->\nold2\n<!-- /bbpd:table -->\nc\n")
-    out = bench.replace_between(text, ("<!-- bbpd:table kink-kw -->", "<!-- /bbpd:table -->"), "new2")
-    out = bench.replace_between(out, bench.TABLE, "new1")
+    out = markers.replace_block("README.md", text, "kink-kw", "new2")
+    out = markers.replace_block("README.md", out, "kink", "new1")
     assert out == text.replace("old1", "new1").replace("old2", "new2")
-    assert bench.replace_between(out, bench.TABLE, "new1") == out
+    assert markers.replace_block("README.md", out, "kink", "new1") == out

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The LPS Mode-I table and sentences (bbpd.benchmarks.mode1_lps) follow their rows."""
+"""The LPS Mode-I table (bbpd.benchmarks.mode1_lps) follows its rows."""
 from bbpd.benchmarks import mode1_lps
 
 
@@ -11,15 +11,6 @@ def lps(kernel, dx, l2, jl2):
 
 BOND = [{"kernel": "gaussian", "dx_m": 0.05, "consistent_peak": 1.7, "consistent_l2": 2.33,
          "j_peak": 0.3, "j_l2": 0.27, "run_time_s": 23.4}]
-
-
-def test_findings_name_the_trend_and_the_bond_based_run():
-    text = mode1_lps.findings([lps("gaussian", 0.1, 6.98, 1.13), lps("gaussian", 0.05, 5.69, 0.54)],
-                              BOND)
-    assert "**gaussian**: DSIF L2 6.98, 5.69 % at dx = 0.1, 0.05 m" in text
-    assert "J-integral L2 0.54 % at dx = 0.05 m (bond-based, nu = 1/3 in its own convention: " \
-           "DSIF 2.33 %, J 0.27 %)" in text
-    assert "constant" not in text
 
 
 def test_table_has_a_dash_where_no_bond_based_run_exists():

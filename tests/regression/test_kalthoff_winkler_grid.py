@@ -200,7 +200,8 @@ def test_pull_is_square_minus_the_off_grid_mean():
     assert p["square"] == 60.0 and p["n"] == 3 and p["mean"] == pytest.approx(64.0)
     assert p["pull"] == pytest.approx(-4.0)
     assert p["sd"] == pytest.approx(2.0) and p["se"] == pytest.approx(2.0 / math.sqrt(3))
-    text = " ".join(kwg.pull_sentence(rows))
-    assert "gaussian initial -4.0 ± 1.2, fit -4.0 ± 1.2" in text and "3 exceed twice" in text
+    table = kwg.pull_table(rows)
+    assert "| gaussian | initial | 60.0 | 64.0 (3) | -4.0 ± 1.2 | yes |" in table
+    assert sum(kwg.significant(q) for q in kwg.pull(rows).values()) == 3
     # no off-grid crack long enough: no pull
     assert kwg.pull([made_up_row("square", 60.0, 60.0), made_up_row("rotated-30", None, None)]) == {}

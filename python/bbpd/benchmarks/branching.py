@@ -46,8 +46,8 @@ import numpy as np
 
 from bbpd import crack_tip, csvfile, freund, readers
 from bbpd import jobs as jobmod
-from bbpd.benchmarks.mode1_propagation import machine
-from bbpd.kernels import COLORS, KERNELS
+from bbpd.provenance import cpu
+from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -214,7 +214,7 @@ def run_case(workdir, kernel, delta, m, sigma, name=None, reuse=False, nprocs=1)
 
 def write_csv(path, rows, command):
     csvfile.write_table(path, rows, CSV_COLUMNS,
-                        (f"made by: {command}", f"timing: LAMMPS loop time, 1 rank, {machine()}"),
+                        (f"made by: {command}", f"timing: LAMMPS loop time, 1 rank, {cpu()}"),
                         text=TEXT_COLUMNS)
 
 
@@ -318,135 +318,23 @@ def damage_maps(workdirs, path, times_us=MAP_TIMES_US):
 KERNEL_SEPARATION = 2.0   # a kernel effect must exceed this many times the change from m = 3 to 4
 
 
-def _pct_off(vals, ref):
-    """'7–11 % above' / '1–7 % below' / 'within ...' of ref, from the ratios vals/ref."""
-    d = [100 * (v / ref - 1) for v in vals]
-    if min(d) >= 0:
-        return f"{_span(d, '.0f')} % above"
-    if max(d) <= 0:
-        return f"{_span([-x for x in d][::-1], '.0f')} % below"
-    return f"between {-min(d):.0f} % below and {max(d):.0f} % above"
-
-
-def _span(vals, fmt):
-    lo, hi = min(vals), max(vals)
-    return f"{lo:{fmt}}" if f"{lo:{fmt}}" == f"{hi:{fmt}}" else f"{lo:{fmt}}–{hi:{fmt}}"
-
-
-def findings(rows):
-    """The README's findings, computed from the CSV rows (bullets)."""
+def split_convergence(rows, sigma=2.0):
+    """The fork at sigma (MPa), delta = 1 mm: how far it moves from m = 3 to 4 kernel by kernel
+    (the largest, 'dx_m' mm and 'dt_m' us) against how far the kernels' forks lie apart at m = 4
+    ('dx_k', 'dt_k'); 'separated' when the kernels differ by more than KERNEL_SEPARATION times
+    that change in both x and t (the kernel then moves the split)"""
     by = {r["run"]: r for r in rows}
-    out = []
-    base = [by[f"{k}-s2-m4"] for k in KERNELS if f"{k}-s2-m4" in by]
-    coarse = [by[f"{k}-s2-m3"] for k in KERNELS if f"{k}-s2-m3" in by]
-    fine = [by[f"{k}-s2-m4-d0.5"] for k in KERNELS if f"{k}-s2-m4-d0.5" in by]
-    if base:
-        one = all((r["tips_end"], r["splits_end"]) == (2, 1) for r in base + coarse + fine)
-        out.append(
-            f"- σ = 2 MPa: {'every' if one else 'not every'} run splits once into two tips. The "
-            f"fork comes at t = {_span([r['t_split_us'] for r in base], '.1f')} µs, x = "
-            f"{_span([r['x_split_mm'] for r in base], '.1f')} mm for the three kernels at "
-            f"δ = 1 mm, m = 4 (constant, triangular, Gaussian: "
-            + ", ".join(f"{r['x_split_mm']:.1f} mm / {r['t_split_us']:.1f} µs" for r in base)
-            + "), after the crack ran at "
-            f"{_span([r['v_pre_over_cR'] for r in base], '.2f')} c_R over the "
-            f"{PRE_WINDOW * 1e6:g} µs before it; the branches leave "
-            f"{_span([r['angle_deg'] for r in base], '.0f')}° apart.")
-    pairs = [(a, b) for a in base for b in coarse if a["kernel"] == b["kernel"]]
-    if pairs:
-        dx_m = max(abs(a["x_split_mm"] - b["x_split_mm"]) for a, b in pairs)
-        dt_m = max(abs(a["t_split_us"] - b["t_split_us"]) for a, b in pairs)
-        dx_k = max(r["x_split_mm"] for r in base) - min(r["x_split_mm"] for r in base)
-        dt_k = max(r["t_split_us"] for r in base) - min(r["t_split_us"] for r in base)
-        separated = dx_k > KERNEL_SEPARATION * dx_m and dt_k > KERNEL_SEPARATION * dt_m
-        out.append(
-            f"- Convergence in m (δ = 1 mm): from m = 3 to 4 the fork moves by at most "
-            f"{dx_m:.2f} mm and {dt_m:.2f} µs (kernel by kernel). The kernels differ by "
-            f"{dx_k:.2f} mm and {dt_k:.2f} µs at m = 4: "
-            + ("more than twice that change: the kernel moves the split." if separated else
-               "not more than twice that change, so at this resolution the data do not "
-               "separate the kernels' split points; the split is converged in m to about "
-               f"{max(dx_m, dx_k):.1f} mm and {max(dt_m, dt_k):.1f} µs."))
-    pairs = [(a, b) for a in base for b in fine if a["kernel"] == b["kernel"]]
-    if pairs:
-        out.append(
-            "- Convergence in δ (m = 4): from δ = 1 to 0.5 mm the fork moves by "
-            + ", ".join(f"{b['x_split_mm'] - a['x_split_mm']:+.1f} mm and "
-                        f"{b['t_split_us'] - a['t_split_us']:+.1f} µs ({a['kernel']})"
-                        for a, b in pairs)
-            + f"; the speed before it is {_span([b['v_pre_over_cR'] for _, b in pairs], '.2f')}"
-            " c_R at δ = 0.5 mm"
-            + (f" (kernels without a δ = 0.5 mm run: "
-               + ", ".join(a["kernel"] for a in base if a["kernel"] not in
-                           {b["kernel"] for _, b in pairs}) + ")"
-               if len(pairs) < len(base) else "")
-            + ". Halving δ moves the split by up to "
-            f"{max(abs(b['x_split_mm'] - a['x_split_mm']) for a, b in pairs):.1f} mm and "
-            f"{max(abs(b['t_split_us'] - a['t_split_us']) for a, b in pairs):.1f} µs ("
-            + ("more than" if max(abs(b["x_split_mm"] - a["x_split_mm"]) for a, b in pairs)
-               > max(r["x_split_mm"] for r in base) - min(r["x_split_mm"] for r in base)
-               else "no more than")
-            + " the kernels' split points differ at δ = 1 mm); two horizons do not show "
-            "whether it converges as δ → 0.")
-    grown_rows = [r for r in rows if grown(r)]
-    if grown_rows:
-        worst = max(r["mirror_damage_frac"] for r in grown_rows)
-        out.append(
-            "- Mirror symmetry: in every run the crack atoms (damage ≥ 0.3) at 43 µs are "
-            + ("exact mirror images about y = 0 (no crack atom lacks its image)"
-               if worst == 0.0 else f"mirror images but for {100 * worst:.1f} % of them")
-            + "; the plate, the grid and the loads are symmetric and so is the arithmetic "
-            "(tests/lammps/test_crack_branches.py also finds the same bits on 1, 2 and 4 ranks "
-            "on the coarse plate).")
-    if base:
-        drop = [100 * (1 - r["v_end"] / r["v_pre"]) for r in base]
-        out.append(
-            f"- Speed against experiment (δ = 1 mm, m = 4): before the split the crack runs at "
-            f"{_span([r['v_pre_over_cR'] for r in base], '.2f')} c_R, after it the longest "
-            f"branch at {_span([r['v_end_over_cR'] for r in base], '.2f')} c_R (last "
-            f"{END_WINDOW * 1e6:g} µs), {_span(drop, '.0f')} % slower. Glass in experiments: a "
-            f"terminal speed of about {EXPERIMENT_SPEED_OVER_CR:g} c_R and a drop of 5–10 % "
-            "after branching (Bowden et al. 1967, as quoted in later papers). The speed before "
-            "the split lies "
-            + _pct_off([r["v_pre_over_cR"] for r in base], EXPERIMENT_SPEED_OVER_CR)
-            + " half c_R, the speed after it "
-            + _pct_off([r["v_end_over_cR"] for r in base], EXPERIMENT_SPEED_OVER_CR)
-            + "; the drop is of the experiment's size, but measured over windows of a few "
-            "µs of a tip that moves in grid steps, so its first digit is not settled.")
-    mid = [by[f"{k}-s4-m4"] for k in KERNELS if f"{k}-s4-m4" in by]
-    if base and mid:
-        out.append(
-            f"- σ = 4 MPa: the crack forks earlier (t = {_span([r['t_split_us'] for r in mid], '.1f')}"
-            f" µs), nearer the notch (x = {_span([r['x_split_mm'] for r in mid], '.1f')} mm) "
-            f"and faster ({_span([r['v_pre_over_cR'] for r in mid], '.2f')} c_R over the "
-            f"{PRE_WINDOW * 1e6:g} µs before"
-            + (", a window that reaches back to within 1 µs of the crack's initiation, so "
-               "these include its start" if any(
-                   r["t_split_us"] - PRE_WINDOW * 1e6 < r["t_init_us"] + 1.0 for r in mid)
-               else "")
-            + f", against {_span([r['v_pre_over_cR'] for r in base], '.2f')} c_R at 2 MPa; "
-            f"mean speed from initiation {_span([r['v_mean_over_cR'] for r in mid], '.2f')} "
-            f"against {_span([r['v_mean_over_cR'] for r in base], '.2f')} c_R), and branches "
-            f"again ({_span([r['tips_end'] for r in mid], '.0f')} tips at 43 µs, the first "
-            "ones stopped at the no-fail bands). The speed at the split is not one value: as "
-            "Bobaru & Zhang argue, no critical speed sets it here. Whether stress waves piling "
-            "up ahead of the tip do is not measured by these runs.")
-    high = [by[f"{k}-s12-m4"] for k in KERNELS if f"{k}-s12-m4" in by]
-    if high:
-        strain = 2 * high[0]["sigma_MPa"] * 1e6 * (1 - NU * NU) / E
-        out.append(
-            f"- σ = 12 MPa: no crack growth to measure. The two loading waves meet at y = 0 "
-            f"after H/c_d = {1e6 * 0.02 / C_D:.2f} µs; their sum strains the mid-line by "
-            f"2σ(1 − ν²)/E = {strain:.3g}, "
-            + ", ".join(f"{100 * strain / r['s0']:.0f} %" for r in high)
-            + " of the critical stretch s0 of the constant, triangular and Gaussian kernels; "
-            f"bonds break along the whole mid-line at t = "
-            f"{_span([r['t_init_us'] for r in high], '.2f')} µs (the crack's path length jumps "
-            f"at {_span([r['v_max_over_cR'] for r in high], '.1f')} c_R), then across the "
-            "plate. Where the sum lies below s0, that the step fronts' overshoot (the grid's "
-            "dispersion) carries it over is likely but not measured. The more branched crack the issue "
-            "expected at this stress does not form in this model with this load.")
-    return "\n".join(out)
+    base = [by[f"{k}-s{sigma:g}-m4"] for k in KERNELS if f"{k}-s{sigma:g}-m4" in by]
+    pairs = [(by[f"{a['kernel']}-s{sigma:g}-m3"], a) for a in base if f"{a['kernel']}-s{sigma:g}-m3" in by]
+    if not pairs:
+        return None
+    out = dict(dx_m=max(abs(a["x_split_mm"] - b["x_split_mm"]) for b, a in pairs),
+               dt_m=max(abs(a["t_split_us"] - b["t_split_us"]) for b, a in pairs),
+               dx_k=max(r["x_split_mm"] for r in base) - min(r["x_split_mm"] for r in base),
+               dt_k=max(r["t_split_us"] for r in base) - min(r["t_split_us"] for r in base))
+    out["separated"] = (out["dx_k"] > KERNEL_SEPARATION * out["dx_m"]
+                        and out["dt_k"] > KERNEL_SEPARATION * out["dt_m"])
+    return out
 
 
 def cost_table(rows):
@@ -470,10 +358,6 @@ def cost_table(rows):
 
 def readme_cost(path=RESULTS):
     return cost_table(read_rows(path))
-
-
-def readme_findings(path=RESULTS):
-    return findings(read_rows(path))
 
 
 # --------------------------------------------------------------------------- report

@@ -31,7 +31,7 @@ from bbpd import jobs as jobmod
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
 from bbpd.benchmarks import kalthoff_winkler_study as study
-from bbpd.benchmarks.mode1_propagation import machine
+from bbpd.provenance import cpu
 from bbpd.jobs import ROOT, Job, Spec
 from bbpd.runner import run_lammps
 
@@ -245,7 +245,7 @@ def main(argv=None):
     if a.csv:
         cmd = "tools/python -m bbpd.benchmarks.kalthoff_winkler_3d " + " ".join(argv or sys.argv[1:])
         csvfile.write_csv(a.csv, rows, comments=[f"made by: {cmd}",
-                                                 f"timing: LAMMPS loop time, {machine()}, shared"])
+                                                 f"timing: LAMMPS loop time, {cpu()}, shared"])
     print(summary(rows))
     return 0
 

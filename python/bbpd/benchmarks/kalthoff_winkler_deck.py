@@ -28,7 +28,7 @@ from bbpd import jobs as jobmod
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
 from bbpd.benchmarks import kalthoff_winkler_study as study
-from bbpd.benchmarks.mode1_propagation import machine
+from bbpd.provenance import cpu
 from bbpd.jobs import ROOT, Job, Spec
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
@@ -231,7 +231,7 @@ def main(argv=None):
                 rows.append(r)
     if a.csv:
         csvfile.write_csv(a.csv, rows, comments=[*earlier, made,
-                                                 f"timing: LAMMPS loop CPU time, {machine()}"])
+                                                 f"timing: LAMMPS loop CPU time, {cpu()}"])
     print(summary(rows))
     return 0
 

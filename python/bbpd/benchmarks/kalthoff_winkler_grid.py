@@ -188,52 +188,24 @@ def pull(rows):
     return out
 
 
-def pull_sentence(rows):
-    """How many degrees the square grid moves the angle, per kernel: computed from the rows."""
+def significant(q):
+    """a pull larger than twice its standard error"""
+    return q["se"] is not None and abs(q["pull"]) > 2.0 * q["se"]
+
+
+def pull_table(rows):
+    """The pulls as a table: per grid spacing, loading, kernel and angle definition the square
+    grid's angle, the mean of the off-grid cracks, and their difference with its standard error."""
     p = pull(rows)
-    head = []
-    for dx in sorted({k[2] for k in p}, reverse=True):
-        parts = []
-        for kernel in kw.KERNELS:
-            v = [q["pull"] for k, q in p.items() if k[1] == kernel and k[2] == dx]
-            if v:
-                parts.append(f"{kernel} {min(v):+.1f} to {max(v):+.1f}°")
-        head.append(f"at {dx:g} mm " + ", ".join(parts))
-    text = ["The square grid moves the angle, against the mean of the perturbed and rotated "
-            "grids' cracks (both loadings, the three angle definitions): " + "; ".join(head)
-            + "."] if head else []
-    for dx in sorted({k[2] for k in p}, reverse=True):
-        for loading in LOADINGS:
-            parts = []
-            for kernel in kw.KERNELS:
-                defs = [(d, p[(loading, kernel, dx, d)]) for d in ANGLES
-                        if (loading, kernel, dx, d) in p]
-                if not defs:
-                    continue
-                parts.append(f"{kernel} " + ", ".join(
-                    f"{d} {q['pull']:+.1f}" + ("" if q["se"] is None else f" ± {q['se']:.1f}")
-                    for d, q in defs))
-            if not parts:
-                continue
-            n = max(q["n"] for k, q in p.items() if k[0] == loading and k[2] == dx)
-            text.append(f"{dx:g} mm, {loading} (square grid minus the mean of up to {n} "
-                        f"off-grid cracks ± its standard error, deg): " + "; ".join(parts) + ".")
-    sig = [(k, q) for k, q in p.items() if q["se"] is not None
-           and abs(q["pull"]) > 2.0 * q["se"]]
-    big = max(p.items(), key=lambda kq: abs(kq[1]["pull"])) if p else None
-    sd = [q["sd"] for q in p.values() if q["sd"] is not None]
-    summary = (f"Of {len(p)} pulls, {len(sig)} exceed twice their standard error"
-               + (": " + "; ".join(f"{k[1]} {k[0]} {k[2]:g} mm {k[3]} {q['pull']:+.1f}"
-                                  for k, q in sig) if sig else "") + ".")
-    if big:
-        k, q = big
-        summary += (f" The largest is {q['pull']:+.1f} deg ({k[1]}, {k[0]}, {k[2]:g} mm, "
-                    f"{k[3]}).")
-    if sd:
-        lo, hi = f"{min(sd):.1f}", f"{max(sd):.1f}"
-        summary += (" The off-grid cracks of one case scatter with a standard deviation of "
-                    + (lo if lo == hi else f"{lo}–{hi}") + " deg.")
-    return text + [summary]
+    lines = ["| dx (mm) | loading | kernel | angle | square grid (deg) | off-grid mean (deg, cracks) "
+             "| pull ± s.e. (deg) | beyond 2 s.e. |", "|" + "---|" * 8]
+    for k in sorted(p, key=lambda k: (-k[2], LOADINGS.index(k[0]), kw.KERNELS.index(k[1]),
+                                      ANGLES.index(k[3]))):
+        q = p[k]
+        err = "" if q["se"] is None else f" ± {q['se']:.1f}"
+        lines.append(f"| {k[2]:g} | {k[0]} | {k[1]} | {k[3]} | {q['square']:.1f} | {q['mean']:.1f} "
+                     f"({q['n']}) | {q['pull']:+.1f}{err} | {'yes' if significant(q) else 'no'} |")
+    return "\n".join(lines)
 
 
 # ---------------------------------------------------------------------------- table
@@ -247,7 +219,7 @@ def _pair(r, d):
 
 
 def markdown(rows, comments=()):
-    """The README's table (one row per run, lower / upper crack) and the computed sentences;
+    """The README's tables (one row per run, lower / upper crack; the pulls);
     comments: the CSV's '#' lines (what made it, on which machine)."""
     head = ["loading", "kernel", "dx (mm)", "grid", "first bond (us)", "damage band (us)",
             "initial lo / hi (deg)", "fit lo / hi (deg)", "chord lo / hi (deg)",
@@ -265,46 +237,10 @@ def markdown(rows, comments=()):
         text += (f"\n\nFrom `examples/kalthoff-winkler/results/grid_pull.csv` (made by: {made}). "
                  f"Loop CPU: LAMMPS's loop time x its CPU use, one rank, on {cpu} shared with "
                  "other jobs; every other number is deterministic.")
-    return text + "\n\n" + "\n".join(f"- {s}" for s in pull_sentence(rows))
+    return text + "\n\n" + pull_table(rows)
 
 
 # ---------------------------------------------------------------------------- summary
-
-def _hit_defs(angles):
-    """The definitions whose angle lies within 70 +- 2 deg: angles = {definition: deg or None}."""
-    return [d for d, a in angles.items() if a is not None
-            and abs(a - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
-
-
-def hits(proj_rows, grid_rows):
-    """Every run with an angle of 70 +- 2 deg (any definition; off the square grid either crack)
-    whose cracks reach the plate's edge, as dicts (dx_mm, name, defs, square): projectile.csv's
-    setups (loadings, toughness values, 3D) and the grid-pull runs off the square grid."""
-    out = []
-    num = projectile._num
-    for r in proj_rows:
-        defs = _hit_defs({d: num(r[f"{d}_deg"]) for d in ANGLES})
-        if defs and projectile.crosses_plate(r):
-            out.append(dict(dx_mm=float(r["dx_mm"]), defs=defs, square=True,
-                            name=f"{r['setup'].upper()} {r['loading']} {r['kernel']} "
-                                 f"{float(r['dx_mm']):g} mm G_c = {float(r['Gc']):g} "
-                                 f"({', '.join(defs)})"))
-    for r in grid_rows:
-        if r["grid"] == "square" or not str(r["crack_stops"]).startswith("edge"):
-            continue
-        for side, name in (("lo", "lower"), ("hi", "upper")):
-            defs = _hit_defs({d: r[f"{d}_{side}_deg"] for d in ANGLES})
-            if defs:
-                out.append(dict(dx_mm=float(r["dx_mm"]), defs=defs, square=False,
-                                name=f"{r['grid']} grid {r['loading']} {r['kernel']} "
-                                     f"{float(r['dx_mm']):g} mm, {name} crack "
-                                     f"({', '.join(defs)})"))
-    return out
-
-
-def _span(values):
-    return f"{min(values):.1f}–{max(values):.1f}°"
-
 
 # the Kalthoff-Winkler tips' mode mix, taken at two fair instants (kink_kalthoff_winkler.py):
 # the first broken bond and the damage band leaving the tip (keys of kalthoff_winkler_mix.json)
@@ -320,96 +256,38 @@ def _nearest(angle, predicted):
     return min(predicted, key=lambda c: abs(angle - predicted[c]))
 
 
-def mix_verdict(mix, angles, dx_mm):
-    """What the kink criteria say about the measured angles (dict definition -> angles of the
-    setups), at each mix of MIXES; a verdict is stated only where every mix and definition
-    supports it, else it is said to depend on the mix."""
-    if not angles or any(len(v) < 2 for v in angles.values()):
-        raise ValueError("mix_verdict needs at least two setups' angles for every definition "
-                         f"(got {({d: len(v) for d, v in angles.items()})})")
-    pred = {m: {c: -mix[key + suffix] for c, key in CRITERIA} for m, suffix, _, _ in MIXES}
-    stats = {d: (float(np.mean(v)), float(np.std(v, ddof=1) / np.sqrt(len(v)))) for d, v in angles.items()}
-    text = "The criteria's angles at the tips' mix: " + "; ".join(
-        f"at {m} (psi = {mix[psi]:.1f}°, {mix[t]:.1f} µs) "
-        + ", ".join(f"{c} {pred[m][c]:.1f}°" for c, _ in CRITERIA)
-        for m, _, t, psi in MIXES) + ". "
-    text += (f"The {dx_mm:g} mm setups' mean angles (± one standard error): "
-             + ", ".join(f"{d} {mu:.1f} ± {se:.1f}°" for d, (mu, se) in stats.items()) + ". ")
-    nearest = {(m, d): _nearest(mu, pred[m]) for m in pred for d, (mu, _) in stats.items()}
-    agree = {(m, d): abs(mu - pred[m][nearest[m, d]]) <= AGREE_SE * se
-             for m in pred for d, (mu, se) in stats.items()}
-    gaps = [stats[d][0] - pred[m][nearest[m, d]] for m, d in nearest]
-    names = set(nearest.values())
-    if len(names) == 1:
-        c = names.pop()
-        text += (f"At both mixes and by both definitions they lie nearest {c} "
-                 f"({min(gaps):+.1f} to {max(gaps):+.1f}°)")
-        held = [m for m in pred if all(agree[m, d] for d in stats)]
-        if len(held) == len(pred):
-            text += f", within {AGREE_SE:g} standard errors at both: the crack follows {c}."
-        else:
-            if held:
-                text += (f", but agree with it within {AGREE_SE:g} standard errors only at "
-                         f"{held[0]}'s mix: that the crack follows {c} depends on which "
-                         "instant's mix is taken, and is not settled.")
-            else:
-                text += (f", but below it by more than {AGREE_SE:g} standard errors at both "
-                         f"mixes: nearer {c} than the other criteria, not on it; that the "
-                         f"crack follows {c} is not settled.")
-    else:
-        text += ("The nearest criterion depends on the mix or the definition ("
-                 + "; ".join(f"{d} at {m}: {nearest[m, d]}" for m, d in nearest)
-                 + "): no criterion is singled out.")
-    target = study.ANGLE_TARGET_DEG
-    exp = {m: _nearest(target, pred[m]) for m in pred}
-    if len(set(exp.values())) == 1:
-        text += f" The experiment's {target:.0f}° lies nearest {exp[MIXES[0][0]]} at both mixes."
-    else:
-        text += (f" The experiment's {target:.0f}° lies nearest "
-                 + " and ".join(f"{exp[m]} at {m}'s mix" for m in pred)
-                 + ": whether it is a hoop-strain or a hoop-stress angle is not settled by the mix.")
-    return text
-
-
-def summary(proj_rows, grid_rows, kink_rows, mix, kink_limit):
-    """The summary of the Kalthoff-Winkler setups against the experiment's 70 deg and what the
-    kink test says about it, computed from projectile.csv, grid_pull.csv, the kink test's
-    kink.csv and its Kalthoff-Winkler mix (kalthoff_winkler_mix.json); kink_limit is the kink
-    test's sentence on its limit in m (kink_convergence.limit_sentence)."""
-    found = hits(proj_rows, grid_rows)
+def fine_angles(proj_rows, grid_rows):
+    """(dx_mm, {definition: angles}) of the finest 2D runs with the paper's G_c, over every
+    loading and grid (projectile.csv and grid_pull.csv, both cracks): what mix_verdict reads"""
     fine = min(float(r["dx_mm"]) for r in proj_rows if r["setup"] == "2d")
-    text = ("**Summary.** Setups with 70 ± 2° and cracks that cross the plate: "
-            + ("; ".join(h["name"] for h in found) if found else "none") + ".")
-    at_fine = [h for h in found if h["dx_mm"] == fine]
-    fine_defs = sorted({d for h in at_fine for d in h["defs"]}, key=ANGLES.index)
-    text += (f" On the {fine:g} mm grid: " + (
-        f"{len(at_fine)} of them, by the {' and '.join(fine_defs)} angle"
-        + (", all off the square grid" if not any(h["square"] for h in at_fine) else "")
-        if at_fine else "none") + ".")
-    # the finest 2D runs with the paper's G_c: every loading and grid
     ang = {}
     for d in MEASURED + ("chord",):
         v = [projectile._num(r[f"{d}_deg"]) for r in proj_rows if r["setup"] == "2d"
              and float(r["dx_mm"]) == fine and float(r["Gc"]) == 6.9e4]
         v += [r[f"{d}_{s}_deg"] for r in grid_rows for s in SIDES if float(r["dx_mm"]) == fine]
         ang[d] = [a for a in v if a is not None]
-    mode2 = next(r for r in kink_rows if r["kernel"] == "gaussian" and r["psi"] == 90.0
-                 and r["alpha"] == 0.0 and r["dx"] == min(k["dx"] for k in kink_rows))
-    text += (f" With the paper's G_c the {fine:g} mm cracks run at {_span(ang['fit'])} by the fit "
-             f"angle (their direction 10–50 mm from the tip) and {_span(ang['chord'])} by the "
-             "chord, over both loadings and the square, perturbed and rotated grids. On the kink "
-             f"test's m = {mode2['m']:g} grid pure Mode II kinks at {mode2['angle_2d']:.1f} / "
-             f"{mode2['angle_4d']:.1f}° (2 / 4 horizons) against {mode2['hoop_strain']:.1f}° (hoop "
-             f"strain) and {mode2['hoop_stress']:.1f}° (hoop stress). {kink_limit}")
-    text += " " + mix_verdict(mix, {d: ang[d] for d in MEASURED}, fine)
-    chord_pull = [q["pull"] for k, q in pull(grid_rows).items() if k[2] == fine and k[3] == "chord"]
-    if at_fine and fine_defs == ["chord"] and chord_pull:
-        text += (f" The {fine:g} mm setups at 70 ± 2° reach it by the chord alone (the line from "
-                 "the notch tip to the crack tip)"
-                 + (" and only off the square grid, which flattens the chord there by "
-                    f"{_span([-c for c in chord_pull])[:-1]}°"
-                    if not any(h["square"] for h in at_fine) else "") + ".")
-    return text
+    return fine, ang
+
+
+def mix_verdict(mix, angles):
+    """What the kink criteria say about the measured angles (dict definition -> angles of the
+    setups), at each instant's mix of MIXES: {'pred': {instant: {criterion: angle}}, 'stats':
+    {definition: (mean, standard error)}, 'nearest': {(instant, definition): criterion},
+    'agree': {(instant, definition): within AGREE_SE standard errors}, 'follows': the criterion
+    nearest at every instant and definition and agreed with at all of them, else None,
+    'experiment': {instant: the criterion nearest the experiment's angle}}"""
+    if not angles or any(len(v) < 2 for v in angles.values()):
+        raise ValueError("mix_verdict needs at least two setups' angles for every definition "
+                         f"(got {({d: len(v) for d, v in angles.items()})})")
+    pred = {m: {c: -mix[key + suffix] for c, key in CRITERIA} for m, suffix, _, _ in MIXES}
+    stats = {d: (float(np.mean(v)), float(np.std(v, ddof=1) / np.sqrt(len(v)))) for d, v in angles.items()}
+    nearest = {(m, d): _nearest(mu, pred[m]) for m in pred for d, (mu, _) in stats.items()}
+    agree = {(m, d): abs(mu - pred[m][nearest[m, d]]) <= AGREE_SE * se
+             for m in pred for d, (mu, se) in stats.items()}
+    names = set(nearest.values())
+    follows = names.pop() if len(names) == 1 and all(agree.values()) else None
+    return dict(pred=pred, stats=stats, nearest=nearest, agree=agree, follows=follows,
+                experiment={m: _nearest(study.ANGLE_TARGET_DEG, pred[m]) for m in pred})
 
 
 # ---------------------------------------------------------------------------- report
@@ -427,7 +305,10 @@ def section(specs, results, figdir, notes):
                 "table": "", "text": "", "figures": []}
     rows = collect(specs, results)
     bad = jobmod.finished(specs, results)[1]
-    text = pull_sentence(rows) if rows else []
+    p = pull(rows)
+    big = max(p.values(), key=lambda q: abs(q["pull"])) if p else None
+    text = [f"{sum(significant(q) for q in p.values())} of {len(p)} pulls exceed twice their "
+            f"standard error; the largest is {big['pull']:+.1f} deg."] if big else []
     if bad:
         text.append(jobmod.not_measured(bad))
     return {"title": REPORT_TITLE,

@@ -24,7 +24,6 @@ import argparse
 import csv
 import json
 import math
-import platform
 import re
 import sys
 import time
@@ -32,10 +31,11 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import crack_path, kink, readers
+from bbpd import crack_path, kink, markers, readers
 from bbpd import jobs as jobmod
 from bbpd.jobs import Job, run_jobs
 from bbpd.kernels import COLORS, KERNELS
+from bbpd.provenance import cpu
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -65,10 +65,6 @@ TEST_SE = 2.0       # a mean deviation within 2 standard errors is consistent wi
 CRITERIA = ("hoop_stress", "hoop_strain", "energy")
 CRITERION_NAMES = {"hoop_stress": "max. hoop stress", "hoop_strain": "max. hoop strain",
                    "energy": "max. energy release rate"}
-TABLE = ("<!-- bbpd:table kink -->", "<!-- /bbpd:table -->")
-VERDICT = ("<!-- bbpd:verdict kink -->", "<!-- /bbpd:verdict -->")
-
-
 def cases():
     """(kernel, psi, alpha, dx, m, ncross) of the sweep: every kernel, mix and angle on the
     coarse grid; the Gaussian at FINE_CASES on the fine grid; one case at half the ramp rate."""
@@ -223,147 +219,7 @@ def admitted(v):
     return [c for c in CRITERIA if abs(v["bias"][c]) <= TEST_SE * v["se"][c]]
 
 
-def consistency(v):
-    """Which criteria the mean deviation admits, as a sentence (admitted's test)."""
-    ok = admitted(v)
-    out = [c for c in CRITERIA if c not in ok]
-    text = "With |mean| <= 2 standard errors as the test, the runs are consistent with " + (
-        " and ".join(CRITERION_NAMES[c] for c in ok) if ok else "none of the criteria")
-    if out:
-        text += " and exclude " + " and ".join(
-            f"{CRITERION_NAMES[c]} (BBPD kinks {'less' if v['bias'][c] > 0 else 'more'} by "
-            f"{abs(v['bias'][c]):.1f} deg on average)" for c in out)
-    return text + "."
-
-
-def grid_paragraph(rows, dist, dx, label):
-    """The verdict at one distance from the runs on one grid (label: 'coarse-grid', ...)."""
-    v = verdict(rows, dist, dx)
-    b = v["best"]
-    r = ", ".join(f"{CRITERION_NAMES[c]} {v['rms'][c]:.1f} (mean {v['bias'][c]:+.1f} "
-                  f"+- {v['se'][c]:.1f})" for c in CRITERIA)
-    gap = sorted(v["rms"][c] for c in CRITERIA)
-    apart = ", ".join(f"{CRITERION_NAMES[a]} vs {CRITERION_NAMES[c]} {x:.1f}"
-                      for (a, c), x in sorted(v["criteria_rms"].items()))
-    text = (f"**At {dist[0]} horizons** from the tip the {v['n']} {label} mixed-mode kink "
-            f"angles lie closest to the **{CRITERION_NAMES[b]}** criterion. RMS deviation "
-            f"(mean of measured - criterion +- its standard error), deg: {r}. The criteria "
-            f"themselves differ by (RMS over the same runs) {apart} deg, and the best and the "
-            f"second-best RMS differ by {gap[1] - gap[0]:.1f} deg. "
-            + consistency(v) + " Per kernel the closest is "
-            + ", ".join(f"{k}: {CRITERION_NAMES[v['best_kernel'][k]]} "
-                        f"({v['rms_kernel'][k, v['best_kernel'][k]]:.1f})"
-                        for k in v["best_kernel"]) + ".")
-    coarse = None if dx == COARSE[0] else verdict(rows, dist, COARSE[0], v["pull_cases"])
-    if v["pull_mean"] is not None:
-        text += (f" Rotating the crack from 0 to {ALPHAS_DEG[1]:g} deg against the grid's rows "
-                 f"changes the angle by {v['pull_mean']:.1f} deg on average (at most "
-                 f"{v['pull_max']:.1f}"
-                 + (f"; the same {len(v['pull_cases']) // 2} pairs on the coarse grid: "
-                    f"{coarse['pull_mean']:.1f}, at most {coarse['pull_max']:.1f}"
-                    if coarse and coarse["pull_mean"] is not None else "") + ")")
-        if all(v["rms_alpha"][a, b] is not None for a in ALPHAS_DEG):
-            text += (f"; the RMS deviation from the {CRITERION_NAMES[b]} criterion is "
-                     f"{v['rms_alpha'][ALPHAS_DEG[0], b]:.1f} deg with the crack along the rows "
-                     f"and {v['rms_alpha'][ALPHAS_DEG[1], b]:.1f} deg at {ALPHAS_DEG[1]:g} deg")
-        text += "."
-    if v["kernel_spread_mean"] is not None:
-        coarse = None if dx == COARSE[0] else verdict(rows, dist, COARSE[0], v["spread_cases"])
-        text += (f" The three kernels differ by {v['kernel_spread_mean']:.1f} deg on average (at "
-                 f"most {v['kernel_spread_max']:.1f}) at the same mix and crack angle"
-                 + (f" (the same cases on the coarse grid: {coarse['kernel_spread_mean']:.1f}, at "
-                    f"most {coarse['kernel_spread_max']:.1f})"
-                    if coarse and coarse["kernel_spread_mean"] is not None else "") + ".")
-    return text
-
-
-def fine_paragraphs(rows):
-    """The fine grid's runs beside the same cases on the coarse grid, and its verdict."""
-    by = {(r["kernel"], r["psi"], r["alpha"], r["dx"], r["ncross"]): r for r in rows}
-    fine = [r for r in rows if r["dx"] == FINE[0] and r["ncross"] == NCROSS
-            and r["angle_2d"] is not None]
-    if not fine:
-        return []
-    order = {k: n for n, k in enumerate(KERNELS)}
-    per_mix = []
-    for psi in sorted({r["psi"] for r in fine}, reverse=True):
-        mine = sorted((r for r in fine if r["psi"] == psi),
-                      key=lambda r: (r["alpha"], order[r["kernel"]]))
-        runs = []
-        for f in mine:
-            c = by.get((f["kernel"], psi, f["alpha"], COARSE[0], NCROSS))
-            runs.append(f"{f['kernel']}, crack {f['alpha']:g} deg: {f['angle_2d']:.1f} / "
-                        f"{fmt(f['angle_4d'])}"
-                        + (f" ({c['angle_2d']:.1f} / {fmt(c['angle_4d'])})" if c else ""))
-        per_mix.append(f"psi = {psi:g} deg (" + ", ".join(
-            f"{CRITERION_NAMES[c]} {mine[0][c]:.1f}" for c in CRITERIA) + "): " + "; ".join(runs))
-    parts = [f"**Finer grid** (dx = {FINE[0] * 1e3:g} mm, m = {FINE[1]}, same horizon), angle "
-             "at 2 / 4 horizons in deg (the same case on the coarse grid in parentheses): "
-             + ". ".join(per_mix) + "."]
-    label = f"fine-grid (dx = {FINE[0] * 1e3:g} mm)"
-    if sum(1 for r in fine if r["psi"] > 0) > 2:
-        for dist in ("2d", "4d"):
-            text = grid_paragraph(rows, dist, FINE[0], label)
-            cases = {(r["kernel"], r["psi"], r["alpha"]) for r in fine}
-            c = verdict(rows, dist, COARSE[0], cases)
-            text += (f" The same {c['n']} cases on the coarse grid: RMS deviation "
-                     + ", ".join(f"{CRITERION_NAMES[k]} {c['rms'][k]:.1f}" for k in CRITERIA)
-                     + f" deg, closest {CRITERION_NAMES[c['best']]}.")
-            parts.append(text)
-    return parts
-
-
 K0_CHECK = FOLDER / "results" / "k0_check.json"
-K0_DEFAULT = 0.5    # in.kink's K0: K reaches K0 K_c at the end of the fast ramp
-
-
-def k0_sentence(check, rows):
-    """Whether a run hangs on the fast ramp: the case of k0_check.json (K0 lowered) beside the
-    same case at the default K0 in rows (kink.csv), and where in the ramp its first bond broke."""
-    same = next(r for r in rows if (r["kernel"], r["psi"], r["alpha"], r["dx"]) ==
-                (check["kernel"], check["psi"], check["alpha"], check["dx"])
-                and r["ncross"] == NCROSS)
-    during = ("during the slow ramp" if check["K_init_over_Kc"] > check["K0"]
-              else "still on the fast ramp")
-    crack = "along the rows" if check["alpha"] == 0.0 else f"at {check['alpha']:g}° to the rows"
-    apart = [abs(check[f"angle_{d}"] - same[f"angle_{d}"]) for d in ("2d", "4d")]
-    return (f"The {check['kernel']} kernel's m = {check['delta'] / check['dx']:g} "
-            f"psi = {check['psi']:g}° case (crack {crack}) with K0 = {check['K0']:g} instead of "
-            f"{K0_DEFAULT:g} (`results/k0_check.json`, its command inside): the first bond breaks "
-            f"at {check['K_init_over_Kc']:.2f} K_c, {during}, and the angle is "
-            f"{check['angle_2d']:.1f} / {check['angle_4d']:.1f} deg at 2 / 4 horizons "
-            f"({same['angle_2d']:.1f} / {same['angle_4d']:.1f} with the default), "
-            f"{apart[0]:.1f} / {apart[1]:.1f} deg apart.")
-
-
-def verdict_sentence(rows):
-    parts = [grid_paragraph(rows, dist, COARSE[0], "coarse-grid") for dist in ("2d", "4d")]
-    locked = [r for r in rows if r["psi"] > 0 and r["angle_2d"] is not None
-              and grid_offset(r["angle_2d"] + r["alpha"]) <= LOCK_DEG
-              and min(abs(r["angle_2d"] - r[c]) for c in CRITERIA) > 2 * LOCK_DEG]
-    parts.append(f"Grid lock: {len(locked)} of {sum(1 for r in rows if r['psi'] > 0)} mixed-mode "
-                 f"runs left the tip within {LOCK_DEG:g} deg of a grid direction (a multiple of "
-                 f"45 deg in the lattice frame) while more than {2 * LOCK_DEG:g} deg from every "
-                 "criterion"
-                 + (": " + "; ".join(f"{r['kernel']} dx {r['dx'] * 1e3:g} mm, crack {r['alpha']:g} "
-                                     f"deg, psi {r['psi']:g} deg: {r['angle_2d']:.1f} deg"
-                                     for r in locked) if locked else "") + ".")
-    by = {(r["kernel"], r["psi"], r["alpha"], r["dx"], r["ncross"]): r for r in rows}
-    k, p, a, n = RAMP_CHECK
-    slow, ref = by.get((k, p, a, COARSE[0], n)), by.get((k, p, a, COARSE[0], NCROSS))
-    if slow and ref:
-        parts.append(f"Ramp check ({k}, psi = {p:g} deg, crack along the rows): at half the "
-                     f"loading rate the angle is {slow['angle_2d']:.1f} / {slow['angle_4d']:.1f} "
-                     f"deg at 2 / 4 horizons, against {ref['angle_2d']:.1f} / "
-                     f"{ref['angle_4d']:.1f} deg at the default rate: one run's angle moves by "
-                     f"up to {max(abs(slow['angle_2d'] - ref['angle_2d']), abs(slow['angle_4d'] - ref['angle_4d'])):.1f} "
-                     "deg under a change that leaves the physics alone, so single angles are "
-                     "uncertain by that much and the verdict above rests on RMS values over many "
-                     "runs.")
-    parts += fine_paragraphs(rows)
-    return "\n\n".join(parts)
-
-
 # --------------------------------------------------------------------------- outputs
 
 COLUMNS = ("kernel", "dx_mm", "m", "alpha", "psi", "ncross", "K_init_over_Kc", "K_end_over_Kc",
@@ -379,25 +235,10 @@ def row_of(res):
     return r
 
 
-def cpu_description():
-    """CPU model, family/model numbers and the widest vector ISA, from /proc/cpuinfo."""
-    info = {}
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            key, _, value = line.partition(":")
-            info.setdefault(key.strip(), value.strip())
-    except OSError:
-        return platform.machine()
-    flags = info.get("flags", "").split()
-    isa = "AVX-512" if "avx512f" in flags else "AVX2" if "avx2" in flags else "no AVX2"
-    return (f"{info.get('model name', 'unknown CPU')} (family {info.get('cpu family', '?')} "
-            f"model {info.get('model', '?')}), {isa}")
-
-
 def write_csv(rows, path, command):
     path.parent.mkdir(parents=True, exist_ok=True)
     with open(path, "w", newline="") as fh:
-        fh.write(f"# {command}\n# CPU: {cpu_description()}; nprocs MPI ranks per run (empty: "
+        fh.write(f"# {command}\n# CPU: {cpu()}; nprocs MPI ranks per run (empty: "
                  "one), on a shared machine (wall_s); angles in degrees (theta < 0 for K_II > 0), "
                  "extension in horizons\n")
         w = csv.writer(fh)
@@ -450,13 +291,6 @@ def table(rows):
             f"{r['hoop_stress']:.1f}", f"{r['hoop_strain']:.1f}", f"{r['energy']:.1f}",
             f"{r['extension_over_delta']:.1f}", f"{r['ncross']:g}", wall_cell(r)]) + " |")
     return "\n".join(lines)
-
-
-def replace_between(text, markers, body):
-    start, end = markers
-    i = text.index(start) + len(start)
-    j = text.index(end, i)    # the end marker after this start (several tables share it)
-    return text[:i] + "\n" + body + "\n" + text[j:]
 
 
 def plot(rows, path):
@@ -518,6 +352,14 @@ REPORT_SETUP = ("A straight crack from the edge to the centre of a disk (R = 50 
 FULL_COVERAGE = (len(KERNELS), len(ALPHAS_DEG))    # kernels and crack angles of the verdict
 
 
+def locked(rows):
+    """The mixed-mode runs whose crack left the tip within LOCK_DEG of a grid direction (a
+    multiple of 45 deg in the lattice frame) while more than 2 LOCK_DEG from every criterion"""
+    return [r for r in rows if r["psi"] > 0 and r["angle_2d"] is not None
+            and grid_offset(r["angle_2d"] + r["alpha"]) <= LOCK_DEG
+            and min(abs(r["angle_2d"] - r[c]) for c in CRITERIA) > 2 * LOCK_DEG]
+
+
 def summary_text(rows):
     """The report's sentences from the rows at hand (any subset of the sweep): per distance the
     RMS deviation of the mixed-mode angles from each criterion and the closest, the pure Mode II
@@ -551,19 +393,15 @@ def summary_text(rows):
                             + " at 2 / 4 horizons (criteria: "
                             + ", ".join(f"{CRITERION_NAMES[c]} {pure[0][c]:.1f}"
                                         for c in CRITERIA) + " deg).")
-    locked = [r for r in main if r["psi"] > 0 and r["angle_2d"] is not None
-              and grid_offset(r["angle_2d"] + r["alpha"]) <= LOCK_DEG
-              and min(abs(r["angle_2d"] - r[c]) for c in CRITERIA) > 2 * LOCK_DEG]
-    if locked:
+    stuck = locked(main)
+    if stuck:
         text.append("On a grid direction (within 1 deg of a multiple of 45 deg in the lattice "
                     "frame, more than 2 deg from every criterion): "
                     + "; ".join(f"{r['kernel']} dx {r['dx'] * 1e3:g} mm, crack {r['alpha']:g} "
                                 f"deg, psi {r['psi']:g} deg: {r['angle_2d']:.1f} deg"
-                                for r in locked) + ".")
+                                for r in stuck) + ".")
     coarse = [r for r in main if r["dx"] == COARSE[0]]
-    if (len({r["kernel"] for r in coarse}), len({r["alpha"] for r in coarse})) == FULL_COVERAGE:
-        text.append("The whole sweep, as in the README: " + verdict_sentence(rows))
-    else:
+    if (len({r["kernel"] for r in coarse}), len({r["alpha"] for r in coarse})) != FULL_COVERAGE:
         text.append("Too few runs for a verdict between the criteria: `tools/reproduce --full` "
                     "runs the whole sweep, whose verdict is in "
                     "examples/kink-mixed-mode/README.md.")
@@ -662,18 +500,13 @@ def main(argv=None):
 
 
 def write_outputs(rows, figure, readme=True):
-    """The figure, and the README's table and verdict, from rows (read from the CSV: the
-    README's numbers are the CSV's)."""
+    """The figure, and the README's table, from rows (read from the CSV: the README's numbers
+    are the CSV's)."""
     plot(rows, figure)
     text = table(rows)
     print(text)
-    sentence = verdict_sentence(rows)
-    print(sentence)
     if readme and README.is_file():
-        doc = README.read_text()
-        doc = replace_between(doc, TABLE, text)
-        doc = replace_between(doc, VERDICT, sentence)
-        README.write_text(doc)
+        README.write_text(markers.replace_block(README, README.read_text(), "kink", text))
 
 
 if __name__ == "__main__":

@@ -37,7 +37,7 @@ from pathlib import Path
 from bbpd import csvfile
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import kink as kinkbench
-from bbpd.benchmarks.mode1_propagation import machine
+from bbpd.provenance import cpu
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
@@ -89,7 +89,7 @@ def run_case(workdir, m, r_over_delta, nprocs=1, reuse=False, kernel=KERNEL, psi
            "extension_over_delta": r["extension_over_delta"], "angle_2d": r["angle_2d"],
            "angle_4d": r["angle_4d"], "hoop_stress": r["hoop_stress"],
            "hoop_strain": r["hoop_strain"], "energy": r["energy"], "loop_s": r["loop_s"],
-           "nprocs": r["nprocs"], "cpu": machine()}
+           "nprocs": r["nprocs"], "cpu": cpu()}
     return row
 
 
@@ -110,16 +110,6 @@ def _f(v, spec=".1f"):
     text = format(v, spec)
     # a straight crack measured as -1e-15 deg is 0.0, not -0.0
     return text[1:] if text.startswith("-") and float(text) == 0.0 else text
-
-
-def _signed(v):
-    """v to 0.1 with its sign, +0.0 for a zero however it rounds"""
-    return "+0.0" if float(format(v, ".1f")) == 0.0 else format(v, "+.1f")
-
-
-def _capital(text):
-    """text with its first letter a capital (a kernel's name opening a sentence)"""
-    return text[0].upper() + text[1:]
 
 
 def mix_of(r):
@@ -180,64 +170,53 @@ NAMES = {"hoop_stress": "max. hoop stress", "hoop_strain": "max. hoop strain",
          "energy": "max. energy release rate"}
 
 
-def verdict(rows):
-    """The sentences on each sequence in m at a fixed R/delta (the kink test's 10 and every
-    larger disk with two values of m), and on doubling the disk: which criterion the finest m
-    lies nearest, and whether the last refinement settled it; per kernel (the Gaussian's first)
-    and per mode mix and crack direction (pure Mode II along the rows first)."""
-    groups = sorted({(r["kernel"],) + mix_of(r) for r in rows},
-                    key=lambda g: (g[0] != KERNEL, g[0], -g[1], g[2]))
-    parts = [_group_verdict([r for r in rows if (r["kernel"],) + mix_of(r) == g], *g) for g in groups]
-    return " ".join(parts) if parts else "No verdict: it needs two values of m at R/delta = 10."
+def _group_key(g):
+    """the Gaussian's groups first, pure Mode II along the rows before the other mixes"""
+    return (g[0] != KERNEL, g[0], -g[1], g[2])
 
 
-def _nearest_phrase(angle, last, near, bar):
-    """'; the finest (± bar) lies nearest the X criterion (+d from a: within its error bar)' for
-    the finest run `last` measured at `angle`, or, where the three criteria agree (pure Mode I),
-    how far it lies from their common angle"""
-    off = angle - last[near]
-    where = ("within" if abs(off) <= bar else "outside") + " its error bar)"
-    if max(last[c] for c in NAMES) - min(last[c] for c in NAMES) <= AGREE_DEG:
-        return (f"; the three criteria agree ({_f(last[near])}°) and the finest (± {bar:.1f}°) "
-                f"lies {_signed(off)}° from them ({where}")
-    return (f"; the finest (± {bar:.1f}°) lies nearest the {NAMES[near]} criterion "
-            f"({_signed(off)}° from {_f(last[near])}°: {where}")
-
-
-def _group_verdict(rows, kernel, psi=PSI, alpha=ALPHA):
-    where = kernel if (psi, alpha) == (PSI, ALPHA) else f"{kernel}, psi = {psi:g}°, alpha = {alpha:g}°"
+def sequences(rows):
+    """Each sequence in m at one R/delta (10 or larger, two values of m or more), per kernel,
+    mode mix (psi, alpha) and distance: a dict with the m values and angles, the criterion the
+    finest lies nearest (None where the three agree within AGREE_DEG: pure Mode I), the finest's
+    offset from it and its error bar (resolution_deg), the last refinement's step and both error
+    bars; settled when the step is within SETTLED_DEG, beyond_bars when it exceeds the two bars."""
     out = []
-    for dist in ("2d", "4d"):
-        sizes = sorted({r["R_over_delta"] for r in rows if r["R_over_delta"] >= 10.0})
-        for rd in sizes:
-            seq = sorted((r for r in rows if r["R_over_delta"] == rd and r[f"angle_{dist}"]
-                          is not None), key=lambda r: r["m"])
-            if len(seq) < 2:
-                continue
-            last, prev = seq[-1], seq[-2]
-            step = last[f"angle_{dist}"] - prev[f"angle_{dist}"]
-            near = min(NAMES, key=lambda c: abs(last[f"angle_{dist}"] - last[c]))
-            bar, bar_prev = resolution_deg(last["m"], dist), resolution_deg(prev["m"], dist)
-            s = (f"{where}, at {dist[0]} horizons, R/delta = {rd:g}: " + ", ".join(
-                f"{_f(r[f'angle_{dist}'])}° at m = {r['m']:g}" for r in seq)
-                 + _nearest_phrase(last[f"angle_{dist}"], last, near, bar) + ", and the last "
-                 f"refinement (m = {prev['m']:g} to {last['m']:g}) moves it by {_signed(step)}°: ")
-            s += ("settled within {:g}°".format(SETTLED_DEG) if abs(step) <= SETTLED_DEG
-                  else f"not settled (more than {SETTLED_DEG:g}°")
-            if abs(step) > SETTLED_DEG:
-                s += (", and more than the two error bars, ± {:.1f} and ± {:.1f}°)" if abs(step) > bar + bar_prev
-                      else ", within the two error bars, ± {:.1f} and ± {:.1f}°)").format(bar_prev, bar)
-            out.append(s)
-        base = {r["m"]: r for r in rows if r["R_over_delta"] == 10.0 and r[f"angle_{dist}"] is not None}
-        size = {r["m"]: r for r in rows if r["R_over_delta"] == 20.0 and r[f"angle_{dist}"]
-                is not None}
-        pairs = [(m, size[m][f"angle_{dist}"] - base[m][f"angle_{dist}"]) for m in sorted(base)
-                 if m in size]
-        if pairs:
-            out.append(f"at {dist[0]} horizons, doubling the disk to R/delta = 20 moves it by " + ", ".join(
-                f"{_signed(d)}° at m = {m:g}" for m, d in pairs))
-    return (". ".join(_capital(s) for s in out) + "." if out else
-            f"{_capital(where)}: no verdict, it needs two values of m at one R/delta.")
+    for g in sorted({(r["kernel"],) + mix_of(r) for r in rows}, key=_group_key):
+        group = [r for r in rows if (r["kernel"],) + mix_of(r) == g]
+        for dist in HORIZONS:
+            key = f"angle_{dist}"
+            for rd in sorted({r["R_over_delta"] for r in group if r["R_over_delta"] >= 10.0}):
+                seq = sorted((r for r in group if r["R_over_delta"] == rd and r[key] is not None),
+                             key=lambda r: r["m"])
+                if len(seq) < 2:
+                    continue
+                prev, last = seq[-2], seq[-1]
+                near = min(NAMES, key=lambda c: abs(last[key] - last[c]))
+                agree = max(last[c] for c in NAMES) - min(last[c] for c in NAMES) <= AGREE_DEG
+                bars = (resolution_deg(prev["m"], dist), resolution_deg(last["m"], dist))
+                step = last[key] - prev[key]
+                out.append(dict(kernel=g[0], psi=g[1], alpha=g[2], dist=dist, rd=rd,
+                                ms=[r["m"] for r in seq], angles=[r[key] for r in seq],
+                                nearest=None if agree else near, offset=last[key] - last[near],
+                                bar=bars[1], within_bar=abs(last[key] - last[near]) <= bars[1],
+                                step=step, bars=bars, settled=abs(step) <= SETTLED_DEG,
+                                beyond_bars=abs(step) > sum(bars)))
+    return out
+
+
+def disk_moves(rows):
+    """Doubling the disk (R/delta 10 -> 20) at one m: the change of angle, per kernel, mode mix,
+    distance and m run at both sizes."""
+    out = []
+    for g in sorted({(r["kernel"],) + mix_of(r) for r in rows}, key=_group_key):
+        for dist in HORIZONS:
+            key = f"angle_{dist}"
+            at = {rd: {r["m"]: r[key] for r in rows if (r["kernel"],) + mix_of(r) == g
+                       and r["R_over_delta"] == rd and r[key] is not None} for rd in (10.0, 20.0)}
+            out += [dict(kernel=g[0], psi=g[1], alpha=g[2], dist=dist, m=m,
+                         move=at[20.0][m] - at[10.0][m]) for m in sorted(at[10.0]) if m in at[20.0]]
+    return out
 
 
 FIGURE = kinkbench.FOLDER / "kink_convergence.png"
@@ -304,47 +283,24 @@ def _sweep_need():
     return {(p, a) for p in kinkbench.MIXES_DEG if p > 0.0 for a in kinkbench.ALPHAS_DEG}
 
 
-def _sweep_mixes():
-    return ", ".join(f"{p:g}" for p in sorted(p for p in kinkbench.MIXES_DEG if p > 0.0))
-
-
-def sweep_verdict(rows):
-    """Sentences on every (kernel, m, R/delta) that has run the whole mixed-mode sweep: at each
-    distance the RMS and mean deviation from each criterion with its standard error, which
-    criteria the mean admits (bbpd.benchmarks.kink's test: |mean| <= 2 standard errors), and
-    the grid's pull (mean |angle at 22.5 deg - angle along the rows|)."""
+def sweep_stats(rows):
+    """Per (kernel, m, R/delta) that has run the whole mixed-mode sweep, at each distance, the
+    kink test's numbers (bbpd.benchmarks.kink.verdict: RMS and mean deviation from each criterion
+    with its standard error, the nearest by RMS, the grid's pull), the criteria the
+    two-standard-error test admits, and 'unresolved': those it excludes by a mean deviation no
+    larger than one angle's error bar (the standard error falls with the number of runs, the
+    grid's resolution does not)."""
     out = []
     for (kernel, m, rd), as_kink in _whole_sweeps(rows).items():
         for dist in HORIZONS:
             v = kinkbench.verdict(as_kink, dist, dx=m)
-            dev = ", ".join(f"{NAMES[c]} {v['rms'][c]:.1f} (mean {v['bias'][c]:+.1f} ± {v['se'][c]:.1f})"
-                            for c in NAMES)
-            out.append(f"{_capital(kernel)}, m = {m:g}, R/delta = {rd:g}, the whole "
-                       f"mixed-mode sweep ({v['n']} runs: psi = {_sweep_mixes()}°, both crack "
-                       f"directions), at {HORIZONS[dist]:g} horizons: RMS deviation (mean ± its "
-                       f"standard error) {dev}°; nearest by RMS {NAMES[v['best']]}. "
-                       f"{kinkbench.consistency(v)}{_unresolved(v, m, dist)} The crack's "
-                       f"direction to the grid moves the angle by {v['pull_mean']:.1f}° on average "
-                       f"(at most {v['pull_max']:.1f}°).")
-    return " ".join(out) if out else "No (kernel, m, R/delta) has run the whole mixed-mode sweep."
-
-
-def _unresolved(v, m, dist):
-    """' ...' naming the criteria the two-standard-error test excludes by a mean deviation no
-    larger than one angle's error bar (resolution_deg): the standard error of the mean falls
-    with the number of runs, the grid's resolution does not, so such an exclusion says less
-    than the grid can resolve"""
-    bar = resolution_deg(m, dist)
-    close = [c for c in NAMES if c not in kinkbench.admitted(v) and abs(v["bias"][c]) <= bar]
-    if not close:
-        return ""
-    return (" Of these, " + " and ".join(f"{NAMES[c]}'s mean ({_signed(v['bias'][c])}°)" for c in close)
-            + f" lies within one angle's error bar (± {bar:.1f}°): excluded by less than the grid resolves.")
-
-
-def _across(per_m, value, fmt=".1f"):
-    """'a, b, c': value(v) of each m's verdict v, in the order of per_m"""
-    return ", ".join(format(value(v), fmt) for v in per_m.values())
+            ok = kinkbench.admitted(v)
+            bar = resolution_deg(m, dist)
+            out.append(dict(kernel=kernel, m=m, rd=rd, dist=dist, n=v["n"], rms=v["rms"],
+                            bias=v["bias"], se=v["se"], best=v["best"], admitted=ok, bar=bar,
+                            unresolved=[c for c in NAMES if c not in ok and abs(v["bias"][c]) <= bar],
+                            pull_mean=v["pull_mean"], pull_max=v["pull_max"]))
+    return out
 
 
 def _nearest(v, dist):
@@ -352,6 +308,22 @@ def _nearest(v, dist):
     the smallest: those the sweep cannot tell apart"""
     least = min(v["rms"].values())
     return [c for c in NAMES if v["rms"][c] - least <= resolution_deg(v["m"], dist)]
+
+
+def _between(v):
+    """(the criterion nearest the mean of verdict v among those it kinks beyond, the nearest
+    among those it falls short of), or None when it lies beyond (or short of) every one; the
+    sign is kinkbench.consistency's: a positive mean deviation kinks less"""
+    more = [c for c in NAMES if v["bias"][c] < 0.0]
+    less = [c for c in NAMES if v["bias"][c] >= 0.0]
+    if not (more and less):
+        return None
+    return tuple(min(side, key=lambda c: abs(v["bias"][c])) for side in (more, less))
+
+
+def _nearest_mean(v):
+    """the criterion the mean angle of verdict v lies nearest"""
+    return min(NAMES, key=lambda c: abs(v["bias"][c]))
 
 
 def limits(rows):
@@ -397,7 +369,8 @@ def limits(rows):
             else:
                 state = "approaches"
             out.append(dict(kernel=kernel, rd=rd, dist=dist, ms=ms, v=v, state=state, near=near,
-                            near_prev=near_prev, step=step,
+                            near_prev=near_prev, step=step, drifts=_drifts(step),
+                            between=_between(last), nearest_mean=_nearest_mean(last),
                             limit=best if state == "approaches" else None))
     return out
 
@@ -416,125 +389,18 @@ def _drifts(step):
     return abs(step[0]) > kinkbench.TEST_SE * step[1]
 
 
-def _step_text(t):
-    """the last step in m of one entry of limits(), and whether it drifts"""
-    mean, se = t["step"]
-    verdict = ("more than two standard errors: the sequence still drifts" if _drifts(t["step"])
-               else "within two standard errors: no drift shown")
-    return (f"from m = {t['ms'][-2]:g} to {t['ms'][-1]:g} the mean moves by {mean:+.1f} ± {se:.1f}° "
-            f"(paired by mix; positive: the crack kinks less), {verdict}")
-
-
-def _limit_tail(t):
-    """the sentence on the limit of one entry of limits()"""
-    ms, dist, v = t["ms"], t["dist"], t["v"]
-    prev, last = v[ms[-2]], v[ms[-1]]
-    best = last["best"]
-    step = f"m = {ms[-2]:g} to {ms[-1]:g}"
-    if t["state"] == "none fits":
-        means = "; ".join(f"from {NAMES[c]} {_across(v, lambda x: x['bias'][c], '+.1f')}"
-                          for c in _between(last) or (_nearest_mean(last),))
-        return (f"At m = {ms[-1]:g} the two-standard-error test admits none of the criteria: none "
-                f"fits; {_bracket(last)}. The mean deviation at m = "
-                f"{_across(v, lambda x: x['m'], 'g')}: {means}°; {_step_text(t)}.")
-    if t["state"] == "tied":
-        return (f"Not settled: at m = {ms[-1]:g} " + " and ".join(NAMES[c] for c in t["near"])
-                + " lie equally near (RMS " + " and ".join(f"{last['rms'][c]:.1f}" for c in t["near"])
-                + f"°, closer than the grid's resolution, ± {resolution_deg(ms[-1], dist):.1f}°).")
-    if t["state"] == "changes":
-        return (f"Not settled: from {step} the nearest criterion changes from "
-                + " and ".join(NAMES[c] for c in t["near_prev"]) + f" to {NAMES[best]}.")
-    if t["state"] == "grows":
-        return (f"Not settled: {NAMES[best]} stays the nearest, but from {step} its RMS "
-                f"grows from {prev['rms'][best]:.1f} to {last['rms'][best]:.1f}°.")
-    if t["state"] == "drifts":
-        return (f"Not settled: {NAMES[best]} stays the nearest with its RMS falling and the test "
-                f"admits it at m = {ms[-1]:g}, but {_step_text(t)}.")
-    if t["state"] == "excluded":
-        return (f"Not settled: {NAMES[best]} stays the nearest with its RMS falling, but at "
-                f"m = {ms[-1]:g} the test excludes it.")
-    return (f"The sequence approaches {NAMES[best]}: among the nearest at m = {ms[-2]:g} "
-            f"and the nearest at {ms[-1]:g}, its RMS falling from {prev['rms'][best]:.1f} to "
-            f"{last['rms'][best]:.1f}°, admitted by the test at m = {ms[-1]:g}; {_step_text(t)}.")
-
-
-def _between(v):
-    """(the criterion nearest the mean of verdict v among those it kinks beyond, the nearest
-    among those it falls short of), or None when it lies beyond (or short of) every one; the
-    sign is kinkbench.consistency's: a positive mean deviation kinks less"""
-    more = [c for c in NAMES if v["bias"][c] < 0.0]
-    less = [c for c in NAMES if v["bias"][c] >= 0.0]
-    if not (more and less):
-        return None
-    return tuple(min(side, key=lambda c: abs(v["bias"][c])) for side in (more, less))
-
-
-def _nearest_mean(v):
-    """the criterion the mean angle of verdict v lies nearest"""
-    return min(NAMES, key=lambda c: abs(v["bias"][c]))
-
-
-def _bracket(v):
-    """where the mean angle of verdict v lies among the criteria, as a clause"""
-    def dev(c):
-        return f"{abs(v['bias'][c]):.1f} ± {v['se'][c]:.1f}°"
-    pair = _between(v)
-    if pair:
-        more, less = pair
-        return (f"the mean lies between {NAMES[more]} (BBPD kinks more by {dev(more)}) and "
-                f"{NAMES[less]} (less by {dev(less)})")
-    nearest = _nearest_mean(v)
-    word = "more" if v["bias"][nearest] < 0.0 else "less"
-    return f"BBPD kinks {word} than every criterion, by {dev(nearest)} than the nearest, {NAMES[nearest]}"
-
-
-def sweep_trend(rows):
-    """limits() as sentences: per kernel, R/delta and distance the nearest criterion by RMS,
-    each criterion's RMS and the grid's pull at each m, and the verdict on the limit."""
-    out = []
-    for t in limits(rows):
-        v = t["v"]
-        rms_text = "; ".join(f"{NAMES[c]} {_across(v, lambda x: x['rms'][c])}" for c in NAMES)
-        out.append(f"{_capital(t['kernel'])}, R/delta = {t['rd']:g}, the whole mixed-mode sweep "
-                   f"at m = {_across(v, lambda x: x['m'], 'g')}, {HORIZONS[t['dist']]:g} horizons out: "
-                   f"nearest by RMS {_across(v, lambda x: NAMES[x['best']], 's')}; RMS {rms_text}°; "
-                   f"the grid's pull {_across(v, lambda x: x['pull_mean'])}°. " + _limit_tail(t))
-    return (" ".join(out) if out else
-            "No trend across m: no (kernel, R/delta) has run the whole mixed-mode sweep at two m.")
-
-
-def limit_sentence(rows, kernel=KERNEL):
-    """One sentence for other READMEs: what the kink test's sweep in m says about the limit for
-    `kernel`, in the largest disk (R/delta) with two complete sweeps, at each distance; a
-    criterion is named only where the sequence approaches it."""
+def limit(rows, kernel=KERNEL):
+    """What the sweep in m says about the limit for `kernel`, in the largest disk (R/delta) with
+    two complete sweeps: {'kernel', 'rd', 'ms', 'at': {dist: its entry of limits()}, 'follows':
+    the criterion every distance approaches, or None}; None without two complete sweeps."""
     mine = [t for t in limits(rows) if t["kernel"] == kernel]
     if not mine:
-        return (f"The kink test's sweep in m has no verdict on the limit for the {kernel} kernel "
-                "yet (no R/delta with the whole mixed-mode sweep at two m).")
+        return None
     rd = max(t["rd"] for t in mine)
-    mine = [t for t in mine if t["rd"] == rd]
-    parts = []
-    for t in mine:
-        where = f"{HORIZONS[t['dist']]:g} horizons from the tip"
-        if t["limit"] is not None:
-            parts.append(f"{where} it approaches {NAMES[t['limit']]}")
-        elif t["state"] == "tied":
-            parts.append(f"{where} it is not settled (" + " and ".join(NAMES[c] for c in t["near"])
-                         + f" equally near at m = {t['ms'][-1]:g})")
-        elif t["state"] == "none fits":
-            pair = _between(t["v"][t["ms"][-1]])
-            parts.append(f"{where} none of the criteria fits" + (
-                " (the kink lies between " + " and ".join(NAMES[c] for c in pair)
-                + (", still drifting" if _drifts(t["step"]) else "") + ")" if pair else ""))
-        else:
-            parts.append(f"{where} it is not settled")
-    settled = all(t["limit"] is not None for t in mine)
-    same = len({t["limit"] for t in mine}) == 1
-    verdict = (f"the kink follows {NAMES[mine[0]['limit']]}" if settled and same else
-               "which criterion the kink follows is not settled")
-    return (f"The kink test's whole mixed-mode sweep followed in m ({_capital(kernel)}, "
-            f"R/delta = {rd:g}, m = {', '.join(f'{m:g}' for m in mine[0]['ms'])}): "
-            + "; ".join(parts) + f"; so {verdict}.")
+    at = {t["dist"]: t for t in mine if t["rd"] == rd}
+    found = {t["limit"] for t in at.values()}
+    follows = found.pop() if len(found) == 1 and None not in found else None
+    return dict(kernel=kernel, rd=rd, ms=next(iter(at.values()))["ms"], at=at, follows=follows)
 
 
 # The planned sweep, what the kink verdict needs: the whole mixed-mode sweep (both crack
@@ -545,31 +411,21 @@ PLAN_R_OVER_DELTA = 20
 
 
 def coverage(rows):
-    """What of PLAN has run (computed from the CSV): per kernel and m the mixed-mode runs in,
-    the ones left, and each group's loop time with the CPU and rank count that timed it."""
+    """What of PLAN has run: {(kernel, m): {'done': mixes run, 'left': mixes left, 'loops': the
+    loop times (s) of the machine and rank count that timed most of them, 'machine'}}"""
     need = _sweep_need()
-    rd = PLAN_R_OVER_DELTA
-    parts, left = [], []
+    out = {}
     for kernel, ms in PLAN.items():
         for m in ms:
-            sel = [r for r in rows if (r["kernel"], r["m"], r["R_over_delta"]) == (kernel, m, rd)
-                   and mix_of(r) in need]
+            sel = [r for r in rows if (r["kernel"], r["m"], r["R_over_delta"])
+                   == (kernel, m, PLAN_R_OVER_DELTA) and mix_of(r) in need]
+            by = {}
+            for r in sel:
+                by.setdefault(f"{r['cpu']}, {r['nprocs']:g} ranks", []).append(r["loop_s"])
+            machine, loops = max(sorted(by.items()), key=lambda kv: len(kv[1])) if by else (None, [])
             done = {mix_of(r) for r in sel}
-            state = "whole" if done == need else f"{len(done)} of {len(need)}"
-            if sel:
-                # machines differ: the loop times of the machine that timed most of the group
-                by = {}
-                for r in sel:
-                    by.setdefault(f"{r['cpu']}, {r['nprocs']:g} ranks", []).append(r["loop_s"])
-                machine, loops = max(sorted(by.items()), key=lambda kv: len(kv[1]))
-                state += (f" (loop {min(loops):.0f}-{max(loops):.0f} s for the {len(loops)} of them "
-                          f"on {machine})")
-            parts.append(f"{_capital(kernel)} m = {m:g}: {state}")
-            if need - done:
-                left.append(f"{_capital(kernel)} m = {m:g}: {_mix_list(need - done)}")
-    text = (f"The planned sweep, at R/delta = {rd:g} over psi = {_sweep_mixes()}° in both "
-            "crack directions: " + "; ".join(parts) + ". ")
-    return text + ("Left: " + "; ".join(left) + "." if left else "Every run of it is in.")
+            out[kernel, m] = dict(done=done, left=need - done, loops=loops, machine=machine)
+    return out
 
 
 def _mixes_at(rows, kernel, m, rd):
@@ -578,31 +434,18 @@ def _mixes_at(rows, kernel, m, rd):
             if (r["kernel"], r["m"], r["R_over_delta"]) == (kernel, m, rd) and mix_of(r)[0] > 0.0}
 
 
-def _mix_list(mixes):
-    return ", ".join(f"psi = {p:g}° " + ("along the rows" if a == 0.0 else f"at {a:g}°")
-                     for p, a in sorted(mixes, key=lambda x: (-x[0], x[1])))
-
-
 def _rms_from_criteria(sel, key, m):
     """{'m': m, 'rms': {criterion: RMS of (angle `key` - criterion) over the rows sel}}: what
     _nearest reads"""
     return {"m": m, "rms": {c: kinkbench.rms([r[key] - r[c] for r in sel]) for c in NAMES}}
 
 
-def _rms_move(name, before, after):
-    """"X's RMS falls from a to b°", or "holds at a°" when the two show the same digits"""
-    if f"{before:.1f}" == f"{after:.1f}":
-        return f"{name}'s RMS holds at {after:.1f}°"
-    return f"{name}'s RMS {'falls' if after < before else 'grows'} from {before:.1f} to {after:.1f}°"
-
-
-def subset_trend(rows):
+def partial_sweeps(rows):
     """Where the finest m has run only part of the mixed-mode sweep that a coarser m ran whole
-    (same kernel and R/delta): those mixes followed across
-    every m that ran them all, per kernel and R/delta, at each distance: each criterion's RMS
-    over the same mixes and the nearest (criteria within the grid's resolution of the smallest
-    RMS tie), and whether the RMS of the finest m's nearest falls or grows over the last step.
-    A part of the sweep names no limit: sweep_trend does, once the finest m is complete."""
+    (same kernel and R/delta): those mixes followed across every m that ran them all, at each
+    distance: {'kernel', 'rd', 'finest', 'mixes', 'dist', 'per_m': {m: {'rms': {criterion: RMS}}},
+    'nearest': {m: criteria within the grid's resolution of the smallest RMS}}. A part of the
+    sweep names no limit: it says which way these mixes move."""
     whole = _whole_sweeps(rows)
     out = []
     for kernel, rd in sorted({(r["kernel"], r["R_over_delta"]) for r in rows},
@@ -614,8 +457,6 @@ def subset_trend(rows):
             continue    # complete, or no coarser m ran the whole sweep to hold it against
         ms = sorted(m for m in {r["m"] for r in rows if (r["kernel"], r["R_over_delta"]) == (kernel, rd)}
                     if mixes <= _mixes_at(rows, kernel, m, rd))
-        if len(ms) < 2:
-            continue
         for dist in HORIZONS:
             key = f"angle_{dist}"
             per_m = {}
@@ -625,36 +466,23 @@ def subset_trend(rows):
                 if len(sel) != len(mixes):
                     break       # a run that measured no angle this far out: no RMS over the set
                 per_m[m] = _rms_from_criteria(sel, key, m)
-            if len(per_m) < 2:
-                continue
-            seq = list(per_m)
-            last, prev = per_m[seq[-1]], per_m[seq[-2]]
-            rms_text = "; ".join(f"{NAMES[c]} {_across(per_m, lambda x: x['rms'][c])}" for c in NAMES)
-            ties = {m: _nearest(v, dist) for m, v in per_m.items()}
-            nearest_text = ", ".join(f"at m = {m:g} " + " and ".join(NAMES[c] for c in t)
-                                     + (" (tied)" if len(t) > 1 else "") for m, t in ties.items())
-            count = "the one mix" if len(mixes) == 1 else f"the {len(mixes)} mixes"
-            s = (f"{_capital(kernel)}, R/delta = {rd:g}, {count} run so far at m = {finest:g} "
-                 f"({_mix_list(mixes)}) followed over m = {_across(per_m, lambda x: x['m'], 'g')}, "
-                 f"{HORIZONS[dist]:g} horizons out: RMS {rms_text}°; nearest {nearest_text}. ")
-            moves = [_rms_move(NAMES[c], prev["rms"][c], last["rms"][c]) for c in ties[seq[-1]]]
-            s += (f"From m = {seq[-2]:g} to {seq[-1]:g} the nearest at {seq[-1]:g}: " + "; ".join(moves)
-                  + f". A part of the sweep: it says which way these mixes move, not the limit.")
-            out.append(s)
-    return " ".join(out) if out else "Every finest m has run the whole mixed-mode sweep or none of it."
+            if len(per_m) >= 2:
+                out.append(dict(kernel=kernel, rd=rd, finest=finest, mixes=mixes, dist=dist,
+                                per_m=per_m, nearest={m: _nearest(v, dist) for m, v in per_m.items()}))
+    return out
 
 
-# a comparison over the mode mix needs more than one mix: pure Mode II alone is in verdict()
+# a comparison over the mode mix needs more than one mix: pure Mode II alone is in sequences()
 KERNEL_COMPARISON_MIN_MIXES = 2
 
 
-def kernel_comparison(rows):
+def kernel_spread(rows):
     """Per (m, R/delta) run by more than one kernel, over the mixed-mode mixes every such kernel
     ran (at least KERNEL_COMPARISON_MIN_MIXES), at each distance: each kernel's RMS from each
-    criterion and its nearest (criteria within the grid's resolution of the smallest RMS tie),
-    and how far the kernels' angles lie apart (largest minus smallest, per mix), held against
-    the two runs' error bars. Whether the kernel changes the nearest criterion is computed: the
-    kernels agree when one criterion is among the nearest of every kernel."""
+    criterion ('rms': {kernel: {criterion: RMS}}) and nearest ('nearest': {kernel: criteria}),
+    the spread of the kernels' angles per mix (mean, max, the widest mix), the error bar, whether
+    the widest spread lies within the two runs' bars, and the criteria nearest for every kernel
+    ('common': empty when the kernel changes the nearest criterion)."""
     out = []
     for m, rd in sorted({(r["m"], r["R_over_delta"]) for r in rows}, key=lambda g: (g[1], g[0])):
         kernels = sorted({r["kernel"] for r in rows if (r["m"], r["R_over_delta"]) == (m, rd)
@@ -662,39 +490,46 @@ def kernel_comparison(rows):
         if len(kernels) < 2:
             continue
         mixes = set.intersection(*(_mixes_at(rows, k, m, rd) for k in kernels))
-        if len(mixes) < KERNEL_COMPARISON_MIN_MIXES:
-            continue
+        runs = {(r["kernel"], mix_of(r)): r for r in rows
+                if (r["m"], r["R_over_delta"]) == (m, rd) and r["kernel"] in kernels and mix_of(r) in mixes}
         for dist in HORIZONS:
             key = f"angle_{dist}"
-            runs = {(r["kernel"], mix_of(r)): r for r in rows
-                    if (r["m"], r["R_over_delta"]) == (m, rd) and r["kernel"] in kernels
-                    and mix_of(r) in mixes}
             measured = sorted(x for x in mixes if all(runs[k, x][key] is not None for k in kernels))
             if len(measured) < KERNEL_COMPARISON_MIN_MIXES:
                 continue
             per_k = {k: _rms_from_criteria([runs[k, x] for x in measured], key, m) for k in kernels}
-            ties = {k: _nearest(v, dist) for k, v in per_k.items()}
+            nearest = {k: _nearest(v, dist) for k, v in per_k.items()}
             spread = {x: max(runs[k, x][key] for k in kernels) - min(runs[k, x][key] for k in kernels)
                       for x in measured}
             widest = max(spread, key=spread.get)
             bar = resolution_deg(m, dist)
-            rms_text = "; ".join(f"{_capital(k)} " + ", ".join(f"{NAMES[c]} {per_k[k]['rms'][c]:.1f}"
-                                                              for c in NAMES) for k in kernels)
-            near_text = ", ".join(f"{_capital(k)} " + " and ".join(NAMES[c] for c in ties[k])
-                                  + (" (tied)" if len(ties[k]) > 1 else "") for k in kernels)
-            common = [c for c in NAMES if all(c in ties[k] for k in kernels)]
-            within = ("within" if spread[widest] <= 2.0 * bar else "beyond")
-            s = (f"m = {m:g}, R/delta = {rd:g}, the {len(measured)} mixes run by every kernel here "
-                 f"({_mix_list(measured)}), {HORIZONS[dist]:g} horizons out: RMS {rms_text}°; nearest "
-                 f"{near_text}. The kernels' angles lie {_f(sum(spread.values()) / len(spread))}° apart "
-                 f"on average and at most {_f(spread[widest])}° ({_mix_list([widest])}), {within} the "
-                 f"two runs' error bars (± {bar:.1f}° each). ")
-            s += (f"The kernel does not change the nearest criterion ("
-                  + " and ".join(NAMES[c] for c in common) + ")." if common else
-                  "The kernel changes the nearest criterion.")
-            out.append(s)
-    return (" ".join(out) if out else
-            "No (m, R/delta) has more than one kernel over more than one mixed mode.")
+            out.append(dict(m=m, rd=rd, dist=dist, kernels=kernels, mixes=measured,
+                            rms={k: v["rms"] for k, v in per_k.items()}, nearest=nearest,
+                            spread_mean=sum(spread.values()) / len(spread),
+                            spread_max=spread[widest], widest=widest, bar=bar,
+                            within_bars=spread[widest] <= 2.0 * bar,
+                            common=[c for c in NAMES if all(c in nearest[k] for k in kernels)]))
+    return out
+
+
+def summary(rows):
+    """REPORT.md's line under the table: each sequence's finest angle, its nearest criterion and
+    its last step"""
+    out = [f"{s['kernel']} psi {s['psi']:g} alpha {s['alpha']:g}, {s['dist']}, R/delta {s['rd']:g}: "
+           f"{_f(s['angles'][-1])} deg at m = {s['ms'][-1]:g} (nearest: "
+           f"{NAMES.get(s['nearest'], 'criteria agree')}), last step {s['step']:+.1f} deg "
+           f"({'settled' if s['settled'] else 'not settled'})." for s in sequences(rows)]
+    return " ".join(out) if out else "No sequence in m yet: it needs two values of m at one R/delta."
+
+
+def limit_line(found):
+    """the committed limit as REPORT.md's template fills it"""
+    if found is None:
+        return "no R/delta with the whole mixed-mode sweep at two m yet."
+    return (f"{found['kernel']}, R/delta = {found['rd']:g}, m = {', '.join(f'{m:g}' for m in found['ms'])}: "
+            + "; ".join(f"{d}: {t['state']}" + (f" {NAMES[t['limit']]}" if t["limit"] else "")
+                        for d, t in found["at"].items())
+            + f"; follows: {NAMES[found['follows']] if found['follows'] else 'not settled'}.")
 
 
 # ---------------------------------------------------------------------------- report
@@ -721,7 +556,7 @@ def section(specs, results, figdir, notes):
     """The kink convergence section of REPORT.md (tools/reproduce --full), with the limit
     that the committed whole sweeps name (they take days, so no report run remakes them)."""
     committed = (f"The committed whole mixed-mode sweeps ({CSV.relative_to(kinkbench.ROOT)}): "
-                 + limit_sentence(read_rows()))
+                 + limit_line(limit(read_rows())))
     return jobmod.rows_section(
         REPORT_TITLE, specs, results,
         f"Not run by default ({len(jobs())} runs, about an hour): `tools/reproduce --full` runs "
@@ -729,7 +564,7 @@ def section(specs, results, figdir, notes):
         f"in m and in the disk's size'. {committed}",
         f"Gaussian kernel, pure Mode II, crack along the rows, delta = {DELTA * 1e3:g} mm; see "
         f"examples/kink-mixed-mode/README.md. {committed}",
-        table, verdict)
+        table, summary)
 
 
 def read_rows(path=CSV):
@@ -771,7 +606,7 @@ def main(argv=None):
         if a.csv:    # after every run: a stopped sweep keeps what it measured
             csvfile.write_csv(a.csv, [{c: r.get(c) for c in COLUMNS} for r in rows], comments=[
                 *earlier, made, f"{TIMING}LAMMPS loop time (s); the CPU of each run in column cpu"])
-    print(verdict(rows))
+    print(summary(rows))
     return 0
 
 

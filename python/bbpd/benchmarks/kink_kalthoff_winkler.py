@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import kink
+from bbpd import kink, markers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kink as kinktest
 from bbpd.runner import run_lammps
@@ -100,9 +100,6 @@ def run(kernel, dx, workdir, tend=70e-6, nprocs=1):
 
 
 SUMMARY = kinktest.FOLDER / "results" / "kalthoff_winkler_mix.json"
-TABLE = ("<!-- bbpd:table kink-kw -->", "<!-- /bbpd:table -->")
-
-
 def table(r):
     """README table: the mix before initiation and the angles, Kalthoff-Winkler's and predicted
     (positive = towards the outer side, the experiment's convention)."""
@@ -123,33 +120,6 @@ def table(r):
     return "\n".join([head, "|" + "---|" * (head.count(" | ") + 1), row])
 
 
-def reading(r, coarse_m, finest, kink_limit):
-    """The sentences under the table, computed: the sign of K_I, where both instants' mixes lie
-    against the kink test's range, the kink test's finest pure Mode II run (finest: its row of
-    kink_convergence.csv) and its limit in m (kink_convergence.limit_sentence). Which criterion
-    the Kalthoff-Winkler angle follows is left to the Kalthoff-Winkler summary, which reads both
-    mixes. Angles positive towards the outer side, as in the table."""
-    text = f"Reading it: before the first broken bond the tip sees K_I {r['KI'] / 1e6:+.1f} MPa m^1/2"
-    if r["KI"] < 0.0:
-        text += " (the notch faces are pressed together and, with no contact, pass through each other)"
-    text += (f", and psi = {r['psi']:.1f}° at the first broken bond, {r['psi_band']:.1f}° when the "
-             "damage band leaves the tip")
-    top = max(kinktest.MIXES_DEG)
-    if min(r["psi"], r["psi_band"]) > top:
-        text += (f": both beyond pure Mode II (psi = {top:g}°), the largest mix the kink test runs, "
-                 f"so its column holds the pure Mode II angle on the coarse grid (m = {coarse_m:g}).")
-    else:
-        text += "."
-    text += (f" The kink test's finest pure Mode II run ({finest['kernel']}, m = {finest['m']:g}, "
-             f"R/delta = {finest['R_over_delta']:g}, crack along the rows) kinks at "
-             f"{-finest['angle_2d']:.1f} / {-finest['angle_4d']:.1f}° (2 / 4 horizons), against "
-             f"{r['angle_deg']:.1f}° for this Kalthoff-Winkler run ({r['dx'] * 1e3:g} mm). The "
-             "criteria move with the mix (the table gives them at both instants): the "
-             "Kalthoff-Winkler README's summary holds its angles against them at both instants "
-             f"and states only what both support. {kink_limit}")
-    return text
-
-
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--kernel", default="gaussian")
@@ -164,7 +134,7 @@ def main(argv=None):
     if not args.no_readme:
         SUMMARY.write_text(json.dumps(summary, indent=1) + "\n")
         doc = kinktest.README.read_text()
-        kinktest.README.write_text(kinktest.replace_between(doc, TABLE, table(r)))
+        kinktest.README.write_text(markers.replace_block(kinktest.README, doc, "kink-kw", table(r)))
     print(table(r))
 
 

@@ -21,7 +21,7 @@ from pathlib import Path
 
 from bbpd import csvfile
 from bbpd.benchmarks import mode1
-from bbpd.benchmarks.mode1_propagation import machine
+from bbpd.provenance import cpu
 from bbpd.kernels import KERNELS
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -70,26 +70,6 @@ def table(rows, bond_rows, command=None):
     return "\n".join(lines)
 
 
-def findings(rows, bond_rows):
-    """The sentences on the table, computed: the finest grid's errors per kernel, against the
-    bond-based model's in its own (consistent) convention."""
-    out = []
-    for k in KERNELS:
-        sel = sorted((r for r in rows if r["kernel"] == k), key=lambda r: -r["dx_m"])
-        if not sel:
-            continue
-        fin = sel[-1]
-        b = _bond(bond_rows, k, fin["dx_m"])
-        trend = ", ".join(f"{r['l2_pct']:.2f}" for r in sel)
-        s = (f"- **{k}**: DSIF L2 {trend} % at dx = " + ", ".join(f"{r['dx_m']:g}" for r in sel)
-             + f" m; J-integral L2 {fin['j_l2_pct']:.2f} % at dx = {fin['dx_m']:g} m")
-        if b:
-            s += (f" (bond-based, nu = 1/3 in its own convention: DSIF {b['consistent_l2']:.2f} %, "
-                  f"J {b['j_l2']:.2f} %)")
-        out.append(s + ".")
-    return "\n".join(out)
-
-
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--work", default="/tmp/mode1-lps")
@@ -109,7 +89,7 @@ def main(argv=None):
             rows.append(r)
             if a.csv:
                 csvfile.write_csv(a.csv, rows, comments=[
-                    f"made by: {cmd}", f"timing: LAMMPS loop time, {machine()}, shared machine"])
+                    f"made by: {cmd}", f"timing: LAMMPS loop time, {cpu()}, shared machine"])
     return 0
 
 

@@ -30,7 +30,6 @@ Command line (from the repository root):
 
 import argparse
 import csv
-import platform
 import sys
 import time
 from pathlib import Path
@@ -41,6 +40,7 @@ from bbpd import crack_motion, crack_tip, csvfile, freund, markers, readers
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import mode1
 from bbpd.kernels import COLORS, KERNELS
+from bbpd.provenance import cpu
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -170,32 +170,11 @@ def run(workdir, kernel="gaussian", dx=0.05, G_c=G_C, dt=None, nprocs=1, t_end=T
                                              * freund.MODE1_VALIDITY_MULTIPLE) / (M * dx)
     res.update({"kernel": kernel, "dt": dt, "nprocs": nprocs, "wall_time": wall,
                 "loop_s": loop_s, "atoms": int(round(10.0 / dx)) * int(round(2 * H / dx)),
-                "t_k": t_k, "J": d[:, 2], "damage_sum": d[:, 5], "cpu": machine()})
+                "t_k": t_k, "J": d[:, 2], "damage_sum": d[:, 5], "cpu": cpu()})
     return res
 
 
 # --------------------------------------------------------------------------- outputs
-
-def machine():
-    """CPU model and vector ISA for the timing columns."""
-    model, flags, numbers = platform.processor() or "unknown CPU", set(), {}
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            key = line.split(":", 1)[0].strip()
-            if key == "model name":
-                model = line.split(":", 1)[1].strip()
-            elif key in ("cpu family", "model"):
-                numbers.setdefault(key, line.split(":", 1)[1].strip())
-            elif key == "flags":
-                flags = set(line.split(":", 1)[1].split())
-    except OSError:
-        pass
-    isa = "AVX-512" if "avx512f" in flags else "AVX2" if "avx2" in flags else "SSE"
-    # a model name alone may not tell the generation apart (AMD EPYC: Zen 3 and Zen 4)
-    ident = (f" (family {numbers['cpu family']} model {numbers['model']})"
-             if len(numbers) == 2 else "")
-    return f"{model}{ident}, {isa}"
-
 
 def write_csv(path, rows, provenance):
     """The results CSV: the commands that made its rows (csvfile.provenance lines), then one
@@ -391,7 +370,7 @@ def work_precision_figure(rows, path):
             ax.loglog(x, y, "o-", color=COLORS.get(kernel), label=kernel)
             for r, xi, yi in zip(rs, x, y):
                 ax.annotate(f"{r['dx']:g}", (xi, yi), fontsize=7)
-        cpus = sorted({r.get("cpu", machine()) for r in rows})
+        cpus = sorted({r.get("cpu", cpu()) for r in rows})
         ax.set_xlabel("loop time (s), 1 rank\n" + "; ".join(cpus), fontsize=7)
         ax.set_ylabel(label, fontsize=8)
         ax.legend(fontsize=7)
@@ -515,29 +494,10 @@ SETTLED_SHARE_OF_GAP = 0.1
 WIDTH_KEPT = 0.75
 
 
-def _span(vals, fmt):
-    lo, hi = min(vals), max(vals)
-    return f"{lo:{fmt}}" if f"{lo:{fmt}}" == f"{hi:{fmt}}" else f"{lo:{fmt}} to {hi:{fmt}}"
-
-
-def _by_dx(rows):
-    dxs = sorted({r["dx"] for r in rows}, reverse=True)
-    return dxs, {d: [r for r in rows if r["dx"] == d] for d in dxs}
-
-
 def finest_rows(rows):
     """each kernel's run on its finest grid (a finer grid may have run one kernel only)"""
     return [min((r for r in rows if r["kernel"] == k), key=lambda r: r["dx"])
             for k in KERNELS if any(r["kernel"] == k for r in rows)]
-
-
-def finest_grids(rows):
-    """'dx = 0.0125 m' when every kernel's finest grid is the same, else
-    'dx = 0.0125 m, gaussian 0.00625 m'"""
-    fine = finest_rows(rows)
-    common = max(r["dx"] for r in fine)
-    others = [r for r in fine if r["dx"] != common]
-    return f"dx = {common:g} m" + "".join(f", {r['kernel']} {r['dx']:g} m" for r in others)
 
 
 def extension_changes(rows):
@@ -551,7 +511,10 @@ def extension_changes(rows):
 
 
 def growth_verdict(rows):
-    """Per kernel on the finest grid: (settled, nearest form, last change, gap share)"""
+    """Per kernel on its finest grid: {'settled': the last halving of dx moved the extension at
+    3 t_c by less than SETTLED_SHARE_OF_GAP of the gap between the two forms of Freund's
+    equation, 'nearest': the form ('toughness' or 'energy') the finest extension lies nearest,
+    'last': that change (m), 'gap': the gap (m)}"""
     gap = abs(rows[0]["ext_energy_3tc"] - rows[0]["ext_toughness_3tc"])
     out = {}
     finest = {r["kernel"]: r for r in finest_rows(rows)}
@@ -560,82 +523,17 @@ def growth_verdict(rows):
         near = min(("toughness", "energy"), key=lambda c: abs(fine["ext_pd_3tc"]
                                                               - fine[f"ext_{c}_3tc"]))
         last = abs(ch[-1]) if ch else float("inf")
-        out[k] = (last < SETTLED_SHARE_OF_GAP * gap, near, last, gap)
+        out[k] = dict(settled=last < SETTLED_SHARE_OF_GAP * gap, nearest=near, last=last, gap=gap)
     return out
 
 
-def findings_markdown(rows):
-    """The README's initiation and growth paragraphs, from the results CSV's rows."""
-    dxs, at = _by_dx(rows)
-    kernels = [k for k in KERNELS if any(r["kernel"] == k for r in rows)]
-    fine = finest_rows(rows)
-    prob = problem(rows[0]["Gc"])
-    out_step = 100.0 * DUMP_DT / (prob.initiation_time() - prob.t_c)
-    def of(k):
-        return sorted((r for r in rows if r["kernel"] == k), key=lambda r: -r["dx"])
-    first = "; ".join(
-        " / ".join(f"{r['ti_err_pct']:+.1f}" for r in of(k)) + f" % ({k}, J = "
-        + _span([r["J_at_ti_over_Gc"] for r in of(k)], ".2f") + " G_c)" for k in kernels)
-    steps = ", ".join(f"{_span([r['ti_tip_err_pct'] for r in at[d]], '+.1f')} % at {d:g} m"
-                      for d in dxs)
-    between = all(r["ti_pd"] <= r["ti_theory"] <= r["ti_tip_pd"] for r in rows)
-    j_fine = [r["J_at_ti_tip_over_Gc"] for r in fine]
-    init = (f"**Initiation.** The first broken bond comes early, by an amount set by the kernel "
-            f"more than by the grid (dx = {', '.join(f'{d:g}' for d in dxs)} m): {first}, in % "
-            f"of t_i - t_c. The tip's first grid step comes late: {steps} (one tip output is "
-            f"{out_step:.1f} %), and J at that moment is {_span(j_fine, '.2f')} G_c at "
-            f"{finest_grids(rows)}. " + ("LEFM's t_i lies between the two readings on every run."
-                                  if between else "LEFM's t_i is not always between the two readings."))
-    ext = ", ".join(f"{_span([r['ext_pd_3tc'] for r in at[d]], '.2f')} m at {d:g}" for d in dxs)
-    ch = extension_changes(rows)
-    changes = "; ".join(f"{k} " + " / ".join(f"{c:+.3f}" for c in ch[k]) for k in kernels)
-    l2t = ", ".join(f"{_span([r['l2_toughness_pct'] for r in at[d]], '.1f')}" for d in dxs)
-    l2e = ", ".join(f"{_span([r['l2_energy_pct'] for r in at[d]], '.1f')}" for d in dxs)
-    verdict = growth_verdict(rows)
-    settled = [k for k in kernels if verdict[k][0]]
-    moving = [k for k in kernels if not verdict[k][0]]
-    gap = verdict[kernels[0]][3]
-    names = {"toughness": "K_Ic form", "energy": "energy form"}
-    if settled:
-        near = {verdict[k][1] for k in settled}
-        v_sent = (f"The last halving moves the extension by less than "
-                  f"{SETTLED_SHARE_OF_GAP:g} of the gap between the forms ({gap:.2f} m) for "
-                  f"{' and '.join(settled)} (" + ", ".join(f"{verdict[k][2]:.3f} m" for k in settled)
-                  + f"): there the crack at 3 t_c lies at the "
-                  f"{' and '.join(names[n] for n in sorted(near))}'s value"
-                  + (", a reading one more halving would have to confirm (the change per "
-                     "halving has not shrunk at every step)." if any(
-                         not all(abs(b) < abs(a) for a, b in zip(ch[k], ch[k][1:]))
-                         for k in settled) else "."))
-    else:
-        v_sent = "No kernel has settled: the last halving still moves the extension by more " \
-                 f"than {SETTLED_SHARE_OF_GAP:g} of the gap between the forms ({gap:.2f} m)."
-    if moving:
-        v_sent += (" For " + " and ".join(moving) + " it still moves ("
-                   + ", ".join(f"{verdict[k][2]:.3f} m" for k in moving)
-                   + f"), so for {'them' if len(moving) > 1 else 'it'} the form the limit "
-                   "follows is not settled.")
-    speeds = "; ".join(
-        f"{s:g} t_c: {_span([r[f'v_{s:g}tc_over_cR'] for r in fine], '.2f')} (theory "
-        f"{prob.tip_position(np.array([s * prob.t_c]), 'toughness')[1][0] / prob.c_r:.2f} / "
-        f"{prob.tip_position(np.array([s * prob.t_c]), 'energy')[1][0] / prob.c_r:.2f})"
-        for s in SPEED_TIMES)
-    width_m = {d: [r["width_3tc_over_delta"] * M * d for r in at[d]] for d in dxs}
-    widths = ", ".join(f"{_span(width_m[d], '.2f')} m at {d:g}" for d in dxs)
-    # each kernel's widest band on its finest grid against its next coarser one
-    def kept(k):
-        w = [r["width_3tc_over_delta"] * M * r["dx"] for r in of(k)]
-        return len(w) > 1 and w[-1] >= WIDTH_KEPT * w[-2]
-    holds = len(dxs) > 1 and any(kept(k) for k in kernels)
-    width_sent = ("in metres it does not shrink with the horizon over the last halving, so the "
-                  "damage that leaves the crack line late in the run is set by the loading, "
-                  "not by the grid, and LEFM's straight crack does not describe it." if holds else
-                  "it shrinks with the horizon, as a crack between two rows would.")
-    growth = (f"**Growth.** The extension at 3 t_c (theory {rows[0]['ext_toughness_3tc']:.2f} m "
-              f"in the K_Ic form, {rows[0]['ext_energy_3tc']:.2f} m in the energy form) is "
-              f"{ext}; per halving of dx it changes by {changes} m. The L2 error of l(t) is "
-              f"{l2t} % against the K_Ic form and {l2e} % against the energy form (dx = "
-              f"{', '.join(f'{d:g}' for d in dxs)} m). {v_sent} Speed v/c_R on the finest grid "
-              f"({finest_grids(rows)}; theory: K_Ic / energy form) at {speeds}. The crack atoms' half-width at 3 t_c is "
-              f"{widths} m: {width_sent}")
-    return init + "\n\n" + growth
+def band_kept(rows):
+    """kernels whose widest crack band at 3 t_c on the finest grid keeps WIDTH_KEPT of its width
+    (in metres) on the next coarser grid: a band set by the horizon would halve"""
+    out = []
+    for k in sorted({r["kernel"] for r in rows}):
+        w = [r["width_3tc_over_delta"] * M * r["dx"]
+             for r in sorted((r for r in rows if r["kernel"] == k), key=lambda r: -r["dx"])]
+        if len(w) > 1 and w[-1] >= WIDTH_KEPT * w[-2]:
+            out.append(k)
+    return out

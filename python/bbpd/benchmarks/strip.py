@@ -43,7 +43,7 @@ import numpy as np
 
 from bbpd import csvfile, freund, reference
 from bbpd import jobs as jobmod
-from bbpd.benchmarks.mode1_propagation import machine
+from bbpd.provenance import cpu
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import COLORS
 from bbpd.plots import plt
@@ -168,7 +168,7 @@ def run(workdir, kernel="gaussian", Delta=2.0, dx=DX, m=M, H_over_delta=H_OVER_D
     res.update({"kernel": kernel, "m": m, "H_over_delta": H_over_delta, "dx": dx,
                 "Delta": Delta, "Delta_model": uprime / G_C, "atoms": int(setup["atoms"]),
                 "steps": int(rows[-1, 0]), "loop_s": loop_s, "wall_s": wall,
-                "timing": f"{ranks} rank{'s' if ranks > 1 else ''}, {machine()}",
+                "timing": f"{ranks} rank{'s' if ranks > 1 else ''}, {cpu()}",
                 "t": rows[:, 1], "x": rows[:, 2]})
     return res
 

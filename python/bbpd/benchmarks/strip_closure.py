@@ -160,46 +160,33 @@ def read_rows(path):
     return csvfile.read_table(path, text=("kernel",))
 
 
-def _taller_sentence(r):
+def height_effect(r):
+    """What a taller strip's law does to the closure of one row: None without a taller strip at
+    the shift load; 'met' when the goal is met with the law of either height; 'less' when the
+    change is smaller than the gap to the goal; else 'can' (the height can account for it)"""
     if r["law_shift_taller"] != r["law_shift_taller"]:
-        return ""
+        return None
     d = r["l2_kinetic_taller_pct"] - r["l2_kinetic_pct"]
-    return (f" With the law's speeds moved as a strip {TALLER_H_OVER_DELTA:g} horizons high moves them "
-            f"at Delta = {SHIFT_DELTA:g} (x {r['law_shift_taller']:.3f}) the error is "
-            f"{r['l2_kinetic_taller_pct']:.1f} % ({d:+.1f} points): "
-            + ("the goal is met with the law of either height." if max(
-                r["l2_kinetic_pct"], r["l2_kinetic_taller_pct"]) <= CLOSURE_GOAL_PCT else
-               "the strip's height accounts for less than the gap to the goal."
-               if abs(d) < r["l2_kinetic_pct"] - CLOSURE_GOAL_PCT else
-               "the strip's height can account for the gap to the goal."))
+    if max(r["l2_kinetic_pct"], r["l2_kinetic_taller_pct"]) <= CLOSURE_GOAL_PCT:
+        return "met"
+    return "less" if abs(d) < r["l2_kinetic_pct"] - CLOSURE_GOAL_PCT else "can"
 
 
 def verdict(rows):
-    """The closure's sentence, computed: the finest grid against the goal, and the trend."""
-    out = []
+    """The closure per kernel, as data: the L2 errors of l(t) against the kinetic law from the
+    coarsest grid to the finest ('l2', 'dx'), whether they fall at every halving, whether the
+    finest meets CLOSURE_GOAL_PCT, the better constant-toughness form's error there, and the
+    taller strip's effect (height_effect)."""
+    out = {}
     for k in sorted({r["kernel"] for r in rows}):
         sel = sorted((r for r in rows if r["kernel"] == k), key=lambda r: -r["dx"])
-        errs = ", ".join(f"{r['l2_kinetic_pct']:.1f}" for r in sel)
         finest = sel[-1]
-        falls = all(b["l2_kinetic_pct"] < a["l2_kinetic_pct"] for a, b in zip(sel, sel[1:]))
-        best_const = min(finest["l2_toughness_pct"], finest["l2_energy_pct"])
-        goal = [r for r in sel if r["dx"] == CLOSURE_GOAL_DX and r is not finest]
-        at_goal = (f"at the goal's dx = {CLOSURE_GOAL_DX:g} m {goal[0]['l2_kinetic_pct']:.1f} %, "
-                   if goal else "")
-        out.append(f"- **{k}**: L2 {errs} % at dx = " + ", ".join(f"{r['dx']:g}" for r in sel)
-                   + f" m ({'falls' if falls else 'does not fall'} as dx halves); {at_goal}at dx = "
-                   f"{finest['dx']:g} m {finest['l2_kinetic_pct']:.1f} % "
-                   + ("meets" if finest["l2_kinetic_pct"] <= CLOSURE_GOAL_PCT else "misses")
-                   + f" the {CLOSURE_GOAL_PCT:g} % goal (the better constant-toughness form: {best_const:.1f} %). "
-                   f"The law is measured for v/c_R from {finest['law_u_min']:.2f} (the slowest steady "
-                   f"crack of the runs) to {finest['law_u_max']:.2f} "
-                   f"({int(finest['law_points'])} runs); the predicted crack runs at such speeds in "
-                   f"{finest['inside_law_pct']:.0f} % of the window, slower in "
-                   f"{finest['below_law_pct']:.0f} % (the law interpolated from rest) and faster in "
-                   f"{finest['above_law_pct']:.0f} % (held at its "
-                   "fastest value)."
-                   + _taller_sentence(finest))
-    return "\n".join(out)
+        out[k] = dict(dx=[r["dx"] for r in sel], l2=[r["l2_kinetic_pct"] for r in sel],
+                      falls=all(b["l2_kinetic_pct"] < a["l2_kinetic_pct"] for a, b in zip(sel, sel[1:])),
+                      meets=finest["l2_kinetic_pct"] <= CLOSURE_GOAL_PCT,
+                      best_constant=min(finest["l2_toughness_pct"], finest["l2_energy_pct"]),
+                      height=height_effect(finest))
+    return out
 
 
 if __name__ == "__main__":

@@ -34,24 +34,12 @@ def propagation_table(data):
                                             csvfile.provenance(PROPAGATION_CSV))
 
 
-def propagation_findings(data):
-    return mode1_propagation.findings_markdown(mode1_propagation.read_rows(PROPAGATION_CSV))
-
-
 def kink_table(data):
     return kink.table(kink.read_rows(kink.RESULTS))
 
 
-def kink_k0_check(data):
-    return kink.k0_sentence(json.loads(kink.K0_CHECK.read_text()), kink.read_rows(kink.RESULTS))
-
-
 def branching_table(data):
     return branching.readme_table()
-
-
-def branching_findings(data):
-    return branching.readme_findings()
 
 
 def branching_cost(data):
@@ -60,16 +48,6 @@ def branching_cost(data):
 
 def kink_kw_table(data):
     return kink_kalthoff_winkler.table(json.loads(kink_kalthoff_winkler.SUMMARY.read_text()))
-
-
-def kink_kw_reading(data):
-    conv = kink_convergence.read_rows()
-    pure_mode2 = [r for r in conv if r["kernel"] == kink_convergence.KERNEL and r["psi"] == 90.0
-                  and r["alpha"] == 0.0]
-    finest = max(pure_mode2, key=lambda r: (r["R_over_delta"], r["m"]))
-    coarse_m = min(r["m"] for r in kink.read_rows(kink.RESULTS))
-    return kink_kalthoff_winkler.reading(json.loads(kink_kalthoff_winkler.SUMMARY.read_text()),
-                                         coarse_m, finest, kink_convergence.limit_sentence(conv))
 
 
 def projectile_table(data):
@@ -81,32 +59,13 @@ def grid_pull_table(data):
     return grid.markdown(rows, comments)
 
 
-def kink_limit(data):
-    return kink_convergence.limit_sentence(kink_convergence.read_rows())
-
-
-def kw_summary(data):
-    return grid.summary(projectile.read_csv(PROJECTILE_CSV), grid.read_rows(grid.CSV)[1],
-                        kink.read_rows(kink.RESULTS),
-                        json.loads(kink_kalthoff_winkler.SUMMARY.read_text()),
-                        kink_convergence.limit_sentence(kink_convergence.read_rows()))
-
-
 def strip_table(data):
     return strip.table_markdown(strip.read_rows(STRIP_CSV),
                                 [ln.split(": ", 1)[1] for ln in csvfile.provenance(STRIP_CSV)])
 
 
-def strip_summary(data):
-    return strip.summary_text(strip.read_rows(STRIP_CSV))
-
-
 def strip_closure_table(data):
     return strip_closure.table_markdown(strip_closure.read_rows(CLOSURE_CSV), _made_by(CLOSURE_CSV))
-
-
-def strip_closure_verdict(data):
-    return strip_closure.verdict(strip_closure.read_rows(CLOSURE_CSV))
 
 
 def strip_work_precision(data):
@@ -118,16 +77,8 @@ def kw_deck_table(data):
                       [ln.split(": ", 1)[1] for ln in csvfile.provenance(deck.CSV)])
 
 
-def kw_deck_summary(data):
-    return deck.summary(deck.read_rows()[1])
-
-
 def kw3d_table(data):
     return kw3d.table(kw3d.read_rows(), _made_by(kw3d.CSV))
-
-
-def kw3d_summary(data):
-    return kw3d.summary(kw3d.read_rows())
 
 
 def kink_convergence_table(data):
@@ -135,25 +86,3 @@ def kink_convergence_table(data):
                                   [ln.split(": ", 1)[1] for ln in csvfile.provenance(kink_convergence.CSV)])
 
 
-def kink_convergence_coverage(data):
-    return kink_convergence.coverage(kink_convergence.read_rows())
-
-
-def kink_convergence_verdict(data):
-    return kink_convergence.verdict(kink_convergence.read_rows())
-
-
-def kink_convergence_sweep(data):
-    return kink_convergence.sweep_verdict(kink_convergence.read_rows())
-
-
-def kink_convergence_trend(data):
-    return kink_convergence.sweep_trend(kink_convergence.read_rows())
-
-
-def kink_convergence_subset(data):
-    return kink_convergence.subset_trend(kink_convergence.read_rows())
-
-
-def kink_convergence_kernels(data):
-    return kink_convergence.kernel_comparison(kink_convergence.read_rows())

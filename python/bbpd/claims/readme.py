@@ -1,12 +1,10 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Blocks of the top-level README.md: the benchmark summary (from every benchmark's reference
 CSV) and the quick start's step times (doc/results/quickstart_times.csv)."""
-from bbpd import report, work_precision
-from bbpd.report import make
 from bbpd.kernels import KERNELS
 
 from . import kw, mode1, mode2
-from .text import joined, md_table, mm, name, sci, span
+from .text import md_table, mm, name, sci, span
 
 DISPERSION_KDX = 2.5    # the k dx of the c/v the summary quotes (report.tables.DISP_KDX[-1])
 
@@ -108,13 +106,3 @@ def quickstart_times(data):
                              if not c.startswith("made by:")) + ".\n\n" + table)
 
 
-def reproduce_runs(data):
-    """What tools/reproduce runs, counted from its own job list (bbpd.report.make.job_list)."""
-    specs = report.benchmark_specs(False)
-    extra = make.job_list(False)[len(specs):]
-    timing = sum(s.bench == work_precision.TIMING_BENCH for s in extra)
-    return (f"`tools/reproduce` makes {len(specs) + len(extra)} runs, one per core at a time (finished "
-            f"runs are reused unless their inputs or the plugin changed): {len(specs)} are the "
-            f"benchmarks' tables, {len(extra) - timing} more complete the work-precision diagrams "
-            "(error against run time for every kernel, [doc/work_precision.md]"
-            f"(doc/work_precision.md)) and {timing} time the short runs again.")

@@ -21,12 +21,6 @@ def name(kernel):
     return {"gaussian": "Gaussian"}.get(kernel, kernel)
 
 
-def ranking(values):
-    """'a < b < c' by value (None left out)."""
-    ok = sorted((v, k) for k, v in values.items() if v is not None)
-    return " < ".join(name(k) for _, k in ok)
-
-
 def sci(v):
     """6e-06 -> 6e-6"""
     mant, exp = f"{v:.0e}".split("e")
@@ -47,6 +41,3 @@ def mm(dx):
     return f"{dx * 1e3:g}"
 
 
-def joined(words):
-    words = list(words)
-    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]
