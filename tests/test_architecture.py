@@ -338,6 +338,23 @@ def test_python_imports_have_no_circle():
     assert circles(python_import_graph()) == []
 
 
+def folder_graph(graph, mods):
+    """the import graph between the package's folders (bbpd, bbpd.benchmarks, bbpd.report, ...):
+    a module belongs to the folder of its file"""
+    def folder(m):
+        return ".".join(m.split(".")[:-1]) if mods[m].name != "__init__.py" else m
+    out = {}
+    for m, targets in graph.items():
+        out.setdefault(folder(m), set()).update(folder(t) for t in targets if folder(t) != folder(m))
+    return out
+
+
+def test_python_folders_import_one_way():
+    """no folder imports one that imports it back (bbpd.report and bbpd.work_precision did)"""
+    mods = python_modules()
+    assert circles(folder_graph(python_import_graph(), mods)) == []
+
+
 # the layers of doc/architecture.rst, from the bottom up: a module imports its own layer or
 # those below
 PYTHON_LAYERS = [
@@ -356,7 +373,7 @@ PYTHON_LAYERS = [
      "bbpd.benchmarks.big_run"},
     {"bbpd.report", "bbpd.report.runs", "bbpd.report.tables", "bbpd.report.figures",
      "bbpd.report.prose", "bbpd.report.sections", "bbpd.report.results"},
-    {"bbpd.work_precision"},
+    {"bbpd.report.work_precision"},
     {"bbpd.report.document", "bbpd.report.make", "bbpd.report.__main__"},
     {"bbpd.claims", "bbpd.claims.__main__", "bbpd.claims.blocks", "bbpd.claims.checks",
      "bbpd.claims.data", "bbpd.claims.kw", "bbpd.claims.mode1",
@@ -377,6 +394,20 @@ def test_python_imports_run_one_way():
 
 
 # negative controls: the checks above find what they are for
+
+def test_a_folder_circle_is_found(tmp_path):
+    """negative control: bbpd.report.x imports bbpd.y, which imports bbpd.report.z"""
+    pkg = tmp_path / "toy"
+    (pkg / "report").mkdir(parents=True)
+    (pkg / "__init__.py").write_text("")
+    (pkg / "report" / "__init__.py").write_text("")
+    (pkg / "report" / "x.py").write_text("from toy import y\n")
+    (pkg / "report" / "z.py").write_text("")
+    (pkg / "y.py").write_text("from toy.report import z\n")
+    mods = python_modules(tmp_path, "toy")
+    assert circles(python_import_graph(tmp_path, "toy")) == []
+    assert circles(folder_graph(python_import_graph(tmp_path, "toy"), mods)) == [["toy", "toy.report"]]
+
 
 def test_a_circle_is_found():
     assert circles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]

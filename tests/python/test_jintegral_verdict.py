@@ -1,5 +1,5 @@
-"""The Mode-II verdict of the report (bbpd.report.mode2_j_verdict) follows the numbers: where
-the J-integral carries the extrapolation's excess, and where it does not."""
+"""The Mode-II verdict of the report (bbpd.report.mode2_j) follows the numbers: where the
+J-integral carries the extrapolation's excess, and where it does not."""
 
 import pytest
 
@@ -17,19 +17,20 @@ def runs(pairs):
 
 
 @pytest.mark.parametrize("pairs,where", [
-    ([(1.2, 1.01), (1.25, 0.98), (1.3, 1.02)], "in the near-tip displacement extrapolation"),
-    ([(1.2, 1.19), (1.25, 1.22), (1.3, 1.28)], "in the peridynamic field"),
-    ([(1.2, 1.1), (1.25, 1.02), (1.3, 1.01)], "partly in the field"),
+    ([(1.2, 1.01), (1.25, 0.98), (1.3, 1.02)], "extrapolation"),
+    ([(1.2, 1.19), (1.25, 1.22), (1.3, 1.28)], "field"),
+    ([(1.2, 1.1), (1.25, 1.02), (1.3, 1.01)], "partly"),
 ])
 def test_verdict_follows_the_share_of_the_excess(pairs, where):
-    text = report.mode2_j_verdict(runs(pairs))
-    assert f"the excess lives {where}" in text
+    v = report.mode2_j(runs(pairs))
+    assert v["where"] == where
+    assert v["share"][(report.KERNELS[0], 1e-3)] == pytest.approx((pairs[0][1] - 1) / (pairs[0][0] - 1))
 
 
-def test_best_kernel_by_j_is_named():
-    text = report.mode2_j_verdict(runs([(1.2, 1.05), (1.25, 1.03), (1.3, 1.01)]))
-    assert "gaussian < triangular < constant" in text and "the Gaussian kernel is closest" in text
+def test_the_kernels_peak_errors_by_j_per_grid():
+    v = report.mode2_j(runs([(1.2, 1.05), (1.25, 1.03), (1.3, 1.01)]))
+    assert report.ranking(v["peaks"][1e-3]) == "gaussian < triangular < constant"
 
 
 def test_no_j_no_verdict():
-    assert report.mode2_j_verdict({("gaussian", 1e-3): {"k_end": 1.2, "k_end_exact": 1.0}}) == ""
+    assert report.mode2_j({("gaussian", 1e-3): {"k_end": 1.2, "k_end_exact": 1.0}}) is None

@@ -1,4 +1,4 @@
-"""The pure parts of the work-precision diagrams (bbpd.work_precision) on synthetic data: the
+"""The pure parts of the work-precision diagrams (bbpd.report.work_precision) on synthetic data: the
 rows of the CSV, its round trip, the cost of reaching an error, the sentences computed from
 them, the dispersion error at the fixed wavelength and the ring that holds that wavelength."""
 
@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from bbpd import work_precision as wp
+from bbpd.report import work_precision as wp
 
 
 def mode1_result(l2, peak, jl2, jpeak):
@@ -72,20 +72,17 @@ def test_cost_to_reach_takes_the_cheapest_run_under_the_target():
     assert reach[("constant", "jintegral")] == ("reached", 0.9, 0.1)
 
 
-def test_sentence_states_each_kernels_cost_from_the_numbers():
+def test_the_reach_table_gives_each_kernels_cost_from_the_numbers():
     table = wp.rows(synthetic_runs())
-    text = wp.sentence(table, "mode1", "L2 (%)", 3.0)
-    assert text.startswith("For L2 <= 3 %:")
-    assert "with the displacement extrapolation, the gaussian kernel needs 4 s (dx = 0.05 m)" \
-        in text
-    assert "the constant kernel does not reach it (best 13 % at 3.5 s, dx = 0.05 m)" in text
+    text = wp.reach_table(table)
+    rows = [ln for ln in text.splitlines() if ln.startswith("| mode1 | L2 <= 3 % |")]
+    assert f"| {wp.METHOD_LABEL['dsif']} | gaussian | 4 s (dx = 0.05 m) |" in text
+    assert f"| {wp.METHOD_LABEL['dsif']} | constant | not reached: best 13 % at 3.5 s (dx = 0.05 m) |" in text
     # J-integral: cheapest first
-    j = text.split("with the J-integral, ")[1]
-    assert j.index("constant kernel needs 0.9 s") < j.index("gaussian kernel needs 1 s")
-    # a lower target changes the answer
-    assert "the gaussian kernel needs" not in \
-        wp.sentence(table, "mode1", "L2 (%)", 2.0).split("J-integral")[0]
-    assert wp.sentence(table, "mode2", "L2 (%)", 5.0) == ""
+    j = [r for r in rows if wp.METHOD_LABEL["jintegral"] in r]
+    assert "| constant | 0.9 s" in j[0] and "| gaussian | 1 s" in j[1]
+    # no Mode-II runs: no Mode-II rows
+    assert "| mode2 |" not in text
 
 
 def test_ring_holds_the_wavelength_at_every_m():

@@ -2,12 +2,12 @@
 by default is one line without blank lines after it.
 
 The header reads each result's versions; the timing repeats of the work-precision diagrams
-(bbpd.work_precision.repeat_run) delete their run folders and once reported none, so the header
+(bbpd.report.work_precision.repeat_run) delete their run folders and once reported none, so the header
 read 'LAMMPS (?), plugin v?'. Both kinds of job run here once, on the coarsest Mode-I grid.
 """
 import re
 
-from bbpd import work_precision
+from bbpd.report import work_precision
 from bbpd.benchmarks import kalthoff_winkler_grid
 from bbpd.report import document, runs
 

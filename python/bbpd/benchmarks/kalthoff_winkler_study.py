@@ -266,90 +266,32 @@ def in_init_window(t):
     return t is not None and INIT_WINDOW_US[0] <= t <= INIT_WINDOW_US[1]
 
 
-def conclusion(results):
-    """Sentences computed from the study's results: {(case, kernel, dx): res}."""
-    text = []
-    hits = []
+def hits(results):
+    """The runs that give the experiment's angle (70 +- 2 deg, by which definitions) or the
+    paper's initiation window (by which reading), and those that give both:
+    {'angle': [(case, kernel, dx, definitions)], 'initiation': [(case, kernel, dx, readings)],
+    'both': [(case, kernel, dx)]}"""
+    out = {"angle": [], "initiation": [], "both": []}
     for (case, k, dx), r in sorted(results.items(), key=_order):
         defs = [d for d in ANGLE_DEFS if reaches_angle(r, d)]
         inits = [n for n, key in (("first bond", "t_init_us"), ("damage band", "t_band_us"))
                  if in_init_window(r[key])]
-        if defs or inits:
-            hits.append((case, k, dx, defs, inits))
-    both = [h for h in hits if h[3] and h[4]]
-    ang_only = [h for h in hits if h[3]]
-    init_only = [h for h in hits if h[4]]
+        out["angle"] += [(case, k, dx, defs)] if defs else []
+        out["initiation"] += [(case, k, dx, inits)] if inits else []
+        out["both"] += [(case, k, dx)] if defs and inits else []
+    return out
 
-    def name(h):
-        return f"{h[0]} ({h[1]}, {h[2] * 1e3:g} mm)"
-    text.append(f"Angle 70 +- 2 deg (initial; fit and chord at {T_EVAL_US:.0f} us; cracks of "
-                f"at least {INITIAL_RANGE[1] * 1e3:.0f} mm at {T_EVAL_US:.0f} us): "
-                + ("; ".join(f"{name(h)} by the {', '.join(h[3])} angle" for h in ang_only)
-                   if ang_only else "no run, by any of the three definitions") + ".")
-    text.append(f"Initiation in {INIT_WINDOW_US[0]:.0f}-{INIT_WINDOW_US[1]:.0f} us: "
-                + ("; ".join(f"{name(h)} ({', '.join(h[4])})" for h in init_only)
-                   if init_only else "no run") + ".")
-    text.append("Both at once: " + ("; ".join(name(h) for h in both) if both else "no run") + ".")
 
-    # which kernel is closest to 70 deg under each loading (dx = 1 mm, all three kernels)
-    for case in CASES:
-        same = {k: r for (c, k, dx), r in results.items() if c == case and abs(dx - 1e-3) < 1e-9}
-        if len(same) < 2:
-            continue
-        parts = []
-        for d in ANGLE_DEFS:
-            miss = {k: abs(angle(r, d) - ANGLE_TARGET_DEG) for k, r in same.items()
-                    if angle(r, d) is not None}
-            if miss:
-                best = min(miss.values())
-                close = [k for k in kw.KERNELS if k in miss and miss[k] < best + 0.05]
-                parts.append(f"{d} {'/'.join(close)}")
-        band = {k: r["t_band_us"] for k, r in same.items()}
-        order = [k for k in sorted(band, key=lambda k: (band[k] is None, band[k] or 0.0))]
-        paper_order = sorted(same, key=lambda k: kw.PAPER_INITIATION_US[k])
-        text.append(f"{case}: closest kernel to 70 deg by angle definition: "
-                    + (", ".join(parts) if parts else "none (cracks shorter than 15 mm)")
-                    + "; damage-band order " + " < ".join(order)
-                    + (" (the paper's)" if order == paper_order else
-                       f" (paper: {' < '.join(paper_order)})") + ".")
-    # refinement of the Gaussian: 1 mm -> 0.5 mm
-    conv = []
-    for case in CASES:
-        pair = [results.get((case, "gaussian", d)) for d in (1.0e-3, 0.5e-3)]
-        if None in pair:
-            continue
-        conv.append(f"{case}: " + ", ".join(
-            f"{name} {f(a.get(key), '.1f')} -> {f(b.get(key), '.1f')}" for name, key, (a, b) in
-            (("first bond", "t_init_us", pair), ("band", "t_band_us", pair),
-             ("initial", "initial_deg", pair), ("fit", "fit_t70_deg", pair),
-             ("chord", "chord_t70_deg", pair))))
-    if conv:
-        text.append("Gaussian from 1 mm to 0.5 mm (us, deg): " + "; ".join(conv) + ".")
-    # the paper's ranking: Gaussian closest to 70 deg (fit angle) and initiation order
-    survive = []
-    for case in CASES:
-        same = {k: r for (c, k, dx), r in results.items() if c == case and abs(dx - 1e-3) < 1e-9}
-        if len(same) < 3:
-            continue
-        gauss_best = {}
-        for d in ("fit", "chord"):
-            if all(angle(r, d) is not None for r in same.values()):
-                miss = {k: abs(angle(r, d) - ANGLE_TARGET_DEG) for k, r in same.items()}
-                gauss_best[d] = miss["gaussian"] <= min(miss.values()) + 0.05
-        bands = [same[k]["t_band_us"] for k in kw.KERNELS]
-        ordered = None not in bands and bands[0] < bands[1] < bands[2]
-        survive.append((case, gauss_best, ordered))
-    if survive:
-        def verdict(gb):
-            if not gb:
-                return "angle ranking not measurable (cracks shorter than 15 mm)"
-            return ", ".join(f"Gaussian closest by the {d} angle: {'yes' if v else 'no'}"
-                             for d, v in gb.items())
-        text.append("The paper's kernel ranking (Gaussian closest to 70 deg; initiation "
-                    "constant < triangular < Gaussian) at 1 mm: "
-                    + "; ".join(f"{c}: {verdict(a)}, damage-band order "
-                                f"{'holds' if o else 'fails'}" for c, a, o in survive) + ".")
-    return text
+def conclusion(results):
+    """REPORT.md's lines under the study's table: hits() filled into fixed templates"""
+    h = hits(results)
+
+    def runs(items):
+        return "; ".join(f"{c} ({k}, {dx * 1e3:g} mm)" + (f": {', '.join(x[0])}" if x else "")
+                         for c, k, dx, *x in items) or "no run"
+    return [f"Angle 70 +- 2 deg (initial; fit and chord at {T_EVAL_US:.0f} us): {runs(h['angle'])}.",
+            f"Initiation in {INIT_WINDOW_US[0]:.0f}-{INIT_WINDOW_US[1]:.0f} us: {runs(h['initiation'])}.",
+            f"Both at once: {runs(h['both'])}."]
 
 
 def _order(item):

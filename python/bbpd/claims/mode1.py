@@ -25,10 +25,6 @@ def _at(data, dx):
     return {r["kernel"]: r for r in data.rows(NAME) if abs(r["dx_m"] - dx) < 1e-12}
 
 
-def gaussian_j_peak(data, dx):
-    return _at(data, dx)["gaussian"]["j_peak"]
-
-
 def _pair(r, a, b):
     return f"{r[a]:.2f} / {r[b]:.2f}"
 

@@ -5,7 +5,7 @@ import time
 from pathlib import Path
 
 from bbpd import jobs as jobmod
-from bbpd import work_precision
+from . import work_precision
 
 from .sections import BUILDERS
 from .tables import failed, run_time

@@ -7,7 +7,7 @@ import time
 from pathlib import Path
 
 from bbpd import jobs as jobmod
-from bbpd import work_precision
+from . import work_precision
 
 from . import results as result_files
 from .document import write_report

@@ -39,10 +39,10 @@ from bbpd.benchmarks import dispersion
 from bbpd.benchmarks.kalthoff_winkler import PAPER_INITIATION_US
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import COLORS, KERNELS
-from bbpd.report.figures import _figure
+from .figures import _figure
 from bbpd.provenance import machine
-from bbpd.report.runs import ESTIMATE_S, bench_inputs, build_of_run, make_spec
-from bbpd.report.tables import failed, md_table
+from .runs import ESTIMATE_S, bench_inputs, build_of_run, make_spec
+from .tables import failed, md_table
 
 BENCHMARKS = ("mode1", "mode2", "dispersion", "kalthoff_winkler")
 CSV_COLUMNS = ("benchmark", "kernel", "method", "resolution", "error_metric", "error", "wall_s")
@@ -85,7 +85,7 @@ DISPERSION_ESTIMATE_S = {3: 2.0, 5: 3.0, 10: 6.0, 20: 9.0}
 MODE1_ESTIMATE_S = {0.0125: 300.0}
 KW_ESTIMATE_S = {0.5e-3: 200.0}
 
-# the error that the sentences ask each kernel's cost for
+# the error that the report asks each kernel's cost for
 TARGETS = {("mode1", "L2 (%)"): 3.0,        # the paper's Gaussian L2 at dx = 0.05 m: 2.86 %
            ("mode1", "peak (%)"): 1.0,
            ("mode2", "L2 (%)"): 10.0,
@@ -167,7 +167,7 @@ def repeat_run(workdir, target, args, repeats, of=None):
 def _timing_spec(spec, repeats):
     label = f"timing of {spec.job.label}"
     kw = spec.job.kwargs
-    job = Job(label=label, func="bbpd.work_precision:repeat_run",
+    job = Job(label=label, func="bbpd.report.work_precision:repeat_run",
               kwargs={"target": kw["target"], "args": kw["args"], "repeats": repeats,
                       "of": spec.job.label},
               # this file too: a result cached by an older repeat_run (without the versions
@@ -204,7 +204,7 @@ def extra_specs(specs, the_plan):
             want("dispersion", k, dx, lambda: Spec(
                 "wp-dispersion", k, dx,
                 Job(label=label, func="bbpd.report:run_job",
-                    kwargs={"target": "bbpd.work_precision:dispersion_run",
+                    kwargs={"target": "bbpd.report.work_precision:dispersion_run",
                             "args": {"kernel": k, "m": m}, "label": label},
                     inputs=tuple(str(p) for p in bench_inputs("dispersion")),
                     estimate_s=DISPERSION_ESTIMATE_S.get(m, 60.0))))
@@ -327,7 +327,7 @@ def read_csv(path):
         return out
 
 
-# --------------------------------------------------------------------------- sentences
+# --------------------------------------------------------------------------- cost of a target
 
 def cost_to_reach(table, benchmark, metric, target):
     """(kernel, method) -> (wall_s, resolution) of the cheapest run with error <= target, or
@@ -368,26 +368,20 @@ def _fmt_err(metric, value):
     return f"{value:.3g}{unit}"
 
 
-def sentence(table, benchmark, metric, target):
-    """'for L2 <= 3 % the gaussian kernel needs 4.1 s (dx = 0.05 m), ...' per method, or ''."""
-    reach = cost_to_reach(table, benchmark, metric, target)
-    if not reach:
-        return ""
-    short = metric.split(" (")[0]
-    parts = []
-    for method in sorted({m for _, m in reach}, key=list(METHOD_LABEL).index):
-        mine = {k: v for (k, m), v in reach.items() if m == method}
-        got = sorted((v[1], k, v[2]) for k, v in mine.items() if v[0] == "reached")
-        miss = [(k, v) for k, v in mine.items() if v[0] == "missed"]
-        bits = [f"the {k} kernel needs {_fmt_s(w)} ({_fmt_dx(benchmark, dx)})"
-                for w, k, dx in got]
-        bits += [f"the {k} kernel does not reach it (best {_fmt_err(metric, v[1])} at "
-                 f"{_fmt_s(v[2])}, {_fmt_dx(benchmark, v[3])})"
-                 for k, v in sorted(miss, key=lambda x: KERNELS.index(x[0])
-                                    if x[0] in KERNELS else 99)]
-        lead = "" if len({m for _, m in reach}) == 1 else f"with the {METHOD_LABEL[method]}, "
-        parts.append(lead + ", ".join(bits))
-    return (f"For {short} <= {_fmt_err(metric, target)}: " + "; ".join(parts) + ".")
+def reach_table(table):
+    """Markdown: for each target of TARGETS, method and kernel, the cheapest run that reaches
+    it (run time, resolution), or the best error reached and at what cost."""
+    body = []
+    for (bench, metric), target in TARGETS.items():
+        reach = cost_to_reach(table, bench, metric, target)
+        for (kernel, method), v in sorted(reach.items(), key=lambda kv: (
+                list(METHOD_LABEL).index(kv[0][1]), kv[1][0] != "reached", kv[1][1])):
+            cost = (f"{_fmt_s(v[1])} ({_fmt_dx(bench, v[2])})" if v[0] == "reached" else
+                    f"not reached: best {_fmt_err(metric, v[1])} at {_fmt_s(v[2])} ({_fmt_dx(bench, v[3])})")
+            body.append([bench, f"{metric.split(' (')[0]} <= {_fmt_err(metric, target)}",
+                         METHOD_LABEL[method], kernel, cost])
+    return md_table(["benchmark", "target", "method", "kernel", "run time of the cheapest run "
+                     "that reaches it"], body) if body else ""
 
 
 # --------------------------------------------------------------------------- figures
@@ -510,22 +504,21 @@ def collect(specs, results):
 
 
 def section(specs, results, figdir, notes):
-    """The report section: CSV, one figure per benchmark, sentences computed from the numbers."""
+    """The report section: CSV, one figure per benchmark, the error per resolution and the cost
+    of reaching each target."""
     figdir = Path(figdir)
     runs, samples = collect(specs, results)
     table = rows(runs, notes)
     csv_path = write_csv(figdir / "csv" / CSV_NAME, table)
-    figs, text = [], []
+    figs = []
     for bench in BENCHMARKS:
         if not any(r["benchmark"] == bench for r in table):
             continue
         path = figdir / f"work_precision_{bench}.png"
         name = _figure(lambda: plot(path, table, bench), path, notes)
         figs += [name] if name else []
-        said = [sentence(table, bench, metric, target)
-                for (b, metric), target in TARGETS.items() if b == bench]
-        text.append(f"**{bench}**: " + " ".join(s for s in said if s)
-                    + (" " + kw_initiation_text(table) if bench == "kalthoff_winkler" else ""))
+    reach = reach_table(table)
+    text = ["The cost of reaching each target error:\n\n" + reach] if reach else []
     counts = sorted(set(samples.values()))
     setup = ("Error against run time for every benchmark, one line per kernel through its "
              "resolutions (Mode I and II: per K extraction method; both methods come from the "
@@ -544,19 +537,6 @@ def section(specs, results, figdir, notes):
              + f". All points: {csv_path.parent.name}/{csv_path.name}.")
     return {"title": "Error against run time (work-precision diagrams)", "setup": setup,
             "table": summary_table(table), "text": " ".join(text), "figures": figs}
-
-
-def kw_initiation_text(table):
-    """How the initiation time moves from the coarsest to the finest run of each kernel."""
-    bits = []
-    for k in KERNELS:
-        pts = sorted(((r["resolution"], r["error"], r["wall_s"]) for r in table
-                      if r["benchmark"] == "kalthoff_winkler" and r["kernel"] == k
-                      and r["error_metric"] == "initiation time (us)"), reverse=True)
-        if len(pts) > 1:
-            bits.append(f"{k} " + " -> ".join(f"{e:.1f}" for _, e, _ in pts) + " us at "
-                        + " -> ".join(_fmt_s(w) for _, _, w in pts))
-    return ("Initiation time with refinement: " + "; ".join(bits) + ".") if bits else ""
 
 
 def summary_table(table):
