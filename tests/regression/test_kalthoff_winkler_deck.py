@@ -1,5 +1,5 @@
 """The standard deck of Kalthoff-Winkler (bbpd.benchmarks.kalthoff_winkler_deck): the input
-script takes its variables, and the summary sentences follow the rows."""
+script takes its variables, and the comparison behind the report's lines follows the rows."""
 import pytest
 
 from bbpd.benchmarks import kalthoff_winkler_deck as deck
@@ -31,14 +31,12 @@ def rows_of(angles):
 
 
 def test_summary_follows_the_rows():
-    text = deck.summary(rows_of({("paper", 1.0): 61.0, ("standard", 1.0): 65.0,
+    c = deck.comparison(rows_of({("paper", 1.0): 61.0, ("standard", 1.0): 65.0,
                                  ("paper", 0.5): 62.0, ("standard", 0.5): 69.5}))
-    assert "Fit angle on the standard deck at 0.5 mm" in text
-    assert "gaussian 69.5° (+7.5°)" in text
-    assert "moves the standard deck's fit angle by constant +4.5°" in text
-    assert "standard gaussian 0.5 mm (initial, fit, chord)" in text
-    far = deck.summary(rows_of({("paper", 1.0): 50.0, ("standard", 1.0): 50.0}))
-    assert far.endswith("cracks that cross the plate: none.")
+    assert c["fine"] == 0.5 and c["deck"]["fit", "gaussian"] == (69.5, 7.5)
+    assert c["grid"]["constant"] == 4.5
+    assert ("standard", "gaussian", 0.5, ["initial", "fit", "chord"]) in c["hits"]
+    assert deck.comparison(rows_of({("paper", 1.0): 50.0, ("standard", 1.0): 50.0}))["hits"] == []
 
 
 @pytest.mark.parametrize("bad", ["fast", ""])
@@ -59,9 +57,7 @@ def test_lps_deck_reaches_the_input(tmp_path):
 
 
 def test_summary_separates_the_family_from_poissons_ratio():
-    text = deck.summary(rows_of({("paper", 1.0): 61.0, ("paper-lps-nu025", 1.0): 55.0,
+    c = deck.comparison(rows_of({("paper", 1.0): 61.0, ("paper-lps-nu025", 1.0): 55.0,
                                  ("paper-lps", 1.0): 51.0}))
-    assert "state-based solid at the bond-based nu = 1/4, at 1 mm (change from deck paper): " \
-           "constant 55.0° (-6.0°)" in text
-    assert "nu from 1/4 to 0.3 in the state-based solid, at 1 mm (change from deck " \
-           "paper-lps-nu025): constant 51.0° (-4.0°)" in text
+    assert c["changes"]["paper-lps-nu025"] == (1.0, {k: (55.0, -6.0) for k in deck.KERNELS})
+    assert c["changes"]["paper-lps"] == (1.0, {k: (51.0, -4.0) for k in deck.KERNELS})

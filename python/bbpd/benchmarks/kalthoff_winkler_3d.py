@@ -153,35 +153,34 @@ def table(rows, command=None):
     return out if command is None else f"Made by `{command}`.\n\n" + out
 
 
-def summary(rows):
-    """Sentences computed from the rows: 3D against its 2D twin per resolution, mid-plane
-    against faces, and the change with the resolution."""
+def against_2d(rows):
+    """Per resolution (coarsest first) the 3D run beside the 2D plate of the same grid:
+    [(3D row, 2D row or None, 3D minus 2D fit angle or None)], and the change of the 3D
+    mid-plane fit angle from the coarsest to the finest resolution (None for one)"""
     by = {(r["setup"], r["dx_mm"]): r for r in rows}
-    out = []
+    pairs = []
     for dx in sorted({r["dx_mm"] for r in rows}, reverse=True):
         d3, d2 = by.get(("3d", dx)), by.get(("2d", dx))
-        if not d3:
-            continue
-        s = (f"At delta = {d3['delta_mm']:g} mm ({d3['horizons_through']:.0f} horizons through the "
-             f"plate, {d3['atoms']:.0f} atoms, {d3['loop_s']:.0f} s on {d3['nprocs']:g} ranks, "
-             f"{d3['memory_MB']:.0f} MB) the 3D crack's fit angle is {_f(d3['fit_deg'], '.1f')}° "
-             f"on the mid-plane and {_f(d3['fit_face_lo_deg'], '.1f')} / "
-             f"{_f(d3['fit_face_hi_deg'], '.1f')}° on the faces, first bond at "
-             f"{d3['first_bond_us']:.1f} µs, the crack "
-             + ("reaching the plate's edge at " + d3["crack_stops"].split()[1] + " µs"
-                if d3["crack_stops"].startswith("edge") else d3["crack_stops"].split()[0]
-                .replace("running", "still running at the end").replace("arrest", "arrested")))
-        if d2 and d2["fit_deg"] is not None and d3["fit_deg"] is not None:
-            s += (f"; the 2D plate of the same grid: {d2['fit_deg']:.1f}° "
-                  f"({d3['fit_deg'] - d2['fit_deg']:+.1f}° in 3D), first bond at "
-                  f"{d2['first_bond_us']:.1f} µs")
-        out.append(s)
-    res = sorted((r for r in rows if r["setup"] == "3d" and r["fit_deg"] is not None),
-                 key=lambda r: -r["dx_mm"])
-    if len(res) >= 2:
-        out.append(f"refining delta from {res[0]['delta_mm']:g} to {res[-1]['delta_mm']:g} mm "
-                   f"moves the mid-plane fit angle by {res[-1]['fit_deg'] - res[0]['fit_deg']:+.1f}°")
-    return ". ".join(s[0].upper() + s[1:] for s in out) + "." if out else "No 3D run."
+        if d3:
+            ok = d2 and d2["fit_deg"] is not None and d3["fit_deg"] is not None
+            pairs.append((d3, d2, d3["fit_deg"] - d2["fit_deg"] if ok else None))
+    res = [d3 for d3, _, _ in pairs if d3["fit_deg"] is not None]
+    return pairs, (res[-1]["fit_deg"] - res[0]["fit_deg"] if len(res) >= 2 else None)
+
+
+def summary(rows):
+    """REPORT.md's lines under the 3D table: against_2d() filled into fixed templates"""
+    pairs, refine = against_2d(rows)
+    lines = [f"delta = {d3['delta_mm']:g} mm ({d3['horizons_through']:.0f} horizons through, "
+             f"{d3['atoms']:.0f} atoms, {d3['loop_s']:.0f} s on {d3['nprocs']:g} ranks, "
+             f"{d3['memory_MB']:.0f} MB): fit angle mid-plane {_f(d3['fit_deg'], '.1f')}°, faces "
+             f"{_f(d3['fit_face_lo_deg'], '.1f')} / {_f(d3['fit_face_hi_deg'], '.1f')}°, first bond "
+             f"{d3['first_bond_us']:.1f} µs, crack {d3['crack_stops']} µs"
+             + (f"; 2D of the same grid {d2['fit_deg']:.1f}° (3D {diff:+.1f}°)" if diff is not None else "")
+             + "." for d3, d2, diff in pairs]
+    if refine is not None:
+        lines.append(f"Refining delta moves the mid-plane fit angle by {refine:+.1f}°.")
+    return " ".join(lines) if lines else "No 3D run."
 
 
 # ---------------------------------------------------------------------------- report

@@ -121,47 +121,61 @@ def _order(r):
     return (list(DECKS).index(r["deck"]), -r["dx_mm"], KERNELS.index(r["kernel"]))
 
 
-def summary(rows):
-    """Sentences computed from the rows: each deck's angles on the finest grid, the change of
-    deck and of grid, and the setups within the experiment's 70 +- 2 deg."""
+def comparison(rows):
+    """The numbers the report's lines rest on: 'fine' and 'coarse' (mm); 'deck': {(definition,
+    kernel): (standard deck's angle on the finest grid, its change from the paper's loading)};
+    'grid': {kernel: change of the standard deck's fit angle from the coarsest to the finest
+    grid}; 'changes': {deck of CHANGES: (dx, {kernel: (fit angle, change from its base deck)})}
+    on the finest grid both ran; 'hits': the runs within 70 +- 2 deg (by which definitions)
+    whose cracks reach the plate's edge."""
     by = {(r["deck"], r["kernel"], r["dx_mm"]): r for r in rows}
     dxs = sorted({r["dx_mm"] for r in rows})
     fine, coarse = dxs[0], dxs[-1]
-    out = []
-    for d in study.ANGLE_DEFS:
-        parts = []
-        for k in KERNELS:
-            p, s = by.get(("paper", k, fine)), by.get(("standard", k, fine))
-            if p and s and p[f"{d}_deg"] is not None and s[f"{d}_deg"] is not None:
-                parts.append(f"{k} {s[f'{d}_deg']:.1f}° ({s[f'{d}_deg'] - p[f'{d}_deg']:+.1f}°)")
-        if parts:
-            out.append(f"{d} angle on the standard deck at {fine:g} mm (change from the paper's "
-                       "loading): " + ", ".join(parts))
-    grid = []
+
+    def moved(base, deck, dx, d):
+        a, b = by.get((base, k, dx)), by.get((deck, k, dx))
+        if a and b and a[f"{d}_deg"] is not None and b[f"{d}_deg"] is not None:
+            return b[f"{d}_deg"], b[f"{d}_deg"] - a[f"{d}_deg"]
+        return None
+    out = dict(fine=fine, coarse=coarse, deck={}, grid={}, changes={}, hits=[])
     for k in KERNELS:
+        for d in study.ANGLE_DEFS:
+            if (v := moved("paper", "standard", fine, d)) is not None:
+                out["deck"][d, k] = v
         a, b = by.get(("standard", k, coarse)), by.get(("standard", k, fine))
-        if a and b and a["fit_deg"] is not None and b["fit_deg"] is not None:
-            grid.append(f"{k} {b['fit_deg'] - a['fit_deg']:+.1f}°")
-    if grid and fine != coarse:
-        out.append(f"halving dx from {coarse:g} to {fine:g} mm moves the standard deck's fit angle "
-                   "by " + ", ".join(grid))
-    hits = [f"{r['deck']} {r['kernel']} {r['dx_mm']:g} mm ({', '.join(defs)})"
-            for r in sorted(rows, key=_order)
-            if (defs := [d for d in study.ANGLE_DEFS if r[f"{d}_deg"] is not None and
-                         abs(r[f"{d}_deg"] - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG])
-            and r["crack_stops"].startswith("edge")]
-    for what, deck, base in CHANGES:
+        if fine != coarse and a and b and a["fit_deg"] is not None and b["fit_deg"] is not None:
+            out["grid"][k] = b["fit_deg"] - a["fit_deg"]
+    for _, deck, base in CHANGES:
         for dx in dxs:    # the finest grid both decks ran
-            moved = [f"{k} {b['fit_deg']:.1f}° ({b['fit_deg'] - a['fit_deg']:+.1f}°)" for k in KERNELS
-                     if (a := by.get((base, k, dx))) and (b := by.get((deck, k, dx)))
-                     and a["fit_deg"] is not None and b["fit_deg"] is not None]
-            if moved:
-                out.append(f"fit angle, {what}, at {dx:g} mm (change from deck {base}): "
-                           + ", ".join(moved))
+            got = {k: v for k in KERNELS if (v := moved(base, deck, dx, "fit")) is not None}
+            if got:
+                out["changes"][deck] = (dx, got)
                 break
-    out.append(f"within {study.ANGLE_TARGET_DEG:.0f} ± {study.ANGLE_TOL_DEG:.0f}° with cracks "
-               "that cross the plate: " + ("; ".join(hits) if hits else "none"))
-    return ". ".join(s[0].upper() + s[1:] for s in out) + "."
+    for r in sorted(rows, key=_order):
+        defs = [d for d in study.ANGLE_DEFS if r[f"{d}_deg"] is not None
+                and abs(r[f"{d}_deg"] - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
+        if defs and r["crack_stops"].startswith("edge"):
+            out["hits"].append((r["deck"], r["kernel"], r["dx_mm"], defs))
+    return out
+
+
+def summary(rows):
+    """REPORT.md's lines under the decks' table: comparison() filled into fixed templates"""
+    c = comparison(rows)
+    lines = [f"Standard deck at {c['fine']:g} mm, angle (change from the paper's loading): "
+             + "; ".join(f"{d} {k} {a:.1f}° ({ch:+.1f}°)" for (d, k), (a, ch) in c["deck"].items()) + "."]
+    if c["grid"]:
+        lines.append(f"Standard deck's fit angle from {c['coarse']:g} to {c['fine']:g} mm: "
+                     + ", ".join(f"{k} {ch:+.1f}°" for k, ch in c["grid"].items()) + ".")
+    for what, deck, base in CHANGES:
+        if deck in c["changes"]:
+            dx, got = c["changes"][deck]
+            lines.append(f"Fit angle, {what}, at {dx:g} mm (change from deck {base}): "
+                         + ", ".join(f"{k} {a:.1f}° ({ch:+.1f}°)" for k, (a, ch) in got.items()) + ".")
+    lines.append(f"Within {study.ANGLE_TARGET_DEG:.0f} ± {study.ANGLE_TOL_DEG:.0f}° with cracks that "
+                 "cross the plate: " + ("; ".join(f"{d} {k} {dx:g} mm ({', '.join(defs)})"
+                                                for d, k, dx, defs in c["hits"]) or "none") + ".")
+    return " ".join(lines)
 
 
 # ---------------------------------------------------------------------------- report

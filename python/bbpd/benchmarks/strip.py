@@ -323,135 +323,93 @@ def speed_at(rows, kernel, m, H_over_delta, Delta):
 
 
 CONVERGED_SPEED = 0.02    # v_ss/c_R between two refinements (issue's criterion)
-STATE_WORDS = {"branched": "branched or turned", "arrested": "arrested",
-               "unsteady": "ran unsteadily (Gamma > U')"}
-
-
-def height_verdict(speeds):
-    """' (the last refinement moves it by ...)' of a sequence [(H/delta, v_ss/c_R)]"""
+def height_convergence(speeds):
+    """The last refinement of a sequence [(H/delta, v_ss/c_R)]: {'last': its change, 'within':
+    no more than CONVERGED_SPEED, 'before': the change before it (None for two heights),
+    'alternate': the two changes alternate in sign, 'shrinks': the last is the smaller,
+    'converged': within CONVERGED_SPEED and, with three heights, shrinking (a change that keeps
+    its sign and size puts the limit about as far again beyond the last value)}; None for
+    fewer than two heights"""
     if len(speeds) < 2:
-        return ""
-    d = abs(speeds[-1][1] - speeds[-2][1])
-    text = (f" (the last refinement moves it by {d:.4f} c_R: "
-            + ("within" if d <= CONVERGED_SPEED else "more than") + f" {CONVERGED_SPEED:g} c_R")
-    if len(speeds) >= 3:
-        # within the criterion is not converged while the changes keep their sign and do not
-        # shrink: the limit then lies beyond the last value by about as much again
-        last, before = speeds[-1][1] - speeds[-2][1], speeds[-2][1] - speeds[-3][1]
-        text += f"; the one before by {abs(before):.4f} c_R: "
-        if last * before < 0.0:
-            text += "the changes alternate in sign and " + (
-                "shrink" if abs(last) < abs(before) else "do not shrink, not converged")
-        elif abs(last) < abs(before):
-            text += "the change shrinks"
-        else:
-            text += "the change does not shrink, not converged"
-    return text + ")"
+        return None
+    last = speeds[-1][1] - speeds[-2][1]
+    before = speeds[-2][1] - speeds[-3][1] if len(speeds) >= 3 else None
+    shrinks = before is None or abs(last) < abs(before)
+    return dict(last=last, within=abs(last) <= CONVERGED_SPEED, before=before, shrinks=shrinks,
+                alternate=before is not None and last * before < 0.0,
+                converged=abs(last) <= CONVERGED_SPEED and shrinks)
 
 
 def height_change_against_m(rows, kernel, h0=10.0, h1=20.0, Delta=2.0):
-    """'the doubling of H from h0 to h1 horizons moves v_ss ... at m = ...: ...' for every m
-    with crossing runs at both heights ('' for fewer than two such m): whether the strip's
-    height matters less as the bond family gets finer"""
+    """How doubling the strip's height from h0 to h1 horizons moves v_ss/c_R at each m with
+    crossing runs at both: {'steps': [(m, change)], 'shrinks': at every step in m} (whether the
+    height matters less as the bond family gets finer), None for fewer than two such m"""
     steps = []
     for m in sorted({r["m"] for r in rows if r["kernel"] == kernel}):
         a, b = speed_at(rows, kernel, m, h0, Delta), speed_at(rows, kernel, m, h1, Delta)
         if a and b:    # None: not run; 0.0: did not cross
             steps.append((m, b - a))
     if len(steps) < 2:
-        return ""
+        return None
     sizes = [abs(d) for _, d in steps]
-    trend = ("shrinks at every step in m" if all(y < x for x, y in zip(sizes, sizes[1:]))
-             else "does not shrink at every step in m")
-    return (f"doubling H from {h0:g} to {h1:g} horizons (Delta = {Delta:g}) moves v_ss/c_R by "
-            + ", ".join(f"{d:+.4f} at m = {m:g}" for m, d in steps) + f": the change {trend}")
+    return dict(steps=steps, shrinks=all(y < x for x, y in zip(sizes, sizes[1:])))
+
+
+def energy_closure(rows):
+    """Gamma + Phi = U' over the runs that crossed: the worst closure's row, the largest drift
+    of the energy balance among them, and the row of the largest drift of all runs"""
+    crossed = [r for r in rows if r["crossed"]]
+    if not crossed:
+        return None
+    return dict(n=len(crossed), worst=max(crossed, key=lambda r: abs(r["closure_pct"])),
+                drift=max(r["balance_pct"] for r in crossed),
+                drift_all=max(rows, key=lambda r: r["balance_pct"]))
+
+
+def _case(r):
+    return f"{r['kernel']} m = {r['m']:g}, H/delta = {r['H_over_delta']:g}, Delta = {r['Delta']:g}"
+
+
+def summary_text(rows):
+    """REPORT.md's lines under the strip table: per kernel the threshold at each m, the steady
+    speed at Delta = 2 against the height, and the runs that did not run steadily; the energy
+    closure over all runs"""
+    out = []
+    for k in sorted({r["kernel"] for r in rows}):
+        for m in sorted({r["m"] for r in rows if r["kernel"] == k}):
+            lo, hi = threshold(rows, k, m)
+            if lo is not None or hi is not None:
+                out.append(f"{k} m = {m:g}, H/delta = {SWEEP_H_OVER_DELTA:g}: {f(lo, 'g')} < Delta_c "
+                           f"<= {f(hi, 'g')} (-: no run arrested / crossed).")
+            hd = sorted({r["H_over_delta"] for r in rows if r["kernel"] == k and r["m"] == m
+                         and r["Delta"] == 2.0 and r["crossed"]})
+            speeds = [(h, speed_at(rows, k, m, h, 2.0)) for h in hd]
+            conv = height_convergence(speeds)
+            if conv:
+                out.append(f"{k} m = {m:g}, Delta = 2: v_ss/c_R " + ", ".join(
+                    f"{v:.3f} at H/delta = {h:g}" for h, v in speeds) + f"; last change "
+                    f"{conv['last']:+.4f} (converged: {'yes' if conv['converged'] else 'no'}).")
+        bad = [r for r in rows if r["kernel"] == k and not r["crossed"] and r["state"] != "arrested"]
+        if bad:
+            out.append(f"{k}, no steady crack: " + "; ".join(
+                f"{_case(r)} {r['state']}{_where(r)}" for r in bad) + ".")
+    c = energy_closure(rows)
+    if c:
+        out.append(f"Closure Gamma + Phi = U' over the {c['n']} runs that crossed: within "
+                   f"{abs(c['worst']['closure_pct']):.1f} % ({_case(c['worst'])}); energy balance "
+                   f"drift at most {c['drift']:.2f} % of the broken-bond energy (all runs: "
+                   f"{c['drift_all']['balance_pct']:.2f} %, {_case(c['drift_all'])}).")
+    return "\n".join(out)
+
+
+def f(v, spec):
+    return "-" if v is None else format(v, spec)
 
 
 def _where(r):
     """', off the plane at a + 1.49 H' of a branched run that measured it, else ''"""
     x = r.get("left_plane_over_H", float("nan"))
     return "" if math.isnan(x) else f", off the plane at a + {x:.2f} H"
-
-
-def summary_text(rows):
-    """Sentences computed from the runs: threshold, convergence in H/delta and in m, closure."""
-    kernels = sorted({r["kernel"] for r in rows})
-    out = []
-    for k in kernels:
-        parts = []
-        for m in sorted({r["m"] for r in rows if r["kernel"] == k}):
-            if len({r["Delta"] for r in rows if r["kernel"] == k and r["m"] == m and
-                    r["H_over_delta"] == SWEEP_H_OVER_DELTA}) < 2:
-                continue    # one load says nothing of the threshold
-            lo, hi = threshold(rows, k, m)
-            if hi is None and lo is None:
-                continue
-            if hi is None:
-                thr = f"no run crossed (largest Delta arrested: {lo:g})"
-            elif lo is None:
-                thr = f"Delta_c <= {hi:g} (no run arrested)"
-            else:
-                thr = f"{lo:g} < Delta_c <= {hi:g}"
-            parts.append(f"threshold {thr} at m = {m:g}, H/delta = {SWEEP_H_OVER_DELTA:g}")
-        for m in sorted({r["m"] for r in rows if r["kernel"] == k}):
-            hd = sorted({r["H_over_delta"] for r in rows if r["kernel"] == k and r["m"] == m
-                         and r["Delta"] == 2.0 and r["crossed"]})
-            if len(hd) < 2 and m != M:
-                continue    # one height says nothing of the convergence in H
-            speeds = [(h, speed_at(rows, k, m, h, 2.0)) for h in hd]
-            # a height at which the crack did not run steadily ends the sequence in H: say so
-            # beside it, not only in the list of branched runs
-            lost = [] if len(hd) < 2 else sorted(
-                (r["H_over_delta"], STATE_WORDS.get(r["state"], r["state"]), _where(r))
-                for r in rows if r["kernel"] == k and r["m"] == m and r["Delta"] == 2.0
-                and not r["crossed"])
-            if speeds:
-                parts.append(f"v_ss/c_R at Delta = 2, m = {m:g}: "
-                             + ", ".join(f"{v:.3f} at H/delta = {h:g}" for h, v in speeds)
-                             + height_verdict(speeds)
-                             + "".join(f", and at H/delta = {h:g} the crack {s}{w}: no steady speed "
-                                       "there" for h, s, w in lost))
-        for h in sorted({r["H_over_delta"] for r in rows if r["kernel"] == k}):
-            ms = sorted({r["m"] for r in rows if r["kernel"] == k and r["H_over_delta"] == h
-                         and r["Delta"] == 2.0})
-            if len(ms) > 1:
-                state = {r["m"]: r["state"] for r in rows if r["kernel"] == k and
-                         r["H_over_delta"] == h and r["Delta"] == 2.0}
-                sp = [(m, speed_at(rows, k, m, h, 2.0)) for m in ms]
-                parts.append(f"against m (Delta = 2, H/delta = {h:g}): " + ", ".join(
-                    (f"{s:.3f}" if state[m] == "crossed" else state[m]) + f" at m = {m:g}"
-                    for m, s in sp) + "; over the grid's own c_R: " +
-                    ", ".join(f"{s / grid_rayleigh_ratio(k, m):.3f}" if state[m] == "crossed"
-                              else state[m] for m, s in sp))
-        change = height_change_against_m(rows, k)
-        if change:
-            parts.append(change)
-        ms_all = sorted({r["m"] for r in rows if r["kernel"] == k})
-        parts.append("the grid's own c_R over c_R: " + ", ".join(
-            f"{grid_rayleigh_ratio(k, m):.3f} at m = {m:g}" for m in ms_all))
-        for state, what in (("branched", "branched or turned"), ("unsteady", "unsteady (Gamma > U')")):
-            ds = sorted({(r["m"], r["H_over_delta"], r["Delta"], _where(r)) for r in rows
-                         if r["kernel"] == k and r["state"] == state})
-            if ds:
-                parts.append(f"{what} at " + ", ".join(
-                    f"Delta = {d:g} (m = {m:g}, H/delta = {h:g}{w})" for m, h, d, w in ds))
-        out.append(f"- **{k}**: " + "; ".join(parts) + ".")
-    closed = [r for r in rows if r["crossed"]]
-    if closed:
-        worst = max(closed, key=lambda r: abs(r["closure_pct"]))
-        drift = max(rows, key=lambda r: r["balance_pct"])
-        text = (f"- Closure Gamma + Phi = U' over the {len(closed)} runs that crossed: within "
-                f"{abs(worst['closure_pct']):.1f} % (worst: {worst['kernel']}, m = {worst['m']:g}, "
-                f"H/delta = {worst['H_over_delta']:g}, Delta = {worst['Delta']:g}); the energy "
-                f"balance of compute bbpd/energy drifts by at most "
-                f"{max(r['balance_pct'] for r in closed):.2f} % of the broken-bond energy in them")
-        if not drift["crossed"]:
-            # the largest drift of all runs is one that did not run steadily: name it apart
-            text += (f", and by {drift['balance_pct']:.2f} % in the {drift['state']} run "
-                     f"{drift['kernel']}, m = {drift['m']:g}, H/delta = {drift['H_over_delta']:g}, "
-                     f"Delta = {drift['Delta']:g}, the largest of all {len(rows)} runs")
-        out.append(text + ".")
-    return "\n".join(out)
 
 
 # --------------------------------------------------------------------------- REPORT.md
