@@ -58,6 +58,15 @@ def not_measured(labels):
     return "Not measured (failed or not run): " + ", ".join(labels) + "."
 
 
+def finished_rows(specs, results, text):
+    """(the finished runs' results, text(rows) as a list of lines with the runs not measured
+    named after them): the start of a report section"""
+    done, bad = finished(specs, results)
+    rows = [results[s.job.label] for s in done]
+    lines = list(text(rows)) if rows else []
+    return rows, lines + ([not_measured(bad)] if bad else [])
+
+
 def rows_section(title, specs, results, not_run, setup, table, text):
     """A report section whose runs each return one row: the one-line not_run when no spec ran,
     else table(rows) and text(rows) of the finished rows, the others named as not measured"""

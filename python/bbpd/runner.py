@@ -2,6 +2,7 @@
 """Run our LAMMPS build (tools/lmp) on an input script, serially or under mpirun."""
 import os
 import subprocess
+import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -31,6 +32,17 @@ def error_line(output):
         if line.startswith("ERROR") or "ERROR on proc" in line:
             return line.strip()
     return None
+
+
+def run_or_reuse(script, workdir, vars, nprocs=1, timeout=1800, reuse=False):
+    """(LAMMPS's output, wall time in s) of a run of script in workdir, or with reuse=True the
+    log.lammps an earlier run left there (measured again without running LAMMPS)"""
+    start = time.perf_counter()
+    if reuse:
+        output = (Path(workdir) / "log.lammps").read_text()
+    else:
+        output = run_lammps(str(script), workdir, nprocs=nprocs, vars=vars, timeout=timeout).output
+    return output, time.perf_counter() - start
 
 
 def run_lammps(script, workdir, nprocs=1, version=None, check=True, vars=None, timeout=1800,

@@ -148,14 +148,14 @@ def test_report_section_holds_the_runs(coarse_runs, tmp_path):
     """The kink section of REPORT.md (tools/reproduce) from the two coarse runs as report
     specs, and one spec whose run is missing: the table holds the runs' own angles, the
     sentences are computed from them, the figure is written."""
-    assert ("kink", sections.kink_section) in sections.BUILDERS
+    assert ("kink", bench.section) in sections.BUILDERS
     default = runs.kink_specs()
     assert [s.job.kwargs["args"]["psi"] for s in default] == list(bench.MIXES_DEG)
     assert len(runs.kink_specs(full=True)) == len(bench.cases())
     by_psi = {s.job.kwargs["args"]["psi"]: s for s in default}
     specs = [by_psi[45.0], by_psi[0.0], by_psi[90.0]]
     results = {by_psi[p].job.label: coarse_runs[p] for p in (45.0, 0.0)}
-    sec = sections.kink_section(specs, results, tmp_path, [])
+    sec = bench.section(specs, results, tmp_path, [])
     for psi in (45.0, 0.0):
         res = coarse_runs[psi]
         row = [ln for ln in sec["table"].splitlines() if ln.startswith(

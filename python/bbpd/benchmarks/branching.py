@@ -395,11 +395,7 @@ def summary_text(rows):
 
 def section(specs, results, figdir, notes):
     """The section of REPORT.md (bbpd.report.write_report) from the report's branching runs."""
-    done, bad = jobmod.finished(specs, results)
-    rows = [results[s.job.label] for s in done]
-    text = summary_text(rows) if rows else []
-    if bad:
-        text.append(jobmod.not_measured(bad))
+    rows, text = jobmod.finished_rows(specs, results, summary_text)
     names = []
     maps = {f"{r['kernel']} {r['sigma_MPa']:g} MPa m = {r['m']:g}": r["workdir"] for r in rows
             if Path(r.get("workdir", "")).joinpath("damage.dump").exists()}

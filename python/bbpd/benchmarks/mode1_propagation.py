@@ -31,7 +31,6 @@ Command line (from the repository root):
 import argparse
 import csv
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
@@ -41,7 +40,7 @@ from bbpd import jobs as jobmod
 from bbpd.benchmarks import mode1
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.provenance import cpu
-from bbpd.runner import run_lammps
+from bbpd.runner import run_or_reuse
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "mode1-propagation" / "in.mode1-propagation"
@@ -151,13 +150,7 @@ def run(workdir, kernel="gaussian", dx=0.05, G_c=G_C, dt=None, nprocs=1, t_end=T
     vars_ = {"kernel": kernel, "dx": dx, "Gc": G_c, "m": M, "dt": dt, "tend": t_end,
              "dumpdt": DUMP_DT, "E": E, "rho": RHO, "H": H, "a": A, "td": T_D,
              "sigma0": SIGMA0}
-    start = time.perf_counter()
-    if reuse:
-        output = (workdir / "log.lammps").read_text()
-    else:
-        output = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_,
-                            timeout=RUN_TIMEOUT_S).output
-    wall = time.perf_counter() - start
+    output, wall = run_or_reuse(EXAMPLE, workdir, vars_, nprocs, RUN_TIMEOUT_S, reuse)
     loop_s, _ = readers.loop_time(output)
     d = np.loadtxt(workdir / "k.dat", comments="#", ndmin=2)
     t_k = d[:, 0] * dt
@@ -411,11 +404,7 @@ def summary_text(rows):
 
 def section(specs, results, figdir, notes):
     """The section of REPORT.md (bbpd.report.write_report) from the report's runs."""
-    done, bad = jobmod.finished(specs, results)
-    rows = [results[s.job.label] for s in done]
-    text = summary_text(rows) if rows else []
-    if bad:
-        text.append(jobmod.not_measured(bad))
+    rows, text = jobmod.finished_rows(specs, results, summary_text)
     names = []
     if rows:
         try:

@@ -36,7 +36,6 @@ import math
 import re
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
@@ -151,13 +150,7 @@ def run(workdir, kernel="gaussian", Delta=2.0, dx=DX, m=M, H_over_delta=H_OVER_D
     vars_ = {"kernel": kernel, "dx": dx, "m": m, "Delta": Delta, "H": f"{g['H']:.10g}",
              "L": f"{g['L']:.10g}", "a": f"{g['a']:.10g}", "E": E, "rho": RHO, "Gc": G_C,
              "offplane": OFF_PLANE_HORIZONS}
-    start = time.perf_counter()
-    if reuse:
-        output = (workdir / "log.lammps").read_text()
-    else:
-        output = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_,
-                            timeout=RUN_TIMEOUT_S).output
-    wall = time.perf_counter() - start
+    output, wall = run_or_reuse(EXAMPLE, workdir, vars_, nprocs, RUN_TIMEOUT_S, reuse)
     uprime = float(output.split("STRIP-UPRIME: ")[-1].split()[0])
     words = output.split("STRIP: ")[-1].split("\n")[0].split()
     setup = dict(zip(words[0::2], words[1::2]))
@@ -450,11 +443,7 @@ def jobs(full=False):
 
 def section(specs, results, figdir, notes):
     """The strip's section of report/REPORT.md."""
-    done, bad = jobmod.finished(specs, results)
-    rows = [results[s.job.label] for s in done]
-    text = [summary_text(rows)] if rows else []
-    if bad:
-        text.append(jobmod.not_measured(bad))
+    rows, text = jobmod.finished_rows(specs, results, lambda rows: [summary_text(rows)])
     return {"title": REPORT_TITLE,
             "setup": "Soda-lime glass (E = 72 GPa, G_c = 3.8 J/m2), plane stress, delta = 1 mm, "
                      "strip 8 H long with a seed crack H long, pre-stretched between fixed grips "

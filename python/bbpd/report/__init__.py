@@ -35,7 +35,7 @@ from .runs import (BENCH, ESTIMATE_S, ESTIMATES_ENV, FREUND_PY, HEARTBEAT_S, KW_
                    KW_GAUSSIAN_DX_FULL, METRICS_PY, MODE1_TABLE2_DX, MODE1_TABLE3_DX, MODE2_DX,
                    MODE2_DX_FULL, READERS_PY, Spec, _tools, benchmark_specs, build_of_run,
                    dispersion_run, make_spec, run_job, bench_inputs)
-from .sections import (dispersion_section, kw_section, kw_study_section, mode1_section,
+from .sections import (dispersion_section, kw_section, mode1_section,
                        mode2_section)
 from .tables import (DISP_KDX, _arrays, _plain, f, failed, failed_row, failure_text, md_table,
                      run_time)
@@ -49,6 +49,6 @@ __all__ = ["ROOT", "Job", "COLORS", "KERNELS",
            "MODE1_TABLE2_DX", "MODE1_TABLE3_DX", "MODE2_DX", "MODE2_DX_FULL", "Spec", "_tools",
            "benchmark_specs", "build_of_run", "bench_inputs", "dispersion_run",
            "make_spec", "run_job",
-           "dispersion_section", "kw_section", "kw_study_section", "mode1_section",
+           "dispersion_section", "kw_section", "mode1_section",
            "mode2_section", "DISP_KDX", "_arrays", "_plain", "f", "failed", "failed_row",
            "failure_text", "md_table", "run_time"]

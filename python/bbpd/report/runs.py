@@ -166,6 +166,13 @@ def make_spec(bench, kernel, dx, target, args, inputs, estimate):
     return Spec(bench, kernel, dx, job)
 
 
+def _every_kernel(bench, dxs, target, estimate_s):
+    """a single-rank run of target for every kernel at every dx"""
+    inputs = bench_inputs(bench)
+    return [make_spec(bench, k, dx, target, {"kernel": k, "dx": dx, "nprocs": 1}, inputs,
+                      ESTIMATE_S.get((bench, dx), estimate_s)) for dx in dxs for k in KERNELS]
+
+
 def benchmark_specs(full=False, study=None):
     """The benchmarks' runs of the report: default resolutions, or the paper's full ones with
     full=True, with the loading study unless study=False (make.job_list adds the
@@ -185,12 +192,8 @@ def benchmark_specs(full=False, study=None):
                                {"kernel": k, "dx": dx, "nprocs": 1}, m1_in,
                                ESTIMATE_S.get(("mode1", dx), 60.0)))
 
-    m2_in = bench_inputs("mode2")
-    for dx in (MODE2_DX_FULL if full else MODE2_DX):
-        for k in KERNELS:
-            specs.append(make_spec("mode2", k, dx, "bbpd.benchmarks.mode2:run",
-                                   {"kernel": k, "dx": dx, "nprocs": 1}, m2_in,
-                                   ESTIMATE_S.get(("mode2", dx), 60.0)))
+    specs += _every_kernel("mode2", MODE2_DX_FULL if full else MODE2_DX,
+                           "bbpd.benchmarks.mode2:run", 60.0)
 
     kw_in = bench_inputs("kw")
     kw = [(k, dx) for dx in KW_DX for k in KERNELS]
@@ -204,12 +207,8 @@ def benchmark_specs(full=False, study=None):
             args["images"] = True
         specs.append(make_spec("kw", k, dx, "bbpd.benchmarks.kalthoff_winkler:run", args,
                                kw_in, ESTIMATE_S.get(("kw", dx), 600.0)))
-    prop_in = bench_inputs("mode1prop")
-    for dx in (MODE1PROP_DX_FULL if study else MODE1PROP_DX):
-        for k in KERNELS:
-            specs.append(make_spec("mode1prop", k, dx, "bbpd.benchmarks.mode1_propagation:run",
-                                   {"kernel": k, "dx": dx, "nprocs": 1}, prop_in,
-                                   ESTIMATE_S.get(("mode1prop", dx), 160.0)))
+    specs += _every_kernel("mode1prop", MODE1PROP_DX_FULL if study else MODE1PROP_DX,
+                           "bbpd.benchmarks.mode1_propagation:run", 160.0)
     # the experiment's projectile: the Gaussian at 2 mm; --full adds the other kernels and 1 mm
     specs += kalthoff_winkler_projectile.jobs(full=study)
     specs += kink_specs(study)

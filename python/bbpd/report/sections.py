@@ -80,39 +80,11 @@ def kw_section(specs, results, figdir, notes):
             "table": md_table(header, rows), "text": " ".join(text), "figures": figs}
 
 
-def kw_study_section(specs, results, figdir, notes):
-    return kalthoff_winkler_study.section(specs, results, figdir, notes)
-
-
-def kw_projectile_section(specs, results, figdir, notes):
-    return kalthoff_winkler_projectile.section(specs, results, figdir, notes)
-
-
-def kw_grid_section(specs, results, figdir, notes):
-    return kalthoff_winkler_grid.section(specs, results, figdir, notes)
-
-
-def mode1_propagation_section(specs, results, figdir, notes):
-    return mode1_propagation.section(specs, results, figdir, notes)
-
-
-def kink_section(specs, results, figdir, notes):
-    return kink.section(specs, results, figdir, notes)
-
-
-def strip_section(specs, results, figdir, notes):
-    return strip.section(specs, results, figdir, notes)
-
-
-def branching_section(specs, results, figdir, notes):
-    return branching.section(specs, results, figdir, notes)
-
-
 # the sections of REPORT.md in order: (Spec.bench of their runs, builder)
 BUILDERS = (("dispersion", dispersion_section), ("mode1", mode1_section),
-            ("mode2", mode2_section), ("mode1prop", mode1_propagation_section),
-            ("strip", strip_section),
-            ("kink", kink_section), ("branching", branching_section), ("kw", kw_section),
-            ("kwstudy", kw_study_section), ("kwprojectile", kw_projectile_section),
-            ("kwgrid", kw_grid_section), ("kwdeck", kalthoff_winkler_deck.section),
+            ("mode2", mode2_section), ("mode1prop", mode1_propagation.section),
+            ("strip", strip.section), ("kink", kink.section), ("branching", branching.section),
+            ("kw", kw_section), ("kwstudy", kalthoff_winkler_study.section),
+            ("kwprojectile", kalthoff_winkler_projectile.section),
+            ("kwgrid", kalthoff_winkler_grid.section), ("kwdeck", kalthoff_winkler_deck.section),
             ("kw3d", kalthoff_winkler_3d.section), ("kinkconv", kink_convergence.section))
