@@ -1,10 +1,12 @@
-"""The kink convergence verdicts (bbpd.benchmarks.kink_convergence: sequences, sweep_stats,
-limits, limit, partial_sweeps, kernel_spread, coverage) follow their rows: each verdict is data
+"""The kink convergence runs (bbpd.benchmarks.kink_convergence) and their verdicts
+(bbpd.benchmarks.kink_limit: sequences, sweep_stats, limits, limit, partial_sweeps, kernel_spread,
+coverage) follow their rows: each verdict is data
 (the numbers, the criterion, settled or not), checked here against rows made for the purpose."""
 import pytest
 
 
 from bbpd.benchmarks import kink_convergence as kc
+from bbpd.benchmarks import kink_limit as kl
 
 
 def row(m, rd, a2, a4, kernel="gaussian"):
@@ -13,7 +15,7 @@ def row(m, rd, a2, a4, kernel="gaussian"):
 
 
 def seq(rows, dist="2d", rd=10.0, kernel="gaussian", psi=90.0, alpha=0.0):
-    found = [s for s in kc.sequences(rows) if (s["dist"], s["rd"], s["kernel"], s["psi"], s["alpha"])
+    found = [s for s in kl.sequences(rows) if (s["dist"], s["rd"], s["kernel"], s["psi"], s["alpha"])
              == (dist, rd, kernel, psi, alpha)]
     assert len(found) == 1
     return found[0]
@@ -27,7 +29,7 @@ def test_settled_sequence_names_its_criterion():
     assert s["nearest"] == "hoop_strain" and s["offset"] == pytest.approx(0.21)
     assert s["bar"] == pytest.approx(0.716, abs=1e-3) and s["within_bar"]
     assert s["step"] == pytest.approx(-0.4) and s["settled"]
-    moves = [d for d in kc.disk_moves(rows) if d["dist"] == "2d"]
+    moves = [d for d in kl.disk_moves(rows) if d["dist"] == "2d"]
     assert [(d["m"], round(d["move"], 6)) for d in moves] == [(10.0, -0.5)]
 
 
@@ -42,9 +44,9 @@ def test_moving_sequence_is_not_settled():
 
 def test_error_bars_are_the_grids_resolution_and_say_what_a_step_can_tell():
     # half a spacing across the path, n horizons = n m spacings out
-    assert abs(kc.resolution_deg(10, "2d") - 1.432) < 1e-3
-    assert abs(kc.resolution_deg(10, "4d") - 0.716) < 1e-3
-    assert kc.resolution_deg(15, "4d") < kc.resolution_deg(15, "2d") < kc.resolution_deg(10, "2d")
+    assert abs(kl.resolution_deg(10, "2d") - 1.432) < 1e-3
+    assert abs(kl.resolution_deg(10, "4d") - 0.716) < 1e-3
+    assert kl.resolution_deg(15, "4d") < kl.resolution_deg(15, "2d") < kl.resolution_deg(10, "2d")
     # a step of 1.5 deg between m = 10 and 15 at 2 horizons (bars 1.4 and 1.0) cannot be told apart
     rows = [row(10, 20, -62.0, -64.7), row(15, 20, -63.5, -64.8)]
     s = seq(rows, rd=20.0)
@@ -60,13 +62,13 @@ def test_error_bars_are_the_grids_resolution_and_say_what_a_step_can_tell():
 
 
 def test_one_run_says_nothing():
-    assert kc.sequences([row(5, 10, -90.0, -87.0)]) == []
+    assert kl.sequences([row(5, 10, -90.0, -87.0)]) == []
 
 
 def test_each_kernel_has_its_own_sequence_and_the_gaussians_comes_first():
     rows = [row(10, 10, -55.0, -56.0, "constant"), row(15, 10, -55.2, -56.1, "constant"),
             row(10, 10, -62.0, -63.8), row(15, 10, -63.0, -64.0)]
-    assert [s["kernel"] for s in kc.sequences(rows)] == ["gaussian"] * 2 + ["constant"] * 2
+    assert [s["kernel"] for s in kl.sequences(rows)] == ["gaussian"] * 2 + ["constant"] * 2
     # the constant kernel's rows are not mixed into the Gaussian's sequence
     assert seq(rows)["angles"] == [-62.0, -63.0]
     assert seq(rows, kernel="constant")["angles"] == [-55.0, -55.2]
@@ -85,7 +87,7 @@ def test_each_mix_is_a_sequence_of_its_own():
     assert seq(rows)["angles"] == [-62.0, -63.0]
     mixed = seq(rows, rd=20.0, psi=45.0, alpha=22.5)
     assert mixed["angles"] == [-30.0, -30.5] and mixed["settled"]
-    assert [(s["psi"], s["alpha"]) for s in kc.sequences(rows)][0] == (90.0, 0.0)
+    assert [(s["psi"], s["alpha"]) for s in kl.sequences(rows)][0] == (90.0, 0.0)
     full = [dict(r, dx_mm=5.0 / r["m"], atoms=1, steps=1, K_init_over_Kc=0.5,
                  extension_over_delta=5.0, loop_s=1.0, nprocs=2) for r in rows]
     assert "| gaussian | 45 | 22.5 | 10 | 20 |" in kc.table(full)
@@ -148,7 +150,7 @@ def test_the_whole_sweep_has_its_own_verdict_only_when_complete():
     # every angle 0.5 deg beyond hoop strain along the rows and 1.5 deg at 22.5 deg
     rows = [mixed(p, a, crit[p][1] - 0.5 - a / 22.5, crit[p][1] - 0.5 - a / 22.5)
             for p in crit for a in (0.0, 22.5)]
-    stats = kc.sweep_stats(rows)
+    stats = kl.sweep_stats(rows)
     assert [(s["kernel"], s["m"], s["rd"], s["dist"], s["n"]) for s in stats] == \
         [("gaussian", 10.0, 20.0, "2d", 8), ("gaussian", 10.0, 20.0, "4d", 8)]
     s = stats[0]
@@ -157,9 +159,9 @@ def test_the_whole_sweep_has_its_own_verdict_only_when_complete():
     assert s["bias"]["hoop_strain"] == pytest.approx(-1.0) and s["se"]["hoop_strain"] == pytest.approx(0.189, abs=1e-3)
     assert s["pull_mean"] == pytest.approx(1.0) and s["pull_max"] == pytest.approx(1.0)
     # one run missing: no verdict for that group
-    assert kc.sweep_stats(rows[1:]) == []
+    assert kl.sweep_stats(rows[1:]) == []
     # a pure Mode I run beside the sweep is left out of it
-    assert kc.sweep_stats(rows + [dict(row(10, 20, 0.0, 0.0), psi=0.0, alpha=0.0)]) == stats
+    assert kl.sweep_stats(rows + [dict(row(10, 20, 0.0, 0.0), psi=0.0, alpha=0.0)]) == stats
 
 
 CRIT = {90.0: (-70.53, -63.61, -75.23), 67.5: (-62.9, -57.6, -67.7), 45.0: (-53.13, -49.67, -57.33),
@@ -186,7 +188,7 @@ def settling(*ms_offsets):
 
 def test_the_trend_across_m_names_the_criterion_the_sweep_approaches():
     # 1.0 deg beyond hoop strain at m = 10, 0.3 deg at m = 15: nearest both times, RMS falling
-    found = kc.limits(settling((10, -1.0), (15, -0.3)))
+    found = kl.limits(settling((10, -1.0), (15, -0.3)))
     assert [(t["kernel"], t["rd"], t["dist"], t["ms"]) for t in found] == \
         [("gaussian", 20.0, "2d", [10.0, 15.0]), ("gaussian", 20.0, "4d", [10.0, 15.0])]
     t = found[0]
@@ -194,7 +196,7 @@ def test_the_trend_across_m_names_the_criterion_the_sweep_approaches():
     assert [round(t["v"][m]["rms"]["hoop_strain"], 1) for m in t["ms"]] == [1.1, 0.6]
     assert round(t["step"][0], 1) == 0.7 and round(t["step"][1], 1) == 0.4 and not t["drifts"]
     # the finest m decides: a third, coarser sweep does not change the verdict
-    assert [t["limit"] for t in kc.limits(settling((5, -4.0), (10, -1.0), (15, -0.3)))] == \
+    assert [t["limit"] for t in kl.limits(settling((5, -4.0), (10, -1.0), (15, -0.3)))] == \
         ["hoop_strain", "hoop_strain"]
 
 
@@ -202,10 +204,10 @@ def test_a_sweep_that_still_drifts_is_not_settled():
     # every mix moves by the same +0.7 deg from m = 10 to 15: near hoop strain, its RMS falling
     # and admitted, but the whole sweep still moves, past any standard error
     rows = sweep(10, -1.0) + sweep(15, -0.3)
-    t = kc.limits(rows)[0]
+    t = kl.limits(rows)[0]
     assert t["state"] == "drifts" and t["limit"] is None and t["drifts"]
     assert t["step"][0] == pytest.approx(0.7) and t["step"][1] == pytest.approx(0.0, abs=1e-9)
-    assert kc.limit(rows)["follows"] is None
+    assert kl.limit(rows)["follows"] is None
 
 
 def test_none_fits_names_the_criteria_the_kink_lies_between():
@@ -213,51 +215,51 @@ def test_none_fits_names_the_criteria_the_kink_lies_between():
     # the test admits neither, and the mean lies between the two
     rows = [dict(r, hoop_stress=r["angle_2d"] - 2.5, energy=r["angle_2d"] - 8.0)
             for r in sweep(10, -3.0, spread=0.1) + sweep(15, -2.0, spread=0.1)]
-    t = kc.limits(rows)[0]
+    t = kl.limits(rows)[0]
     assert t["state"] == "none fits" and t["between"] == ("hoop_strain", "hoop_stress")
     last = t["v"][15.0]
     assert last["bias"]["hoop_strain"] == pytest.approx(-2.0) and last["bias"]["hoop_stress"] == pytest.approx(2.5)
     assert [round(t["v"][m]["bias"]["hoop_strain"], 1) for m in t["ms"]] == [-3.0, -2.0]
     assert t["step"][0] == pytest.approx(1.0) and t["drifts"]
-    assert kc.limit(rows)["at"]["4d"]["between"] == ("hoop_strain", "hoop_stress")
+    assert kl.limit(rows)["at"]["4d"]["between"] == ("hoop_strain", "hoop_stress")
     # the same mean at both m: between the two, no drift
     still = [dict(r, hoop_stress=r["angle_2d"] - 2.5, energy=r["angle_2d"] - 8.0)
              for r in settling((10, -2.0), (15, -2.0))]
-    assert all(t["between"] == ("hoop_strain", "hoop_stress") and not t["drifts"] for t in kc.limits(still))
+    assert all(t["between"] == ("hoop_strain", "hoop_stress") and not t["drifts"] for t in kl.limits(still))
     # kinking beyond every criterion: between none of them, nearest hoop stress by 1.0 deg
     beyond = [dict(r, hoop_stress=r["angle_2d"] + 1.0, energy=r["angle_2d"] + 5.0) for r in rows]
-    t = kc.limits(beyond)[0]
+    t = kl.limits(beyond)[0]
     assert t["between"] is None and t["nearest_mean"] == "hoop_stress"
     assert t["v"][15.0]["bias"]["hoop_stress"] == pytest.approx(-1.0)
 
 
 def test_the_trend_says_not_settled_and_why():
     # moving away from hoop strain: nearest both times, but the RMS grows
-    grows = kc.limits(sweep(10, -0.3, spread=2.0) + sweep(15, -1.0, spread=2.0))[0]
+    grows = kl.limits(sweep(10, -0.3, spread=2.0) + sweep(15, -1.0, spread=2.0))[0]
     assert grows["state"] == "grows" and grows["v"][15.0]["best"] == "hoop_strain"
     # the nearest changes from hoop strain to hoop stress
-    changes = kc.limits(sweep(10, -0.3) + sweep(15, 0.2, criterion=0))[0]
+    changes = kl.limits(sweep(10, -0.3) + sweep(15, 0.2, criterion=0))[0]
     assert changes["state"] == "changes" and changes["near_prev"] == ["hoop_strain"]
     assert changes["v"][15.0]["best"] == "hoop_stress"
     # every run 2.5 +- 0.1 deg beyond criteria that agree: a bias of 30 standard errors
     agree = [dict(r, hoop_stress=r["hoop_strain"], energy=r["hoop_strain"])
              for r in sweep(10, -3.0, spread=0.1) + sweep(15, -2.5, spread=0.1)]
-    none = kc.limits(agree)[0]
+    none = kl.limits(agree)[0]
     assert none["state"] == "none fits" and none["between"] is None and none["limit"] is None
     assert none["v"][15.0]["bias"][none["nearest_mean"]] == pytest.approx(-2.5)
     # nearest both times, its RMS falling, but excluded by the test at the finest m
     # (hoop strain 1.5 then 1.0 +- 0.2 deg away; hoop stress 3 deg either side, mean 0, so the
     # test admits it with the larger RMS)
-    excluded = kc.limits([
+    excluded = kl.limits([
         dict(r, hoop_stress=r["angle_2d"] + (3.0 if k % 4 < 2 else -3.0), energy=r["angle_2d"] + 10.0)
         for k, r in enumerate(sweep(10, -1.5, spread=0.2) + sweep(15, -1.0, spread=0.2))])[0]
     assert excluded["state"] == "excluded" and excluded["v"][15.0]["best"] == "hoop_strain"
 
 
 def test_the_trend_needs_two_whole_sweeps():
-    assert kc.limits(sweep(10, -1.0)) == []
-    assert kc.limits(sweep(10, -1.0) + sweep(15, -0.3)[1:]) == []
-    assert kc.limit(sweep(10, -1.0)) is None
+    assert kl.limits(sweep(10, -1.0)) == []
+    assert kl.limits(sweep(10, -1.0) + sweep(15, -0.3)[1:]) == []
+    assert kl.limit(sweep(10, -1.0)) is None
 
 
 def test_criteria_closer_than_the_grids_resolution_are_both_nearest():
@@ -266,10 +268,10 @@ def test_criteria_closer_than_the_grids_resolution_are_both_nearest():
     rows = settling((10, -1.0), (15, -0.3))
     tied = [dict(r, hoop_stress=r["hoop_strain"] + (0.4 if k % 2 else -0.4)) if r["m"] == 15.0 else r
             for k, r in enumerate(rows)]
-    t = kc.limits(tied)[0]
+    t = kl.limits(tied)[0]
     assert t["state"] == "tied" and t["near"] == ["hoop_stress", "hoop_strain"] and t["limit"] is None
     # 2 horizons, m = 15: the RMS values lie closer than the resolution, 1.0 deg
-    assert abs(t["v"][15.0]["rms"]["hoop_stress"] - t["v"][15.0]["rms"]["hoop_strain"]) <= kc.resolution_deg(15, "2d")
+    assert abs(t["v"][15.0]["rms"]["hoop_stress"] - t["v"][15.0]["rms"]["hoop_strain"]) <= kl.resolution_deg(15, "2d")
 
 
 def test_a_partial_finest_sweep_is_followed_over_the_same_mixes():
@@ -278,7 +280,7 @@ def test_a_partial_finest_sweep_is_followed_over_the_same_mixes():
     part = [dict(r, angle_2d=r["hoop_strain"] - 2.0, angle_4d=r["hoop_strain"] - 2.0)
             for r in sweep(20, 0.0) if r["psi"] in (90.0, 45.0) and r["alpha"] == 0.0]
     rows = sweep(10, -1.0) + sweep(15, -0.3) + part
-    p = kc.partial_sweeps(rows)[0]
+    p = kl.partial_sweeps(rows)[0]
     assert (p["kernel"], p["rd"], p["finest"], p["dist"]) == ("gaussian", 20.0, 20.0, "2d")
     assert p["mixes"] == {(90.0, 0.0), (45.0, 0.0)} and list(p["per_m"]) == [10.0, 15.0, 20.0]
     # both mixes are even runs of sweep() (offset - spread): 1.5 deg beyond hoop strain at
@@ -286,20 +288,20 @@ def test_a_partial_finest_sweep_is_followed_over_the_same_mixes():
     assert [round(v["rms"]["hoop_strain"], 1) for v in p["per_m"].values()] == [1.5, 0.8, 2.0]
     assert p["nearest"][20.0] == ["hoop_strain"]
     # the limits still read the complete sweeps only
-    assert kc.limits(rows)[0]["ms"] == [10.0, 15.0]
+    assert kl.limits(rows)[0]["ms"] == [10.0, 15.0]
 
 
 def test_the_subset_trend_needs_a_partial_finest_m_and_a_whole_coarser_sweep():
-    assert kc.partial_sweeps(sweep(10, -1.0) + sweep(15, -0.3)) == []     # finest m complete
+    assert kl.partial_sweeps(sweep(10, -1.0) + sweep(15, -0.3)) == []     # finest m complete
     lone = [r for r in sweep(20, 0.0) if r["psi"] == 90.0] + [r for r in sweep(15, 0.0) if r["psi"] == 90.0]
-    assert kc.partial_sweeps(lone) == []      # no coarser whole sweep to hold it against
+    assert kl.partial_sweeps(lone) == []      # no coarser whole sweep to hold it against
 
 
 def test_kernel_comparison_holds_the_kernels_against_one_another_over_the_mixes_they_share():
     gauss = sweep(15, -0.3)                       # the whole sweep, near hoop strain
     near = [dict(r, kernel="constant", angle_2d=r["angle_2d"] - 0.5, angle_4d=r["angle_4d"] - 0.5)
             for r in sweep(15, -0.3) if r["alpha"] == 0.0 and r["psi"] in (90.0, 67.5)]
-    found = kc.kernel_spread(gauss + near)
+    found = kl.kernel_spread(gauss + near)
     # only the two mixes both kernels ran, the Gaussian first
     assert [(k["m"], k["rd"], k["dist"]) for k in found] == [(15.0, 20.0, "2d"), (15.0, 20.0, "4d")]
     k = found[0]
@@ -309,54 +311,54 @@ def test_kernel_comparison_holds_the_kernels_against_one_another_over_the_mixes_
     assert all(x["common"] == ["hoop_strain"] for x in found)
     # a constant kernel at hoop stress instead: the nearest criterion differs, the spread is real
     far = [dict(r, kernel="constant", angle_2d=r["hoop_stress"], angle_4d=r["hoop_stress"]) for r in near]
-    found = kc.kernel_spread(gauss + far)
+    found = kl.kernel_spread(gauss + far)
     assert all(x["common"] == [] for x in found)
     assert not found[1]["within_bars"] and round(found[1]["bar"], 1) == 0.5
 
 
 def test_kernel_comparison_needs_two_kernels_on_two_mixes():
-    assert kc.kernel_spread(sweep(15, -0.3)) == []                 # one kernel
+    assert kl.kernel_spread(sweep(15, -0.3)) == []                 # one kernel
     lone = [dict(r, kernel="constant") for r in sweep(15, -0.3) if r["psi"] == 90.0 and r["alpha"] == 0.0]
-    assert kc.kernel_spread(sweep(15, -0.3) + lone) == []          # pure Mode II alone
+    assert kl.kernel_spread(sweep(15, -0.3) + lone) == []          # pure Mode II alone
     other_m = [dict(r, kernel="constant", m=10.0) for r in sweep(15, -0.3)]
-    assert kc.kernel_spread(sweep(15, -0.3) + other_m) == []       # not at one m
+    assert kl.kernel_spread(sweep(15, -0.3) + other_m) == []       # not at one m
 
 
 def test_an_exclusion_smaller_than_the_grid_resolves_is_said_to_be():
     # 0.5 deg beyond hoop strain with almost no scatter: the standard error excludes it, but
     # 0.5 deg is within one angle's bar at 2 horizons (m = 15: 1.0) and not at 4 (0.48)
-    two, four = kc.sweep_stats(sweep(15, -0.5, spread=0.05))
+    two, four = kl.sweep_stats(sweep(15, -0.5, spread=0.05))
     assert "hoop_stress" not in two["admitted"] and "hoop_strain" not in two["admitted"]
     assert two["unresolved"] == ["hoop_strain"] and four["unresolved"] == []
     # an exclusion by more than the bar, or a criterion the test admits, is not unresolved
-    assert all(s["unresolved"] == [] for s in kc.sweep_stats(sweep(15, -2.0, spread=0.05)))
-    assert all(s["unresolved"] == [] for s in kc.sweep_stats(sweep(15, -0.5, spread=2.0)))
+    assert all(s["unresolved"] == [] for s in kl.sweep_stats(sweep(15, -2.0, spread=0.05)))
+    assert all(s["unresolved"] == [] for s in kl.sweep_stats(sweep(15, -0.5, spread=2.0)))
 
 
 def test_the_limit_names_a_criterion_only_where_every_distance_approaches_it():
-    both = kc.limit(settling((10, -1.0), (15, -0.3)))
+    both = kl.limit(settling((10, -1.0), (15, -0.3)))
     assert (both["kernel"], both["rd"], both["ms"], both["follows"]) == ("gaussian", 20.0, [10.0, 15.0], "hoop_strain")
     assert [t["limit"] for t in both["at"].values()] == ["hoop_strain", "hoop_strain"]
     # tied at m = 15 (hoop stress within 0.4 deg of hoop strain in every run): no criterion named
     rows = settling((10, -1.0), (15, -0.3))
     tied = [dict(r, hoop_stress=r["hoop_strain"] + (0.4 if k % 2 else -0.4)) if r["m"] == 15.0 else r
             for k, r in enumerate(rows)]
-    found = kc.limit(tied)
+    found = kl.limit(tied)
     assert found["at"]["2d"]["state"] == "tied" and found["follows"] is None
     # moving away from hoop strain: not settled either
-    grows = kc.limit(sweep(10, -0.3, spread=2.0) + sweep(15, -1.0, spread=2.0))
+    grows = kl.limit(sweep(10, -0.3, spread=2.0) + sweep(15, -1.0, spread=2.0))
     assert grows["follows"] is None and all(t["limit"] is None for t in grows["at"].values())
     # another kernel's sweeps say nothing about the Gaussian
     other = [dict(r, kernel="constant") for r in rows]
-    assert kc.limit(other) is None
-    assert kc.limit(other, "constant")["follows"] == "hoop_strain"
+    assert kl.limit(other) is None
+    assert kl.limit(other, "constant")["follows"] == "hoop_strain"
 
 
 def test_the_coverage_lists_what_of_the_plan_is_left():
     rows = [dict(r, loop_s=100.0 + k, cpu="CPU A", nprocs=2.0) for k, r in enumerate(sweep(15, -0.3))]
     rows += [dict(r, kernel=k, loop_s=50.0, cpu="CPU B", nprocs=2.0) for k in ("constant", "triangular")
              for r in sweep(15, -0.3)]
-    cov = kc.coverage(rows)
+    cov = kl.coverage(rows)
     g15 = cov["gaussian", 15]
     assert len(g15["done"]) == 8 and not g15["left"] and g15["machine"] == "CPU A, 2 ranks"
     assert (min(g15["loops"]), max(g15["loops"])) == (100.0, 107.0)
@@ -365,16 +367,16 @@ def test_the_coverage_lists_what_of_the_plan_is_left():
     # the m = 20 sweep with one run missing, and a run on another machine: the majority's times
     part = [dict(r, loop_s=2000.0, cpu="CPU A", nprocs=2.0) for r in sweep(20, -0.3)[:7]]
     part[0] = dict(part[0], loop_s=9000.0, cpu="CPU C")
-    g20 = kc.coverage(rows + part)["gaussian", 20]
+    g20 = kl.coverage(rows + part)["gaussian", 20]
     assert len(g20["done"]) == 7 and g20["left"] == {(22.5, 22.5)}
     assert g20["loops"] == [2000.0] * 6 and g20["machine"] == "CPU A, 2 ranks"
     whole = [dict(r, m=m, loop_s=1.0, cpu="CPU A", nprocs=2.0) for m in (10.0, 20.0) for r in sweep(15, -0.3)]
-    assert not any(c["left"] for c in kc.coverage(rows + whole).values())
+    assert not any(c["left"] for c in kl.coverage(rows + whole).values())
 
 
 def test_the_report_section_carries_the_committed_limit():
     # the whole sweeps take days: REPORT.md states their limit from the committed CSV, run or not
-    line = kc.limit_line(kc.limit(kc.read_rows()))
+    line = kc.limit_line(kl.limit(kc.read_rows()))
     assert line in kc.section([], {}, None, [])["setup"]
 
 
@@ -382,7 +384,7 @@ def test_the_committed_sweeps_give_the_limit_the_readme_states():
     """examples/kink-mixed-mode/README.md and the top README state it by hand: Gaussian,
     R/delta = 20, m = 5 to 20: two horizons out it approaches max. hoop strain, four out none
     fits, between max. hoop strain and max. hoop stress; so not settled."""
-    found = kc.limit(kc.read_rows())
+    found = kl.limit(kc.read_rows())
     assert (found["rd"], found["ms"]) == (20.0, [5.0, 10.0, 15.0, 20.0])
     assert found["at"]["2d"]["limit"] == "hoop_strain"
     assert found["at"]["4d"]["state"] == "none fits"
