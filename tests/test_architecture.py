@@ -361,7 +361,7 @@ PYTHON_LAYERS = [
     {"bbpd", "bbpd.inprocess", "bbpd.jobs", "bbpd.kernels", "bbpd.readers", "bbpd.reference",
      "bbpd.runner", "bbpd.freund", "bbpd.metrics", "bbpd.dsif", "bbpd.plots",
      "bbpd.crack_tip", "bbpd.crack_branches", "bbpd.crack_motion", "bbpd.kink", "bbpd.crack_path",
-     "bbpd.provenance", "bbpd.csvfile", "bbpd.markers", "bbpd.snapshots"},
+     "bbpd.provenance", "bbpd.csvfile", "bbpd.markers", "bbpd.markdown", "bbpd.snapshots"},
     {"bbpd.benchmarks", "bbpd.benchmarks.dispersion", "bbpd.benchmarks.kalthoff_winkler",
      "bbpd.benchmarks.kalthoff_winkler_study", "bbpd.benchmarks.mode1", "bbpd.benchmarks.mode2",
      "bbpd.benchmarks.stability", "bbpd.benchmarks.mode1_propagation",

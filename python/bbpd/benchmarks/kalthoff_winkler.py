@@ -50,6 +50,7 @@ from scipy.spatial import cKDTree
 from bbpd import readers, snapshots
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
+from bbpd.markdown import cell as fmt
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "kalthoff-winkler" / "in.kalthoff_winkler"
@@ -384,10 +385,6 @@ def plot_paths(results, path):
 
 
 # --------------------------------------------------------------------------- table
-
-def fmt(v, spec):
-    return "-" if v is None else format(v, spec)
-
 
 def table(results):
     """Markdown table: kernel x resolution, with the paper's values beside ours."""

@@ -34,6 +34,7 @@ from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.provenance import cpu
 from bbpd.jobs import ROOT, Job, Spec
 from bbpd.runner import run_lammps
+from bbpd.markdown import cell as _f
 
 CSV = ROOT / "examples" / "kalthoff-winkler" / "results" / "kw3d.csv"
 PLATE_THICKNESS = 9.0e-3          # m, the experiment's plate
@@ -126,10 +127,6 @@ def run_case(workdir, setup, dx, m=M, reuse=False, nprocs=None):
     row = measure(wd, setup, dx, m)
     row["nprocs"] = readers.loop_time((wd / "log.lammps").read_text())[1] or ranks
     return row
-
-
-def _f(v, spec):
-    return "-" if v is None else format(v, spec)
 
 
 def table(rows, command=None):

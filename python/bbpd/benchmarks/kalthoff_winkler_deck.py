@@ -32,6 +32,7 @@ from bbpd.provenance import cpu
 from bbpd.jobs import ROOT, Job, Spec
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
+from bbpd.markdown import cell as _f
 
 CSV = ROOT / "examples" / "kalthoff-winkler" / "results" / "standard_deck.csv"
 
@@ -94,10 +95,6 @@ def loaded_density(workdir):
         if line.startswith("KW loading:") and " rho " in line:
             return float(line.rsplit(" rho ", 1)[1].split()[0])
     return None
-
-
-def _f(v, spec):
-    return "-" if v is None else format(v, spec)
 
 
 def table(rows, command=None):

@@ -36,6 +36,7 @@ from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.csvfile import read_csv, write_csv
 from bbpd.jobs import Job, Spec
 from bbpd.runner import run_lammps
+from bbpd.markdown import cell as _f
 
 CSV = kw.EXAMPLE.parent / "results" / "grid_pull.csv"
 COMMAND = ("tools/python -m bbpd.benchmarks.kalthoff_winkler_grid --work /tmp/kw-grid "
@@ -209,10 +210,6 @@ def pull_table(rows):
 
 
 # ---------------------------------------------------------------------------- table
-
-def _f(v, spec):
-    return "-" if v in (None, "") else format(float(v), spec)
-
 
 def _pair(r, d):
     return f"{_f(r[f'{d}_lo_deg'], '.1f')} / {_f(r[f'{d}_hi_deg'], '.1f')}"

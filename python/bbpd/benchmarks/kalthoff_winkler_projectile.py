@@ -42,6 +42,7 @@ from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.jobs import Job, Spec
 from bbpd.runner import run_lammps
+from bbpd.markdown import cell as f
 
 # ---------------------------------------------------------------------------- physics
 
@@ -415,10 +416,6 @@ def section(specs, results, figdir, notes):
                      "as in the loading study (initial; fit and chord at 70 us). See "
                      "examples/kalthoff-winkler/README.md, 'Projectile and toughness'.",
             "table": table if rows else "", "text": " ".join(text), "figures": names}
-
-
-def f(v, spec):
-    return "-" if v is None else format(v, spec)
 
 
 def main(argv=None):

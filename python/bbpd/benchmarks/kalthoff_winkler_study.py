@@ -44,6 +44,8 @@ from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import COLORS
 from bbpd.runner import run_lammps
+from bbpd import markdown
+from bbpd.markdown import cell as f
 
 # ---------------------------------------------------------------------------- physics
 
@@ -301,10 +303,6 @@ def _order(item):
 
 # ---------------------------------------------------------------------------- table, figures
 
-def f(v, spec):
-    return "-" if v is None else format(v, spec)
-
-
 TABLE_HEADER = ["loading", "kernel", "dx (mm)", "first bond (us)", "damage band (us)",
                 "initial (deg)", "fit 10-50 mm (deg)", "chord (deg)", "fit at end (deg)",
                 "chord at end (deg)", "length at 70 us (mm)", "crack stops (us)",
@@ -340,8 +338,7 @@ def stops(r):
 
 
 def md_table(rows, header=TABLE_HEADER):
-    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    return "\n".join(lines + ["| " + " | ".join(r) + " |" for r in rows])
+    return markdown.table(header, rows)
 
 
 def cases_table():

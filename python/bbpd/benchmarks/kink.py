@@ -37,6 +37,7 @@ from bbpd.jobs import Job, run_jobs
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.provenance import cpu
 from bbpd.runner import run_lammps
+from bbpd.markdown import cell
 
 ROOT = Path(__file__).resolve().parents[3]
 FOLDER = ROOT / "examples" / "kink-mixed-mode"
@@ -268,14 +269,14 @@ def read_rows(path):
     return rows
 
 
-def fmt(v, spec=".1f"):
-    return "-" if v is None else format(v, spec)
-
-
 def wall_cell(r):
     """The run's wall time (s), with its MPI ranks when more than one."""
     ranks = int(r.get("nprocs") or 1)
     return f"{r['wall_s']:.0f}" + (f" ({ranks} ranks)" if ranks > 1 else "")
+
+
+def fmt(v, spec=".1f"):
+    return cell(v, spec)
 
 
 def table(rows):

@@ -46,7 +46,8 @@ from bbpd.provenance import cpu
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import COLORS
 from bbpd.plots import plt
-from bbpd.runner import LammpsError, run_lammps
+from bbpd.runner import LammpsError, run_or_reuse
+from bbpd.markdown import cell as f
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "strip-steady-crack" / "in.strip"
@@ -393,10 +394,6 @@ def summary_text(rows):
                    f"drift at most {c['drift']:.2f} % of the broken-bond energy (all runs: "
                    f"{c['drift_all']['balance_pct']:.2f} %, {_case(c['drift_all'])}).")
     return "\n".join(out)
-
-
-def f(v, spec):
-    return "-" if v is None else format(v, spec)
 
 
 def _where(r):

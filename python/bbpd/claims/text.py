@@ -1,12 +1,10 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Number formats of the generated text: ranges, rankings, tables."""
 from bbpd.kernels import KERNELS
+from bbpd.markdown import cell as f
+from bbpd.markdown import table as md_table
 
 DASH = "–"
-
-
-def f(v, spec=".2f"):
-    return "-" if v is None else format(v, spec)
 
 
 def span(values, spec=".1f", unit=""):
@@ -29,12 +27,6 @@ def sci(v):
 
 def by_kernel(rows):
     return sorted(rows, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx_m"]))
-
-
-def md_table(header, rows):
-    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
-    return "\n".join(lines)
 
 
 def mm(dx):

@@ -13,6 +13,8 @@ from bbpd.benchmarks import dispersion as disp
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import mode1, mode2
 from bbpd.kernels import KERNELS
+from bbpd.markdown import cell as f
+from bbpd.markdown import table as md_table
 
 from .runs import MODE1_TABLE3_DX
 
@@ -41,22 +43,12 @@ def failure_text(res):
     return "FAILED: " + msg.replace("|", "/")[:160]
 
 
-def f(v, spec=".2f"):
-    return "-" if v is None or (isinstance(v, float) and math.isnan(v)) else format(v, spec)
-
-
 def run_time(res):
     """Wall time of the run (s): the LAMMPS run (dispersion: run + FFT measurement)."""
     for key in ("wall_time", "wall_s", "job_s"):
         if res.get(key) is not None:
             return float(res[key])
     return None
-
-
-def md_table(header, rows):
-    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
-    return "\n".join(lines)
 
 
 def failed_row(res, ncols, lead):
