@@ -8,12 +8,15 @@
 #include "comm.h"
 #include "compute_bbpd_crack_tip.h"
 #include "compute_bbpd_damage_atom.h"
+#include "compute_bbpd_dilatation_atom.h"
+#include "compute_bbpd_plasticity_atom.h"
 #include "compute_bbpd_dsif.h"
 #include "compute_bbpd_energy.h"
 #include "compute_bbpd_jintegral.h"
 #include "error.h"
 #include "fix_bbpd_alpha.h"
 #include "fix_bbpd_bonds.h"
+#include "fix_bbpd_history.h"
 #include "fix_bbpd_lps.h"
 #include "fix_bbpd_notch.h"
 #include "fix_bbpd_watchdog.h"
@@ -55,6 +58,18 @@ Pair *lps_pair_creator(LAMMPS *lmp)
 {
   return new PairBBPDLPS(lmp);
 }
+Pair *ves_pair_creator(LAMMPS *lmp)
+{
+  return new PairBBPDLPS(lmp, PairBBPDLPS::Family::VES);
+}
+Pair *eps_pair_creator(LAMMPS *lmp)
+{
+  return new PairBBPDLPS(lmp, PairBBPDLPS::Family::EPS);
+}
+Fix *history_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixBBPDHistory(lmp, narg, arg);
+}
 template <class K> Pair *lps_kernel_pair_creator(LAMMPS *lmp)
 {
   return new PairBBPDLPSKernel(lmp, BBPD::kernel_info<K>());
@@ -82,6 +97,14 @@ Fix *notch_creator(LAMMPS *lmp, int narg, char **arg)
 Compute *damage_creator(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputeBBPDDamageAtom(lmp, narg, arg);
+}
+Compute *dilatation_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new ComputeBBPDDilatationAtom(lmp, narg, arg);
+}
+Compute *plasticity_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new ComputeBBPDPlasticityAtom(lmp, narg, arg);
 }
 Compute *dsif_creator(LAMMPS *lmp, int narg, char **arg)
 {
@@ -160,6 +183,14 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.info = "BBPD pair style, the linear peridynamic solid of peri/lps, v" BBPD_VERSION;
   plugin.creator.v1 = (lammpsplugin_factory1 *) &lps_pair_creator;
   (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/ves";
+  plugin.info = "BBPD pair style, the viscoelastic solid of peri/ves, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &ves_pair_creator;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/eps";
+  plugin.info = "BBPD pair style, the elastic-plastic solid of peri/eps, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &eps_pair_creator;
+  (*register_plugin)(&plugin, lmp);
   plugin.name = "bbpd/lps/constant";
   plugin.info = "BBPD pair style, the linear peridynamic solid with the constant influence function, v" BBPD_VERSION;
   plugin.creator.v1 = (lammpsplugin_factory1 *) &lps_kernel_pair_creator<BBPD::ConstantKernel>;
@@ -186,6 +217,10 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.info = "BBPD linear peridynamic solid state (internal, created by the pair style) v" BBPD_VERSION;
   plugin.creator.v2 = (lammpsplugin_factory2 *) &lps_state_creator;
   (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/history";
+  plugin.info = "BBPD bond and atom history of bbpd/ves and bbpd/eps (internal, created by the pair style) v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &history_creator;
+  (*register_plugin)(&plugin, lmp);
   plugin.name = "bbpd/watchdog";
   plugin.info = "BBPD run-explosion watchdog (internal, created by the pair style) v" BBPD_VERSION;
   plugin.creator.v2 = (lammpsplugin_factory2 *) &watchdog_creator;
@@ -203,6 +238,14 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "bbpd/damage/atom";
   plugin.info = "BBPD local damage (eq. 17) v" BBPD_VERSION;
   plugin.creator.v2 = (lammpsplugin_factory2 *) &damage_creator;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/dilatation/atom";
+  plugin.info = "BBPD dilatation of the state-based styles (LAMMPS's dilatation/atom) v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &dilatation_creator;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/plasticity/atom";
+  plugin.info = "BBPD plastic multiplier of bbpd/eps (LAMMPS's plasticity/atom) v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &plasticity_creator;
   (*register_plugin)(&plugin, lmp);
   plugin.name = "bbpd/dsif";
   plugin.info = "BBPD dynamic stress intensity factors (eqs. 39-40) v" BBPD_VERSION;

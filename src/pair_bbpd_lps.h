@@ -13,6 +13,11 @@
      3. the short-range forces.
    The weighted volumes m_i are summed once, at the first force evaluation after the families
    were built, and kept with the dilatation of the last step in fix bbpd/lps (fix_bbpd_lps.h).
+
+   The same class runs the LPS families whose deviatoric part has a history: 'pair_style
+   bbpd/ves 3d' (peri/ves, bbpd_ves.h) and 'bbpd/eps 3d' (peri/eps, bbpd_eps.h). The family is
+   a value handed to the row (pair_bbpd_lps_history.cpp, bbpd_lps_history_row.h); its history
+   lives per bond end and per atom in fix bbpd/history (fix_bbpd_history.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_BBPD_LPS_H
@@ -25,7 +30,9 @@ namespace LAMMPS_NS {
 
 class PairBBPDLPS : public PairBBPDPMB {
  public:
-  PairBBPDLPS(class LAMMPS *);
+  // the force state: peri/lps's, or one with a deviatoric history (peri/ves, peri/eps)
+  enum class Family { LPS, VES, EPS };
+  PairBBPDLPS(class LAMMPS *, Family = Family::LPS);
   // the kernel-weighted styles (pair_bbpd_lps_kernel.h) share the state, loops and restart
   PairBBPDLPS(class LAMMPS *, BBPD::KernelInfo, const char *style);
   ~PairBBPDLPS() override;
@@ -39,6 +46,9 @@ class PairBBPDLPS : public PairBBPDPMB {
   void *extract(const char *, int &) override;
   double memory_usage() override;
 
+  // bbpd/eps: the plastic multiplier lambda of local atom i (compute bbpd/plasticity/atom)
+  double plastic_multiplier(int i) const;
+
   // E and nu of the 3D solid of K and G (the crack computes' constants)
   double youngs_modulus(int itype) const override;
   double poisson_ratio(int itype) const override;
@@ -49,6 +59,12 @@ class PairBBPDLPS : public PairBBPDPMB {
   double deviatoric_share;          // of atom i's deviatoric energy tallied at i: peri/lps 1/2
   class FixBBPDLPS *lps_state;      // weighted volumes and the last step's dilatations
   int nmax_lps;
+  Family family;
+  double **relax_share, **relax_time;    // VES: lambda and tau per type pair
+  double **yield_stress;                 // EPS: the yield stress per type pair
+  class FixBBPDHistory *history;         // VES, EPS: the history of bonds and atoms
+  int nmax_slot;
+  int *bond_slot;    // per intact bond end of this step: its partner slot in fix bbpd/bonds
   BBPD::LPS::AtomState *atom_states;    // theta / m, 1 / m of every local and ghost atom, this step
   int nmax_length;
   double *bond_length;    // current length of every intact bond end, from the dilatation pass
@@ -66,6 +82,22 @@ class PairBBPDLPS : public PairBBPDPMB {
     return BBPD::LPS::moduli(bulk[itype][itype], shear[itype][itype], dimension);
   }
   void sum_weighted_volumes();
+  bool begin_state();    // the dilatation pass of a step; true for a second evaluation
+  void end_state();
+  struct BreakingRule {
+    bool multi;    // s00 or alpha differ between type pairs
+    double s00_one, alpha_one;
+  };
+  BreakingRule breaking_rule() const;
+  int family_args() const;
+  const char *family_coeffs() const;
+  void check_family_coeffs(char **arg);
+  void set_family_coeffs(int i, int j, char **arg);
+  void find_bond_slots();
+  template <int EVFLAG, class F> void eval_history();
+  template <int EVFLAG, class F> struct HistoryRow;
+  template <class F> F family_of(int i) const;
+  int history_width() const;    // doubles per atom in fix bbpd/history
   double dilatation_of(int i, double *r);
   template <int EVFLAG> void eval_lps();
   // the row of an atom in eval_lps: its force state and breaking (pair_bbpd_lps.cpp)

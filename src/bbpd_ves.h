@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* -*- c++ -*- ----------------------------------------------------------
+   BBPD: the viscoelastic family (VES) of LAMMPS's pair style peri/ves
+   (src/PERI/pair_peri_ves.cpp; Mitchell, "A non-local, ordinary-state-based viscoelasticity
+   model for peridynamics", SAND2011-8064), used by pair style bbpd/ves
+   (pair_bbpd_lps.h) through the history row of bbpd_lps_history_row.h. No LAMMPS header, so
+   that the unit tests can use it on plain numbers.
+
+   The LPS state of bbpd_lps.h with two changes in the force state of a bond (atom i's end,
+   partner j, w V = omega V_j ramp):
+     t_ij = 3K w V (theta_i / m_i + theta_j / m_j) xi0
+          + 15 G w V (1 / m_i + 1 / m_j) ((1 - lambda) ed + lambda (ed - edb))
+   ed = e - theta_i xi0 / 3 is the deviatoric extension (atom i's dilatation only), edb the
+   back extension of the bond end, a dashpot of relaxation time tau in series with a spring:
+   per step dt, from the last step's ed_n and edb_n,
+     edb = ed_n (1 - decay) + edb_n decay + beta (ed - ed_n),
+     decay = exp(-dt / tau),  beta = 1 - (tau / dt) (1 - decay)
+   (the exact integral of the dashpot over a step with ed linear in time). lambda in [0, 1]
+   is the share of the shear modulus that relaxes. The energy density of atom i is
+   K theta_i^2 / 2 plus, per bond, 15 G / (2 m_i) w V ((1 - lambda) ed^2 + lambda (ed - edb)^2).
+   The history of a bond end is the pair (ed_n, edb_n), BOND_HISTORY doubles.
+------------------------------------------------------------------------- */
+
+#ifndef BBPD_VES_H
+#define BBPD_VES_H
+
+#include <cmath>
+
+namespace BBPD {
+namespace VES {
+
+  // the coefficients of atom i's type for a time step dt
+  struct Coeffs {
+    double shear;     // G
+    double lambda;    // relaxing share of G
+    double decay;     // exp(-dt / tau)
+    double beta;      // 1 - (tau / dt) (1 - decay)
+  };
+  inline Coeffs coeffs(double shear, double lambda, double tau, double dt)
+  {
+    const double c1 = tau / dt;    // peri/ves's names
+    const double decay = std::exp(-1.0 / c1);
+    return {shear, lambda, decay, 1.0 - c1 * (1.0 - decay)};
+  }
+
+  // the back extension of this step from the bond end's history (ed_n, edb_n) and ed
+  inline double back_extension(const Coeffs &c, double ed, double ed_last, double edb_last)
+  {
+    return ed_last * (1.0 - c.decay) + edb_last * c.decay + c.beta * (ed - ed_last);
+  }
+
+  /* the family as the history row uses it (bbpd_lps_history_row.h) */
+  struct Family {
+    static constexpr int BOND_HISTORY = 2;    // ed and edb of the last evaluation
+    static constexpr int ATOM_HISTORY = 0;
+    static constexpr bool NEEDS_NORM = false;
+    // the deviatoric modulus of the force state, 15 G (Silling et al. 2007, eq. 95)
+    static constexpr double SHEAR_FACTOR = 15.0;
+    // peri/ves's dilatational coefficient is 3K (peri/lps: 3K - 5G): ed carries the -5G
+    static constexpr double BULK_FACTOR = 3.0;
+    struct Plan {};    // nothing over the row
+
+    Coeffs c;
+
+    /* the deviatoric force state of a bond end (the 15 G term of t_ij) for w V (wv), the
+       deviatoric extension ed and 1 / m_i + 1 / m_j (inv_sum); h its history. COMMIT: the
+       first evaluation of a step advances the history; otherwise h already holds this step's
+       back extension (a second evaluation of the step). energy: its w V ((1 - lambda) ed^2 +
+       lambda (ed - edb)^2) (15 G / (2 m_i) times it is atom i's energy density). */
+    template <bool COMMIT>
+    double deviatoric(const Plan &, double wv, double, double, double ed, double inv_sum, double *h,
+                      double &energy) const
+    {
+      double edb = h[1];
+      if (COMMIT) {
+        edb = back_extension(c, ed, h[0], h[1]);
+        h[0] = ed;
+        h[1] = edb;
+      }
+      const double k = SHEAR_FACTOR * c.shear * wv * inv_sum;
+      const double eb = ed - edb;
+      energy = wv * ((1.0 - c.lambda) * (ed * ed) + c.lambda * (eb * eb));
+      return (1.0 - c.lambda) * k * ed + c.lambda * k * eb;
+    }
+  };
+
+}    // namespace VES
+}    // namespace BBPD
+
+#endif

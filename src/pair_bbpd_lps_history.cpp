@@ -1,0 +1,242 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* ----------------------------------------------------------------------
+   BBPD plugin: the bond loop of pair styles bbpd/ves and bbpd/eps (pair_bbpd_lps.h), the
+   LPS state with a family F whose deviatoric part has a history (bbpd_ves.h, bbpd_eps.h):
+   the dilatations, breaking, tallies and short-range forces are those of bbpd/lps
+   (pair_bbpd_lps.cpp, pair_bbpd_lps_row.h); the row hands the family to the history row of
+   bbpd_lps_history_row.h and keeps the history in fix bbpd/history (fix_bbpd_history.h).
+
+   The history of a step is advanced once, by its first evaluation, as peri/ves and peri/eps
+   do at every evaluation; a second evaluation of the same step (the setup of a new run,
+   read_restart) repeats that step's forces from what the history kept (VES: the back
+   extension it reached; EPS: the plastic extension it started from and the norm of the
+   trial state), so that a run split in two, or restarted, continues in the same bits.
+------------------------------------------------------------------------- */
+
+#include "pair_bbpd_lps_row.h"
+
+#include "bbpd_eps.h"
+#include "bbpd_lps_history_row.h"
+#include "bbpd_ves.h"
+
+#include "error.h"
+#include "fix_bbpd_history.h"
+#include "memory.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+namespace LPS = BBPD::LPS;
+
+/* the family's coefficients for the row of local atom i (peri/ves and peri/eps take atom i's
+   type) */
+template <> BBPD::VES::Family PairBBPDLPS::family_of<BBPD::VES::Family>(int i) const
+{
+  const int t = atom->type[i];
+  return {BBPD::VES::coeffs(shear[t][t], relax_share[t][t], relax_time[t][t], update->dt)};
+}
+
+template <> BBPD::EPS::Family PairBBPDLPS::family_of<BBPD::EPS::Family>(int i) const
+{
+  const int t = atom->type[i];
+  return {{shear[t][t], BBPD::EPS::pointwise_yield_value(yield_stress[t][t], horizon[t][t]),
+           lps_state->weighted_volume[i]}};
+}
+
+int PairBBPDLPS::history_width() const
+{
+  using VES = BBPD::VES::Family;
+  using EPS = BBPD::EPS::Family;
+  return family == Family::VES ? VES::ATOM_HISTORY + VES::BOND_HISTORY * bonds->maxpartner
+                               : EPS::ATOM_HISTORY + EPS::BOND_HISTORY * bonds->maxpartner;
+}
+
+double PairBBPDLPS::plastic_multiplier(int i) const
+{
+  if (family != Family::EPS || !history || history->width <= BBPD::EPS::Family::LAMBDA) return 0.0;
+  return history->values[i][BBPD::EPS::Family::LAMBDA];
+}
+
+/* bond_slot[bond_start[i] + k]: the slot in partner[i] (and in the history) of the k-th
+   intact bond of local atom i, the k-th partner with a positive tag */
+void PairBBPDLPS::find_bond_slots()
+{
+  const int nlocal = atom->nlocal;
+  const int nends = nlocal > 0 ? bonds->bond_start[nlocal - 1] + bonds->nbond[nlocal - 1] : 0;
+  if (nends > nmax_slot) {
+    nmax_slot = nends + nends / 8;    // headroom, as bond_length
+    memory->destroy(bond_slot);
+    memory->create(bond_slot, nmax_slot, "pair:bond_slot");
+  }
+  for (int i = 0; i < nlocal; i++) {
+    int *slot = bond_slot + bonds->bond_start[i];
+    int n = 0;
+    for (int m = 0; m < bonds->npartner[i] && n < bonds->nbond[i]; m++)
+      if (bonds->partner[i][m] > 0) slot[n++] = m;
+    if (n != bonds->nbond[i])
+      error->one(FLERR,
+                 "Pair style {}: atom {} has {} intact bonds but {} bond partners: "
+                 "the history of its bonds is lost (please report this)",
+                 style, atom->tag[i], bonds->nbond[i], n);
+  }
+}
+
+/* the row of local atom i for a family F with history: the force state of
+   bbpd_lps_history_row.h, the breaking, tallies and finish of the LPS row (Row) */
+template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row<EVFLAG> {
+  using Base = PairBBPDLPS::Row<EVFLAG>;
+  using Base::acc;
+  using Base::cache;
+  using Base::fb;
+  using Base::i;
+  using Base::mod;
+  using Base::nlost;
+  using Base::p;
+  using Base::r_row;
+  using Base::replay;
+  using Base::si;
+  using Base::smin_i;
+  using Base::snew;
+  using Base::tally;
+  using Base::theta_third_i;
+
+  F fam;
+  typename F::Plan plan;
+  double *atom_hist;    // the atom's history, then its bonds' (by slot)
+  double *hist;
+  const int *slot;
+
+  HistoryRow(PairBBPDLPS &pair, int atom_i, double *acc_, BBPD::CoefCache *cache_, bool replay_,
+             bool canonical_, const BreakingRule &rule) :
+      Base(pair, atom_i, acc_, cache_, replay_, canonical_, rule.multi, rule.s00_one,
+           rule.alpha_one),
+      fam(pair.family_of<F>(atom_i)), plan{}, atom_hist(pair.history->values[atom_i]),
+      hist(atom_hist + F::ATOM_HISTORY), slot(pair.bond_slot + pair.bonds->bond_start[atom_i])
+  {
+  }
+
+  // what the family decides over the row before its bonds (EPS: elastic or plastic; the
+  // first evaluation of a step rolls the history and keeps the norm for a second one)
+  void make_plan()
+  {
+    if constexpr (F::NEEDS_NORM) {
+      double norm = atom_hist[F::NORM];
+      if (!replay) {
+        const double *xx = p.atom->x[0];
+        norm = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
+          return LPS::history_row_norm<F, true, true>(xx, i, bj, vals, p.bonds->nbond[i], r_row,
+                                                      p.atom_states, theta_third_i, fam, slot,
+                                                      hist);
+        });
+        atom_hist[F::NORM] = norm;
+      }
+      plan = fam.plan(norm);
+      if (!replay && plan.plastic) atom_hist[F::LAMBDA] += plan.delta_lambda;
+    }
+  }
+
+  template <bool CHECK, bool CACHED, bool COMMIT> bool row_sum(double *f)
+  {
+    const double *xx = p.atom->x[0];
+    auto check = [&](int j, double e, double xi0) BBPD_ROW_BODY {
+      const double s = this->breaking_stretch(j, e, xi0);
+      snew = std::min(snew, s);
+      return LPSStretchRule::past_critical(s, this->s0_with(j), 0.0);
+    };
+    LPS::RowSums sums;
+    const bool past = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
+      return LPS::history_row_sums<F, EVFLAG != 0, CHECK, CACHED, COMMIT>(
+          xx, i, bj, vals, p.bonds->nbond[i], r_row, p.atom_states, mod.bulk, fam, plan,
+          theta_third_i, slot, hist, check, sums);
+    });
+    for (int c = 0; c < 3; c++) f[c] = sums.f[c];
+    // atom i's deviatoric energy (half of it, as peri/ves and peri/eps) and half the virial
+    tally[0] = p.deviatoric_share * LPS::deviatoric_energy_of(mod, si.inv_m, sums.wv_ed2);
+    for (int c = 0; c < 6; c++) tally[1 + c] = -BondModel::virial_share(1.0, sums.fdd[c], 1.0);
+    return past;
+  }
+  bool sum_and_check(double *fi)
+  {
+    make_plan();
+    if (replay) {
+      p.smin_new[i] = smin_i;
+      row_sum<false, true, false>(fi);
+      return false;
+    }
+    const bool had_bonds = p.bonds->nbond[i] > 0;
+    const bool broken = row_sum<true, true, true>(fi);
+    p.smin_new[i] = had_bonds ? snew : BBPD::PMB::NO_BOND_STRETCH;
+    return broken;
+  }
+  // as Row::breaks, with the family's force state of the bond (its history as this step left it)
+  bool breaks(int k)
+  {
+    const double *xx = p.atom->x[0];
+    const int j = p.bonds->partner_of(i, k);
+    const double xi0 = p.bonds->xi0_of(i, k);
+    const double dx = xx[3 * j] - xx[3 * i], dy = xx[3 * j + 1] - xx[3 * i + 1],
+                 dz = xx[3 * j + 2] - xx[3 * i + 2];
+    const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const double e = LPS::elongation(r, xi0);
+    if (!LPSStretchRule::past_critical(this->breaking_stretch(j, e, xi0), this->s0_with(j), 0.0))
+      return false;
+    // the bond's slot: k counts the bonds kept so far in this row
+    const int kr = k - p.bonds->bond_start[i];
+    double energy;
+    const double t = LPS::history_force_state<F, false>(
+        mod.bulk, fam, plan, p.bonds->coef_of(i, k, xi0), xi0, e, theta_third_i, si,
+        p.atom_states[j], hist + F::BOND_HISTORY * slot[kr + nlost], energy);
+    const double fpl = r > 0.0 ? t / r : 0.0;
+    fb[0] += fpl * dx;
+    fb[1] += fpl * dy;
+    fb[2] += fpl * dz;
+    const double eng = p.deviatoric_share * LPS::deviatoric_energy_of(mod, si.inv_m, energy);
+    // the energy the bond held at atom i goes with it (term 3 of compute bbpd/energy)
+    p.bonds->ebroken[i] += eng * p.atom->vfrac[i];
+    if (EVFLAG) {
+      const double vir[6] = {
+          -BondModel::virial_share(fpl, dx, dx), -BondModel::virial_share(fpl, dy, dy),
+          -BondModel::virial_share(fpl, dz, dz), -BondModel::virial_share(fpl, dx, dy),
+          -BondModel::virial_share(fpl, dx, dz), -BondModel::virial_share(fpl, dy, dz)};
+      acc[0] += eng;
+      if (p.eflag_atom) p.eatom[i] += eng;
+      for (int c = 0; c < 6; c++) {
+        acc[1 + c] += vir[c];
+        if (p.vflag_atom) p.vatom[i][c] += vir[c];
+      }
+    }
+    nlost++;
+    return true;
+  }
+  // the row has shifted: the history is this step's already
+  void sum(double *fi)
+  {
+    slot_shift();
+    row_sum<false, false, false>(fi);
+  }
+  // the slots of the bonds left, in row order (the broken ones are gone from the row)
+  void slot_shift()
+  {
+    int *s = p.bond_slot + p.bonds->bond_start[i];
+    int n = 0;
+    for (int m = 0; m < p.bonds->npartner[i] && n < p.bonds->nbond[i]; m++)
+      if (p.bonds->partner[i][m] > 0) s[n++] = m;
+  }
+};
+
+template <int EVFLAG, class F> void PairBBPDLPS::eval_history()
+{
+  history->set_width(history_width());
+  const bool replay = begin_state();
+  find_bond_slots();
+  const bool canonical = bonds->raw_positions();
+  const BreakingRule rule = breaking_rule();
+  eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
+    return HistoryRow<EVFLAG, F>(*this, i, acc, cache, replay, canonical, rule);
+  });
+  end_state();
+}
+
+template void PairBBPDLPS::eval_history<0, BBPD::VES::Family>();
+template void PairBBPDLPS::eval_history<1, BBPD::VES::Family>();
+template void PairBBPDLPS::eval_history<0, BBPD::EPS::Family>();
+template void PairBBPDLPS::eval_history<1, BBPD::EPS::Family>();

@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* bbpd_ves.h and bbpd_eps.h: the families with history of peri/ves and peri/eps on plain
+   numbers, against identities derived by hand: the back extension of VES is the exact
+   integral of its dashpot (relaxation at a held extension, the closed form under a ramp), and
+   EPS returns a plastic row onto its yield surface and keeps or forgets the plastic extension
+   as peri/eps does. */
+
+#include "bbpd_eps.h"
+#include "bbpd_lps.h"
+#include "bbpd_ves.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace VES = BBPD::VES;
+namespace EPS = BBPD::EPS;
+
+namespace {
+
+constexpr double G = 14.9e9;
+constexpr double DT = 1.0e-7;
+constexpr double TAU = 20 * DT;
+constexpr double WV = 3.0e-7, INV_SUM = 2.0e10;    // a bond's w V and 1/m_i + 1/m_j
+
+// the back extension reached after n steps of the extension ed(step), from a zero history
+template <class Ed> double back_extension_after(const VES::Coeffs &c, int n, Ed ed)
+{
+  double h[2] = {0.0, 0.0};
+  for (int s = 1; s <= n; s++) h[1] = VES::back_extension(c, ed(s), h[0], h[1]), h[0] = ed(s);
+  return h[1];
+}
+
+}    // namespace
+
+TEST(Ves, HeldExtensionRelaxesByDecayPerStep)
+{
+  const VES::Coeffs c = VES::coeffs(G, 0.5, TAU, DT);
+  EXPECT_DOUBLE_EQ(c.decay, std::exp(-DT / TAU));
+  const double e = 1.0e-6;
+  // ed jumps to e at step 1 and is held: e - edb shrinks by decay every further step
+  for (int n = 2; n < 60; n++) {
+    const double a = e - back_extension_after(c, n, [&](int) {
+                       return e;
+                     });
+    const double b = e - back_extension_after(c, n + 1, [&](int) {
+                       return e;
+                     });
+    EXPECT_NEAR(b / a, c.decay, 1e-12);
+  }
+}
+
+TEST(Ves, RampIsTheDashpotsClosedForm)
+{
+  // ed = r t: the dashpot edb' = (ed - edb) / tau gives edb = r (t - tau (1 - exp(-t / tau)))
+  const VES::Coeffs c = VES::coeffs(G, 0.5, TAU, DT);
+  const double rate = 10.0;    // 1/s of extension
+  for (int n : {1, 5, 20, 100, 400}) {
+    const double t = n * DT;
+    const double exact = rate * (t - TAU * (1.0 - std::exp(-t / TAU)));
+    EXPECT_NEAR(back_extension_after(c, n,
+                                     [&](int s) {
+                                       return rate * s * DT;
+                                     }),
+                exact, 1e-9 * rate * t);
+  }
+}
+
+TEST(Ves, ForceStateAndEnergyOfTheTwoSprings)
+{
+  const double ed = 2.0e-6;
+  for (double lambda : {0.0, 0.3, 1.0}) {
+    const VES::Family f{VES::coeffs(G, lambda, TAU, DT)};
+    double h[2] = {1.0e-6, 0.5e-6}, energy = 0.0;
+    const double td = f.deviatoric<true>({}, WV, 0.0, 0.0, ed, INV_SUM, h, energy);
+    const double edb = VES::back_extension(f.c, ed, 1.0e-6, 0.5e-6);
+    EXPECT_EQ(h[0], ed);    // the history advanced
+    EXPECT_EQ(h[1], edb);
+    const double k = 15.0 * G * WV * INV_SUM;
+    EXPECT_NEAR(td, k * (ed - lambda * edb), 1e-12 * k * ed);
+    EXPECT_NEAR(energy, WV * ((1 - lambda) * ed * ed + lambda * (ed - edb) * (ed - edb)),
+                1e-12 * WV * ed * ed);
+    // a second evaluation of the step: the same force, the history untouched
+    double again = 0.0;
+    EXPECT_EQ(f.deviatoric<false>({}, WV, 0.0, 0.0, ed, INV_SUM, h, again), td);
+    EXPECT_EQ(h[0], ed);
+    EXPECT_EQ(h[1], edb);
+  }
+}
+
+TEST(Eps, PointwiseYieldValue)
+{
+  const double y = 1.0e9, delta = 1.5001e-3;
+  EXPECT_NEAR(EPS::pointwise_yield_value(y, delta),
+              25.0 * y * y / (8.0 * M_PI * std::pow(delta, 5)),
+              1e-12 * 25.0 * y * y / std::pow(delta, 5));
+}
+
+TEST(Eps, PlasticRowReturnsToTheYieldSurface)
+{
+  // a row of bonds with different deviatoric extensions
+  const std::vector<double> ed = {3e-6, -1e-6, 2e-6, 0.5e-6, -2.5e-6};
+  const double xi0 = 1.0e-3, omega = BBPD::LPS::influence(xi0), m = 4.0e-13;
+  for (double yield : {1.0e6, 1.0e12}) {
+    const EPS::Family f{{G, EPS::pointwise_yield_value(yield, 1.5e-3), m}};
+    std::vector<double> h(2 * ed.size(), 0.0);
+    for (std::size_t k = 0; k < ed.size(); k++) h[2 * k + 1] = 1.0e-7 * k;    // last step's edp
+    double sum = 0.0;
+    for (std::size_t k = 0; k < ed.size(); k++)
+      sum += f.norm_term<true>(WV, omega, ed[k], INV_SUM, &h[2 * k]);
+    for (std::size_t k = 0; k < ed.size(); k++) EXPECT_EQ(h[2 * k], 1.0e-7 * k);    // rolled
+    const double norm = std::sqrt(sum);
+    const EPS::Family::Plan p = f.plan(norm);
+    EXPECT_EQ(p.plastic, 0.5 * norm * norm > f.c.psi0);
+    EXPECT_EQ(p.plastic, yield < 1.0e9);    // both branches are exercised
+    // the returned state: norm sqrt(2 psi0) when plastic, unchanged when elastic
+    double returned = 0.0;
+    for (std::size_t k = 0; k < ed.size(); k++) {
+      double energy = 0.0;
+      const double td = f.deviatoric<true>(p, WV, omega, xi0, ed[k], INV_SUM, &h[2 * k], energy);
+      const double d = ed[k] - 1.0e-7 * k;
+      EXPECT_NEAR(energy, WV * d * d, 1e-12 * WV * 1e-11);
+      returned += (td / WV * omega) * (td / WV) * WV;    // (td without V)^2 V
+      const double trial = 15.0 * G * INV_SUM * d * omega;
+      if (p.plastic)
+        EXPECT_NEAR(h[2 * k + 1], 1.0e-7 * k + p.scale * trial * p.delta_lambda * 0.5 * xi0,
+                    1e-12 * std::fabs(h[2 * k + 1]) + 1e-30);
+      else
+        EXPECT_EQ(h[2 * k + 1], 0.0);    // peri/eps: an elastic step forgets edp
+    }
+    if (p.plastic) {
+      EXPECT_NEAR(std::sqrt(returned), std::sqrt(2.0 * f.c.psi0),
+                  1e-12 * std::sqrt(2.0 * f.c.psi0));
+      EXPECT_NEAR(p.delta_lambda, (norm / std::sqrt(2.0 * f.c.psi0) - 1.0) * m / (15.0 * G),
+                  1e-12 * p.delta_lambda);
+    } else {
+      EXPECT_NEAR(returned, sum, 1e-12 * sum);
+    }
+  }
+}
