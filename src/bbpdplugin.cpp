@@ -17,6 +17,7 @@
 #include "fix_bbpd_alpha.h"
 #include "fix_bbpd_bonds.h"
 #include "fix_bbpd_history.h"
+#include "fix_bbpd_hold.h"
 #include "fix_bbpd_lps.h"
 #include "fix_bbpd_notch.h"
 #include "fix_bbpd_watchdog.h"
@@ -89,6 +90,10 @@ Fix *alpha_creator(LAMMPS *lmp, int narg, char **arg)
 Fix *watchdog_creator(LAMMPS *lmp, int narg, char **arg)
 {
   return new FixBBPDWatchdog(lmp, narg, arg);
+}
+Fix *hold_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixBBPDHold(lmp, narg, arg);
 }
 Fix *notch_creator(LAMMPS *lmp, int narg, char **arg)
 {
@@ -224,6 +229,10 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "bbpd/watchdog";
   plugin.info = "BBPD run-explosion watchdog (internal, created by the pair style) v" BBPD_VERSION;
   plugin.creator.v2 = (lammpsplugin_factory2 *) &watchdog_creator;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/hold";
+  plugin.info = "BBPD log of the bonds a minimize holds (internal, created by the pair style) v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &hold_creator;
   (*register_plugin)(&plugin, lmp);
   plugin.name = "bbpd/work";
   plugin.info = "BBPD work of external loads (internal, created by compute bbpd/energy) v" BBPD_VERSION;

@@ -46,6 +46,7 @@ static constexpr double DT_SAFETY_DEFAULT = 0.8;    // fraction of the stable bo
 static constexpr const char *BONDS_FIX_ID = "BBPD_BONDS";
 static constexpr double MBYTES = 1024.0 * 1024.0;    // as LAMMPS counts its "Mbytes"
 static constexpr const char *WATCHDOG_FIX_ID = "BBPD_WATCHDOG";
+static constexpr const char *HOLD_FIX_ID = "BBPD_HOLD";
 // short-range contact as in LAMMPS peri/pmb: distance 0.9 x grid spacing (Parks et al., Comput.
 // Phys. Commun. 179 (2008) 777) and stiffness 15 c0 (Silling, EMU theory manual, 2005, p. 18)
 static constexpr double CONTACT_FACTOR_DEFAULT = 0.9;
@@ -82,6 +83,7 @@ PairBBPD::~PairBBPD()
 {
   if (copymode) return;
   delete[] pvector;
+  release_fix(hold_report, HOLD_FIX_ID);
   release_fix(watchdog, WATCHDOG_FIX_ID);
   release_fix(bonds, BONDS_FIX_ID);
   if (allocated) {
@@ -366,6 +368,7 @@ void PairBBPD::init_style()
 
   bonds = static_cast<FixBBPDBonds *>(own_fix(BONDS_FIX_ID, "bbpd/bonds"));
   watchdog = static_cast<FixBBPDWatchdog *>(own_fix(WATCHDOG_FIX_ID, "bbpd/watchdog"));
+  hold_report = own_fix(HOLD_FIX_ID, "bbpd/hold");
   law.weighting = BBPD::KernelWeighting();    // a style of another family sets its own in init_rules()
   init_rules();
 

@@ -19,6 +19,7 @@
 #ifndef LMP_PAIR_BBPD_H
 #define LMP_PAIR_BBPD_H
 
+#include "bbpd_bond_hold.h"
 #include "bbpd_bond_law.h"
 #include "bbpd_bond_model.h"
 #include "bbpd_bond_storage.h"
@@ -72,6 +73,7 @@ class PairBBPD : public Pair {
   BBPD::BondStorage storage;    // what the bond cache keeps per bond (bond/storage keyword)
   double contact_factor;    // contact distance = contact_factor * spacing
   BBPD::SimdPath simd_request;    // the simd keyword: a path, or AUTO (bbpd_row_paths.h)
+  BBPD::BondHold hold;    // no breaking while minimizing or relaxing (bbpd_bond_hold.h)
 
  protected:
   int spacing_user;    // 1 if the spacing keyword was given
@@ -81,6 +83,7 @@ class PairBBPD : public Pair {
   int **bondless;      // 1 if the type pair forms no bonds (pair_coeff ... bonds no): two bodies
   class FixBBPDBonds *bonds;
   class FixBBPDWatchdog *watchdog;
+  class Fix *hold_report = nullptr;    // fix bbpd/hold: the held bonds of a minimize
   double dt_bound_paper, dt_bound;    // eq. 25 and with the factor 2 (velocity Verlet limit)
 
   int report_due;    // setup() was called: report once the setup's notches are cut
@@ -116,6 +119,9 @@ class PairBBPD : public Pair {
   // the one row driver of the bond forces and breaking over for_each_row: row_of(i, acc, cache)
   // gives the style's view of row i (bond model, breaking rule, state); pair_bbpd_rows.h
   template <int EVFLAG, class RowOf> void eval_rows(RowOf row_of);
+  template <class Row> void count_held(int i, Row row);    // pair_bbpd_hold.h
+  friend class FixBBPDHold;     // reports the held bonds of a minimize (fracture on?)
+  friend class FixBBPDRelax;    // its fictitious density from bond_stiffness()
   [[noreturn]] void nonfinite_error(int i);
   void add_row_force(int i, const double *fi, int &bad);
   void finish_eval(int bad, bool evflag_on, const double *totals);

@@ -12,10 +12,12 @@
 #define LMP_PAIR_BBPD_ROWS_H
 
 #include "pair_bbpd.h"
+#include "pair_bbpd_hold.h"
 
 #include "atom.h"
 #include "comm.h"
 #include "fix_bbpd_bonds.h"
+#include "update.h"
 
 // a row body passed to for_each_row is inlined into the loop, as a loop body written there is
 // (as a call per row, the bbpd/pmb cylinder ran 4 % more instructions under callgrind)
@@ -65,11 +67,18 @@ template <int EVFLAG, class Row> void PairBBPD::for_each_row(Row row)
    is compiled out. */
 template <int EVFLAG, class RowOf> void PairBBPD::eval_rows(RowOf row_of)
 {
+  // minimize and fix bbpd/relax hold the bonds (bbpd_bond_hold.h): none breaks, those past
+  // breaking are counted (pair_bbpd_hold.h)
+  const bool held = hold.holds(update->whichflag);
+  if (held) hold.held_ends = 0;
   for_each_row<EVFLAG>([&](int i, double *fi, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
     auto row = row_of(i, acc, cache);
     if (row.sum_and_check(fi)) {
       // remove the bonds that break (irreversibly, in row order), then sum the row again
-      bonds->remove_bonds_if(i, [&](int k) BBPD_ROW_BODY { return row.breaks(k); });
+      if (held)
+        count_held(i, row);
+      else
+        bonds->remove_bonds_if(i, [&](int k) BBPD_ROW_BODY { return row.breaks(k); });
       row.sum(fi);
     }
     row.finish(fi);
