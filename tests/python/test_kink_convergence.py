@@ -390,3 +390,11 @@ def test_the_committed_sweeps_give_the_limit_the_readme_states():
     assert found["at"]["4d"]["state"] == "none fits"
     assert found["at"]["4d"]["between"] == ("hoop_strain", "hoop_stress")
     assert found["follows"] is None
+
+
+def test_the_sequence_and_disk_tables_carry_the_verdict_fields():
+    rows = [row(10, 10, -62.0, -63.8), row(15, 10, -63.0, -64.0), row(10, 20, -62.5, -64.0),
+            row(15, 20, -64.0, -64.1)]
+    table = kc.sequences_table(rows)
+    assert "| gaussian | 90 | 0 | 2d | 10 | 10, 15 | -62.0, -63.0 | max. hoop strain: +0.6 ± 1.0 | -1.0 | yes | no |" in table
+    assert "| gaussian | 90 | 0 | 2d | 15 | -1.0 |" in kc.disk_table(rows)

@@ -78,6 +78,10 @@ def test_the_committed_runs_give_the_readme_summary():
     assert v["follows"] is None
     assert v["experiment"] == {FIRST: "hoop strain", BAND: "hoop stress"}
     assert round(rec["psi"], 1) == 113.2 and round(rec["psi_band"], 1) == 97.0
+    assert {c: round(a, 1) for c, a in v["pred"][FIRST].items()} == \
+        {"hoop strain": 69.9, "hoop stress": 78.9, "maximum energy release rate": 82.6}
+    assert {c: round(a, 1) for c, a in v["pred"][BAND].items()} == \
+        {"hoop strain": 65.4, "hoop stress": 72.9, "maximum energy release rate": 77.4}
 
 
 def test_the_committed_pulls_give_the_readme_line():

@@ -39,8 +39,8 @@ from bbpd.provenance import cpu
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
-from bbpd.benchmarks.kink_limit import (ALPHA, HORIZONS, KERNEL, NAMES, PSI, limit, mix_of,
-                                        resolution_deg, sequences)
+from bbpd.benchmarks.kink_limit import (ALPHA, HORIZONS, KERNEL, NAMES, PSI, disk_moves, limit,
+                                        mix_of, resolution_deg, sequences)
 
 CSV = kinkbench.FOLDER / "results" / "kink_convergence.csv"
 DELTA = 5.0e-3
@@ -122,12 +122,44 @@ def table(rows, command=None):
     if rows and all(r.get("cpu") for r in rows):
         out += "\n\n" + loop_times(rows)
     made = [command] if isinstance(command, str) else list(command or [])
-    intro = " ".join(f"{'Made by' if k == 0 else 'Rows added by'} `{c}`." for k, c in enumerate(made))
+    intro = (f"Made by `{made[0]}`" + (f"; rows added by {len(made) - 1} more commands, each named "
+                                       f"in the header of `{CSV.relative_to(kinkbench.ROOT)}`"
+                                       if len(made) > 1 else "") + ".") if made else ""
     return intro + "\n\n" + out if made else out
 
 
 RESOLUTION_NOTE = ("Angles ± the grid's resolution: half a spacing across the path at 2 or 4 "
                    "horizons from the tip, atan(1 / (2 n m)) for n horizons.")
+
+
+def _signed(v):
+    """v to 0.1 with its sign, +0.0 for a zero however it rounds"""
+    return "+0.0" if float(format(v, ".1f")) == 0.0 else format(v, "+.1f")
+
+
+def sequences_table(rows):
+    """kink_limit.sequences as a table: per kernel, mode mix, distance and disk the angles over
+    m, the criterion the finest lies nearest (offset ± its error bar), the last step in m and
+    whether it settled (within SETTLED_DEG) or moved by more than the two runs' error bars"""
+    lines = ["| kernel | psi | alpha | at | R/delta | m | angle (deg) | nearest at the finest m: offset "
+             "± bar (deg) | last step (deg) | settled (<= 1 deg) | step beyond both bars |",
+             "|" + "---|" * 11]
+    for s in sequences(rows):
+        near = NAMES.get(s["nearest"], "all three agree")
+        lines.append(f"| {s['kernel']} | {s['psi']:g} | {s['alpha']:g} | {s['dist']} | {s['rd']:g} | "
+                     + ", ".join(f"{m:g}" for m in s["ms"]) + " | "
+                     + ", ".join(_f(a) for a in s["angles"])
+                     + f" | {near}: {_signed(s['offset'])} ± {s['bar']:.1f} | {_signed(s['step'])} | "
+                     f"{'yes' if s['settled'] else 'no'} | {'yes' if s['beyond_bars'] else 'no'} |")
+    return "\n".join(lines)
+
+
+def disk_table(rows):
+    """kink_limit.disk_moves as a table: the angle's change when the disk doubles at one m"""
+    lines = ["| kernel | psi | alpha | at | m | R/delta 10 -> 20 (deg) |", "|" + "---|" * 6]
+    lines += [f"| {d['kernel']} | {d['psi']:g} | {d['alpha']:g} | {d['dist']} | {d['m']:g} | "
+              f"{_signed(d['move'])} |" for d in disk_moves(rows)]
+    return "\n".join(lines)
 
 
 def loop_times(rows):

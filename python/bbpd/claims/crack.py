@@ -86,3 +86,11 @@ def kink_convergence_table(data):
                                   [ln.split(": ", 1)[1] for ln in csvfile.provenance(kink_convergence.CSV)])
 
 
+
+
+def kink_sequences(data):
+    return kink_convergence.sequences_table(kink_convergence.read_rows())
+
+
+def kink_disk(data):
+    return kink_convergence.disk_table(kink_convergence.read_rows())
