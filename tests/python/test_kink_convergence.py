@@ -398,3 +398,18 @@ def test_the_sequence_and_disk_tables_carry_the_verdict_fields():
     table = kc.sequences_table(rows)
     assert "| gaussian | 90 | 0 | 2d | 10 | 10, 15 | -62.0, -63.0 | max. hoop strain: +0.6 ± 1.0 | -1.0 | yes | no |" in table
     assert "| gaussian | 90 | 0 | 2d | 15 | -1.0 |" in kc.disk_table(rows)
+
+
+def test_the_committed_sweeps_give_the_readme_tables_and_reading():
+    """examples/kink-mixed-mode/README.md, by hand: every finest m has run the whole sweep (no
+    part followed alone); every planned run is in; at m = 15 over the eight mixes all three
+    kernels lie nearest hoop strain, their angles apart by more than the error bars"""
+    rows = kc.read_rows()
+    assert kl.partial_sweeps(rows) == []
+    assert not any(c["left"] for c in kl.coverage(rows).values())
+    k2, k4 = kl.kernel_spread(rows)
+    assert len(k2["mixes"]) == 8 and k2["common"] == ["hoop_strain"] and k4["common"] == ["hoop_strain"]
+    assert not k2["within_bars"] and not k4["within_bars"]
+    assert "| gaussian | 20 | 2d | 5, 10, 15, 20 |" in kc.limits_table(rows)
+    assert kc.sweeps_table(rows).count("\n") == 1 + len(kl.sweep_stats(rows))
+    assert "| triangular | 15 | 8 of 8 | - |" in kc.coverage_table(rows)

@@ -94,3 +94,19 @@ def kink_sequences(data):
 
 def kink_disk(data):
     return kink_convergence.disk_table(kink_convergence.read_rows())
+
+
+def kink_sweeps(data):
+    return kink_convergence.sweeps_table(kink_convergence.read_rows())
+
+
+def kink_limits(data):
+    return kink_convergence.limits_table(kink_convergence.read_rows())
+
+
+def kink_kernels(data):
+    return kink_convergence.kernels_table(kink_convergence.read_rows())
+
+
+def kink_coverage(data):
+    return kink_convergence.coverage_table(kink_convergence.read_rows())
