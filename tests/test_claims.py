@@ -100,3 +100,30 @@ def test_import_takes_report_results(tmp_path, monkeypatch):
     written = import_report(tmp_path / "report")
     assert written == [refs["mode2"]]
     assert refs["mode2"].read_text() == REFERENCES["mode2"].read_text()
+
+
+def test_the_verification_page_states_what_the_data_give():
+    """doc/verification.md's list under the benchmark table, by hand: checked against the CSVs"""
+    from bbpd.claims import kw, mode1, mode2
+    data = Data()
+    disp = {r["kernel"]: r["phase_kdx2.5"] for r in data.rows("dispersion")}
+    assert max(disp, key=disp.get) == "gaussian" and min(disp, key=disp.get) == "constant"
+    _, t3 = mode1.paper()
+    at = mode1._at(data, mode1.TABLE3_DX)
+    assert sorted(at, key=lambda k: at[k]["consistent_l2"]) == sorted(at, key=lambda k: t3[k][1])
+    assert max(abs(at[k][c] - t3[k][i]) for k in ("constant", "triangular")
+               for i, c in ((0, "consistent_peak"), (1, "consistent_l2"))) < 2.1
+    t2, _ = mode1.paper()
+    g = [r["consistent_l2"] for r in mode1._gauss(data)]
+    assert g == sorted(g, reverse=True)
+    assert all(r["consistent_l2"] < t2[round(r["dx_m"], 6)][1] for r in mode1._gauss(data))
+    assert max(r["j_peak"] for r in data.rows(mode1.NAME)) < 1.65
+    assert mode2.excess(data) == "12–29 %"
+    ratio = {(r["kernel"], r["dx_m"]): r["ratio_end"] for r in data.rows(mode2.NAME)}
+    grids = mode2._grids(data)
+    assert all(ratio[k, grids[-1]] >= ratio[k, grids[0]] for k in ("constant", "triangular", "gaussian"))
+    paper, exp = kw._consts()
+    flat = [exp - r["angle_deg"] for r in kw._at(data, 1.0e-3).values()]
+    assert 8.5 <= min(flat) and max(flat) < 10.5
+    band = {k: r["damage_band_us"] for k, r in kw._at(data, 1.0e-3).items()}
+    assert sorted(band, key=band.get) == sorted(paper, key=paper.get)
