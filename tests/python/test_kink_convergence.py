@@ -109,9 +109,9 @@ def test_each_run_names_the_cpu_that_timed_it():
     assert {r["cpu"] for r in rows} == {"Intel(R) Xeon(R) Processor, AVX-512"}
     rows.append(dict(row(10, 20, -30.0, -31.0), psi=45.0, alpha=0.0, cpu="AMD EPYC (family 25 model 1), AVX2"))
     text = kc.loop_times(rows)
-    assert text.startswith("Loop times: Intel(R) Xeon(R) Processor, AVX-512 (every run but these); ")
-    assert "AMD EPYC (family 25 model 1), AVX2 (gaussian psi = 45, alpha = 0, m = 10, R/delta = 20)" in text
-    assert kc.loop_times(rows[:2]) == "Loop times: Intel(R) Xeon(R) Processor, AVX-512."
+    assert "| Intel(R) Xeon(R) Processor, AVX-512 | every other run |" in text
+    assert "| AMD EPYC (family 25 model 1), AVX2 | gaussian psi = 45, alpha = 0, m = 10, R/delta = 20 |" in text
+    assert "| Intel(R) Xeon(R) Processor, AVX-512 | all |" in kc.loop_times(rows[:2])
     # a CSV without the line: unknown, never another machine's name
     assert kc.with_cpu(old, ["made by: x"])[0]["cpu"] == "unknown"
 
