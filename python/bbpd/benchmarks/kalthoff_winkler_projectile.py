@@ -393,7 +393,7 @@ def report_text(rows):
 
 
 def section(specs, results, figdir, notes):
-    """The projectile's section of report/REPORT.md (bbpd.report.write_report)."""
+    """The projectile's section of report/REPORT.md (bbpd.report.document.write_report)."""
     done, bad = jobmod.finished(specs, results)
     rows = [results[s.job.label] for s in done]
     text = report_text(rows)

@@ -456,7 +456,7 @@ def collect(specs, results):
 
 
 def section(specs, results, figdir, notes):
-    """The study's section of report/REPORT.md (bbpd.report.write_report)."""
+    """The study's section of report/REPORT.md (bbpd.report.document.write_report)."""
     title = "Kalthoff-Winkler loading study (what reproduces 70 deg and 20-22 us)"
     if not specs:
         return {"title": title,

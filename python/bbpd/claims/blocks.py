@@ -35,7 +35,7 @@ BLOCKS = {
             "strip-closure": crack.strip_closure_table},
     BRANCHING: {"branching": crack.branching_table, "branching-cost": crack.branching_cost},
     PERFORMANCE: {"zen3-avx2": perf.zen3_avx2, "lps-cylinder": perf.lps_cylinder,
-                  "row-driver": perf.row_driver, "zen5-simd": perf.zen5_simd,
+                  "zen5-simd": perf.zen5_simd,
                   "zen5-floor": perf.zen5_floor, "spr-simd": perf.spr_simd,
                   "spr-floor": perf.spr_floor},
 }
