@@ -126,4 +126,6 @@ def test_the_committed_runs_give_the_readme_findings():
     assert tall and tall[0]["state"] == "branched"
     for k in ("gaussian", "triangular"):
         assert strip.height_change_against_m(rows, k)["shrinks"]
-    assert abs(strip.energy_closure(rows)["worst"]["closure_pct"]) < 2.0
+    assert round(abs(strip.energy_closure(rows)["worst"]["closure_pct"]), 1) == 1.7
+    table = strip.law_table(rows)
+    assert "| gaussian | 4 | 1.25 / 1.5 | 0.619, 0.598, 0.571 | -0.0277, no | 80 branched" in table

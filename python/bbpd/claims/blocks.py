@@ -32,7 +32,7 @@ BLOCKS = {
            "kink-sweeps": crack.kink_sweeps, "kink-limits": crack.kink_limits,
            "kink-kernels": crack.kink_kernels, "kink-coverage": crack.kink_coverage},
     STRIP: {"strip-runs": crack.strip_table, "strip-work-precision": crack.strip_work_precision,
-            "strip-closure": crack.strip_closure_table},
+            "strip-closure": crack.strip_closure_table, "strip-law": crack.strip_law},
     BRANCHING: {"branching": crack.branching_table, "branching-cost": crack.branching_cost},
     PERFORMANCE: {"zen3-avx2": perf.zen3_avx2, "lps-cylinder": perf.lps_cylinder,
                   "zen5-simd": perf.zen5_simd,

@@ -110,3 +110,7 @@ def kink_kernels(data):
 
 def kink_coverage(data):
     return kink_convergence.coverage_table(kink_convergence.read_rows())
+
+
+def strip_law(data):
+    return strip.law_table(strip.read_rows(STRIP_CSV))
