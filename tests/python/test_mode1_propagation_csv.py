@@ -89,6 +89,10 @@ def test_the_committed_runs_give_the_readme_findings():
     assert v["constant"]["nearest"] == v["triangular"]["nearest"] == "toughness"
     assert round(v["gaussian"]["gap"], 2) == 0.20
     assert mp.band_kept(rows)
+    for k, lo, hi in (("constant", -14.5, -14.0), ("triangular", -8.6, -6.4), ("gaussian", -4.7, -2.6)):
+        assert all(lo <= r["ti_err_pct"] <= hi for r in rows if r["kernel"] == k)
+    late = [max(r["ti_tip_err_pct"] for r in rows if r["dx"] == dx) for dx in sorted({r["dx"] for r in rows}, reverse=True)]
+    assert min(late) > 0.0 and late == sorted(late, reverse=True)
 
 
 def test_loop_times_name_the_cpu_of_each_run():
