@@ -39,6 +39,7 @@ from bbpd.provenance import cpu
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
+from bbpd import plots
 from bbpd.benchmarks.kink_limit import (ALPHA, HORIZONS, KERNEL, NAMES, PSI, coverage, disk_moves,
                                         kernel_spread, limit, limits, mix_of, resolution_deg,
                                         sequences, sweep_stats)
@@ -253,12 +254,8 @@ def figure(rows, path=FIGURE):
     """The angle at 2 and 4 horizons against m with its error bar, one panel per distance and
     mode mix (pure Mode II first), each (kernel, crack direction, R/delta) a line, and the three
     criteria of that mix as horizontal lines."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     mixes = sorted({mix_of(r)[0] for r in rows if mix_of(r)[0] > 0.0}, reverse=True)
-    fig, axes = plt.subplots(len(mixes), 2, figsize=(10, 3.6 * len(mixes)), squeeze=False)
-    try:
+    with plots.figure(path, len(mixes), 2, figsize=(10, 3.6 * len(mixes)), squeeze=False, dpi=120) as (fig, axes):
         for ax_row, psi in zip(axes, mixes):
             on = [r for r in rows if mix_of(r)[0] == psi]
             for ax, dist in zip(ax_row, HORIZONS):
@@ -282,10 +279,6 @@ def figure(rows, path=FIGURE):
                 ax.grid(alpha=0.3)
             ax_row[0].set_ylabel("kink angle (deg)")
             ax_row[1].legend(fontsize=6.5, loc="best")
-        fig.tight_layout()
-        fig.savefig(path, dpi=120)
-    finally:
-        plt.close(fig)
 
 
 def summary(rows):
