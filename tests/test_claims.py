@@ -127,3 +127,31 @@ def test_the_verification_page_states_what_the_data_give():
     assert 8.5 <= min(flat) and max(flat) < 10.5
     band = {k: r["damage_band_us"] for k, r in kw._at(data, 1.0e-3).items()}
     assert sorted(band, key=band.get) == sorted(paper, key=paper.get)
+
+
+def test_the_mode2_readme_states_what_the_data_give():
+    """examples/mode2-central-crack/README.md, by hand: the extrapolation's excess per grid and
+    its kernel rankings; J's peak errors, its rankings and its ratio at the window end per
+    kernel; the tips' antisymmetry"""
+    rows = Data().rows("mode2")
+    at = {dx: {r["kernel"]: r for r in rows if r["dx_m"] == dx} for dx in (1e-3, 5e-4, 2.5e-4)}
+
+    def rng(dx, col, scale=1.0, off=0.0):
+        v = [scale * (r[col] - off) for r in at[dx].values()]
+        return round(min(v), 1), round(max(v), 1)
+
+    def order(dx, col):
+        return [k for k, _ in sorted(at[dx].items(), key=lambda kv: kv[1][col])]
+    assert [rng(dx, "ratio_end", 100.0, 1.0) for dx in at] == [(11.9, 20.5), (16.8, 28.9), (20.1, 25.6)]
+    assert order(1e-3, "l2") == ["gaussian", "triangular", "constant"]
+    assert order(5e-4, "l2") == ["triangular", "constant", "gaussian"]
+    assert order(2.5e-4, "l2") == ["constant", "triangular", "gaussian"]
+    assert order(1e-3, "peak") == ["triangular", "constant", "gaussian"]
+    assert order(2.5e-4, "peak") == ["constant", "gaussian", "triangular"]
+    assert [rng(dx, "j_peak") for dx in at] == [(2.2, 7.5), (0.5, 4.7), (0.4, 2.6)]
+    assert order(1e-3, "j_peak") == ["gaussian", "triangular", "constant"]
+    assert order(5e-4, "j_peak") == ["triangular", "gaussian", "constant"]
+    assert order(2.5e-4, "j_peak") == ["gaussian", "triangular", "constant"]
+    assert [round(at[dx]["constant"]["j_ratio_end"], 3) for dx in at] == [0.925, 0.953, 0.974]
+    assert [round(at[dx]["gaussian"]["j_ratio_end"], 3) for dx in at] == [0.978, 1.018, 1.004]
+    assert max(r["left_right"] for r in rows) < 2.5e-10 and max(r["ki_over_kii"] for r in rows) < 1.4e-4
