@@ -155,3 +155,43 @@ def test_the_mode2_readme_states_what_the_data_give():
     assert [round(at[dx]["constant"]["j_ratio_end"], 3) for dx in at] == [0.925, 0.953, 0.974]
     assert [round(at[dx]["gaussian"]["j_ratio_end"], 3) for dx in at] == [0.978, 1.018, 1.004]
     assert max(r["left_right"] for r in rows) < 2.5e-10 and max(r["ki_over_kii"] for r in rows) < 1.4e-4
+
+
+def test_the_mode1_readme_states_what_the_data_give():
+    """examples/mode1-semi-infinite/README.md, by hand: rankings, the paper's numbers, the
+    J-integral's errors, the symmetry checks and the tips table's reading"""
+    import re
+    from bbpd.claims import mode1
+    data = Data()
+    rows = data.rows("mode1")
+    _, t3 = mode1.paper()
+    at = mode1._at(data, mode1.TABLE3_DX)
+
+    def order(col, sel=at):
+        return sorted(sel, key=lambda k: sel[k][col])
+    assert order("consistent_l2") == order("consistent_peak") == order("paper_peak") == \
+        ["gaussian", "triangular", "constant"]
+    assert order("paper_l2") == ["triangular", "gaussian", "constant"]
+    diffs = [abs(at[k][c] - t3[k][i]) for k in ("constant", "triangular")
+             for i, c in ((0, "consistent_peak"), (1, "consistent_l2"))]
+    assert (round(min(diffs), 1), round(max(diffs), 1)) == (0.2, 2.1)
+    g = mode1._gauss(data)
+    assert [round(r["consistent_l2"], 2) for r in g] == [4.39, 2.33, 1.57]
+    assert [round(r["consistent_peak"], 2) for r in g] == [1.19, 1.70, 0.83]
+    assert round(100 * max(r["kii_over_ki"] for r in rows), 2) == 0.66 and round(100 * max(r["kii_j_over_k_j"] for r in rows), 2) == 0.72
+    assert round(max(r["j_peak"] for r in rows), 1) == 1.6
+    assert round(max(r["j_peak"] for r in rows if r["kernel"] == "gaussian"), 1) == 0.3
+    assert (round(min(r["j_l2"] for r in rows), 1), round(max(r["j_l2"] for r in rows), 1)) == (0.1, 1.6)
+    for dx, want in ((0.1, ["gaussian", "constant", "triangular"]), (0.05, ["gaussian", "triangular", "constant"]),
+                     (0.025, ["gaussian", "triangular", "constant"])):
+        assert order("j_peak", mode1._at(data, dx)) == want
+    low = [100 * (1 - r["kmax_ratio_j"]) for r in rows if r["kernel"] == "constant"]
+    assert (round(min(low), 1), round(max(low), 1)) == (0.5, 1.6)
+    tips = data.rows("mode1_tips")
+    end = [100 * (r["kmax_ratio"] - 1) for r in tips if r["tipshift_dx"] == 0.0]
+    assert (round(min(end)), round(max(end))) == (14, 56)
+    far = [r for r in tips if r["tipshift_dx"] == 0.5 and r["r1_dx"] >= 2]
+    assert (round(min(r["consistent_peak"] for r in far), 2), round(max(r["consistent_peak"] for r in far), 2)) == (0.02, 0.13)
+    # the tolerances the wrong-micromodulus paragraph quotes are the regression test's
+    text = (ROOT / "tests" / "regression" / "test_mode1.py").read_text()
+    assert re.search(r"^PEAK_TOL = 2.2\b", text, re.M) and re.search(r"^L2_TOL = 2.8\b", text, re.M)
