@@ -195,3 +195,35 @@ def test_the_mode1_readme_states_what_the_data_give():
     # the tolerances the wrong-micromodulus paragraph quotes are the regression test's
     text = (ROOT / "tests" / "regression" / "test_mode1.py").read_text()
     assert re.search(r"^PEAK_TOL = 2.2\b", text, re.M) and re.search(r"^L2_TOL = 2.8\b", text, re.M)
+
+
+def test_the_kalthoff_winkler_readme_states_what_the_data_give():
+    """examples/kalthoff-winkler/README.md, 'Reading the table', by hand: initiation, angle,
+    speed, symmetry and far-edge crack against results/kalthoff_winkler.csv"""
+    from bbpd.claims import kw
+    data = Data()
+    rows = data.rows("kalthoff_winkler")
+    paper, exp = kw._consts()
+    g = {round(r["dx_m"] * 1e3, 2): r for r in rows if r["kernel"] == "gaussian"}
+    assert [round(g[dx]["first_bond_us"], 1) for dx in (2.0, 1.0, 0.5)] == [12.0, 12.4, 12.3]
+    assert [round(g[dx]["damage_band_us"], 1) for dx in (2.0, 1.0, 0.5)] == [23.0, 20.0, 17.4]
+    assert [round(g[dx]["angle_deg"], 1) for dx in (2.0, 1.0, 0.5)] == [58.8, 61.1, 62.3]
+    main = [r for r in rows if r["dx_m"] >= 1e-3]
+    assert (round(min(r["first_bond_us"] for r in main), 1), round(max(r["first_bond_us"] for r in main), 1)) == (10.8, 12.4)
+    at = kw._at(data, 1.0e-3)
+    late = [paper[k] - r["first_bond_us"] for k, r in at.items()]
+    assert (round(min(late), 1), round(max(late), 1)) == (8.7, 9.3)
+    early = [paper[k] - r["damage_band_us"] for k, r in at.items()]
+    assert (round(min(early), 1), round(max(early), 1)) == (1.7, 1.9)
+    ang = {k: r["angle_deg"] for k, r in at.items()}
+    assert round(max(ang.values()) - min(ang.values()), 1) == 1.2
+    two = kw._at(data, 2.0e-3)
+    moved = [ang[k] - two[k]["angle_deg"] for k in ang]
+    assert (round(min(moved), 1), round(max(moved), 1)) == (2.3, 3.8)
+    speed = [r["speed_m_s"] / 1e3 for r in main]
+    assert (round(min(speed), 1), round(max(speed), 1)) == (1.6, 1.9)
+    assert max(r["symmetry_tip_mm"] for r in rows) < 1e-9
+    far = {dx: [r["far_edge_crack_us"] for r in rows if round(r["dx_m"] * 1e3, 2) == dx] for dx in (2.0, 1.0, 0.5)}
+    assert (round(min(far[2.0])), round(max(far[2.0]))) == (26, 27)
+    assert (round(min(far[1.0])), round(max(far[1.0]))) == (41, 45)
+    assert far[0.5] == [None]
