@@ -100,3 +100,130 @@ def test_import_takes_report_results(tmp_path, monkeypatch):
     written = import_report(tmp_path / "report")
     assert written == [refs["mode2"]]
     assert refs["mode2"].read_text() == REFERENCES["mode2"].read_text()
+
+
+def test_the_verification_page_states_what_the_data_give():
+    """doc/verification.md's list under the benchmark table, by hand: checked against the CSVs"""
+    from bbpd.claims import kw, mode1, mode2
+    data = Data()
+    disp = {r["kernel"]: r["phase_kdx2.5"] for r in data.rows("dispersion")}
+    assert max(disp, key=disp.get) == "gaussian" and min(disp, key=disp.get) == "constant"
+    _, t3 = mode1.paper()
+    at = mode1._at(data, mode1.TABLE3_DX)
+    assert sorted(at, key=lambda k: at[k]["consistent_l2"]) == sorted(at, key=lambda k: t3[k][1])
+    assert max(abs(at[k][c] - t3[k][i]) for k in ("constant", "triangular")
+               for i, c in ((0, "consistent_peak"), (1, "consistent_l2"))) < 2.1
+    t2, _ = mode1.paper()
+    g = [r["consistent_l2"] for r in mode1._gauss(data)]
+    assert g == sorted(g, reverse=True)
+    assert all(r["consistent_l2"] < t2[round(r["dx_m"], 6)][1] for r in mode1._gauss(data))
+    assert max(r["j_peak"] for r in data.rows(mode1.NAME)) < 1.65
+    assert mode2.excess(data) == "12–29 %"
+    ratio = {(r["kernel"], r["dx_m"]): r["ratio_end"] for r in data.rows(mode2.NAME)}
+    grids = mode2._grids(data)
+    assert all(ratio[k, grids[-1]] >= ratio[k, grids[0]] for k in ("constant", "triangular", "gaussian"))
+    paper, exp = kw._consts()
+    flat = [exp - r["angle_deg"] for r in kw._at(data, 1.0e-3).values()]
+    assert 8.5 <= min(flat) and max(flat) < 10.5
+    band = {k: r["damage_band_us"] for k, r in kw._at(data, 1.0e-3).items()}
+    assert sorted(band, key=band.get) == sorted(paper, key=paper.get)
+
+
+def test_the_mode2_readme_states_what_the_data_give():
+    """examples/mode2-central-crack/README.md, by hand: the extrapolation's excess per grid and
+    its kernel rankings; J's peak errors, its rankings and its ratio at the window end per
+    kernel; the tips' antisymmetry"""
+    rows = Data().rows("mode2")
+    at = {dx: {r["kernel"]: r for r in rows if r["dx_m"] == dx} for dx in (1e-3, 5e-4, 2.5e-4)}
+
+    def rng(dx, col, scale=1.0, off=0.0):
+        v = [scale * (r[col] - off) for r in at[dx].values()]
+        return round(min(v), 1), round(max(v), 1)
+
+    def order(dx, col):
+        return [k for k, _ in sorted(at[dx].items(), key=lambda kv: kv[1][col])]
+    assert [rng(dx, "ratio_end", 100.0, 1.0) for dx in at] == [(11.9, 20.5), (16.8, 28.9), (20.1, 25.6)]
+    assert order(1e-3, "l2") == ["gaussian", "triangular", "constant"]
+    assert order(5e-4, "l2") == ["triangular", "constant", "gaussian"]
+    assert order(2.5e-4, "l2") == ["constant", "triangular", "gaussian"]
+    assert order(1e-3, "peak") == ["triangular", "constant", "gaussian"]
+    assert order(2.5e-4, "peak") == ["constant", "gaussian", "triangular"]
+    assert [rng(dx, "j_peak") for dx in at] == [(2.2, 7.5), (0.5, 4.7), (0.4, 2.6)]
+    assert order(1e-3, "j_peak") == ["gaussian", "triangular", "constant"]
+    assert order(5e-4, "j_peak") == ["triangular", "gaussian", "constant"]
+    assert order(2.5e-4, "j_peak") == ["gaussian", "triangular", "constant"]
+    assert [round(at[dx]["constant"]["j_ratio_end"], 3) for dx in at] == [0.925, 0.953, 0.974]
+    assert [round(at[dx]["gaussian"]["j_ratio_end"], 3) for dx in at] == [0.978, 1.018, 1.004]
+    assert max(r["left_right"] for r in rows) < 2.5e-10 and max(r["ki_over_kii"] for r in rows) < 1.4e-4
+
+
+def test_the_mode1_readme_states_what_the_data_give():
+    """examples/mode1-semi-infinite/README.md, by hand: rankings, the paper's numbers, the
+    J-integral's errors, the symmetry checks and the tips table's reading"""
+    import re
+    from bbpd.claims import mode1
+    data = Data()
+    rows = data.rows("mode1")
+    _, t3 = mode1.paper()
+    at = mode1._at(data, mode1.TABLE3_DX)
+
+    def order(col, sel=at):
+        return sorted(sel, key=lambda k: sel[k][col])
+    assert order("consistent_l2") == order("consistent_peak") == order("paper_peak") == \
+        ["gaussian", "triangular", "constant"]
+    assert order("paper_l2") == ["triangular", "gaussian", "constant"]
+    diffs = [abs(at[k][c] - t3[k][i]) for k in ("constant", "triangular")
+             for i, c in ((0, "consistent_peak"), (1, "consistent_l2"))]
+    assert (round(min(diffs), 1), round(max(diffs), 1)) == (0.2, 2.1)
+    g = mode1._gauss(data)
+    assert [round(r["consistent_l2"], 2) for r in g] == [4.39, 2.33, 1.57]
+    assert [round(r["consistent_peak"], 2) for r in g] == [1.19, 1.70, 0.83]
+    assert round(100 * max(r["kii_over_ki"] for r in rows), 2) == 0.66 and round(100 * max(r["kii_j_over_k_j"] for r in rows), 2) == 0.72
+    assert round(max(r["j_peak"] for r in rows), 1) == 1.6
+    assert round(max(r["j_peak"] for r in rows if r["kernel"] == "gaussian"), 1) == 0.3
+    assert (round(min(r["j_l2"] for r in rows), 1), round(max(r["j_l2"] for r in rows), 1)) == (0.1, 1.6)
+    for dx, want in ((0.1, ["gaussian", "constant", "triangular"]), (0.05, ["gaussian", "triangular", "constant"]),
+                     (0.025, ["gaussian", "triangular", "constant"])):
+        assert order("j_peak", mode1._at(data, dx)) == want
+    low = [100 * (1 - r["kmax_ratio_j"]) for r in rows if r["kernel"] == "constant"]
+    assert (round(min(low), 1), round(max(low), 1)) == (0.5, 1.6)
+    tips = data.rows("mode1_tips")
+    end = [100 * (r["kmax_ratio"] - 1) for r in tips if r["tipshift_dx"] == 0.0]
+    assert (round(min(end)), round(max(end))) == (14, 56)
+    far = [r for r in tips if r["tipshift_dx"] == 0.5 and r["r1_dx"] >= 2]
+    assert (round(min(r["consistent_peak"] for r in far), 2), round(max(r["consistent_peak"] for r in far), 2)) == (0.02, 0.13)
+    # the tolerances the wrong-micromodulus paragraph quotes are the regression test's
+    text = (ROOT / "tests" / "regression" / "test_mode1.py").read_text()
+    assert re.search(r"^PEAK_TOL = 2.2\b", text, re.M) and re.search(r"^L2_TOL = 2.8\b", text, re.M)
+
+
+def test_the_kalthoff_winkler_readme_states_what_the_data_give():
+    """examples/kalthoff-winkler/README.md, 'Reading the table', by hand: initiation, angle,
+    speed, symmetry and far-edge crack against results/kalthoff_winkler.csv"""
+    from bbpd.claims import kw
+    data = Data()
+    rows = data.rows("kalthoff_winkler")
+    paper, exp = kw._consts()
+    g = {round(r["dx_m"] * 1e3, 2): r for r in rows if r["kernel"] == "gaussian"}
+    assert [round(g[dx]["first_bond_us"], 1) for dx in (2.0, 1.0, 0.5)] == [12.0, 12.4, 12.3]
+    assert [round(g[dx]["damage_band_us"], 1) for dx in (2.0, 1.0, 0.5)] == [23.0, 20.0, 17.4]
+    assert [round(g[dx]["angle_deg"], 1) for dx in (2.0, 1.0, 0.5)] == [58.8, 61.1, 62.3]
+    main = [r for r in rows if r["dx_m"] >= 1e-3]
+    assert (round(min(r["first_bond_us"] for r in main), 1), round(max(r["first_bond_us"] for r in main), 1)) == (10.8, 12.4)
+    at = kw._at(data, 1.0e-3)
+    late = [paper[k] - r["first_bond_us"] for k, r in at.items()]
+    assert (round(min(late), 1), round(max(late), 1)) == (8.7, 9.3)
+    early = [paper[k] - r["damage_band_us"] for k, r in at.items()]
+    assert (round(min(early), 1), round(max(early), 1)) == (1.7, 1.9)
+    ang = {k: r["angle_deg"] for k, r in at.items()}
+    assert round(max(ang.values()) - min(ang.values()), 1) == 1.2
+    two = kw._at(data, 2.0e-3)
+    moved = [ang[k] - two[k]["angle_deg"] for k in ang]
+    assert (round(min(moved), 1), round(max(moved), 1)) == (2.3, 3.8)
+    speed = [r["speed_m_s"] / 1e3 for r in main]
+    assert (round(min(speed), 1), round(max(speed), 1)) == (1.6, 1.9)
+    assert max(r["symmetry_tip_mm"] for r in rows) < 1e-9
+    far = {dx: [r["far_edge_crack_us"] for r in rows if round(r["dx_m"] * 1e3, 2) == dx] for dx in (2.0, 1.0, 0.5)}
+    assert (round(min(far[2.0])), round(max(far[2.0]))) == (26, 27)
+    assert (round(min(far[1.0])), round(max(far[1.0]))) == (41, 45)
+    assert far[0.5] == [None]

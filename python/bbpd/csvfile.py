@@ -8,6 +8,8 @@ from pathlib import Path
 
 import numpy as np
 
+from bbpd.markdown import table
+
 
 def _num(v, digits=6):
     """A cell: numbers to `digits` significant digits, None and NaN as empty."""
@@ -99,14 +101,13 @@ def continue_csv(path, command):
 
 
 def loop_times_note(rows, key, case):
-    """'Loop times: ...' under a benchmark's table: which machine (row[key]: CPU, ranks) timed
-    which runs, the most common one for every run but those named by case(row) (appended runs
-    may come from another machine)."""
+    """Which machine (row[key]: CPU, ranks) timed which runs, as a table under a benchmark's
+    table: the most common one for every other run, each other one with the runs case(row)
+    names (appended runs may come from another machine)."""
     by = {}
     for r in rows:
         by.setdefault(r[key], []).append(r)
-    if len(by) == 1:
-        return f"Loop times: {next(iter(by))}."
     main = max(by, key=lambda t: len(by[t]))
-    others = "; ".join(f"{t} ({', '.join(case(r) for r in rs)})" for t, rs in by.items() if t != main)
-    return f"Loop times: {main} (every run but these); {others}."
+    others = [[t, ", ".join(case(r) for r in rs)] for t, rs in by.items() if t != main]
+    return table(["loop times measured on", "runs"],
+                 [[main, "every other run" if others else "all"]] + others)

@@ -1,5 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Plot helpers for the DSIF benchmarks of section 4.2 (PNG, Agg backend)."""
+"""Plot helpers (PNG, Agg backend): a figure saved and closed in one place, and the K(t) plots of
+the DSIF benchmarks of section 4.2."""
+from contextlib import contextmanager
 
 import matplotlib
 
@@ -11,6 +13,19 @@ DPI = 150
 ANALYTIC_STYLE = {"color": "black", "linestyle": "--", "linewidth": 1.5}
 SERIES_LINEWIDTH = 1.2
 WINDOW_STYLE = {"color": "grey", "linestyle": ":", "linewidth": 1.0}
+
+
+@contextmanager
+def figure(path, *args, dpi=DPI, **kwargs):
+    """(fig, axes) of plt.subplots(*args, **kwargs) for the block; on leaving it the figure is
+    laid out tight and saved to path; closed either way"""
+    fig, axes = plt.subplots(*args, **kwargs)
+    try:
+        yield fig, axes
+        fig.tight_layout()
+        fig.savefig(path, dpi=dpi)
+    finally:
+        plt.close(fig)
 
 
 def plot_k_histories(path, series, analytic=None, xlabel="t (s)",

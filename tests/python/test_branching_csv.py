@@ -31,3 +31,23 @@ def test_the_committed_runs_give_the_readme_convergence_in_m():
     assert (round(c["dx_m"], 2), round(c["dt_m"], 2)) == (1.21, 0.42)
     assert (round(c["dx_k"], 2), round(c["dt_k"], 2)) == (1.25, 0.44)
     assert not c["separated"]
+
+
+def test_the_committed_runs_give_the_readme_findings():
+    """README 'Findings', by hand: at 2 MPa every run splits once into two tips; at delta = 1 mm,
+    m = 4 the fork at 20.2-20.7 us, 16.6-17.9 mm, after 0.53-0.56 c_R, branches 47-48 deg apart;
+    the crack atoms exact mirror images in every run that grew; at 4 MPa the fork earlier
+    (8.4-8.8 us) and nearer the notch (6.9-8.4 mm)"""
+    rows = branching.read_rows()
+    by = {r["run"]: r for r in rows}
+    two = [r for r in rows if r["sigma_MPa"] == 2.0]
+    assert all((r["tips_end"], r["splits_end"]) == (2, 1) for r in two)
+    base = [by[f"{k}-s2-m4"] for k in ("constant", "triangular", "gaussian")]
+
+    def rng(col, sel, d=1):
+        return round(min(r[col] for r in sel), d), round(max(r[col] for r in sel), d)
+    assert rng("t_split_us", base) == (20.2, 20.7) and rng("x_split_mm", base) == (16.6, 17.9)
+    assert rng("v_pre_over_cR", base, 2) == (0.53, 0.56) and rng("angle_deg", base, 0) == (47, 48)
+    assert all(r["mirror_damage_frac"] == 0.0 for r in rows if branching.grown(r))
+    mid = [by[f"{k}-s4-m4"] for k in ("constant", "triangular", "gaussian")]
+    assert rng("t_split_us", mid) == (8.4, 8.8) and rng("x_split_mm", mid) == (6.9, 8.4)

@@ -109,9 +109,9 @@ def test_each_run_names_the_cpu_that_timed_it():
     assert {r["cpu"] for r in rows} == {"Intel(R) Xeon(R) Processor, AVX-512"}
     rows.append(dict(row(10, 20, -30.0, -31.0), psi=45.0, alpha=0.0, cpu="AMD EPYC (family 25 model 1), AVX2"))
     text = kc.loop_times(rows)
-    assert text.startswith("Loop times: Intel(R) Xeon(R) Processor, AVX-512 (every run but these); ")
-    assert "AMD EPYC (family 25 model 1), AVX2 (gaussian psi = 45, alpha = 0, m = 10, R/delta = 20)" in text
-    assert kc.loop_times(rows[:2]) == "Loop times: Intel(R) Xeon(R) Processor, AVX-512."
+    assert "| Intel(R) Xeon(R) Processor, AVX-512 | every other run |" in text
+    assert "| AMD EPYC (family 25 model 1), AVX2 | gaussian psi = 45, alpha = 0, m = 10, R/delta = 20 |" in text
+    assert "| Intel(R) Xeon(R) Processor, AVX-512 | all |" in kc.loop_times(rows[:2])
     # a CSV without the line: unknown, never another machine's name
     assert kc.with_cpu(old, ["made by: x"])[0]["cpu"] == "unknown"
 
@@ -390,3 +390,26 @@ def test_the_committed_sweeps_give_the_limit_the_readme_states():
     assert found["at"]["4d"]["state"] == "none fits"
     assert found["at"]["4d"]["between"] == ("hoop_strain", "hoop_stress")
     assert found["follows"] is None
+
+
+def test_the_sequence_and_disk_tables_carry_the_verdict_fields():
+    rows = [row(10, 10, -62.0, -63.8), row(15, 10, -63.0, -64.0), row(10, 20, -62.5, -64.0),
+            row(15, 20, -64.0, -64.1)]
+    table = kc.sequences_table(rows)
+    assert "| gaussian | 90 | 0 | 2d | 10 | 10, 15 | -62.0, -63.0 | max. hoop strain: +0.6 ± 1.0 | -1.0 | yes | no |" in table
+    assert "| gaussian | 90 | 0 | 2d | 15 | -1.0 |" in kc.disk_table(rows)
+
+
+def test_the_committed_sweeps_give_the_readme_tables_and_reading():
+    """examples/kink-mixed-mode/README.md, by hand: every finest m has run the whole sweep (no
+    part followed alone); every planned run is in; at m = 15 over the eight mixes all three
+    kernels lie nearest hoop strain, their angles apart by more than the error bars"""
+    rows = kc.read_rows()
+    assert kl.partial_sweeps(rows) == []
+    assert not any(c["left"] for c in kl.coverage(rows).values())
+    k2, k4 = kl.kernel_spread(rows)
+    assert len(k2["mixes"]) == 8 and k2["common"] == ["hoop_strain"] and k4["common"] == ["hoop_strain"]
+    assert not k2["within_bars"] and not k4["within_bars"]
+    assert "| gaussian | 20 | 2d | 5, 10, 15, 20 |" in kc.limits_table(rows)
+    assert kc.sweeps_table(rows).count("\n") == 1 + len(kl.sweep_stats(rows))
+    assert "| triangular | 15 | 8 of 8 | - |" in kc.coverage_table(rows)

@@ -78,6 +78,10 @@ def test_the_committed_runs_give_the_readme_summary():
     assert v["follows"] is None
     assert v["experiment"] == {FIRST: "hoop strain", BAND: "hoop stress"}
     assert round(rec["psi"], 1) == 113.2 and round(rec["psi_band"], 1) == 97.0
+    assert {c: round(a, 1) for c, a in v["pred"][FIRST].items()} == \
+        {"hoop strain": 69.9, "hoop stress": 78.9, "maximum energy release rate": 82.6}
+    assert {c: round(a, 1) for c, a in v["pred"][BAND].items()} == \
+        {"hoop strain": 65.4, "hoop stress": 72.9, "maximum energy release rate": 77.4}
 
 
 def test_the_committed_pulls_give_the_readme_line():
@@ -90,3 +94,17 @@ def test_the_committed_pulls_give_the_readme_line():
     assert key == ("prescribed", "constant", 2.0, "initial") and round(big["pull"], 1) == 9.7
     sd = [q["sd"] for q in p.values() if q["sd"] is not None]
     assert (round(min(sd), 1), round(max(sd), 1)) == (1.0, 8.9)
+
+
+def test_the_kink_readme_reading_and_k0_check_follow_their_files():
+    """examples/kink-mixed-mode/README.md, by hand: the Kalthoff-Winkler tip sees K_I -51.4
+    MPa m^1/2 before the first broken bond, psi 113.2 / 97.0 deg at the two instants (both beyond
+    pure Mode II), the run's angle 58.8 deg at 2 mm; the K0 check: first bond at 0.49 K_c, during
+    the slow ramp (above K0 = 0.3), angles -59.6 / -62.8 deg"""
+    from bbpd.benchmarks import kink
+    rec = json.loads(kink_kalthoff_winkler.SUMMARY.read_text())
+    assert round(rec["KI"] / 1e6, 1) == -51.4 and min(rec["psi"], rec["psi_band"]) > 90.0
+    assert round(rec["angle_deg"], 1) == 58.8 and rec["dx"] == 2e-3
+    check = json.loads(kink.K0_CHECK.read_text())
+    assert round(check["K_init_over_Kc"], 2) == 0.49 and check["K_init_over_Kc"] > check["K0"] == 0.3
+    assert (round(check["angle_2d"], 1), round(check["angle_4d"], 1)) == (-59.6, -62.8)

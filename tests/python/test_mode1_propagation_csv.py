@@ -38,7 +38,7 @@ def test_append_keeps_rows_provenance_and_cpu(tmp_path):
     assert csvfile.provenance(path) == ["made by: first", "rows added by: second"]
     table = mp.table_markdown(rows, csvfile.provenance(path))
     assert "Made by `first`. Rows added by `second`." in table
-    assert "Loop times: CPU B (every run but these); CPU A (gaussian at dx = 0.1 m)." in table
+    assert "| CPU B | every other run |\n| CPU A | gaussian at dx = 0.1 m |" in table
 
 
 def test_a_csv_without_the_cpu_column_takes_its_timing_line(tmp_path):
@@ -89,14 +89,19 @@ def test_the_committed_runs_give_the_readme_findings():
     assert v["constant"]["nearest"] == v["triangular"]["nearest"] == "toughness"
     assert round(v["gaussian"]["gap"], 2) == 0.20
     assert mp.band_kept(rows)
+    for k, lo, hi in (("constant", -14.5, -14.0), ("triangular", -8.6, -6.4), ("gaussian", -4.7, -2.6)):
+        assert all(lo <= r["ti_err_pct"] <= hi for r in rows if r["kernel"] == k)
+    late = [max(r["ti_tip_err_pct"] for r in rows if r["dx"] == dx) for dx in sorted({r["dx"] for r in rows}, reverse=True)]
+    assert min(late) > 0.0 and late == sorted(late, reverse=True)
 
 
 def test_loop_times_name_the_cpu_of_each_run():
     from bbpd.benchmarks import mode1_propagation as mp
     rows = [{"kernel": k, "dx": dx, "cpu": "CPU A"} for dx in (0.1, 0.05) for k in ("constant", "gaussian")]
-    assert mp.cpu_markdown(rows) == "Loop times: CPU A."
+    assert "| CPU A | all |" in mp.cpu_markdown(rows)
     # one grid timed on two machines: each of the other machine's runs is named by kernel
     rows += [{"kernel": "gaussian", "dx": 0.00625, "cpu": "CPU B"},
              {"kernel": "triangular", "dx": 0.00625, "cpu": "CPU C"}]
-    assert mp.cpu_markdown(rows) == ("Loop times: CPU A (every run but these); CPU B (gaussian at "
-                                     "dx = 0.00625 m); CPU C (triangular at dx = 0.00625 m).")
+    text = mp.cpu_markdown(rows)
+    assert "| CPU A | every other run |" in text and "| CPU B | gaussian at dx = 0.00625 m |" in text
+    assert "| CPU C | triangular at dx = 0.00625 m |" in text

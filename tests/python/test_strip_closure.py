@@ -58,3 +58,10 @@ def test_the_committed_closure_gives_the_readme_verdict():
     assert all(x["falls"] for x in v.values())
     assert {k: x["meets"] for k, x in v.items()} == {"constant": False, "gaussian": True, "triangular": True}
     assert all(x["dx"][-1] == 0.00625 for x in v.values())
+    assert {k: round(x["l2"][-1], 1) for k, x in v.items()} == {"constant": 7.9, "gaussian": 3.9, "triangular": 3.5}
+    assert round(v["constant"]["best_constant"], 1) == 3.8
+    assert {k: x["height"] for k, x in v.items()} == {"constant": "less", "gaussian": "met", "triangular": "met"}
+    fine = [r for r in rows if r["dx"] == 0.00625]
+    assert all(65.0 <= r["inside_law_pct"] <= 75.5 and r["above_law_pct"] == 0.0 for r in fine)
+    const = next(r for r in fine if r["kernel"] == "constant")
+    assert round(const["l2_kinetic_pct"] - const["l2_kinetic_taller_pct"], 1) == 1.2

@@ -394,7 +394,7 @@ def summary_text(rows):
 
 
 def section(specs, results, figdir, notes):
-    """The section of REPORT.md (bbpd.report.write_report) from the report's branching runs."""
+    """The section of REPORT.md (bbpd.report.document.write_report) from the report's branching runs."""
     rows, text = jobmod.finished_rows(specs, results, summary_text)
     names = []
     maps = {f"{r['kernel']} {r['sigma_MPa']:g} MPa m = {r['m']:g}": r["workdir"] for r in rows

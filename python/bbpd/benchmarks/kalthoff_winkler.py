@@ -51,6 +51,7 @@ from bbpd import readers, snapshots
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as fmt
+from bbpd import plots
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "kalthoff-winkler" / "in.kalthoff_winkler"
@@ -311,12 +312,8 @@ def run(kernel, dx, workdir, nprocs=2, tend=None, reuse=False, images=False):
 
 def plot_damage_map(res, path):
     """Damage at the end of the run on the reference configuration (paper Fig. 14)."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     m = res["damage_map"]
-    fig, ax = plt.subplots(figsize=(3.6, 6.0))
-    try:
+    with plots.figure(path, figsize=(3.6, 6.0)) as (fig, ax):
         size = 4.0 * (res["dx"] / 1e-3) ** 2
         sc = ax.scatter(np.array(m["x"]) * 1e3, np.array(m["y"]) * 1e3, c=m["phi"], s=size,
                         marker="s", linewidths=0, cmap="jet", vmin=0.0, vmax=0.6)
@@ -326,10 +323,6 @@ def plot_damage_map(res, path):
         ax.set_ylabel("y (mm)")
         ax.set_title(f"{res['kernel']}, dx = {res['dx'] * 1e3:g} mm, "
                      f"t = {res['nsteps'] * res['dt'] * 1e6:.0f} us", fontsize=9)
-        fig.tight_layout()
-        fig.savefig(path, dpi=150)
-    finally:
-        plt.close(fig)
     return path
 
 
@@ -350,11 +343,7 @@ def draw_plate_frame(ax, g):
 
 def plot_paths(results, path):
     """Crack-tip trajectories of several runs, the notches and the 70-degree line (Fig. 15)."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(3.8, 6.0))
-    try:
+    with plots.figure(path, figsize=(3.8, 6.0)) as (fig, ax):
         g = results[0]
         ax.plot([0, g["Lx"] * 1e3, g["Lx"] * 1e3, 0, 0], [0, 0, g["Ly"] * 1e3, g["Ly"] * 1e3, 0],
                 color="black", linewidth=0.8)
@@ -377,10 +366,6 @@ def plot_paths(results, path):
         ax.legend(fontsize=7, loc="center left")
         ax.set_title(f"crack-tip paths, {g['kernel']}" if by_dx
                      else f"crack-tip paths, dx = {g['dx'] * 1e3:g} mm", fontsize=9)
-        fig.tight_layout()
-        fig.savefig(path, dpi=150)
-    finally:
-        plt.close(fig)
     return path
 
 

@@ -43,6 +43,7 @@ from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.jobs import Job, Spec
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as f
+from bbpd import plots
 
 # ---------------------------------------------------------------------------- physics
 
@@ -186,14 +187,10 @@ def run_case(workdir, kernel, dx, loading, gc, nprocs=1, tend=TEND, lp=None, reu
 
 def plot_contact(workdir, path):
     """Face velocities and contact force of a projectile run against the two-bar estimate."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     r = analyse(workdir)
     d = read_projectile(Path(workdir) / "projectile.dat")
     t = d["step"] * r["dt"] * 1e6
-    fig, (a1, a2) = plt.subplots(2, 1, figsize=(6.0, 5.5), sharex=True)
-    try:
+    with plots.figure(path, 2, 1, figsize=(6.0, 5.5), sharex=True) as (fig, (a1, a2)):
         a1.plot(t, d["v_proj"], lw=0.8, label="projectile front column")
         a1.plot(t, d["v_plate"], lw=0.8, label="plate's struck column")
         a1.axhline(V_INTERFACE, color="k", ls="--", lw=1,
@@ -211,20 +208,12 @@ def plot_contact(workdir, path):
         a2.set_xlabel("t (us)")
         a1.set_title(f"projectile, {r['kernel']}, dx = {r['dx'] * 1e3:g} mm, "
                      f"Gc = {r['Gc']:g} J/m2", fontsize=9)
-        fig.tight_layout()
-        fig.savefig(path, dpi=150)
-    finally:
-        plt.close(fig)
     return path
 
 
 def plot_paths(workdirs, labels, path, title):
     """Crack-tip paths of several runs with the 70-degree lines (kalthoff_winkler's frame)."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(3.8, 6.0))
-    try:
+    with plots.figure(path, figsize=(3.8, 6.0)) as (fig, ax):
         rs = [kw.analyse(w) for w in workdirs]
         g = rs[0]
         ax.plot([0, g["Lx"] * 1e3, g["Lx"] * 1e3, 0, 0], [0, 0, g["Ly"] * 1e3, g["Ly"] * 1e3, 0],
@@ -242,10 +231,6 @@ def plot_paths(workdirs, labels, path, title):
         kw.draw_plate_frame(ax, g)
         ax.legend(fontsize=6, loc="center left")
         ax.set_title(title, fontsize=8)
-        fig.tight_layout()
-        fig.savefig(path, dpi=150)
-    finally:
-        plt.close(fig)
     return path
 
 
@@ -393,7 +378,7 @@ def report_text(rows):
 
 
 def section(specs, results, figdir, notes):
-    """The projectile's section of report/REPORT.md (bbpd.report.write_report)."""
+    """The projectile's section of report/REPORT.md (bbpd.report.document.write_report)."""
     done, bad = jobmod.finished(specs, results)
     rows = [results[s.job.label] for s in done]
     text = report_text(rows)

@@ -46,6 +46,7 @@ from bbpd.kernels import COLORS
 from bbpd.runner import run_lammps
 from bbpd import markdown
 from bbpd.markdown import cell as f
+from bbpd import plots
 
 # ---------------------------------------------------------------------------- physics
 
@@ -354,12 +355,8 @@ def cases_table():
 
 def plot_paths_case(results, case, path):
     """Crack-tip paths of one loading for every kernel/resolution, with the 70-degree line."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     runs = [(k, dx, r) for (c, k, dx), r in sorted(results.items(), key=_order) if c == case]
-    fig, ax = plt.subplots(figsize=(3.8, 6.0))
-    try:
+    with plots.figure(path, figsize=(3.8, 6.0)) as (fig, ax):
         g = runs[0][2]
         ax.plot([0, g["Lx"] * 1e3, g["Lx"] * 1e3, 0, 0], [0, 0, g["Ly"] * 1e3, g["Ly"] * 1e3, 0],
                 color="black", linewidth=0.8)
@@ -377,10 +374,6 @@ def plot_paths_case(results, case, path):
         kw.draw_plate_frame(ax, g)
         ax.legend(fontsize=6, loc="center left")
         ax.set_title(f"{CASES[case][0]}, to {g['nsteps'] * g['dt'] * 1e6:.0f} us", fontsize=7)
-        fig.tight_layout()
-        fig.savefig(path, dpi=150)
-    finally:
-        plt.close(fig)
     return path
 
 
@@ -456,7 +449,7 @@ def collect(specs, results):
 
 
 def section(specs, results, figdir, notes):
-    """The study's section of report/REPORT.md (bbpd.report.write_report)."""
+    """The study's section of report/REPORT.md (bbpd.report.document.write_report)."""
     title = "Kalthoff-Winkler loading study (what reproduces 70 deg and 20-22 us)"
     if not specs:
         return {"title": title,

@@ -410,7 +410,7 @@ def summary_text(rows):
 
 
 def section(specs, results, figdir, notes):
-    """The section of REPORT.md (bbpd.report.write_report) from the report's kink runs."""
+    """The section of REPORT.md (bbpd.report.document.write_report) from the report's kink runs."""
     done, bad = jobmod.finished(specs, results)
     rows = [row_of(results[s.job.label]) for s in done]
     text = summary_text(rows) if rows else []

@@ -39,8 +39,10 @@ from bbpd.provenance import cpu
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
-from bbpd.benchmarks.kink_limit import (ALPHA, HORIZONS, KERNEL, NAMES, PSI, limit, mix_of,
-                                        resolution_deg, sequences)
+from bbpd import plots
+from bbpd.benchmarks.kink_limit import (ALPHA, HORIZONS, KERNEL, NAMES, PSI, coverage, disk_moves,
+                                        kernel_spread, limit, limits, mix_of, resolution_deg,
+                                        sequences, sweep_stats)
 
 CSV = kinkbench.FOLDER / "results" / "kink_convergence.csv"
 DELTA = 5.0e-3
@@ -122,12 +124,110 @@ def table(rows, command=None):
     if rows and all(r.get("cpu") for r in rows):
         out += "\n\n" + loop_times(rows)
     made = [command] if isinstance(command, str) else list(command or [])
-    intro = " ".join(f"{'Made by' if k == 0 else 'Rows added by'} `{c}`." for k, c in enumerate(made))
+    intro = (f"Made by `{made[0]}`" + (f"; rows added by {len(made) - 1} more commands, each named "
+                                       f"in the header of `{CSV.relative_to(kinkbench.ROOT)}`"
+                                       if len(made) > 1 else "") + ".") if made else ""
     return intro + "\n\n" + out if made else out
 
 
 RESOLUTION_NOTE = ("Angles ± the grid's resolution: half a spacing across the path at 2 or 4 "
                    "horizons from the tip, atan(1 / (2 n m)) for n horizons.")
+
+
+def _signed(v):
+    """v to 0.1 with its sign, +0.0 for a zero however it rounds"""
+    return "+0.0" if float(format(v, ".1f")) == 0.0 else format(v, "+.1f")
+
+
+def sequences_table(rows):
+    """kink_limit.sequences as a table: per kernel, mode mix, distance and disk the angles over
+    m, the criterion the finest lies nearest (offset ± its error bar), the last step in m and
+    whether it settled (within SETTLED_DEG) or moved by more than the two runs' error bars"""
+    lines = ["| kernel | psi | alpha | at | R/delta | m | angle (deg) | nearest at the finest m: offset "
+             "± bar (deg) | last step (deg) | settled (<= 1 deg) | step beyond both bars |",
+             "|" + "---|" * 11]
+    for s in sequences(rows):
+        near = NAMES.get(s["nearest"], "all three agree")
+        lines.append(f"| {s['kernel']} | {s['psi']:g} | {s['alpha']:g} | {s['dist']} | {s['rd']:g} | "
+                     + ", ".join(f"{m:g}" for m in s["ms"]) + " | "
+                     + ", ".join(_f(a) for a in s["angles"])
+                     + f" | {near}: {_signed(s['offset'])} ± {s['bar']:.1f} | {_signed(s['step'])} | "
+                     f"{'yes' if s['settled'] else 'no'} | {'yes' if s['beyond_bars'] else 'no'} |")
+    return "\n".join(lines)
+
+
+def disk_table(rows):
+    """kink_limit.disk_moves as a table: the angle's change when the disk doubles at one m"""
+    lines = ["| kernel | psi | alpha | at | m | R/delta 10 -> 20 (deg) |", "|" + "---|" * 6]
+    lines += [f"| {d['kernel']} | {d['psi']:g} | {d['alpha']:g} | {d['dist']} | {d['m']:g} | "
+              f"{_signed(d['move'])} |" for d in disk_moves(rows)]
+    return "\n".join(lines)
+
+
+
+
+def _mix_list(mixes):
+    return ", ".join(f"{p:g}/{a:g}" for p, a in sorted(mixes, key=lambda x: (-x[0], x[1])))
+
+
+def sweeps_table(rows):
+    """kink_limit.sweep_stats as a table: per whole mixed-mode sweep and distance the RMS (mean
+    ± its standard error) from each criterion, the criteria the two-standard-error test admits,
+    those it excludes by less than one angle's error bar, and the grid's pull"""
+    lines = ["| kernel | m | R/delta | at | runs | " + " | ".join(f"{n}: RMS (mean ± s.e.), deg" for n in NAMES.values())
+             + " | admitted | "
+             "excluded by less than the bar | grid's pull: mean (max), deg |", "|" + "---|" * 11]
+    for s in sweep_stats(rows):
+        lines.append(f"| {s['kernel']} | {s['m']:g} | {s['rd']:g} | {s['dist']} | {s['n']} | " + " | ".join(
+            f"{s['rms'][c]:.1f} ({s['bias'][c]:+.1f} ± {s['se'][c]:.1f})" for c in NAMES)
+            + f" | {', '.join(NAMES[c] for c in s['admitted']) or 'none'} | "
+            f"{', '.join(NAMES[c] for c in s['unresolved']) or '-'} | {s['pull_mean']:.1f} ({s['pull_max']:.1f}) |")
+    return "\n".join(lines)
+
+
+def limits_table(rows):
+    """kink_limit.limits as a table: per kernel, disk and distance the whole sweeps over m, the
+    nearest criterion and each criterion's RMS at each m, the grid's pull, the verdict on the
+    limit and the last step of the sweep's mean (paired by mix, ± its standard error)"""
+    lines = ["| kernel | R/delta | at | m | nearest by RMS | " + " | ".join(f"RMS from {n}, deg" for n in NAMES.values())
+             + " | grid's pull, deg "
+             "| verdict | last step of the mean, deg |", "|" + "---|" * 11]
+    for t in limits(rows):
+        v = [t["v"][m] for m in t["ms"]]
+        verdict = t["state"] + (f" {NAMES[t['limit']]}" if t["limit"] else "") + (
+            " (between " + " and ".join(NAMES[c] for c in t["between"]) + ")" if t["between"]
+            and t["state"] == "none fits" else "")
+        lines.append(f"| {t['kernel']} | {t['rd']:g} | {t['dist']} | " + ", ".join(f"{m:g}" for m in t["ms"])
+                     + " | " + ", ".join(NAMES[x["best"]] for x in v) + " | "
+                     + " | ".join(", ".join(f"{x['rms'][c]:.1f}" for x in v) for c in NAMES) + " | "
+                     + ", ".join(f"{x['pull_mean']:.1f}" for x in v)
+                     + f" | {verdict} | {t['step'][0]:+.1f} ± {t['step'][1]:.1f} |")
+    return "\n".join(lines)
+
+
+def kernels_table(rows):
+    """kink_limit.kernel_spread as a table: the kernels at one m over the mixes all of them ran"""
+    lines = ["| m | R/delta | at | mixes (psi/alpha) | nearest per kernel | kernels' spread: mean, max "
+             "(at mix), deg | within both bars | criterion nearest for every kernel |", "|" + "---|" * 8]
+    for k in kernel_spread(rows):
+        lines.append(f"| {k['m']:g} | {k['rd']:g} | {k['dist']} | {_mix_list(k['mixes'])} | "
+                     + "; ".join(f"{kern} " + " and ".join(NAMES[c] for c in k["nearest"][kern])
+                                 for kern in k["kernels"])
+                     + f" | {k['spread_mean']:.1f}, {k['spread_max']:.1f} ({_mix_list([k['widest']])}) | "
+                     f"{'yes' if k['within_bars'] else 'no'} (± {k['bar']:.1f}) | "
+                     f"{', '.join(NAMES[c] for c in k['common']) or 'none'} |")
+    return "\n".join(lines)
+
+
+def coverage_table(rows):
+    """kink_limit.coverage as a table: what of the planned sweep has run, and its loop times"""
+    lines = ["| kernel | m | mixes run | left (psi/alpha) | loop (s), of the runs on | machine |",
+             "|" + "---|" * 6]
+    for (kernel, m), c in coverage(rows).items():
+        loops = f"{min(c['loops']):.0f}-{max(c['loops']):.0f}, {len(c['loops'])}" if c["loops"] else "-"
+        lines.append(f"| {kernel} | {m:g} | {len(c['done'])} of {len(c['done']) + len(c['left'])} | "
+                     f"{_mix_list(c['left']) or '-'} | {loops} | {c['machine'] or '-'} |")
+    return "\n".join(lines)
 
 
 def loop_times(rows):
@@ -154,12 +254,8 @@ def figure(rows, path=FIGURE):
     """The angle at 2 and 4 horizons against m with its error bar, one panel per distance and
     mode mix (pure Mode II first), each (kernel, crack direction, R/delta) a line, and the three
     criteria of that mix as horizontal lines."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     mixes = sorted({mix_of(r)[0] for r in rows if mix_of(r)[0] > 0.0}, reverse=True)
-    fig, axes = plt.subplots(len(mixes), 2, figsize=(10, 3.6 * len(mixes)), squeeze=False)
-    try:
+    with plots.figure(path, len(mixes), 2, figsize=(10, 3.6 * len(mixes)), squeeze=False, dpi=120) as (fig, axes):
         for ax_row, psi in zip(axes, mixes):
             on = [r for r in rows if mix_of(r)[0] == psi]
             for ax, dist in zip(ax_row, HORIZONS):
@@ -183,10 +279,6 @@ def figure(rows, path=FIGURE):
                 ax.grid(alpha=0.3)
             ax_row[0].set_ylabel("kink angle (deg)")
             ax_row[1].legend(fontsize=6.5, loc="best")
-        fig.tight_layout()
-        fig.savefig(path, dpi=120)
-    finally:
-        plt.close(fig)
 
 
 def summary(rows):

@@ -403,7 +403,7 @@ def summary_text(rows):
 
 
 def section(specs, results, figdir, notes):
-    """The section of REPORT.md (bbpd.report.write_report) from the report's runs."""
+    """The section of REPORT.md (bbpd.report.document.write_report) from the report's runs."""
     rows, text = jobmod.finished_rows(specs, results, summary_text)
     names = []
     if rows:

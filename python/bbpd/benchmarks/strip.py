@@ -317,6 +317,8 @@ def speed_at(rows, kernel, m, H_over_delta, Delta):
 
 
 CONVERGED_SPEED = 0.02    # v_ss/c_R between two refinements (issue's criterion)
+
+
 def height_convergence(speeds):
     """The last refinement of a sequence [(H/delta, v_ss/c_R)]: {'last': its change, 'within':
     no more than CONVERGED_SPEED, 'before': the change before it (None for two heights),
@@ -347,6 +349,31 @@ def height_change_against_m(rows, kernel, h0=10.0, h1=20.0, Delta=2.0):
         return None
     sizes = [abs(d) for _, d in steps]
     return dict(steps=steps, shrinks=all(y < x for x, y in zip(sizes, sizes[1:])))
+
+
+HEIGHTS = (10.0, 20.0, 40.0)    # H/delta of the sweep in the strip's height
+
+
+def law_table(rows, Delta=2.0):
+    """Per kernel and m: the threshold bracket of the load (H/delta = SWEEP_H_OVER_DELTA), the
+    steady speed at Delta over the strip's heights, the last change in height and whether it
+    converged (height_convergence), the runs at Delta that did not run steadily, and the grid's
+    own c_R over c_R"""
+    lines = ["| kernel | m | Delta_c (arrests / crosses) | v_ss/c_R at Delta = 2, H/delta = "
+             + ", ".join(f"{h:g}" for h in HEIGHTS) + " | last change in H, converged | not steady at "
+             "Delta = 2 (H/delta) | grid's c_R / c_R |", "|" + "---|" * 7]
+    for k in sorted({r["kernel"] for r in rows}):
+        for m in sorted({r["m"] for r in rows if r["kernel"] == k}):
+            lo, hi = threshold(rows, k, m)
+            speeds = [(h, v) for h in HEIGHTS if (v := speed_at(rows, k, m, h, Delta))]
+            conv = height_convergence(speeds)
+            lost = [r for r in rows if (r["kernel"], r["m"], r["Delta"]) == (k, m, Delta) and not r["crossed"]]
+            lines.append(f"| {k} | {m:g} | {f(lo, 'g')} / {f(hi, 'g')} | "
+                         + ", ".join(f(speed_at(rows, k, m, h, Delta) or None, ".3f") for h in HEIGHTS)
+                         + " | " + (f"{conv['last']:+.4f}, {'yes' if conv['converged'] else 'no'}" if conv else "-")
+                         + " | " + (", ".join(f"{r['H_over_delta']:g} {r['state']}{_where(r)}" for r in lost) or "-")
+                         + f" | {grid_rayleigh_ratio(k, m):.3f} |")
+    return "\n".join(lines)
 
 
 def energy_closure(rows):

@@ -86,3 +86,31 @@ def kink_convergence_table(data):
                                   [ln.split(": ", 1)[1] for ln in csvfile.provenance(kink_convergence.CSV)])
 
 
+
+
+def kink_sequences(data):
+    return kink_convergence.sequences_table(kink_convergence.read_rows())
+
+
+def kink_disk(data):
+    return kink_convergence.disk_table(kink_convergence.read_rows())
+
+
+def kink_sweeps(data):
+    return kink_convergence.sweeps_table(kink_convergence.read_rows())
+
+
+def kink_limits(data):
+    return kink_convergence.limits_table(kink_convergence.read_rows())
+
+
+def kink_kernels(data):
+    return kink_convergence.kernels_table(kink_convergence.read_rows())
+
+
+def kink_coverage(data):
+    return kink_convergence.coverage_table(kink_convergence.read_rows())
+
+
+def strip_law(data):
+    return strip.law_table(strip.read_rows(STRIP_CSV))

@@ -116,37 +116,6 @@ def lps_cylinder(data):
     return "\n".join(lines)
 
 
-# the row driver's check (doc/performance.md): the same scenes before (a quiet machine) and after,
-# each against peri/pmb in its own run, and the peri/lps cylinder after
-ROW_DRIVER_BEFORE = RESULTS / "zen3-avx2-quiet.csv"
-ROW_DRIVER_AFTER = RESULTS / "zen3-avx2-row-driver.csv"
-ROW_DRIVER_LPS = RESULTS / "zen3-lps-cylinder-row-driver.csv"
-
-
-def row_driver(data):
-    """Loop times and ratios to peri/pmb before and after the row driver, and bbpd/lps against
-    peri/lps after it, from their CSVs."""
-    before, after = _rows(ROW_DRIVER_BEFORE), _rows(ROW_DRIVER_AFTER)
-    lines = ["| scene | before: ours (ms/step), ratio to `peri/pmb` | after: ours (ms/step), ratio |",
-             "|---|---|---|"]
-    for prefix, name, _ in SCENES:
-        b = next((r for r in before if r["scene"].startswith(prefix)), None)
-        a = next((r for r in after if r["scene"].startswith(prefix)), None)
-        if a is None or b is None:
-            continue
-        cells = [f"{_ms(r['ours_loop_ms'])}, {float(r['pmb_loop_ms']) / float(r['ours_loop_ms']):.1f}×"
-                 for r in (b, a)]
-        lines.append(f"| {name.split(', ')[0]} | {cells[0]} | {cells[1]} |")
-    lps = _rows(ROW_DRIVER_LPS)
-    loop = {s: min(float(r["loop_s"]) for r in lps if r["style"] == s) for s in ("bbpd/lps", "peri/lps")}
-    r0 = after[0]
-    return ("\n".join(lines) + f"\n\n`bbpd/lps` on the `peri/lps` cylinder after it: {loop['bbpd/lps']:.2f} s "
-            f"against {loop['peri/lps']:.2f} s (minima of {len(lps) // 2} rounds), ratio "
-            f"{loop['peri/lps'] / loop['bbpd/lps']:.2f}. {r0['cpu']} (family {r0['family']} model "
-            f"{r0['model']}), {r0['path'].upper()} path, load {_loads(before)} before and "
-            f"{_loads(after)} after.")
-
-
 # One CPU's run-time SIMD choice (doc/performance.md): perf/pair_vs_pmb.py --simd PATH and
 # perf/row_floor.py --path PATH, each into perf/results/<prefix>-simd-PATH.csv and
 # <prefix>-row-floor-PATH.csv, and the other scenes with auto in <prefix>-simd-auto-bench-cylinder-memory.csv

@@ -11,6 +11,7 @@ from bbpd.benchmarks import dispersion as disp
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import mode1, mode2
 from bbpd.kernels import COLORS, KERNELS
+from bbpd import plots
 
 from .runs import MODE1_TABLE3_DX
 
@@ -32,11 +33,7 @@ def plot_k(path, series, refs, window, title, xlabel, ylabel):
     validity window of the comparison (dotted lines).
     series: [(label, t, K, colour)]; refs: [(label, t, K, linestyle, colour)];
     window: (start, end) in the units of t."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(7.0, 4.4))
-    try:
+    with plots.figure(path, figsize=(7.0, 4.4)) as (fig, ax):
         for label, t, k, color in series:
             ax.plot(t, k, "-", color=color, linewidth=1.4, label=label)
         for label, t, k, style, color in refs:
@@ -49,10 +46,6 @@ def plot_k(path, series, refs, window, title, xlabel, ylabel):
         ax.set_title(title, fontsize=10)
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8, loc="upper left")
-        fig.tight_layout()
-        fig.savefig(path, dpi=150)
-    finally:
-        plt.close(fig)
     return path
 
 

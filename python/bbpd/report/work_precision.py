@@ -36,7 +36,7 @@ from pathlib import Path
 import numpy as np
 
 from bbpd.benchmarks import dispersion
-from bbpd.benchmarks.kalthoff_winkler import PAPER_INITIATION_US
+from bbpd.benchmarks.kalthoff_winkler import EXPERIMENT_ANGLE_DEG, PAPER_INITIATION_US
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import COLORS, KERNELS
 from .figures import _figure
@@ -74,7 +74,7 @@ WAVELENGTH_MODE = 64               # the fixed wave: 64 wavelengths on the ring 
 WAVELENGTH = RING_LENGTH / WAVELENGTH_MODE
 K_MATCH_RTOL = 1.0e-9              # the ring's k grid holds 2 pi/WAVELENGTH to round-off
 
-EXPERIMENT_ANGLE_DEG = 70.0        # Kalthoff-Winkler experiment (kalthoff_winkler module)
+
 
 TIMING_REPEATS = 3                 # runs timed this often (median) when expected short
 REPEAT_BELOW_S = 10.0              # "short": expected loop time below this
