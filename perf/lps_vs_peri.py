@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""bbpd/lps against LAMMPS's peri/lps on LAMMPS's own examples/peri/in.peri.lps.
+"""bbpd/lps against LAMMPS's peri/lps on LAMMPS's own examples/peri/in.peri.lps (and, with
+--family ves or eps, bbpd/ves or bbpd/eps against peri/ves or peri/eps on in.peri.ves, in.peri.eps).
 
-The two inputs of examples/peri-lps-dropin (the glass cylinder, 3,487 atoms, shattered by an
-indenter; one with peri/lps, one ported to bbpd/lps) run in turn, bbpd/lps first, --reps
+The two inputs of examples/peri-FAMILY-dropin (the glass cylinder, 3,487 atoms, shattered by an
+indenter; one with peri/FAMILY, one ported to bbpd/FAMILY) run in turn, bbpd/* first, --reps
 rounds, one MPI rank each. Per run: the loop time and the Pair time of LAMMPS's timing
 summary, the processor time of the process (user + system, from the operating system), and
 the mean damage and the number of atoms with damage > 0.5 at steps 500 and the last. Printed
@@ -12,8 +13,8 @@ the vector ISA of the plugin build, the load average before and after and the co
 summary gives the ratio peri/lps / bbpd/lps of the minimum loop times, of each round's loop
 times (median) and of the processor times.
 
-Usage (from the repository root): tools/python perf/lps_vs_peri.py [--reps 3] [--steps 1000]
-    [--csv perf/results/NAME.csv]
+Usage (from the repository root): tools/python perf/lps_vs_peri.py [--family lps|ves|eps]
+    [--reps 3] [--steps 1000] [--csv perf/results/NAME.csv]
 """
 import argparse
 import csv
@@ -29,8 +30,14 @@ from bbpd.runner import run_lammps
 from pair_vs_pmb import build_isa, cpu_model, cpu_numbers, load_average
 
 ROOT = Path(__file__).resolve().parents[1]
-EXAMPLE = ROOT / "examples" / "peri-lps-dropin"
-INPUTS = {"bbpd/lps": EXAMPLE / "in.bbpd.lps", "peri/lps": EXAMPLE / "in.peri.lps"}
+FAMILIES = ("lps", "ves", "eps")
+
+
+def inputs(family):
+    """{style: input file} of examples/peri-FAMILY-dropin, ours first"""
+    example = ROOT / "examples" / f"peri-{family}-dropin"
+    return {f"bbpd/{family}": example / f"in.bbpd.{family}",
+            f"peri/{family}": example / f"in.peri.{family}"}
 REPORT_STEP = 500    # a damage row before the cylinder shatters
 
 
@@ -39,9 +46,9 @@ def children_cpu():
     return use.ru_utime + use.ru_stime
 
 
-def run(style, steps, workdir):
+def run(style, path, steps, workdir):
     before = children_cpu()
-    out = run_lammps(INPUTS[style].read_text(), workdir=workdir, vars={"steps": steps}).output
+    out = run_lammps(path.read_text(), workdir=workdir, vars={"steps": steps}).output
     cpu = children_cpu() - before
     loop = float(re.search(r"^Loop time of ([0-9.eE+-]+)", out, re.M).group(1))
     pair = float(re.search(r"^Pair\s*\|\s*([0-9.eE+-]+)", out, re.M).group(1))
@@ -65,10 +72,13 @@ def bond_count(out):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--family", choices=FAMILIES, default="lps")
     ap.add_argument("--reps", type=int, default=3)
     ap.add_argument("--steps", type=int, default=1000)
     ap.add_argument("--csv", type=Path)
     args = ap.parse_args()
+    styles = inputs(args.family)
+    ours, theirs = styles
     family, model = cpu_numbers()
     machine = {"cpu": cpu_model(), "family": family, "model": model, "isa": build_isa()}
     print(f"CPU: {machine['cpu']} (family {family} model {model}); plugin paths: {machine['isa']}")
@@ -76,19 +86,19 @@ def main():
     results = []
     with tempfile.TemporaryDirectory() as tmp:
         for rep in range(args.reps):
-            for style in INPUTS:
-                r = run(style, args.steps, Path(tmp) / f"{rep}-{style.replace('/', '-')}")
+            for style, path in styles.items():
+                r = run(style, path, args.steps, Path(tmp) / f"{rep}-{style.replace('/', '-')}")
                 r["round"] = rep + 1
                 results.append(r)
                 print(f"round {rep + 1} {style}: loop {r['loop_s']:.3f} s, pair {r['pair_s']:.3f} s, "
                       f"cpu {r['cpu_s']:.3f} s; damage {r['damage_mid']} / {r['damage_end']}, "
                       f"atoms > 0.5: {r['cracked_mid']} / {r['cracked_end']}", flush=True)
     load_after = load_average()
-    by = {s: [r for r in results if r["style"] == s] for s in INPUTS}
-    ratio_min = min(r["loop_s"] for r in by["peri/lps"]) / min(r["loop_s"] for r in by["bbpd/lps"])
-    rounds = [b["loop_s"] / a["loop_s"] for a, b in zip(by["bbpd/lps"], by["peri/lps"])]
-    cpu_ratio = min(r["cpu_s"] for r in by["peri/lps"]) / min(r["cpu_s"] for r in by["bbpd/lps"])
-    print(f"loop time ratio peri/lps / bbpd/lps: {ratio_min:.2f} (minima), {statistics.median(rounds):.2f} "
+    by = {s: [r for r in results if r["style"] == s] for s in styles}
+    ratio_min = min(r["loop_s"] for r in by[theirs]) / min(r["loop_s"] for r in by[ours])
+    rounds = [b["loop_s"] / a["loop_s"] for a, b in zip(by[ours], by[theirs])]
+    cpu_ratio = min(r["cpu_s"] for r in by[theirs]) / min(r["cpu_s"] for r in by[ours])
+    print(f"loop time ratio {theirs} / {ours}: {ratio_min:.2f} (minima), {statistics.median(rounds):.2f} "
           f"(median of the rounds {', '.join(f'{x:.2f}' for x in rounds)}); processor time: "
           f"{cpu_ratio:.2f}; load {load_before} -> {load_after}")
     for style, rs in by.items():

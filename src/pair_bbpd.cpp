@@ -12,6 +12,7 @@
 
 #include "pair_bbpd.h"
 #include "bbpd_compat.h"
+#include "bbpd_path_choice.h"
 #include "bbpd_row.h"
 #include "pair_bbpd_rows.h"
 
@@ -30,6 +31,7 @@
 #include <algorithm>
 #include <array>
 #include <cfloat>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -456,6 +458,51 @@ void PairBBPD::send_run_limits()
 double PairBBPD::init_one(int i, int j)
 {
   return law.family_cutoff(i, j);
+}
+
+/* ----------------------------------------------------------------------
+   the path of the bond loops (bbpd_path_choice.h): the chooser is handed this style's rows
+   and a callable that times them, and needs nothing else of the pair style
+------------------------------------------------------------------------- */
+
+/* a forced path must run on every rank's CPU: a clear ERROR at the pair_style command */
+void PairBBPD::check_simd_request()
+{
+  const std::string problem = BBPD::simd_request_problem(simd_request, world, comm->nprocs, style);
+  if (!problem.empty()) error->all(FLERR, problem);
+}
+
+/* seconds for the row forces of rows first..last-1 on path p (results discarded) */
+double PairBBPD::time_path(BBPD::SimdPath p, int first, int last)
+{
+  const BBPD::SimdPath kept = simd_path;
+  simd_path = p;
+  BBPD::CoefCache *cache = thread_coef_cache();
+  double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, sum = 0.0;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int i = first; i < last; i++) {
+    double fi[3];
+    row_force<0, 0, 0>(i, fi, nullptr, acc, cache);
+    sum += fi[0];
+  }
+  const auto t1 = std::chrono::steady_clock::now();
+  simd_path = kept;
+  timing_sink = sum;    // kept, so that no loop is optimised away
+  return std::chrono::duration<double>(t1 - t0).count();
+}
+
+/* the path of the bond loops and why (once per pair_style command with auto) */
+void PairBBPD::choose_simd_path()
+{
+  if (simd_request == BBPD::SimdPath::AUTO) {
+    if (simd_decided) return;
+    simd_decided = true;
+  }
+  const BBPD::PathChoice choice = BBPD::choose_path(
+      simd_request, world, comm->me, bonds->nbond, atom->nlocal,
+      [this](BBPD::SimdPath p, int first, int last) { return time_path(p, first, last); });
+  simd_path = choice.path;
+  simd_reason = choice.reason;
 }
 
 /* ---------------------------------------------------------------------- */

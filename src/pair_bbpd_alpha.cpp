@@ -7,6 +7,7 @@
 
 #include "pair_bbpd_alpha.h"
 #include "bbpd_pmb_rules.h"
+#include "bbpd_silling_askari.h"
 #include "bbpd_stretch_row.h"
 #include "pair_bbpd_rows.h"
 
@@ -93,12 +94,8 @@ template <int EVFLAG, class Rule> void PairBBPDAlpha::eval_silling_askari()
     memory->destroy(smin_new);
     memory->create(smin_new, nmax_smin, "pair:smin_new");
   }
-  // one s00 and alpha for every type pair: no per-bond lookups
-  bool multi = false;
-  const double s00_one = critical_stretch[1][1], alpha_one = alpha[1][1];
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = 1; j <= atom->ntypes; j++)
-      if (critical_stretch[i][j] != s00_one || alpha[i][j] != alpha_one) multi = true;
+  const BBPD::SillingAskariCoefficients sa =
+      BBPD::SillingAskariCoefficients::of(critical_stretch, alpha, atom->ntypes);
   // a second evaluation of the last step (setup of a new run, read_restart): no breaking,
   // no new smallest stretches, and the bonds that broke then act again
   const bool replay = update->setupflag && update->ntimestep == alpha_state->last_step;
@@ -117,8 +114,9 @@ template <int EVFLAG, class Rule> void PairBBPDAlpha::eval_silling_askari()
     int i;
     double *acc;
     BBPD::CoefCache *cache;
-    bool replay, multi, canonical;
-    double s00_one, alpha_one, margin;
+    bool replay, canonical;
+    BBPD::SillingAskariCoefficients sa;
+    double margin;
     double fb[3];
     bool sum_and_check(double *fi)
     {
@@ -131,19 +129,19 @@ template <int EVFLAG, class Rule> void PairBBPDAlpha::eval_silling_askari()
       bool broken = false, summed = false;
       const int n = p.bonds->nbond[i];
       const double *xx = p.atom->x[0], *smin = p.atom->s0;
-      if (!multi) {
+      if (!sa.multi) {
         // the row in whatever layout the storage keeps it (FixBBPDBonds::visit_row)
         broken = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
           auto portable = [&] {
-            return BBPD::row_stretch_portable<BondModel, Rule>(xx, i, bj, vals, n, smin, s00_one,
-                                                               alpha_one, margin, &snew);
+            return BBPD::row_stretch_portable<BondModel, Rule>(xx, i, bj, vals, n, smin, sa.s00_one,
+                                                               sa.alpha_one, margin, &snew);
           };
           // force and stretch in one pass
           return BBPD::on_path(p.simd_path, [&](auto path) {
             double ax[LANES], ay[LANES], az[LANES];
             RowTally tally;
             const bool past = decltype(path)::template row_force_stretch<EVFLAG, BondModel, Rule>(
-                xx, i, bj, vals, n, smin, s00_one, alpha_one, margin, &snew, ax, ay, az, &tally);
+                xx, i, bj, vals, n, smin, sa.s00_one, sa.alpha_one, margin, &snew, ax, ay, az, &tally);
             if (!past) {
               lane_sum(ax, ay, az, fi);
               if (EVFLAG) p.tally_lanes(i, tally, acc);
@@ -204,14 +202,11 @@ template <int EVFLAG, class Rule> void PairBBPDAlpha::eval_silling_askari()
     {
       const int j = p.bonds->partner_of(i, k);
       const double *smin = p.atom->s0;
-      if (!multi) return Rule::critical_stretch(s00_one, alpha_one, smin[i], smin[j]);
-      const int itype = p.atom->type[i], jtype = p.atom->type[j];
-      return Rule::critical_stretch(p.critical_stretch[itype][jtype], p.alpha[itype][jtype],
-                                    smin[i], smin[j]);
+      return sa.critical_stretch<Rule>(p.atom->type, i, j, smin[i], smin[j]);
     }
   };
   eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
-    return Row{*this, i, acc, cache, replay, multi, canonical, s00_one, alpha_one, margin,
+    return Row{*this, i, acc, cache, replay, canonical, sa, margin,
                {0.0, 0.0, 0.0}};
   });
   // the new smin takes effect at the next step, once sent to the ghosts

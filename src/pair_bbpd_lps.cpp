@@ -440,14 +440,10 @@ bool PairBBPDLPS::begin_state()
   return replay;
 }
 
-/* one s00 and alpha for every type pair: no per-bond lookups */
-PairBBPDLPS::BreakingRule PairBBPDLPS::breaking_rule() const
+/* peri/lps's s00 and alpha per type pair */
+BBPD::SillingAskariCoefficients PairBBPDLPS::breaking_rule() const
 {
-  BreakingRule rule{false, critical_stretch[1][1], alpha[1][1]};
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = 1; j <= atom->ntypes; j++)
-      if (critical_stretch[i][j] != rule.s00_one || alpha[i][j] != rule.alpha_one) rule.multi = true;
-  return rule;
+  return BBPD::SillingAskariCoefficients::of(critical_stretch, alpha, atom->ntypes);
 }
 
 /* the new smin takes effect at the next step, once sent to the ghosts */
@@ -464,10 +460,9 @@ template <int EVFLAG> void PairBBPDLPS::eval_lps()
   const bool replay = begin_state();
   // 2. the bonds: forces, and breaking (peri/lps: a bond acts in the step it breaks)
   const bool canonical = bonds->raw_positions();    // periodic: both ends decide alike
-  const BreakingRule rule = breaking_rule();
+  const BBPD::SillingAskariCoefficients rule = breaking_rule();
   eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
-    return Row<EVFLAG>(*this, i, acc, cache, replay, canonical, rule.multi, rule.s00_one,
-                       rule.alpha_one);
+    return Row<EVFLAG>(*this, i, acc, cache, replay, canonical, rule);
   });
   end_state();
 }

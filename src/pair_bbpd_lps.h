@@ -24,6 +24,7 @@
 #define LMP_PAIR_BBPD_LPS_H
 
 #include "bbpd_lps.h"
+#include "bbpd_silling_askari.h"
 #include "pair_bbpd_pmb.h"
 
 namespace LAMMPS_NS {
@@ -84,11 +85,7 @@ class PairBBPDLPS : public PairBBPDPMB {
   void sum_weighted_volumes();
   bool begin_state();    // the dilatation pass of a step; true for a second evaluation
   void end_state();
-  struct BreakingRule {
-    bool multi;    // s00 or alpha differ between type pairs
-    double s00_one, alpha_one;
-  };
-  BreakingRule breaking_rule() const;
+  BBPD::SillingAskariCoefficients breaking_rule() const;
   int family_args() const;
   const char *family_coeffs() const;
   void check_family_coeffs(char **arg);

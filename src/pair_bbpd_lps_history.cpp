@@ -106,9 +106,8 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
   const int *slot;
 
   HistoryRow(PairBBPDLPS &pair, int atom_i, double *acc_, BBPD::CoefCache *cache_, bool replay_,
-             bool canonical_, const BreakingRule &rule) :
-      Base(pair, atom_i, acc_, cache_, replay_, canonical_, rule.multi, rule.s00_one,
-           rule.alpha_one),
+             bool canonical_, const BBPD::SillingAskariCoefficients &rule) :
+      Base(pair, atom_i, acc_, cache_, replay_, canonical_, rule),
       fam(pair.family_of<F>(atom_i)), plan{}, atom_hist(pair.history->values[atom_i]),
       hist(atom_hist + F::ATOM_HISTORY), slot(pair.bond_slot + pair.bonds->bond_start[atom_i])
   {
@@ -229,7 +228,7 @@ template <int EVFLAG, class F> void PairBBPDLPS::eval_history()
   const bool replay = begin_state();
   find_bond_slots();
   const bool canonical = bonds->raw_positions();
-  const BreakingRule rule = breaking_rule();
+  const BBPD::SillingAskariCoefficients rule = breaking_rule();
   eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
     return HistoryRow<EVFLAG, F>(*this, i, acc, cache, replay, canonical, rule);
   });

@@ -63,8 +63,8 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
   int i;
   double *acc;
   BBPD::CoefCache *cache;
-  bool replay, canonical, multi;    // as in eval_lps
-  double s00_one, alpha_one;
+  bool replay, canonical;    // as in eval_lps
+  BBPD::SillingAskariCoefficients sa;
   BBPD::LPS::Moduli mod;                  // i's type
   BBPD::LPS::AtomState si;
   double theta_i, theta_third_i, smin_i;
@@ -75,9 +75,9 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
   double snew;            // its smallest stretch now (summed with CHECK)
 
   Row(PairBBPDLPS &pair, int atom_i, double *acc_, BBPD::CoefCache *cache_, bool replay_,
-      bool canonical_, bool multi_, double s00, double alpha) :
+      bool canonical_, const BBPD::SillingAskariCoefficients &sa_) :
       p(pair), i(atom_i), acc(acc_), cache(cache_), replay(replay_), canonical(canonical_),
-      multi(multi_), s00_one(s00), alpha_one(alpha), mod(p.moduli_of_type(p.atom->type[i])),
+      sa(sa_), mod(p.moduli_of_type(p.atom->type[i])),
       si(p.atom_states[i]), theta_i(p.lps_state->dilatation[i]),
       theta_third_i(BBPD::LPS::third(theta_i, p.dimension)), smin_i(p.atom->s0[i]),
       r_row(p.bond_length + p.bonds->bond_start[i]), fb{0.0, 0.0, 0.0}, nlost(0),
@@ -86,11 +86,7 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
   }
   double s0_with(int j) const
   {
-    const double *smin = p.atom->s0;
-    if (!multi) return LPSStretchRule::critical_stretch(s00_one, alpha_one, smin_i, smin[j]);
-    const int itype = p.atom->type[i], jtype = p.atom->type[j];
-    return LPSStretchRule::critical_stretch(p.critical_stretch[itype][jtype], p.alpha[itype][jtype],
-                                         smin_i, smin[j]);
+    return sa.critical_stretch<LPSStretchRule>(p.atom->type, i, j, smin_i, p.atom->s0[j]);
   }
   // the stretch that decides breaking of the bond to j at elongation e: in a periodic box the
   // one both ends compute alike

@@ -172,6 +172,25 @@ def test_cylinder_bitwise_on_1_2_4_ranks(lmp, tmp_path, family):
 
 
 @pytest.mark.parametrize("family", ["ves", "eps"])
+def test_cylinder_bitwise_on_2_threads_and_compact_storage(lmp, tmp_path, family):
+    """2 OpenMP threads (each row writes only its own atom's history) and 'bond/storage
+    compact' end the cylinder in the bits of 1 thread and the default storage."""
+    states = []
+    for threads, storage in ((1, ""), (2, ""), (1, " bond/storage compact")):
+        script_text = cylinder(family).replace("units           si",
+                                               f"package omp {threads}\nunits           si", 1)
+        script_text = script_text.replace(f"pair_style      bbpd/{family} 3d",
+                                          f"pair_style      bbpd/{family} 3d{storage}")
+        out = lmp(script_text + END_DUMP).output
+        assert f"1 MPI tasks x {threads} OpenMP threads" in out
+        states.append(end_state(tmp_path))
+    assert states[0]["c_1"].mean() > 0.05
+    for other in states[1:]:
+        for key in KEYS:
+            np.testing.assert_array_equal(states[0][key], other[key])
+
+
+@pytest.mark.parametrize("family", ["ves", "eps"])
 def test_cylinder_restart_equals_continuous_run(lmp, tmp_path, family):
     """Across write_restart/read_restart (new process on 1 rank; on 2 ranks with a 'balance'
     by recursive bisection, and on 4 ranks after a second evaluation of the step, 'run 0',
