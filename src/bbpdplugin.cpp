@@ -20,6 +20,7 @@
 #include "fix_bbpd_hold.h"
 #include "fix_bbpd_lps.h"
 #include "fix_bbpd_notch.h"
+#include "fix_bbpd_relax.h"
 #include "fix_bbpd_watchdog.h"
 #include "fix_bbpd_work.h"
 #include "info.h"
@@ -98,6 +99,10 @@ Fix *hold_creator(LAMMPS *lmp, int narg, char **arg)
 Fix *notch_creator(LAMMPS *lmp, int narg, char **arg)
 {
   return new FixBBPDNotch(lmp, narg, arg);
+}
+Fix *relax_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixBBPDRelax(lmp, narg, arg);
 }
 Compute *damage_creator(LAMMPS *lmp, int narg, char **arg)
 {
@@ -241,6 +246,10 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "bbpd/notch";
   plugin.info = "BBPD pre-cracks by broken bonds v" BBPD_VERSION;
   plugin.creator.v2 = (lammpsplugin_factory2 *) &notch_creator;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/relax";
+  plugin.info = "BBPD quasi-static load steps by adaptive dynamic relaxation v" BBPD_VERSION;
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &relax_creator;
   (*register_plugin)(&plugin, lmp);
 
   plugin.style = "compute";
