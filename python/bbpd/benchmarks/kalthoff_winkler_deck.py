@@ -29,7 +29,7 @@ from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
 from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.provenance import cpu
-from bbpd.jobs import ROOT, Job, Spec
+from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as _f
@@ -191,13 +191,11 @@ def jobs(nprocs=1):
         for deck in DECKS:
             for k in KERNELS:
                 label = f"Kalthoff-Winkler deck {deck} {k} dx = {dx * 1e3:g} mm"
-                job = Job(label=label, func="bbpd.report:run_job",
-                          kwargs={"target": "bbpd.benchmarks.kalthoff_winkler_deck:run_case",
-                                  "args": {"deck": deck, "kernel": k, "dx": dx, "nprocs": nprocs},
-                                  "label": label},
-                          inputs=tuple(str(p) for p in inputs),
-                          estimate_s=ESTIMATE_S[dx] * (LPS_COST if deck in BOND_DECK else 1.0))
-                specs.append(Spec("kwdeck", k, dx, job))
+                specs.append(jobmod.report_spec("kwdeck", k, dx, label,
+                                                "bbpd.benchmarks.kalthoff_winkler_deck:run_case",
+                                                {"deck": deck, "kernel": k, "dx": dx,
+                                                 "nprocs": nprocs}, inputs,
+                                                ESTIMATE_S[dx] * (LPS_COST if deck in BOND_DECK else 1.0)))
     return specs
 
 

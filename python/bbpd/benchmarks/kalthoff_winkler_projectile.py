@@ -40,7 +40,6 @@ from bbpd import jobs as jobmod
 from bbpd import markers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as study
-from bbpd.jobs import Job, Spec
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as f
 from bbpd import plots
@@ -347,13 +346,10 @@ def jobs(full=False, nprocs=1):
     specs = []
     for kernel, dx in (REPORT_CASES_FULL if full else REPORT_CASES):
         label = f"Kalthoff-Winkler projectile {kernel} dx = {dx * 1e3:g} mm"
-        job = Job(label=label, func="bbpd.report:run_job",
-                  kwargs={"target": "bbpd.benchmarks.kalthoff_winkler_projectile:report_run",
-                          "args": {"kernel": kernel, "dx": dx, "nprocs": nprocs},
-                          "label": label},
-                  inputs=tuple(str(p) for p in inputs),
-                  estimate_s=25.0 if dx > 1.5e-3 else 200.0)
-        specs.append(Spec("kwprojectile", kernel, dx, job))
+        specs.append(jobmod.report_spec("kwprojectile", kernel, dx, label,
+                                        "bbpd.benchmarks.kalthoff_winkler_projectile:report_run",
+                                        {"kernel": kernel, "dx": dx, "nprocs": nprocs}, inputs,
+                                        25.0 if dx > 1.5e-3 else 200.0))
     return specs
 
 
