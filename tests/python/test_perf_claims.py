@@ -56,8 +56,9 @@ def test_a_kernel_measured_again_keeps_its_earlier_row(tmp_path, monkeypatch):
 
 def test_the_zen5_lines_of_doc_performance_follow_the_csvs():
     """doc/performance.md, Zen 5, by hand: auto ran AVX2 on every scene; AVX2 has the shortest
-    loop of the forced paths on plate and block; peri/pmb's plate time spans 48.65-76.08 ms/step
-    over the four invocations; AVX-512 runs 1.92x its floor (3.24x with gathers), AVX2 1.08x"""
+    loop of the forced paths on plate and block; peri/pmb's plate time spans the range the page
+    quotes over the four invocations; AVX-512 runs 1.92x its floor (3.24x with gathers), AVX2
+    1.08x"""
     runs = perf._simd_runs("zen5")
     for s, _ in perf.SIMD_SCENES:
         assert perf._scene(runs["auto"], s)["path"] == "avx2"
