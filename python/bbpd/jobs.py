@@ -46,6 +46,14 @@ class Spec:
     job: Job
 
 
+def report_spec(bench, kernel, dx, label, target, args, inputs, estimate_s):
+    """A run of the report as a Spec: target(workdir, **args) through bbpd.report:run_job, a
+    cached job whose key covers the files in inputs (input script, analysis code)"""
+    return Spec(bench, kernel, dx, Job(label=label, func="bbpd.report:run_job",
+                                       kwargs={"target": target, "args": args, "label": label},
+                                       inputs=tuple(str(p) for p in inputs), estimate_s=estimate_s))
+
+
 def finished(specs, results):
     """(the specs whose run finished without an error, the labels of the others): what a
     report section can show and what it must name as not measured"""

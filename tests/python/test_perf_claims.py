@@ -52,3 +52,23 @@ def test_a_kernel_measured_again_keeps_its_earlier_row(tmp_path, monkeypatch):
     assert f"| avx512 ({perf.BEFORE_LABEL}) | 7.50 / 84.31 | 11.2 |" in table
     assert "**16.6**" in table    # the earlier row is never the best
     assert f"| avx512 ({perf.BEFORE_LABEL}) | 138.53 | 136.23 | 1.02 |" in perf.floor_table("spr")
+
+
+def test_the_zen5_lines_of_doc_performance_follow_the_csvs():
+    """doc/performance.md, Zen 5, by hand: auto ran AVX2 on every scene; AVX2 has the shortest
+    loop of the forced paths on plate and block; peri/pmb's plate time spans the range the page
+    quotes over the four invocations; AVX-512 runs 1.92x its floor (3.24x with gathers), AVX2
+    1.08x"""
+    runs = perf._simd_runs("zen5")
+    for s, _ in perf.SIMD_SCENES:
+        assert perf._scene(runs["auto"], s)["path"] == "avx2"
+        own = {p: float(perf._scene(runs[p], s)["ours_loop_ms"]) for p in ("avx512", "avx2", "portable")}
+        assert min(own, key=own.get) == "avx2"
+    pmb = [float(perf._scene(runs[p], "plate 2D")["pmb_loop_ms"]) for p in perf.SIMD_PATHS]
+    assert (round(min(pmb), 2), round(max(pmb), 2)) == (48.65, 76.08)
+    floor = {p: perf._floor(perf.RESULTS / f"zen5-row-floor-{p}.csv") for p in ("avx512", "avx2")}
+    assert {p: round(k / f, 2) for p, (k, f, _) in floor.items()} == {"avx512": 1.92, "avx2": 1.08}
+    k, f, _ = perf._floor(perf.RESULTS / "zen5-row-floor-avx512-gathers.csv")
+    assert round(k / f, 2) == 3.24
+    other = perf._rows(perf.RESULTS / "zen5-simd-auto-bench-cylinder-memory.csv")
+    assert all(r["path"] == "avx2" for r in other if r["path"])

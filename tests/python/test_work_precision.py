@@ -1,5 +1,5 @@
 """The pure parts of the work-precision diagrams (bbpd.report.work_precision) on synthetic data: the
-rows of the CSV, its round trip, the cost of reaching an error, the sentences computed from
+rows of the CSV, its round trip, the cost of reaching an error, the table computed from
 them, the dispersion error at the fixed wavelength and the ring that holds that wavelength."""
 
 import math

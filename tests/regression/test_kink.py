@@ -6,8 +6,8 @@ the sweep was made (examples/kink-mixed-mode/results/kink.csv), and pure Mode I 
 straight ahead, far from any Mode-II angle (the negative control: a loading or sign error that
 swaps the modes, or a field that is not rotated with the crack, fails it).
 The same two runs make the kink section of REPORT.md (bbpd.report), which must hold their
-numbers, sentences computed from them and the figure.
-Slow: the whole sweep against the committed CSV, and the README's verdict recomputed from it.
+numbers, the lines filled from them and the figure.
+Slow: the whole sweep against the committed CSV; the README's verdict is checked against the CSV.
 """
 import csv
 

@@ -34,7 +34,7 @@ Command line (from the repository root):
       --csv examples/crack-branching/results/branching.csv --figures examples/crack-branching
 (--runs NAME ... picks runs of RUNS; the CSV keeps the rows of runs not made again); then
   tools/python -m bbpd.claims --write
-writes the README's table from the CSV (block 'branching', readme_table).
+writes the CSV whose tables the README shows (blocks 'branching' and 'branching-cost', python -m bbpd.claims --write).
 """
 
 import argparse
@@ -274,10 +274,6 @@ def cpu_of(path=RESULTS):
     return None
 
 
-def readme_table(path=RESULTS):
-    return table(read_rows(path), made_by(path), cpu_of(path))
-
-
 FIGURE = "damage_maps.png"
 MAP_TIMES_US = (15.0, 25.0, 35.0, 43.0)
 SIGMA_FIGURE = "damage_maps_sigma.png"
@@ -354,10 +350,6 @@ def cost_table(rows):
                          f"{r['loop_s']:.0f} | {r['x_split_mm'] - finest['x_split_mm']:+.2f} | "
                          f"{r['t_split_us'] - finest['t_split_us']:+.2f} |")
     return "\n".join(lines)
-
-
-def readme_cost(path=RESULTS):
-    return cost_table(read_rows(path))
 
 
 # --------------------------------------------------------------------------- report

@@ -32,7 +32,7 @@ from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
 from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.provenance import cpu
-from bbpd.jobs import ROOT, Job, Spec
+from bbpd.jobs import ROOT
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as _f
 
@@ -195,11 +195,10 @@ def jobs():
     for dx in RESOLUTIONS:
         for setup in ("2d", "3d"):
             label = f"Kalthoff-Winkler {setup} m = {M:g} dx = {dx * 1e3:g} mm"
-            job = Job(label=label, func="bbpd.report:run_job",
-                      kwargs={"target": "bbpd.benchmarks.kalthoff_winkler_3d:run_case",
-                              "args": {"setup": setup, "dx": dx, "nprocs": 1}, "label": label},
-                      inputs=tuple(str(p) for p in inputs), estimate_s=ESTIMATE_S[setup, dx])
-            specs.append(Spec("kw3d", KERNEL, dx, job))
+            specs.append(jobmod.report_spec("kw3d", KERNEL, dx, label,
+                                            "bbpd.benchmarks.kalthoff_winkler_3d:run_case",
+                                            {"setup": setup, "dx": dx, "nprocs": 1}, inputs,
+                                            ESTIMATE_S[setup, dx]))
     return specs
 
 

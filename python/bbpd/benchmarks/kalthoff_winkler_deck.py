@@ -29,7 +29,7 @@ from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
 from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.provenance import cpu
-from bbpd.jobs import ROOT, Job, Spec
+from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as _f
@@ -129,7 +129,7 @@ def comparison(rows):
     dxs = sorted({r["dx_mm"] for r in rows})
     fine, coarse = dxs[0], dxs[-1]
 
-    def moved(base, deck, dx, d):
+    def moved(base, deck, k, dx, d):
         a, b = by.get((base, k, dx)), by.get((deck, k, dx))
         if a and b and a[f"{d}_deg"] is not None and b[f"{d}_deg"] is not None:
             return b[f"{d}_deg"], b[f"{d}_deg"] - a[f"{d}_deg"]
@@ -137,14 +137,14 @@ def comparison(rows):
     out = dict(fine=fine, coarse=coarse, deck={}, grid={}, changes={}, hits=[])
     for k in KERNELS:
         for d in study.ANGLE_DEFS:
-            if (v := moved("paper", "standard", fine, d)) is not None:
+            if (v := moved("paper", "standard", k, fine, d)) is not None:
                 out["deck"][d, k] = v
         a, b = by.get(("standard", k, coarse)), by.get(("standard", k, fine))
         if fine != coarse and a and b and a["fit_deg"] is not None and b["fit_deg"] is not None:
             out["grid"][k] = b["fit_deg"] - a["fit_deg"]
     for _, deck, base in CHANGES:
         for dx in dxs:    # the finest grid both decks ran
-            got = {k: v for k in KERNELS if (v := moved(base, deck, dx, "fit")) is not None}
+            got = {k: v for k in KERNELS if (v := moved(base, deck, k, dx, "fit")) is not None}
             if got:
                 out["changes"][deck] = (dx, got)
                 break
@@ -191,13 +191,11 @@ def jobs(nprocs=1):
         for deck in DECKS:
             for k in KERNELS:
                 label = f"Kalthoff-Winkler deck {deck} {k} dx = {dx * 1e3:g} mm"
-                job = Job(label=label, func="bbpd.report:run_job",
-                          kwargs={"target": "bbpd.benchmarks.kalthoff_winkler_deck:run_case",
-                                  "args": {"deck": deck, "kernel": k, "dx": dx, "nprocs": nprocs},
-                                  "label": label},
-                          inputs=tuple(str(p) for p in inputs),
-                          estimate_s=ESTIMATE_S[dx] * (LPS_COST if deck in BOND_DECK else 1.0))
-                specs.append(Spec("kwdeck", k, dx, job))
+                specs.append(jobmod.report_spec("kwdeck", k, dx, label,
+                                                "bbpd.benchmarks.kalthoff_winkler_deck:run_case",
+                                                {"deck": deck, "kernel": k, "dx": dx,
+                                                 "nprocs": nprocs}, inputs,
+                                                ESTIMATE_S[dx] * (LPS_COST if deck in BOND_DECK else 1.0)))
     return specs
 
 

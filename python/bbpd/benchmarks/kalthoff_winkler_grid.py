@@ -34,7 +34,6 @@ from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
 from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.csvfile import read_csv, write_csv
-from bbpd.jobs import Job, Spec
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as _f
 
@@ -136,15 +135,12 @@ def jobs(cases=CASES, loadings=LOADINGS, nprocs=1):
         for grid in grids:
             for loading in loadings:
                 label = f"Kalthoff-Winkler grid {grid} {loading} {kernel} dx = {dx * 1e3:g} mm"
-                job = Job(label=label, func="bbpd.report:run_job",
-                          kwargs={"target": "bbpd.benchmarks.kalthoff_winkler_grid:run_case",
-                                  "args": {"kernel": kernel, "dx": dx, "loading": loading,
-                                           "grid": grid, "nprocs": nprocs},
-                                  "label": label},
-                          inputs=tuple(str(p) for p in inputs),
-                          estimate_s=(8.0 if dx > 1.5e-3 else 60.0) * (
-                              2.5 if loading == "projectile" else 1.0))
-                specs.append(Spec("kwgrid", kernel, dx, job))
+                estimate = ((8.0 if dx > 1.5e-3 else 60.0)
+                            * (2.5 if loading == "projectile" else 1.0))
+                specs.append(jobmod.report_spec("kwgrid", kernel, dx, label,
+                                                "bbpd.benchmarks.kalthoff_winkler_grid:run_case",
+                                                {"kernel": kernel, "dx": dx, "loading": loading,
+                                                 "grid": grid, "nprocs": nprocs}, inputs, estimate))
     return specs
 
 

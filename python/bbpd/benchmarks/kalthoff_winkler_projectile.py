@@ -40,7 +40,6 @@ from bbpd import jobs as jobmod
 from bbpd import markers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as study
-from bbpd.jobs import Job, Spec
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as f
 from bbpd import plots
@@ -281,18 +280,11 @@ def crosses_plate(r):
     return r["crack_stops"].startswith("edge")
 
 
-def verdict(rows):
-    """The sentence the README carries, computed from the CSV rows: the setups with an angle of
-    70 +- 2 deg (any of the three definitions) whose cracks cross the plate."""
-    hits = []
-    for r in rows:
-        defs = [d for d in ("initial", "fit", "chord") if _num(r[f"{d}_deg"]) is not None
-                and abs(_num(r[f"{d}_deg"]) - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
-        if defs and crosses_plate(r):
-            hits.append(f"{r['setup'].upper()} {r['loading']} {r['kernel']} {float(r['dx_mm']):g} mm Gc = "
-                        f"{float(r['Gc']):g} ({', '.join(defs)})")
-    return ("Setups with 70 +- 2 deg and cracks that cross the plate: "
-            + ("; ".join(hits) if hits else "none") + ".")
+def at_target(r):
+    """the angle definitions by which a run's crack lies within 70 +- 2 deg, if its cracks cross
+    the plate (else none)"""
+    return [d for d in ("initial", "fit", "chord") if crosses_plate(r) and _num(r[f"{d}_deg"]) is not None
+            and abs(_num(r[f"{d}_deg"]) - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
 
 
 def markdown(rows):
@@ -302,8 +294,8 @@ def markdown(rows):
     head = ("| setup | loading | kernel | dx (mm) | Gc (J/m2) | first bond (us) | damage band (us) | "
             "initial (deg) | fit (deg) | chord (deg) | crack length at end (mm) | crack stops (us) | "
             "far-edge crack (us) | interface speed (m/s) | contact force drop (us) | "
-            "contact opens (us) | momentum drift | loop CPU (s) | ranks |")
-    lines = [head, "|" + "---|" * 19]
+            "contact opens (us) | momentum drift | loop CPU (s) | ranks | 70 ± 2° and crosses |")
+    lines = [head, "|" + "---|" * 20]
     for r in rows:
         lines.append("| " + " | ".join([
             r["setup"].upper(), r["loading"], r["kernel"], f"{float(r['dx_mm']):g}", f"{float(r['Gc']):g}",
@@ -311,8 +303,8 @@ def markdown(rows):
             f(r["fit_deg"], ".1f"), f(r["chord_deg"], ".1f"), f(r["length_end_mm"], ".0f"),
             r["crack_stops"], f(r["far_edge_us"], ".0f"), f(r["v_interface"], ".2f"),
             f(r["t_drop_us"], ".1f"), f(r["t_open_us"], ".1f"), f(r["momentum_drift"], ".1e"),
-            f(r["loop_cpu_s"], ".0f"), r["nprocs"]]) + " |")
-    return "\n".join(lines) + "\n\n" + verdict(rows)
+            f(r["loop_cpu_s"], ".0f"), r["nprocs"], ", ".join(at_target(r)) or "-"]) + " |")
+    return "\n".join(lines)
 
 
 def update_readme(path, text, name="kw-projectile"):
@@ -347,13 +339,10 @@ def jobs(full=False, nprocs=1):
     specs = []
     for kernel, dx in (REPORT_CASES_FULL if full else REPORT_CASES):
         label = f"Kalthoff-Winkler projectile {kernel} dx = {dx * 1e3:g} mm"
-        job = Job(label=label, func="bbpd.report:run_job",
-                  kwargs={"target": "bbpd.benchmarks.kalthoff_winkler_projectile:report_run",
-                          "args": {"kernel": kernel, "dx": dx, "nprocs": nprocs},
-                          "label": label},
-                  inputs=tuple(str(p) for p in inputs),
-                  estimate_s=25.0 if dx > 1.5e-3 else 200.0)
-        specs.append(Spec("kwprojectile", kernel, dx, job))
+        specs.append(jobmod.report_spec("kwprojectile", kernel, dx, label,
+                                        "bbpd.benchmarks.kalthoff_winkler_projectile:report_run",
+                                        {"kernel": kernel, "dx": dx, "nprocs": nprocs}, inputs,
+                                        25.0 if dx > 1.5e-3 else 200.0))
     return specs
 
 

@@ -41,7 +41,6 @@ from scipy.spatial import cKDTree
 from bbpd import jobs as jobmod
 from bbpd import readers
 from bbpd.benchmarks import kalthoff_winkler as kw
-from bbpd.jobs import Job, Spec
 from bbpd.kernels import COLORS
 from bbpd.runner import run_lammps
 from bbpd import markdown
@@ -428,13 +427,10 @@ def jobs(nprocs=1):
     for case in CASES:
         for k, dx in STUDY_KERNEL_DX:
             label = f"Kalthoff-Winkler study {case} {k} dx = {dx * 1e3:g} mm"
-            job = Job(label=label, func="bbpd.report:run_job",
-                      kwargs={"target": "bbpd.benchmarks.kalthoff_winkler_study:run_case",
-                              "args": {"kernel": k, "dx": dx, "case": case, "nprocs": nprocs},
-                              "label": label},
-                      inputs=tuple(str(p) for p in inputs),
-                      estimate_s=500.0 if dx < 1e-3 else 90.0)
-            specs.append(Spec("kwstudy", k, dx, job))
+            specs.append(jobmod.report_spec("kwstudy", k, dx, label,
+                                            "bbpd.benchmarks.kalthoff_winkler_study:run_case",
+                                            {"kernel": k, "dx": dx, "case": case, "nprocs": nprocs},
+                                            inputs, 500.0 if dx < 1e-3 else 90.0))
     return specs
 
 

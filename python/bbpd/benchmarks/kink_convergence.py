@@ -36,7 +36,6 @@ from bbpd import csvfile
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import kink as kinkbench
 from bbpd.provenance import cpu
-from bbpd.jobs import Job, Spec
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 from bbpd import plots
@@ -312,12 +311,10 @@ def jobs(nprocs=1):
     specs = []
     for m, rd in CASES:
         label = f"kink convergence m = {m:g} R/delta = {rd:g}"
-        job = Job(label=label, func="bbpd.report:run_job",
-                  kwargs={"target": "bbpd.benchmarks.kink_convergence:run_case",
-                          "args": {"m": m, "r_over_delta": rd, "nprocs": nprocs}, "label": label},
-                  inputs=tuple(str(p) for p in inputs),
-                  estimate_s=90.0 * (m / 5.0) ** 3 * (rd / 10.0) ** 3)
-        specs.append(Spec("kinkconv", KERNEL, DELTA / m, job))
+        specs.append(jobmod.report_spec("kinkconv", KERNEL, DELTA / m, label,
+                                        "bbpd.benchmarks.kink_convergence:run_case",
+                                        {"m": m, "r_over_delta": rd, "nprocs": nprocs}, inputs,
+                                        90.0 * (m / 5.0) ** 3 * (rd / 10.0) ** 3))
     return specs
 
 

@@ -43,7 +43,6 @@ import numpy as np
 from bbpd import csvfile, freund, reference
 from bbpd import jobs as jobmod
 from bbpd.provenance import cpu
-from bbpd.jobs import Job, Spec
 from bbpd.kernels import COLORS
 from bbpd.plots import plt
 from bbpd.runner import LammpsError, run_or_reuse
@@ -456,12 +455,10 @@ def jobs(full=False):
     for kernel, D, m, hd in (REPORT_CASES_FULL if full else REPORT_CASES):
         label = f"strip {kernel} m = {m:g} H/delta = {hd:g} Delta = {D:g}"
         estimate = 30.0 * (m / M) ** 3 * (hd / 10.0) ** 3
-        j = Job(label=label, func="bbpd.report:run_job",
-                kwargs={"target": "bbpd.benchmarks.strip:job",
-                        "args": {"kernel": kernel, "Delta": D, "m": m, "H_over_delta": hd},
-                        "label": label},
-                inputs=tuple(str(p) for p in inputs), estimate_s=estimate)
-        specs.append(Spec("strip", kernel, DX * M / m, j))
+        specs.append(jobmod.report_spec("strip", kernel, DX * M / m, label,
+                                        "bbpd.benchmarks.strip:job",
+                                        {"kernel": kernel, "Delta": D, "m": m, "H_over_delta": hd},
+                                        inputs, estimate))
     return specs
 
 

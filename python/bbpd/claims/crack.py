@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Blocks of the crack-growth examples (examples/mode1-propagation, examples/kink-mixed-mode,
-examples/crack-branching,
-the projectile, grid-pull and summary parts of examples/kalthoff-winkler), each rendered by its
-benchmark module from the results it committed."""
+"""Tables of the crack-growth examples (examples/mode1-propagation, examples/kink-mixed-mode,
+examples/strip-steady-crack, examples/crack-branching, the projectile, grid-pull, deck and 3D
+parts of examples/kalthoff-winkler): per README, block name -> render(data), each rendered by
+its benchmark module from the results it committed."""
 import json
 
 from bbpd import csvfile
@@ -10,8 +10,9 @@ from bbpd.benchmarks import kalthoff_winkler_3d as kw3d
 from bbpd.benchmarks import kalthoff_winkler_deck as deck
 from bbpd.benchmarks import kalthoff_winkler_grid as grid
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
-from bbpd.benchmarks import (branching, kink, kink_convergence, kink_kalthoff_winkler,
-                             mode1_propagation, strip, strip_closure)
+from bbpd.benchmarks import kink_convergence as kc
+from bbpd.benchmarks import (branching, kink, kink_kalthoff_winkler, mode1_propagation, strip,
+                             strip_closure)
 from bbpd.jobs import ROOT
 
 PROPAGATION_CSV = ROOT / "examples" / "mode1-propagation" / "results" / "mode1_propagation.csv"
@@ -29,88 +30,37 @@ def _made_by(path):
     return None
 
 
-def propagation_table(data):
-    return mode1_propagation.table_markdown(mode1_propagation.read_rows(PROPAGATION_CSV),
-                                            csvfile.provenance(PROPAGATION_CSV))
+def _commands(path):
+    """the commands of the CSV's provenance lines ('made by: X', 'rows added by: Y')"""
+    return [ln.split(": ", 1)[1] for ln in csvfile.provenance(path)]
 
 
-def kink_table(data):
-    return kink.table(kink.read_rows(kink.RESULTS))
-
-
-def branching_table(data):
-    return branching.readme_table()
-
-
-def branching_cost(data):
-    return branching.readme_cost()
-
-
-def kink_kw_table(data):
-    return kink_kalthoff_winkler.table(json.loads(kink_kalthoff_winkler.SUMMARY.read_text()))
-
-
-def projectile_table(data):
-    return projectile.markdown(projectile.read_csv(PROJECTILE_CSV))
-
-
-def grid_pull_table(data):
-    comments, rows = grid.read_rows(grid.CSV)
-    return grid.markdown(rows, comments)
-
-
-def strip_table(data):
-    return strip.table_markdown(strip.read_rows(STRIP_CSV),
-                                [ln.split(": ", 1)[1] for ln in csvfile.provenance(STRIP_CSV)])
-
-
-def strip_closure_table(data):
-    return strip_closure.table_markdown(strip_closure.read_rows(CLOSURE_CSV), _made_by(CLOSURE_CSV))
-
-
-def strip_work_precision(data):
-    return strip.work_precision_markdown(strip.read_rows(STRIP_CSV))
-
-
-def kw_deck_table(data):
-    return deck.table(deck.read_rows()[1],
-                      [ln.split(": ", 1)[1] for ln in csvfile.provenance(deck.CSV)])
-
-
-def kw3d_table(data):
-    return kw3d.table(kw3d.read_rows(), _made_by(kw3d.CSV))
-
-
-def kink_convergence_table(data):
-    return kink_convergence.table(kink_convergence.read_rows(),
-                                  [ln.split(": ", 1)[1] for ln in csvfile.provenance(kink_convergence.CSV)])
-
-
-
-
-def kink_sequences(data):
-    return kink_convergence.sequences_table(kink_convergence.read_rows())
-
-
-def kink_disk(data):
-    return kink_convergence.disk_table(kink_convergence.read_rows())
-
-
-def kink_sweeps(data):
-    return kink_convergence.sweeps_table(kink_convergence.read_rows())
-
-
-def kink_limits(data):
-    return kink_convergence.limits_table(kink_convergence.read_rows())
-
-
-def kink_kernels(data):
-    return kink_convergence.kernels_table(kink_convergence.read_rows())
-
-
-def kink_coverage(data):
-    return kink_convergence.coverage_table(kink_convergence.read_rows())
-
-
-def strip_law(data):
-    return strip.law_table(strip.read_rows(STRIP_CSV))
+PROPAGATION = {
+    "mode1-propagation": lambda data: mode1_propagation.table_markdown(
+        mode1_propagation.read_rows(PROPAGATION_CSV), csvfile.provenance(PROPAGATION_CSV))}
+KINK = {
+    "kink": lambda data: kink.table(kink.read_rows(kink.RESULTS)),
+    "kink-kw": lambda data: kink_kalthoff_winkler.table(
+        json.loads(kink_kalthoff_winkler.SUMMARY.read_text())),
+    "kink-convergence": lambda data: kc.table(kc.read_rows(), _commands(kc.CSV)),
+    "kink-sequences": lambda data: kc.sequences_table(kc.read_rows()),
+    "kink-disk": lambda data: kc.disk_table(kc.read_rows()),
+    "kink-sweeps": lambda data: kc.sweeps_table(kc.read_rows()),
+    "kink-limits": lambda data: kc.limits_table(kc.read_rows()),
+    "kink-kernels": lambda data: kc.kernels_table(kc.read_rows()),
+    "kink-coverage": lambda data: kc.coverage_table(kc.read_rows())}
+STRIP = {
+    "strip-runs": lambda data: strip.table_markdown(strip.read_rows(STRIP_CSV), _commands(STRIP_CSV)),
+    "strip-work-precision": lambda data: strip.work_precision_markdown(strip.read_rows(STRIP_CSV)),
+    "strip-closure": lambda data: strip_closure.table_markdown(strip_closure.read_rows(CLOSURE_CSV),
+                                                              _made_by(CLOSURE_CSV)),
+    "strip-law": lambda data: strip.law_table(strip.read_rows(STRIP_CSV))}
+BRANCHING = {
+    "branching": lambda data: branching.table(branching.read_rows(), branching.made_by(),
+                                              branching.cpu_of()),
+    "branching-cost": lambda data: branching.cost_table(branching.read_rows())}
+KW = {
+    "kw-projectile": lambda data: projectile.markdown(projectile.read_csv(PROJECTILE_CSV)),
+    "kw-grid-pull": lambda data: grid.markdown(*reversed(grid.read_rows(grid.CSV))),
+    "kw-deck": lambda data: deck.table(deck.read_rows()[1], _commands(deck.CSV)),
+    "kw-3d": lambda data: kw3d.table(kw3d.read_rows(), _made_by(kw3d.CSV))}

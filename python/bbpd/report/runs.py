@@ -16,7 +16,7 @@ from bbpd import readers
 from bbpd.benchmarks import (branching, dispersion, kalthoff_winkler_3d, kalthoff_winkler_deck,
                              kalthoff_winkler_grid, kalthoff_winkler_projectile,
                              kalthoff_winkler_study, kink, kink_convergence, strip)
-from bbpd.jobs import ROOT, Job, Spec
+from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 
 BENCH = ROOT / "python" / "bbpd" / "benchmarks"
@@ -159,11 +159,8 @@ def label_of(bench, kernel, dx, args):
 def make_spec(bench, kernel, dx, target, args, inputs, estimate):
     """One run of the report: target(workdir, **args) as a cached job whose key covers the
     files in inputs (input script, analysis code)."""
-    label = label_of(bench, kernel, dx, args)
-    job = Job(label=label, func="bbpd.report:run_job",
-              kwargs={"target": target, "args": args, "label": label},
-              inputs=tuple(str(p) for p in inputs), estimate_s=estimate)
-    return Spec(bench, kernel, dx, job)
+    return jobmod.report_spec(bench, kernel, dx, label_of(bench, kernel, dx, args), target, args,
+                              inputs, estimate)
 
 
 def _every_kernel(bench, dxs, target, estimate_s):
