@@ -277,8 +277,30 @@ BAD = {
 }
 
 
+# the computes with a style that has no dilatation or plasticity
+BAD_COMPUTE = {
+    "plasticity-with-ves": (VES_STYLE, f"{LPS_NUMBERS} 0.5 1.0e-3", "plasticity/atom",
+                            "requires pair style bbpd/eps"),
+    "plasticity-with-lps": ("pair_style bbpd/lps 3d", LPS_NUMBERS, "plasticity/atom",
+                            "requires pair style bbpd/eps"),
+    "dilatation-with-pmb": ("pair_style bbpd/pmb 3d", "1.0e22 0.003015 0.001 0.25",
+                            "dilatation/atom", "requires a state-based bbpd pair style"),
+    "dilatation-arguments": (EPS_STYLE, f"{LPS_NUMBERS} 1.0e8", "dilatation/atom 1",
+                             "it takes no arguments"),
+}
+
+
 @pytest.mark.parametrize("name", sorted(BAD))
 def test_bad_input_stops_with_error(tmp_path, name):
     style, numbers, expected = BAD[name]
     text = script(BASE_3D, pair_style=style, pair_coeff=f"pair_coeff * * {numbers}")
+    check_error_exit(run_case(tmp_path, text), expected)
+
+
+@pytest.mark.parametrize("name", sorted(BAD_COMPUTE))
+def test_computes_need_their_state(tmp_path, name):
+    style, numbers, compute, expected = BAD_COMPUTE[name]
+    text = script(BASE_3D, pair_style=style, pair_coeff=f"pair_coeff * * {numbers}",
+                  extra=f"compute c all bbpd/{compute}\ncompute s all reduce sum c_c\n"
+                        "thermo_style custom step c_s")
     check_error_exit(run_case(tmp_path, text), expected)
