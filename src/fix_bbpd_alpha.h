@@ -6,7 +6,8 @@
    Created by the pair style (ID BBPD_ALPHA); not meant for input scripts.
      last_step      time step of the last force evaluation (global, in restart files)
      fbroken[i]     with bbpd/pmb:  force density on atom i from the bonds that broke
-                    at that step (they act in the step they break, as in peri/pmb)
+                    at that step (they act in the step they break, as in peri/pmb): the
+                    three per-atom values of FixBBPDAtomState
    A second evaluation of the same step neither breaks bonds nor updates the smallest
    stretches, and adds fbroken: the forces, and so the run, are bitwise those of a run
    without the interruption.
@@ -15,31 +16,20 @@
 #ifndef LMP_FIX_BBPD_ALPHA_H
 #define LMP_FIX_BBPD_ALPHA_H
 
-#include "fix.h"
+#include "fix_bbpd_atom_state.h"
 
 namespace LAMMPS_NS {
 
-class FixBBPDAlpha : public Fix {
+class FixBBPDAlpha : public FixBBPDAtomState {
  public:
   FixBBPDAlpha(class LAMMPS *, int, char **);
-  ~FixBBPDAlpha() override;
   int setmask() override { return 0; }
 
-  double memory_usage() override;
-  void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
-  void set_arrays(int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
   void write_restart(FILE *) override;
   void restart(char *) override;
-  int pack_restart(int, double *) override;
-  void unpack_restart(int, int) override;
-  int size_restart(int) override { return 4; }
-  int maxsize_restart() override { return 4; }
 
   bigint last_step;
-  double **fbroken;
+  double **&fbroken = values;    // [i][0..2]
 };
 
 }    // namespace LAMMPS_NS

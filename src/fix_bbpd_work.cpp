@@ -15,26 +15,13 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-FixBBPDWork::FixBBPDWork(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), state(nullptr)
+FixBBPDWork::FixBBPDWork(LAMMPS *lmp, int narg, char **arg) :
+    FixBBPDAtomState(lmp, narg, arg, "compute bbpd/energy", NSTATE, 1)
 {
-  if (narg != 3)
-    error->all(FLERR, "Fix bbpd/work takes no arguments (it is created by compute bbpd/energy)");
   if (!atom->rmass_flag || !atom->vfrac_flag)
     error->all(FLERR, "Compute bbpd/energy needs atom_style peri (per-atom density and volume)");
-  restart_peratom = 1;
-  create_attribute = 1;    // atoms created later start with no work done on them
-  maxexchange = NSTATE;
-  FixBBPDWork::grow_arrays(atom->nmax);
-  atom->add_callback(Atom::GROW);
-  atom->add_callback(Atom::RESTART);
+  // atoms created later start with no work done on them (create_attribute), from where they are
   for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
-}
-
-FixBBPDWork::~FixBBPDWork()
-{
-  atom->delete_callback(id, Atom::GROW);
-  atom->delete_callback(id, Atom::RESTART);
-  memory->destroy(state);
 }
 
 int FixBBPDWork::setmask()
@@ -122,21 +109,6 @@ void FixBBPDWork::end_of_step()
   }
 }
 
-double FixBBPDWork::memory_usage()
-{
-  return (double) atom->nmax * NSTATE * sizeof(double);
-}
-
-void FixBBPDWork::grow_arrays(int nmax)
-{
-  memory->grow(state, nmax, NSTATE, "bbpd/work:state");
-}
-
-void FixBBPDWork::copy_arrays(int i, int j, int)
-{
-  memcpy(state[j], state[i], NSTATE * sizeof(double));
-}
-
 void FixBBPDWork::set_arrays(int i)
 {
   for (int m = 0; m < NSTATE; m++) state[i][m] = 0.0;
@@ -144,30 +116,3 @@ void FixBBPDWork::set_arrays(int i)
     for (int m = 0; m < 3; m++) state[i][XOLD + m] = atom->x[i][m];
 }
 
-int FixBBPDWork::pack_exchange(int i, double *buf)
-{
-  for (int m = 0; m < NSTATE; m++) buf[m] = state[i][m];
-  return NSTATE;
-}
-
-int FixBBPDWork::unpack_exchange(int nlocal, double *buf)
-{
-  for (int m = 0; m < NSTATE; m++) state[nlocal][m] = buf[m];
-  return NSTATE;
-}
-
-int FixBBPDWork::pack_restart(int i, double *buf)
-{
-  buf[0] = RESTART_SIZE;
-  buf[1] = state[i][W];
-  return RESTART_SIZE;
-}
-
-void FixBBPDWork::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  set_arrays(nlocal);
-  state[nlocal][W] = extra[nlocal][m + 1];
-}

@@ -24,14 +24,13 @@
 #ifndef LMP_FIX_BBPD_WORK_H
 #define LMP_FIX_BBPD_WORK_H
 
-#include "fix.h"
+#include "fix_bbpd_atom_state.h"
 
 namespace LAMMPS_NS {
 
-class FixBBPDWork : public Fix {
+class FixBBPDWork : public FixBBPDAtomState {
  public:
   FixBBPDWork(class LAMMPS *, int, char **);
-  ~FixBBPDWork() override;
   int setmask() override;
   void init() override;
   void setup_pre_reverse(int, int) override;
@@ -40,16 +39,7 @@ class FixBBPDWork : public Fix {
   void pre_reverse(int, int) override;
   void end_of_step() override;
 
-  double memory_usage() override;
-  void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
   void set_arrays(int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
-  int pack_restart(int, double *) override;
-  void unpack_restart(int, int) override;
-  int size_restart(int) override { return RESTART_SIZE; }
-  int maxsize_restart() override { return RESTART_SIZE; }
 
   // the cumulative work on local atom i (an energy); 0 outside the group
   double work(int i) const { return state[i][W]; }
@@ -57,8 +47,7 @@ class FixBBPDWork : public Fix {
   enum { W, KE, FP, DX = FP + 3, XOLD = DX + 3, NSTATE = XOLD + 3 };
 
  private:
-  static constexpr int RESTART_SIZE = 2;    // {size, W}
-  double **state;
+  double **&state = values;    // [i][W .. NSTATE-1]; W alone in restart files
   double kinetic(int i) const;     // 1/2 rho v^2 V of local atom i
   void start_steps();              // KE and position now, no work
 };

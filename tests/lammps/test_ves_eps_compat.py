@@ -141,6 +141,34 @@ def test_forces_and_energy_equal_peri(lmp, block_files, family):
     assert share > (VISCOUS_SHARE_MIN if family == "ves" else PLASTIC_SHARE_MIN)
 
 
+@pytest.mark.parametrize("family", ["ves", "eps"])
+def test_two_types_equal_peri(lmp, tmp_path, family):
+    """Two types with their own K, G and lambda, tau or Y (atom i's type decides its bonds'
+    force state, as in peri/ves and peri/eps): forces equal to 1e-12 after the loading. No
+    atom is pushed here: for a pair of atoms of different types closer than the short-range
+    distance peri/* takes the K of the atom its half neighbour list lists first, bbpd/* each
+    atom's own (doc/pair_bbpd_ves_eps.rst)."""
+    x0, box = block(3)
+    rng = np.random.default_rng(20261206)
+    y = x0 + 1.0e-3 * DX * rng.uniform(-1.0, 1.0, x0.shape)
+    assert short_range_pairs(x0, y) == 0
+    types = np.where(x0[:, 0] > x0[:, 0].mean(), 2, 1)
+    ref.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box, types=types)
+    ref.write_positions(tmp_path / "current.dump", y, box)
+    base = f"{BULK!r} {SHEAR!r} {DELTA!r} {S00_ELASTIC!r} {ALPHA!r}"
+    other = f"{2 * BULK!r} {0.5 * SHEAR!r} {DELTA!r} {S00_ELASTIC!r} {ALPHA!r}"
+    own = {"ves": (f"{LAMBDA} {TAU!r}", f"0.8 {3 * TAU!r}"), "eps": (f"{YIELD}", f"{3 * YIELD}")}[family]
+    lines = (f"pair_coeff 1 1 {base} {own[0]}\npair_coeff 2 2 {other} {own[1]}\n"
+             f"pair_coeff 1 2 {base} {own[0]}\n")
+    _, f_peri, _ = loaded_forces(lmp, tmp_path, f"pair_style peri/{family}\n" + lines, plugin=False,
+                                 family=family)
+    _, f, _ = loaded_forces(lmp, tmp_path, f"pair_style bbpd/{family} 3d\n" + lines, plugin=True,
+                            family=family)
+    err = np.linalg.norm(f - f_peri, axis=1).max() / np.linalg.norm(f_peri, axis=1).max()
+    print(f"{family}, two types: {err:.3g} of the largest force")
+    assert err < FORCE_RTOL
+
+
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
@@ -249,8 +277,30 @@ BAD = {
 }
 
 
+# the computes with a style that has no dilatation or plasticity
+BAD_COMPUTE = {
+    "plasticity-with-ves": (VES_STYLE, f"{LPS_NUMBERS} 0.5 1.0e-3", "plasticity/atom",
+                            "requires pair style bbpd/eps"),
+    "plasticity-with-lps": ("pair_style bbpd/lps 3d", LPS_NUMBERS, "plasticity/atom",
+                            "requires pair style bbpd/eps"),
+    "dilatation-with-pmb": ("pair_style bbpd/pmb 3d", "1.0e22 0.003015 0.001 0.25",
+                            "dilatation/atom", "requires a state-based bbpd pair style"),
+    "dilatation-arguments": (EPS_STYLE, f"{LPS_NUMBERS} 1.0e8", "dilatation/atom 1",
+                             "it takes no arguments"),
+}
+
+
 @pytest.mark.parametrize("name", sorted(BAD))
 def test_bad_input_stops_with_error(tmp_path, name):
     style, numbers, expected = BAD[name]
     text = script(BASE_3D, pair_style=style, pair_coeff=f"pair_coeff * * {numbers}")
+    check_error_exit(run_case(tmp_path, text), expected)
+
+
+@pytest.mark.parametrize("name", sorted(BAD_COMPUTE))
+def test_computes_need_their_state(tmp_path, name):
+    style, numbers, compute, expected = BAD_COMPUTE[name]
+    text = script(BASE_3D, pair_style=style, pair_coeff=f"pair_coeff * * {numbers}",
+                  extra=f"compute c all bbpd/{compute}\ncompute s all reduce sum c_c\n"
+                        "thermo_style custom step c_s")
     check_error_exit(run_case(tmp_path, text), expected)

@@ -7,6 +7,8 @@
 
 #include "bbpd_eps.h"
 #include "bbpd_lps.h"
+#include "bbpd_lps_history_row.h"
+#include "bbpd_pmb_rules.h"
 #include "bbpd_ves.h"
 
 #include <gtest/gtest.h>
@@ -16,6 +18,7 @@
 
 namespace VES = BBPD::VES;
 namespace EPS = BBPD::EPS;
+namespace LPS = BBPD::LPS;
 
 namespace {
 
@@ -138,4 +141,133 @@ TEST(Eps, PlasticRowReturnsToTheYieldSurface)
       EXPECT_NEAR(returned, sum, 1e-12 * sum);
     }
   }
+}
+
+/* the history row (bbpd_lps_history_row.h) on atom 0 of peri/ves's example lattice (122
+   partners) in a uniform simple shear: every atom has the state of the body */
+namespace {
+
+constexpr double LC = 0.5e-3, DELTA = 1.5001e-3, VOLUME = LC * LC * LC, K = 14.9e9;
+
+struct ShearedRow {
+  std::vector<double> x;    // 3 per atom, atom 0 at the origin
+  std::vector<int> partner;
+  std::vector<double> xi0, wv, r;
+  std::vector<LPS::AtomState> states;
+  std::vector<int> slot;
+  double theta = 0.0;
+  int n() const { return static_cast<int>(partner.size()); }
+};
+
+struct Values {
+  const double *xi0, *wv;
+  double xi0_at(int k, int) const { return xi0[k]; }
+  double coef_at(int k, int) const { return wv[k]; }
+};
+
+ShearedRow sheared_row(double gamma)
+{
+  ShearedRow row;
+  row.x = {0.0, 0.0, 0.0};
+  for (int a = -3; a <= 3; a++)
+    for (int b = -3; b <= 3; b++)
+      for (int c = -3; c <= 3; c++) {
+        const double p[3] = {a * LC, b * LC, c * LC};
+        const double xi0 = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        if (xi0 == 0.0 || !BBPD::PMB::in_family(xi0 * xi0, DELTA)) continue;
+        row.x.insert(row.x.end(), {p[0] + gamma * p[1], p[1], p[2]});
+        row.partner.push_back(row.n() + 1);
+        row.xi0.push_back(xi0);
+        row.wv.push_back(LPS::weighted_partner_volume(xi0, DELTA, LC, VOLUME));
+      }
+  double m = 0.0, sum = 0.0;
+  for (int k = 0; k < row.n(); k++) {
+    const double *y = &row.x[3 * row.partner[k]];
+    row.r.push_back(std::sqrt(y[0] * y[0] + y[1] * y[1] + y[2] * y[2]));
+    m += LPS::weighted_volume_term(row.wv[k], row.xi0[k]);
+    sum += LPS::dilatation_term(row.wv[k], row.xi0[k], LPS::elongation(row.r[k], row.xi0[k]));
+    row.slot.push_back(2 * k + 1);    // slots need not be consecutive
+  }
+  row.theta = LPS::dilatation(sum, m);
+  row.states.assign(row.n() + 1, LPS::atom_state(row.theta, m));
+  return row;
+}
+
+auto no_check = [](int, double, double) {
+  return false;
+};
+
+template <class F, bool COMMIT>
+LPS::RowSums sums_of(const ShearedRow &row, const F &fam, const typename F::Plan &plan,
+                     std::vector<double> &hist)
+{
+  LPS::RowSums s;
+  LPS::history_row_sums<F, true, false, true, COMMIT>(
+      row.x.data(), 0, row.partner.data(), Values{row.xi0.data(), row.wv.data()}, row.n(),
+      row.r.data(), row.states.data(), K, fam, plan, LPS::third(row.theta), row.slot.data(),
+      hist.data(), no_check, s);
+  return s;
+}
+
+void expect_same_bits(const LPS::RowSums &a, const LPS::RowSums &b)
+{
+  for (int c = 0; c < 3; c++) EXPECT_EQ(a.f[c], b.f[c]);
+  EXPECT_EQ(a.wv_ed2, b.wv_ed2);
+  for (int c = 0; c < 6; c++) EXPECT_EQ(a.fdd[c], b.fdd[c]);
+}
+
+}    // namespace
+
+TEST(HistoryRow, VesSecondEvaluationRepeatsTheStepAndTheBodyStaysInBalance)
+{
+  const ShearedRow row = sheared_row(1.0e-5);
+  ASSERT_EQ(row.n(), 122);
+  const VES::Family f{VES::coeffs(G, 0.5, TAU, DT)};
+  std::vector<double> hist(2 * 2 * row.n() + 2, 0.0);
+  LPS::RowSums first{};
+  for (int step = 0; step < 30; step++) first = sums_of<VES::Family, true>(row, f, {}, hist);
+  const std::vector<double> kept = hist;
+  const LPS::RowSums again = sums_of<VES::Family, false>(row, f, {}, hist);
+  expect_same_bits(first, again);
+  EXPECT_EQ(hist, kept);    // a second evaluation leaves the history as it is
+  // a uniform shear: each bond and its opposite carry the same history, so no net force
+  double scale = 0.0;
+  for (int k = 0; k < row.n(); k++)
+    scale += 15.0 * G * row.wv[k] * 2.0 * row.states[0].inv_m * 1e-5 * row.xi0[k];
+  for (int c = 0; c < 3; c++) EXPECT_LT(std::fabs(first.f[c]), 1e-12 * scale);
+  // the back extension has relaxed towards ed: less deviatoric energy than lambda = 0 (elastic)
+  const VES::Family elastic{VES::coeffs(G, 0.0, TAU, DT)};
+  std::vector<double> h0(hist.size(), 0.0);
+  const LPS::RowSums e = sums_of<VES::Family, true>(row, elastic, {}, h0);
+  EXPECT_LT(first.wv_ed2, 0.75 * e.wv_ed2);
+}
+
+TEST(HistoryRow, EpsPlasticRowReturnsToTheYieldSurfaceAndRepeats)
+{
+  const ShearedRow row = sheared_row(1.0e-3);
+  const double m = 1.0 / row.states[0].inv_m;
+  const EPS::Family f{{G, EPS::pointwise_yield_value(1.0e7, DELTA), m}};
+  std::vector<double> hist(2 * 2 * row.n() + 2, 0.0);
+  const double norm = LPS::history_row_norm<EPS::Family, true, false>(
+      row.x.data(), 0, row.partner.data(), Values{row.xi0.data(), row.wv.data()}, row.n(),
+      row.r.data(), row.states.data(), LPS::third(row.theta), f, row.slot.data(), hist.data());
+  const EPS::Family::Plan plan = f.plan(norm);
+  ASSERT_TRUE(plan.plastic);
+  const LPS::RowSums first = sums_of<EPS::Family, true>(row, f, plan, hist);
+  const LPS::RowSums again = sums_of<EPS::Family, false>(row, f, plan, hist);
+  expect_same_bits(first, again);
+  // the returned deviatoric state of every bond: |t|^2 summed with V_j ramp is 2 psi0
+  double returned = 0.0;
+  for (int k = 0; k < row.n(); k++) {
+    const double ed = LPS::deviatoric_extension(LPS::elongation(row.r[k], row.xi0[k]), row.xi0[k],
+                                                LPS::third(row.theta));
+    const double t =
+        plan.scale * 15.0 * G * 2.0 * row.states[0].inv_m * LPS::influence(row.xi0[k]) * ed;
+    returned += t * t * row.wv[k] / LPS::influence(row.xi0[k]);
+  }
+  EXPECT_NEAR(std::sqrt(returned), std::sqrt(2.0 * f.c.psi0), 1e-12 * std::sqrt(2.0 * f.c.psi0));
+  // the plastic extensions were written where the slots say, and nowhere else
+  for (int k = 0; k < row.n(); k++) EXPECT_NE(hist[2 * row.slot[k] + 1], 0.0);
+  EXPECT_EQ(hist[0], 0.0);
+  EXPECT_EQ(hist[1], 0.0);
 }
