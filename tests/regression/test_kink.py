@@ -81,8 +81,8 @@ def test_pure_mode1_runs_straight(coarse_runs):
 
 @pytest.mark.slow
 def test_sweep_reproduces_the_committed_csv(tmp_path):
-    bench.main(["--work", str(tmp_path / "work"), "--no-readme",
-                "--results", str(tmp_path / "kink.csv"), "--figure", str(tmp_path / "k.png")])
+    bench.main(["--work", str(tmp_path / "work"), "--results", str(tmp_path / "kink.csv"),
+                "--figure", str(tmp_path / "k.png")])
     new = {(r["kernel"], r["psi"], r["alpha"], r["dx_mm"], r["ncross"]): r
            for r in csv.DictReader(l for l in open(tmp_path / "kink.csv") if not l.startswith("#"))}
     for r in committed_rows():

@@ -17,7 +17,8 @@ Command line (from the repository root); the committed results came from the fir
   tools/python -m bbpd.benchmarks.kink --work /tmp/kink
   tools/python -m bbpd.benchmarks.kink --work /tmp/kink-fine --fine-only --add-missing \
       --nprocs 2 --workers 1                  (the fine-grid cases the CSV lacks, added to it)
-  tools/python -m bbpd.benchmarks.kink --from-csv   (figure, README table and verdict only)
+  tools/python -m bbpd.benchmarks.kink --from-csv   (the figure only)
+then `tools/python -m bbpd.claims --write` puts the table into the README.
 """
 
 import argparse
@@ -31,7 +32,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import crack_path, kink, markers, readers
+from bbpd import crack_path, kink, readers
 from bbpd import jobs as jobmod
 from bbpd.jobs import Job, run_jobs
 from bbpd.kernels import COLORS, KERNELS
@@ -43,7 +44,6 @@ ROOT = Path(__file__).resolve().parents[3]
 FOLDER = ROOT / "examples" / "kink-mixed-mode"
 EXAMPLE = FOLDER / "in.kink"
 RESULTS = FOLDER / "results" / "kink.csv"
-README = FOLDER / "README.md"
 
 MIXES_DEG = (90.0, 67.5, 45.0, 22.5, 0.0)        # psi = arctan(K_II/K_I)
 ALPHAS_DEG = (0.0, 22.5)                          # crack direction to the grid's rows
@@ -459,15 +459,13 @@ def main(argv=None):
     ap.add_argument("--add-missing", action="store_true",
                     help="run only the selected cases that --results lacks and add their rows "
                          "to it (the loading check is not repeated)")
-    ap.add_argument("--no-readme", action="store_true", help="do not rewrite the README table")
     ap.add_argument("--from-csv", action="store_true",
-                    help="run nothing: the figure and the README's table and verdict from "
-                         "--results as it is")
+                    help="run nothing: the figure from --results as it is")
     ap.add_argument("--results", default=str(RESULTS), help="CSV to write")
     ap.add_argument("--figure", default=str(FOLDER / "kink_angle.png"), help="PNG to write")
     args = ap.parse_args(argv)
     if args.from_csv:
-        return write_outputs(read_rows(args.results), Path(args.figure), not args.no_readme)
+        return plot(read_rows(args.results), Path(args.figure))
     todo = [c for c in cases() if not (args.coarse_only and c[3] != COARSE[0])
             and not (args.fine_only and c[3] != FINE[0]) and c[0] in args.kernels]
     todo.sort(key=lambda c: (-c[3], c[5]))    # the coarse grid first, the ramp check last
@@ -493,21 +491,12 @@ def main(argv=None):
         command = f"{first_line(path)}; rows added by {command.strip()}"
         rows = merged(rows, path)
     write_csv(rows, path, command.strip())
-    if not args.no_readme and not args.add_missing:
+    if not args.add_missing:
         check = loading_check(Path(args.work) / "loading-check")
         print(f"J-integral check: {check}")
-        LOADING_JSON.write_text(json.dumps(check, indent=1) + "\n")
-    write_outputs(read_rows(args.results), Path(args.figure), not args.no_readme)
-
-
-def write_outputs(rows, figure, readme=True):
-    """The figure, and the README's table, from rows (read from the CSV: the README's numbers
-    are the CSV's)."""
-    plot(rows, figure)
-    text = table(rows)
-    print(text)
-    if readme and README.is_file():
-        README.write_text(markers.replace_block(README, README.read_text(), "kink", text))
+        path.with_name(LOADING_JSON.name).write_text(json.dumps(check, indent=1) + "\n")
+    plot(read_rows(args.results), Path(args.figure))
+    print(table(read_rows(args.results)))
 
 
 if __name__ == "__main__":
