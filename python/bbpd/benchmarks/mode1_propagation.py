@@ -39,6 +39,7 @@ from bbpd import crack_motion, crack_tip, csvfile, freund, readers
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import mode1
 from bbpd.kernels import COLORS, KERNELS
+from bbpd.markdown import made_by
 from bbpd.provenance import cpu
 from bbpd.runner import run_or_reuse
 
@@ -229,15 +230,6 @@ def read_rows(path):
     return out
 
 
-def made_by_markdown(provenance):
-    """'Made by `...`' and 'Rows added by `...`' sentences of csvfile.provenance lines."""
-    out = []
-    for line in provenance:
-        what, _, cmd = line.partition(": ")
-        out.append(f"{what[0].upper()}{what[1:]} `{cmd}`.")
-    return " ".join(out)
-
-
 def cpu_markdown(rows):
     """Which CPU timed which runs (the loop-time column; a grid may have been timed on two)."""
     return csvfile.loop_times_note(rows, "cpu", lambda r: f"{r['kernel']} at dx = {r['dx']:g} m")
@@ -253,7 +245,7 @@ def table_markdown(rows, command=None):
             + " t_c | crack half-width at 3 t_c (delta) | loop time (s) |")
     if isinstance(command, str):
         command = [f"made by: {command}"]
-    lines = ([made_by_markdown(command), ""] if command else []) + [
+    lines = ([made_by([ln.partition(": ")[2] for ln in command]), ""] if command else []) + [
         head, "|" + "---|" * (head.count("|") - 1)]
     prob = problem(rows[0]["Gc"]) if rows else problem()
     for r in rows:
