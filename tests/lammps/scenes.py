@@ -5,11 +5,14 @@ boundary, atom_style peri with the atom map the bbpd styles need, and optionally
 grid, the atoms of a data file and a lattice. Imported by name (pytest.ini puts tests/lammps on
 the path): `from scenes import peri_preamble`.
 
+impact_plate() gives the lines of the steel plate several tests strike at 32 m/s.
+assert_forces_match() holds a dump's forces and pe/atom against bbpd.reference.Bonds.
 cylinder_dropin() runs the glass cylinder of LAMMPS's examples/peri with a peri/* style and
 with its bbpd/* port and checks that their damage agrees.
 """
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from bbpd import reference as ref
@@ -44,6 +47,34 @@ def peri_preamble(dim=2, boundary=None, lattice=None, data=None, plugin=True, cl
     if lattice:
         lines.append(f"lattice {lattice}")
     return "\n".join(lines) + "\n"
+
+
+def impact_plate(pair_style, gc):
+    """After create_atoms on a 1 mm square lattice: steel (7800 kg/m3, E = 190 GPa, G_c = gc,
+    delta = 5 mm) with pair_style, its left three columns moving at 32 m/s, fix nve in 2D."""
+    return f"""set group all density 7800
+set group all volume 1e-9
+pair_style {pair_style}
+pair_coeff 1 1 190e9 {gc} 0.005
+region left block INF 3 INF INF INF INF
+group left region left
+velocity left set 32 0 0 units box
+fix 1 all nve
+fix 2 all enforce2d
+"""
+
+
+def assert_forces_match(dump, bonds, y, rtol):
+    """dump's fx fy fz within rtol of the largest force, and its c_pea within rtol of the largest
+    energy density, of bonds (a bbpd.reference.Bonds) at the positions y"""
+    got = ref.read_dump(dump)
+    f_lmp = np.stack([got["fx"], got["fy"], got["fz"]], axis=1)
+    f_ref = bonds.force_density(y)
+    err = np.linalg.norm(f_lmp - f_ref, axis=1).max() / np.linalg.norm(f_ref, axis=1).max()
+    assert err < rtol, f"max per-atom force error {err:.3g} of the largest force"
+    w_ref = bonds.energy_density(y)
+    np.testing.assert_allclose(got["c_pea"], w_ref, rtol=0, atol=rtol * w_ref.max())
+    return got, w_ref
 
 
 def cylinder_dropin(lmp, model, scale, atoms_abs=0):
