@@ -13,6 +13,12 @@ def cell(v, spec=".2f"):
     return "-" if isinstance(v, float) and math.isnan(v) else format(v, spec)
 
 
+def made_by(commands):
+    """'Made by `a`. Rows added by `b`. ...': the commands that wrote a CSV and added to it"""
+    return " ".join(f"{'Made by' if k == 0 else 'Rows added by'} `{c}`."
+                    for k, c in enumerate(commands))
+
+
 def table(header, rows):
     """a pipe table: the header, its rule, then one line per row of cells"""
     lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]

@@ -4,7 +4,22 @@ peri_preamble() returns the text up to the body: the plugin, SI units, the dimen
 boundary, atom_style peri with the atom map the bbpd styles need, and optionally the processor
 grid, the atoms of a data file and a lattice. Imported by name (pytest.ini puts tests/lammps on
 the path): `from scenes import peri_preamble`.
+
+impact_plate() gives the lines of the steel plate several tests strike at 32 m/s.
+assert_forces_match() holds a dump's forces and pe/atom against bbpd.reference.Bonds.
+cylinder_dropin() runs the glass cylinder of LAMMPS's examples/peri with a peri/* style and
+with its bbpd/* port and checks that their damage agrees.
 """
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from bbpd import reference as ref
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+DROPIN_STEPS = (500, 1000)    # the steps whose damage is compared
+DROPIN_RTOL = 0.02
 
 
 def peri_preamble(dim=2, boundary=None, lattice=None, data=None, plugin=True, clear=False,
@@ -32,3 +47,57 @@ def peri_preamble(dim=2, boundary=None, lattice=None, data=None, plugin=True, cl
     if lattice:
         lines.append(f"lattice {lattice}")
     return "\n".join(lines) + "\n"
+
+
+def impact_plate(pair_style, gc):
+    """After create_atoms on a 1 mm square lattice: steel (7800 kg/m3, E = 190 GPa, G_c = gc,
+    delta = 5 mm) with pair_style, its left three columns moving at 32 m/s, fix nve in 2D."""
+    return f"""set group all density 7800
+set group all volume 1e-9
+pair_style {pair_style}
+pair_coeff 1 1 190e9 {gc} 0.005
+region left block INF 3 INF INF INF INF
+group left region left
+velocity left set 32 0 0 units box
+fix 1 all nve
+fix 2 all enforce2d
+"""
+
+
+def assert_forces_match(dump, bonds, y, rtol):
+    """dump's fx fy fz within rtol of the largest force, and its c_pea within rtol of the largest
+    energy density, of bonds (a bbpd.reference.Bonds) at the positions y"""
+    got = ref.read_dump(dump)
+    f_lmp = np.stack([got["fx"], got["fy"], got["fz"]], axis=1)
+    f_ref = bonds.force_density(y)
+    err = np.linalg.norm(f_lmp - f_ref, axis=1).max() / np.linalg.norm(f_ref, axis=1).max()
+    assert err < rtol, f"max per-atom force error {err:.3g} of the largest force"
+    w_ref = bonds.energy_density(y)
+    np.testing.assert_allclose(got["c_pea"], w_ref, rtol=0, atol=rtol * w_ref.max())
+    return got, w_ref
+
+
+def cylinder_dropin(lmp, model, scale, atoms_abs=0):
+    """examples/peri-MODEL-dropin's in.peri.MODEL and in.bbpd.MODEL at scale: the mean damage and
+    the number of atoms with damage > 0.5 at DROPIN_STEPS agree within DROPIN_RTOL (the atom
+    count also within atoms_abs); the loop-time ratio is printed, not asserted."""
+    got = {}
+    for style in ("peri", "bbpd"):
+        out = lmp(str(EXAMPLES / f"peri-{model}-dropin" / f"in.{style}.{model}"),
+                  vars={"scale": scale, "steps": 1000}).output
+        table = ref.thermo_tables(out)[-1]
+        rows = {int(s): k for k, s in enumerate(table["Step"])}
+        got[style] = {step: (table["c_dmean"][rows[step]], table["c_ncracked"][rows[step]])
+                      for step in DROPIN_STEPS}
+        got[style]["loop"] = float(next(line.split()[3] for line in out.splitlines()
+                                        if line.startswith("Loop time")))
+    peri, ours = got["peri"], got["bbpd"]
+    print(f"loop time peri/{model} {peri['loop']:.3f} s, bbpd/{model} {ours['loop']:.3f} s, "
+          f"ratio {peri['loop'] / ours['loop']:.2f}")
+    for step in DROPIN_STEPS:
+        (d_peri, n_peri), (d_ours, n_ours) = peri[step], ours[step]
+        print(f"step {step}: mean damage {d_peri:.6g} / {d_ours:.6g}, "
+              f"atoms > 0.5: {n_peri:.0f} / {n_ours:.0f}")
+        assert d_peri > 0.05 and n_peri > 50    # the target cracks: the comparison means something
+        assert d_ours == pytest.approx(d_peri, rel=DROPIN_RTOL)
+        assert n_ours == pytest.approx(n_peri, rel=DROPIN_RTOL, abs=atoms_abs)

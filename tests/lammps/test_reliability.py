@@ -9,7 +9,7 @@ import pytest
 
 from bbpd import reference as ref
 from bbpd.runner import LammpsError
-from scenes import peri_preamble
+from scenes import impact_plate, peri_preamble
 
 DX = 1.0e-3
 RHO = 7800.0
@@ -262,15 +262,7 @@ NUMBERED = peri_preamble(2, processors="{grid}", lattice="sq 0.001") + """\
 region box block 0 40 0 20 -0.5 0.5
 create_box 1 box
 create_atoms 1 box
-set group all density 7800
-set group all volume 1e-9
-pair_style bbpd/gaussian plane/strain thickness 0.001
-pair_coeff 1 1 190e9 6.9e4 0.005
-region left block INF 3 INF INF INF INF
-group left region left
-velocity left set 32 0 0 units box
-fix 1 all nve
-fix 2 all enforce2d
+""" + impact_plate("bbpd/gaussian plane/strain thickness 0.001", "6.9e4") + """\
 fix n all bbpd/notch segment 0.02 0.0095 0.03 0.0095
 compute d all bbpd/damage/atom
 write_dump all custom initial.dump id x y modify format float %.17g sort id

@@ -12,21 +12,14 @@ import re
 import pytest
 
 from bbpd.runner import LammpsError
-from scenes import peri_preamble
+from scenes import impact_plate, peri_preamble
 
 SCENE = peri_preamble(2, lattice="sq 0.001") + """\
 region box block 0 40 0 20 -0.5 0.5
 create_box 1 box
 create_atoms 1 box
-set group all density 7800
-set group all volume 1e-9
-pair_style bbpd/{kernel} plane/strain thickness 0.001 bond/storage {storage}
-pair_coeff 1 1 190e9 6.9e3 0.005
-region left block INF 3 INF INF INF INF
-group left region left
-velocity left set 32 0 0 units box
-fix 1 all nve
-fix 2 all enforce2d
+""" + impact_plate("bbpd/{kernel} plane/strain thickness 0.001 bond/storage {storage}",
+                "6.9e3") + """\
 fix n all bbpd/notch segment 0.02 0.0095 0.03 0.0095
 compute d all bbpd/damage/atom
 compute pe all pe/atom
@@ -130,15 +123,8 @@ region top block INF INF 84.5 INF INF INF
 region bottom block INF INF INF 84.5 INF INF
 create_atoms 1 region top
 create_atoms 1 region bottom
-set group all density 7800
-set group all volume 1e-9
-pair_style bbpd/gaussian plane/strain thickness 0.001 bond/storage {storage}
-pair_coeff 1 1 190e9 6.9e3 0.005
-region left block INF 3 INF INF INF INF
-group left region left
-velocity left set 32 0 0 units box
-fix 1 all nve
-fix 2 all enforce2d
+""" + impact_plate("bbpd/gaussian plane/strain thickness 0.001 bond/storage {storage}",
+                "6.9e3") + """\
 fix n all bbpd/notch segment 0.0 0.0845 0.03 0.0845
 timestep 8.7e-8
 thermo 100

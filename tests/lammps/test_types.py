@@ -9,7 +9,7 @@ passes their pair's s0), momentum over a dynamic run with two densities and brea
 import numpy as np
 
 from bbpd import reference as ref
-from scenes import peri_preamble
+from scenes import assert_forces_match, peri_preamble
 
 DX = 1.0e-3
 THICKNESS = 1.0e-3
@@ -117,14 +117,7 @@ def test_two_types_forces_match_reference(lmp, tmp_path):
               "write_dump all custom forces.dump id fx fy fz c_pea modify format float %.17g\n")
     out = lmp(script).output
     assert f"total bonds {len(bonds.i)} (0 broken)" in out
-    got = ref.read_dump(tmp_path / "forces.dump")
-    f_lmp = np.stack([got["fx"], got["fy"], got["fz"]], axis=1)
-    f_ref = bonds.force_density(y)
-    scale = np.linalg.norm(f_ref, axis=1).max()
-    err = np.linalg.norm(f_lmp - f_ref, axis=1).max() / scale
-    assert err < FORCE_RTOL, f"max per-atom force error {err:.3g} of the largest force"
-    w_ref = bonds.energy_density(y)
-    np.testing.assert_allclose(got["c_pea"], w_ref, rtol=0, atol=FORCE_RTOL * w_ref.max())
+    assert_forces_match(tmp_path / "forces.dump", bonds, y, FORCE_RTOL)
 
 
 STRAIN = 0.0175    # between s0 of the mixed pair (0.015) and of type 1 (0.020)

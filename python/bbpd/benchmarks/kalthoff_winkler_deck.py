@@ -33,6 +33,7 @@ from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as _f
+from bbpd.markdown import made_by, table as md_table
 
 CSV = ROOT / "examples" / "kalthoff-winkler" / "results" / "standard_deck.csv"
 
@@ -98,20 +99,17 @@ def loaded_density(workdir):
 
 
 def table(rows, command=None):
-    head = ("| deck | kernel | dx (mm) | v0 (m/s) | rho (kg/m3) | G_c (J/m2) | first bond (us) | "
-            "damage band (us) | initial (deg) | fit (deg) | chord (deg) | crack length at end "
-            "(mm) | crack stops (us) | loop CPU (s) |")
-    lines = [head, "|" + "---|" * 14]
-    for r in sorted(rows, key=_order):
-        lines.append("| " + " | ".join([
-            r["deck"], r["kernel"], f"{r['dx_mm']:g}", f"{r['v0']:g}", _f(r["rho"], ".0f"),
-            f"{r['Gc']:g}", _f(r["first_bond_us"], ".1f"), _f(r["band_us"], ".1f"),
-            _f(r["initial_deg"], ".1f"), _f(r["fit_deg"], ".1f"), _f(r["chord_deg"], ".1f"),
-            _f(r["length_end_mm"], ".0f"), r["crack_stops"], _f(r["loop_cpu_s"], ".0f")]) + " |")
-    out = "\n".join(lines)
+    head = ("deck", "kernel", "dx (mm)", "v0 (m/s)", "rho (kg/m3)", "G_c (J/m2)", "first bond (us)",
+            "damage band (us)", "initial (deg)", "fit (deg)", "chord (deg)",
+            "crack length at end (mm)", "crack stops (us)", "loop CPU (s)")
+    out = md_table(head, ([
+        r["deck"], r["kernel"], f"{r['dx_mm']:g}", f"{r['v0']:g}", _f(r["rho"], ".0f"),
+        f"{r['Gc']:g}", _f(r["first_bond_us"], ".1f"), _f(r["band_us"], ".1f"),
+        _f(r["initial_deg"], ".1f"), _f(r["fit_deg"], ".1f"), _f(r["chord_deg"], ".1f"),
+        _f(r["length_end_mm"], ".0f"), r["crack_stops"], _f(r["loop_cpu_s"], ".0f")]
+        for r in sorted(rows, key=_order)))
     made = [command] if isinstance(command, str) else list(command or [])
-    intro = " ".join(f"{'Made by' if k == 0 else 'Rows added by'} `{c}`." for k, c in enumerate(made))
-    return intro + "\n\n" + out if made else out
+    return made_by(made) + "\n\n" + out if made else out
 
 
 def _order(r):

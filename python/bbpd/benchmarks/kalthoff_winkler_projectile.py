@@ -22,8 +22,8 @@ contact open  first time after that at which the contact force on the projectile
 
 Command line (from the repository root; the runs are cached in --work):
   tools/python -m bbpd.benchmarks.kalthoff_winkler_projectile --work /tmp/kw-proj \\
-      --dx 2e-3 --csv examples/kalthoff-winkler/projectile.csv \\
-      --readme examples/kalthoff-winkler/README.md
+      --dx 2e-3 --csv examples/kalthoff-winkler/projectile.csv
+then `tools/python -m bbpd.claims --write` puts the table into the README.
 """
 
 import argparse
@@ -37,7 +37,6 @@ from pathlib import Path
 import numpy as np
 
 from bbpd import jobs as jobmod
-from bbpd import markers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.runner import run_lammps
@@ -307,12 +306,6 @@ def markdown(rows):
     return "\n".join(lines)
 
 
-def update_readme(path, text, name="kw-projectile"):
-    """Replace the body of the README's block called name (bbpd.markers)."""
-    path = Path(path)
-    path.write_text(markers.replace_block(path, path.read_text(), name, text))
-
-
 # ---------------------------------------------------------------------------- report
 
 # tools/reproduce: the Gaussian at 2 mm by default; --full adds the other kernels and 1 mm
@@ -404,7 +397,6 @@ def main(argv=None):
     ap.add_argument("--np", type=int, default=1, dest="nprocs")
     ap.add_argument("--reuse", action="store_true")
     ap.add_argument("--csv", default=None, help="write every finished run in --work here")
-    ap.add_argument("--readme", default=None, help="put the table between its markers here")
     ap.add_argument("--figures", default=None, help="write the PNGs here")
     args = ap.parse_args(argv)
     work = Path(args.work)
@@ -432,11 +424,7 @@ def main(argv=None):
                              -r["dx_mm"], -r["Gc"]))
     if args.csv:
         write_csv(rows, args.csv)
-        rows = read_csv(args.csv)
-        text = markdown(rows)
-        print(text)
-        if args.readme:
-            update_readme(args.readme, text)
+        print(markdown(read_csv(args.csv)))
     if args.figures:
         figs = Path(args.figures)
         for p in sorted(work.glob("projectile-*-Gc69000/case.json")):

@@ -17,7 +17,8 @@ Command line (from the repository root); the committed results came from the fir
   tools/python -m bbpd.benchmarks.kink --work /tmp/kink
   tools/python -m bbpd.benchmarks.kink --work /tmp/kink-fine --fine-only --add-missing \
       --nprocs 2 --workers 1                  (the fine-grid cases the CSV lacks, added to it)
-  tools/python -m bbpd.benchmarks.kink --from-csv   (figure, README table and verdict only)
+  tools/python -m bbpd.benchmarks.kink --from-csv   (the figure only)
+then `tools/python -m bbpd.claims --write` puts the table into the README.
 """
 
 import argparse
@@ -31,19 +32,19 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import crack_path, kink, markers, readers
+from bbpd import crack_path, kink, readers
 from bbpd import jobs as jobmod
 from bbpd.jobs import Job, run_jobs
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.provenance import cpu
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell
+from bbpd.markdown import table as md_table
 
 ROOT = Path(__file__).resolve().parents[3]
 FOLDER = ROOT / "examples" / "kink-mixed-mode"
 EXAMPLE = FOLDER / "in.kink"
 RESULTS = FOLDER / "results" / "kink.csv"
-README = FOLDER / "README.md"
 
 MIXES_DEG = (90.0, 67.5, 45.0, 22.5, 0.0)        # psi = arctan(K_II/K_I)
 ALPHAS_DEG = (0.0, 22.5)                          # crack direction to the grid's rows
@@ -361,46 +362,34 @@ def locked(rows):
             and min(abs(r["angle_2d"] - r[c]) for c in CRITERIA) > 2 * LOCK_DEG]
 
 
-def summary_text(rows):
-    """The report's sentences from the rows at hand (any subset of the sweep): per distance the
-    RMS deviation of the mixed-mode angles from each criterion and the closest, the pure Mode II
-    and Mode I angles, the runs locked onto a grid direction; with the whole coarse sweep, the
-    README's verdict as well."""
+def deviation_table(rows):
+    """REPORT.md's table under the runs: per grid and distance from the tip, the RMS deviation
+    of the mixed-mode angles from each criterion and the nearest criterion"""
     main = [r for r in rows if r["ncross"] == NCROSS]
-    text = []
+    out = []
     for grid in sorted({r["dx"] for r in main}, reverse=True):
         on = [r for r in main if r["dx"] == grid]
-        what = (f"dx = {grid * 1e3:g} mm ({', '.join(sorted({r['kernel'] for r in on}))}; crack "
-                f"at {' and '.join(f'{a:g}' for a in sorted({r['alpha'] for r in on}))} deg to "
-                "the rows)")
         for dist in ("2d", "4d"):
             mixed = [r for r in on if r["psi"] > 0 and r[f"angle_{dist}"] is not None]
-            if not mixed:
-                continue
-            dev = {c: rms([r[f"angle_{dist}"] - r[c] for r in mixed]) for c in CRITERIA}
-            best = min(CRITERIA, key=dev.get)
-            text.append(f"At {dist[0]} horizons, {what}: over {len(mixed)} mixed-mode "
-                        f"run{'s' if len(mixed) > 1 else ''} the angles lie closest to the "
-                        f"{CRITERION_NAMES[best]} criterion; RMS deviation "
-                        + ", ".join(f"{CRITERION_NAMES[c]} {dev[c]:.1f}" for c in CRITERIA)
-                        + " deg.")
-        for psi, name in ((90.0, "Pure Mode II"), (0.0, "Pure Mode I")):
-            pure = [r for r in on if r["psi"] == psi and r["angle_2d"] is not None]
-            if pure:
-                text.append(f"{name} at dx = {grid * 1e3:g} mm: "
-                            + "; ".join(f"{r['kernel']}, crack {r['alpha']:g} deg: "
-                                        f"{r['angle_2d']:.1f} / {fmt(r['angle_4d'])} deg"
-                                        for r in pure)
-                            + " at 2 / 4 horizons (criteria: "
-                            + ", ".join(f"{CRITERION_NAMES[c]} {pure[0][c]:.1f}"
-                                        for c in CRITERIA) + " deg).")
+            if mixed:
+                dev = {c: rms([r[f"angle_{dist}"] - r[c] for r in mixed]) for c in CRITERIA}
+                out.append([f"{grid * 1e3:g}", dist[0], len(mixed),
+                            *(f"{dev[c]:.1f}" for c in CRITERIA),
+                            CRITERION_NAMES[min(CRITERIA, key=dev.get)]])
+    head = ("dx (mm)", "horizons from the tip", "mixed-mode runs",
+            *(f"RMS from {CRITERION_NAMES[c]} (deg)" for c in CRITERIA), "nearest")
+    return md_table(head, out)
+
+
+def summary_text(rows):
+    """REPORT.md's lines under the tables: the runs locked onto a grid direction, and whether
+    the runs are the whole coarse sweep (the README's verdict needs it)."""
+    main = [r for r in rows if r["ncross"] == NCROSS]
     stuck = locked(main)
-    if stuck:
-        text.append("On a grid direction (within 1 deg of a multiple of 45 deg in the lattice "
-                    "frame, more than 2 deg from every criterion): "
-                    + "; ".join(f"{r['kernel']} dx {r['dx'] * 1e3:g} mm, crack {r['alpha']:g} "
-                                f"deg, psi {r['psi']:g} deg: {r['angle_2d']:.1f} deg"
-                                for r in stuck) + ".")
+    text = [f"On a grid direction (within {LOCK_DEG:g} deg of a multiple of 45 deg in the lattice "
+            f"frame, more than {2 * LOCK_DEG:g} deg from every criterion): " + "; ".join(
+                f"{r['kernel']} dx {r['dx'] * 1e3:g} mm, crack {r['alpha']:g} deg, psi "
+                f"{r['psi']:g} deg: {r['angle_2d']:.1f} deg" for r in stuck) + "."] if stuck else []
     coarse = [r for r in main if r["dx"] == COARSE[0]]
     if (len({r["kernel"] for r in coarse}), len({r["alpha"] for r in coarse})) != FULL_COVERAGE:
         text.append("Too few runs for a verdict between the criteria: `tools/reproduce --full` "
@@ -424,7 +413,8 @@ def section(specs, results, figdir, notes):
             names = [path.name]
         except Exception as exc:  # the report must still be written
             notes.append(f"kink figure not made: {type(exc).__name__}: {exc}")
-    return {"title": REPORT_TITLE, "setup": REPORT_SETUP, "table": table(rows) if rows else "",
+    tables = table(rows) + "\n\n" + deviation_table(rows) if rows else ""
+    return {"title": REPORT_TITLE, "setup": REPORT_SETUP, "table": tables,
             "text": " ".join(text), "figures": names}
 
 
@@ -459,15 +449,13 @@ def main(argv=None):
     ap.add_argument("--add-missing", action="store_true",
                     help="run only the selected cases that --results lacks and add their rows "
                          "to it (the loading check is not repeated)")
-    ap.add_argument("--no-readme", action="store_true", help="do not rewrite the README table")
     ap.add_argument("--from-csv", action="store_true",
-                    help="run nothing: the figure and the README's table and verdict from "
-                         "--results as it is")
+                    help="run nothing: the figure from --results as it is")
     ap.add_argument("--results", default=str(RESULTS), help="CSV to write")
     ap.add_argument("--figure", default=str(FOLDER / "kink_angle.png"), help="PNG to write")
     args = ap.parse_args(argv)
     if args.from_csv:
-        return write_outputs(read_rows(args.results), Path(args.figure), not args.no_readme)
+        return plot(read_rows(args.results), Path(args.figure))
     todo = [c for c in cases() if not (args.coarse_only and c[3] != COARSE[0])
             and not (args.fine_only and c[3] != FINE[0]) and c[0] in args.kernels]
     todo.sort(key=lambda c: (-c[3], c[5]))    # the coarse grid first, the ramp check last
@@ -493,21 +481,12 @@ def main(argv=None):
         command = f"{first_line(path)}; rows added by {command.strip()}"
         rows = merged(rows, path)
     write_csv(rows, path, command.strip())
-    if not args.no_readme and not args.add_missing:
+    if not args.add_missing:
         check = loading_check(Path(args.work) / "loading-check")
         print(f"J-integral check: {check}")
-        LOADING_JSON.write_text(json.dumps(check, indent=1) + "\n")
-    write_outputs(read_rows(args.results), Path(args.figure), not args.no_readme)
-
-
-def write_outputs(rows, figure, readme=True):
-    """The figure, and the README's table, from rows (read from the CSV: the README's numbers
-    are the CSV's)."""
-    plot(rows, figure)
-    text = table(rows)
-    print(text)
-    if readme and README.is_file():
-        README.write_text(markers.replace_block(README, README.read_text(), "kink", text))
+        path.with_name(LOADING_JSON.name).write_text(json.dumps(check, indent=1) + "\n")
+    plot(read_rows(args.results), Path(args.figure))
+    print(table(read_rows(args.results)))
 
 
 if __name__ == "__main__":

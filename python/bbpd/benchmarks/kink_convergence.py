@@ -39,6 +39,7 @@ from bbpd.provenance import cpu
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 from bbpd import plots
+from bbpd.markdown import table as md_table
 from bbpd.benchmarks.kink_limit import (ALPHA, HORIZONS, KERNEL, NAMES, PSI, coverage, disk_moves,
                                         kernel_spread, limit, limits, mix_of, resolution_deg,
                                         sequences, sweep_stats)
@@ -106,20 +107,16 @@ def _order(r):
 
 
 def table(rows, command=None):
-    head = ("| kernel | psi | alpha | m | R/delta | dx (mm) | atoms | steps | K at 1st break / K_c | "
-            "extension (delta) | angle at 2 delta | angle at 4 delta | hoop stress | hoop strain | "
-            "max G | loop (s) | ranks |")
-    lines = [head, "|" + "---|" * 17]
-    for r in sorted(rows, key=_order):
-        psi, alpha = mix_of(r)
-        lines.append("| " + " | ".join([
-            r["kernel"], f"{psi:g}", f"{alpha:g}", f"{r['m']:g}", f"{r['R_over_delta']:g}",
-            f"{r['dx_mm']:.3g}", _f(r["atoms"], ".0f"),
-            _f(r["steps"], ".0f"), _f(r["K_init_over_Kc"], ".3f"),
-            _f(r["extension_over_delta"], ".1f"), _angle(r, "2d"), _angle(r, "4d"),
-            _f(r["hoop_stress"]), _f(r["hoop_strain"]), _f(r["energy"]), _f(r["loop_s"], ".0f"),
-            _f(r["nprocs"], ".0f")]) + " |")
-    out = "\n".join(lines) + "\n\n" + RESOLUTION_NOTE
+    head = ("kernel", "psi", "alpha", "m", "R/delta", "dx (mm)", "atoms", "steps",
+            "K at 1st break / K_c", "extension (delta)", "angle at 2 delta", "angle at 4 delta",
+            "hoop stress", "hoop strain", "max G", "loop (s)", "ranks")
+    out = md_table(head, ([
+        r["kernel"], *(f"{v:g}" for v in mix_of(r)), f"{r['m']:g}", f"{r['R_over_delta']:g}",
+        f"{r['dx_mm']:.3g}", _f(r["atoms"], ".0f"), _f(r["steps"], ".0f"),
+        _f(r["K_init_over_Kc"], ".3f"), _f(r["extension_over_delta"], ".1f"), _angle(r, "2d"),
+        _angle(r, "4d"), _f(r["hoop_stress"]), _f(r["hoop_strain"]), _f(r["energy"]),
+        _f(r["loop_s"], ".0f"), _f(r["nprocs"], ".0f")] for r in sorted(rows, key=_order)))
+    out += "\n\n" + RESOLUTION_NOTE
     if rows and all(r.get("cpu") for r in rows):
         out += "\n\n" + loop_times(rows)
     made = [command] if isinstance(command, str) else list(command or [])

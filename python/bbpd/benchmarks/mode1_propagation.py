@@ -24,8 +24,8 @@ v       least-squares slope of l(t) over +-SPEED_HALF_WINDOW t_c around SPEED_TI
 Command line (from the repository root):
   tools/python -m bbpd.benchmarks.mode1_propagation --dx 0.1 0.05 \
       --work /tmp/mode1-propagation --csv examples/mode1-propagation/results/mode1_propagation.csv \
-      --figures examples/mode1-propagation --readme examples/mode1-propagation/README.md
-(add 0.025 to --dx for the finest grid; --full; run times in the README).
+      --figures examples/mode1-propagation
+(add 0.025 to --dx for the finest grid; --full); then `tools/python -m bbpd.claims --write`.
 """
 
 import argparse
@@ -35,10 +35,11 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import crack_motion, crack_tip, csvfile, freund, markers, readers
+from bbpd import crack_motion, crack_tip, csvfile, freund, readers
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import mode1
 from bbpd.kernels import COLORS, KERNELS
+from bbpd.markdown import made_by
 from bbpd.provenance import cpu
 from bbpd.runner import run_or_reuse
 
@@ -56,7 +57,6 @@ SPEED_TIMES = (2.0, 2.4, 2.8)   # in units of t_c
 SPEED_HALF_WINDOW = 0.15        # in units of t_c
 DX_DEFAULT = (0.1, 0.05)
 DX_FULL = (0.1, 0.05, 0.025)
-TABLE_NAME = "mode1-propagation"
 CSV_COLUMNS = ("kernel", "dx", "Gc", "dt", "atoms", "loop_s", "ti_pd", "ti_theory",
                "ti_err_pct", "J_at_ti_over_Gc", "ti_tip_pd", "ti_tip_err_pct",
                "J_at_ti_tip_over_Gc", "tip_check_dx", "width_3tc_over_delta", "ext_pd_3tc", "ext_toughness_3tc",
@@ -230,15 +230,6 @@ def read_rows(path):
     return out
 
 
-def made_by_markdown(provenance):
-    """'Made by `...`' and 'Rows added by `...`' sentences of csvfile.provenance lines."""
-    out = []
-    for line in provenance:
-        what, _, cmd = line.partition(": ")
-        out.append(f"{what[0].upper()}{what[1:]} `{cmd}`.")
-    return " ".join(out)
-
-
 def cpu_markdown(rows):
     """Which CPU timed which runs (the loop-time column; a grid may have been timed on two)."""
     return csvfile.loop_times_note(rows, "cpu", lambda r: f"{r['kernel']} at dx = {r['dx']:g} m")
@@ -254,7 +245,7 @@ def table_markdown(rows, command=None):
             + " t_c | crack half-width at 3 t_c (delta) | loop time (s) |")
     if isinstance(command, str):
         command = [f"made by: {command}"]
-    lines = ([made_by_markdown(command), ""] if command else []) + [
+    lines = ([made_by([ln.partition(": ")[2] for ln in command]), ""] if command else []) + [
         head, "|" + "---|" * (head.count("|") - 1)]
     prob = problem(rows[0]["Gc"]) if rows else problem()
     for r in rows:
@@ -276,12 +267,6 @@ def table_markdown(rows, command=None):
     if rows and all("cpu" in r for r in rows):
         lines += ["", cpu_markdown(rows)]
     return "\n".join(lines)
-
-
-def update_readme(readme, text, name=TABLE_NAME):
-    """Replace the body of the README's block called name (bbpd.markers)."""
-    readme = Path(readme)
-    readme.write_text(markers.replace_block(readme, readme.read_text(), name, text))
 
 
 FIGURE_NAMES = ("crack_extension.png", "crack_speed.png", "work_precision.png")
@@ -431,7 +416,6 @@ def main(argv=None):
                     help="keep the CSV's rows and tip histories; a run of the same kernel and "
                          "dx replaces its row")
     ap.add_argument("--figures", help="folder for crack_extension.png and crack_speed.png")
-    ap.add_argument("--readme", help="README whose bbpd:table block is rewritten")
     args = ap.parse_args(argv)
     dxs = DX_FULL if args.full else args.dx
     command = "tools/python -m bbpd.benchmarks.mode1_propagation " + " ".join(
@@ -462,9 +446,6 @@ def main(argv=None):
             rows = merge_rows(earlier, rows)
         write_csv(args.csv, rows, provenance + [this])
         write_histories(histories, rows)
-        if args.readme:
-            update_readme(args.readme, table_markdown(read_rows(args.csv),
-                                                      csvfile.provenance(args.csv)))
         if args.figures:
             figures(Path(args.csv).with_name("tip_histories.csv"), args.csv, args.figures)
 

@@ -47,6 +47,7 @@ from bbpd.kernels import COLORS
 from bbpd.plots import plt
 from bbpd.runner import LammpsError, run_or_reuse
 from bbpd.markdown import cell as f
+from bbpd.markdown import made_by
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "strip-steady-crack" / "in.strip"
@@ -283,8 +284,7 @@ def table_markdown(rows, command=None):
             "Gamma/G_c (bonds) | Phi/G_c (waves: behind + ahead) | closure (%) | "
             "balance drift (% of bond energy) | atoms | loop time (s) |")
     made = [command] if isinstance(command, str) else list(command or [])
-    intro = " ".join(f"{'Made by' if k == 0 else 'Rows added by'} `{c}`." for k, c in enumerate(made))
-    lines = ([intro, ""] if made else []) + [head, "|" + "---|" * (head.count("|") - 1)]
+    lines = ([made_by(made), ""] if made else []) + [head, "|" + "---|" * (head.count("|") - 1)]
     for r in rows:
         if r["crossed"]:
             run = (f"yes | {r['v_ss_over_cR']:.3f} | {r['Gamma_over_Gc']:.3f} | "

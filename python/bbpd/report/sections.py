@@ -11,22 +11,48 @@ from .runs import MODE1_TABLE3_DX
 from .tables import md_table
 
 
+# title and setup of each section this module builds
+SETUP = {
+    "dispersion": ("Wave dispersion of a 1D bar (sec. 4.1, Figs. 4-6)",
+        "Periodic ring of 1000 atoms, m = 5, delta = 1 mm, dx = 0.2 mm, v = sqrt(E/rho) = 5000 "
+        "m/s, dt = dx/v; measured omega(k) is the ridge of the 2-D power spectrum of u(x, t) "
+        "(examples/dispersion-1d/README.md). The paper gives these curves only as figures: its "
+        "column is eq. 31 as printed (w_j = W(j/m), no time-step shift). Deviations are max "
+        "|omega_measured/omega - 1| and the smallest group velocity is taken over the energetic k "
+        "with k dx 0.1-2.5. The curves of Figs. 4-6 and the measured points are also written as "
+        "CSV in csv/."),
+    "mode1": ("Stationary Mode-I semi-infinite crack (sec. 4.2.1, Tables 2-3, Figs. 9-10)",
+        "Plate 10 m x 4 m, edge crack a = 5 m, ramp load on the top edge, m = 5, plane stress, "
+        "K_I by compute bbpd/dsif and compute bbpd/jintegral every step, errors (%) of eqs. 44-45 "
+        "over t <= 3 t_c against Freund's eq. 42 in two conventions: the paper's (nu = 0.3, C_d = "
+        "5944 m/s) and the BBPD model's own constants (plane stress nu = 1/3, C_d = 5434 m/s); "
+        "see examples/mode1-semi-infinite/README.md."),
+    "mode2": ("Mode-II central crack under shear (sec. 4.2.2, Fig. 12)",
+        "Plate 104 x 40 mm, central crack 2a = 24 mm, step shear tau on both long edges, plane "
+        "strain (nu = 1/4), m = 5. K_II by compute bbpd/dsif and by compute bbpd/jintegral (J "
+        "columns); errors (%) of eqs. 44-45 against the early-time analytic reference "
+        "(semi-infinite crack loaded by 2 tau, checked by classical FE) over its validity window "
+        "5.77-9.77 us; see examples/mode2-central-crack/README.md."),
+    "kw": ("Kalthoff-Winkler impact (sec. 4.2.3, Figs. 14-15)",
+        "Steel plate 100 x 200 mm with two 50 mm notches, impact at 32 m/s between them, plane "
+        "strain, m = 5, 70 us. First bond: first broken bond within delta of a notch tip; damage "
+        "band: first atom ahead of the tip with damage >= 0.35 (a crack band on the damage map); "
+        "angle and speed over crack lengths 10-50 mm; see examples/kalthoff-winkler/README.md."),
+}
+
+
+def _section(name, table, text, figs):
+    title, setup = SETUP[name]
+    return {"title": title, "setup": setup, "table": table, "text": " ".join(text), "figures": figs}
+
+
 def dispersion_section(specs, results, figdir, notes):
     runs = tables.dispersion_runs(specs, results)
     table, paper, cv = tables.dispersion_csv(runs, figdir)
     header, rows, numbers = tables.dispersion_table(specs, results, runs, table)
     text = prose.dispersion_text(numbers, table)
     figs = figures.dispersion_figures(runs, paper, cv, figdir, notes)
-    return {"title": "Wave dispersion of a 1D bar (sec. 4.1, Figs. 4-6)",
-            "setup": "Periodic ring of 1000 atoms, m = 5, delta = 1 mm, dx = 0.2 mm, "
-                     "v = sqrt(E/rho) = 5000 m/s, dt = dx/v; measured omega(k) is the ridge of "
-                     "the 2-D power spectrum of u(x, t) (examples/dispersion-1d/README.md). The "
-                     "paper gives these curves only as figures: its column is eq. 31 as printed "
-                     "(w_j = W(j/m), no time-step shift). Deviations are max |omega_measured/"
-                     "omega - 1| and the smallest group velocity is taken over the energetic "
-                     "k with k dx 0.1-2.5. The curves of Figs. 4-6 and the measured points are "
-                     "also written as CSV in csv/.",
-            "table": md_table(header, rows), "text": " ".join(text), "figures": figs}
+    return _section("dispersion", md_table(header, rows), text, figs)
 
 
 def mode1_section(specs, results, figdir, notes):
@@ -34,31 +60,16 @@ def mode1_section(specs, results, figdir, notes):
     (h2, rows2, rows2_ok), (h3, rows3, rows3_ok) = tables.mode1_tables(by, ok)
     text = prose.mode1_text(ok, rows2_ok, rows3_ok)
     figs = figures.mode1_figures(rows2_ok, rows3_ok, figdir, notes)
-    return {"title": "Stationary Mode-I semi-infinite crack (sec. 4.2.1, Tables 2-3, Figs. 9-10)",
-            "setup": "Plate 10 m x 4 m, edge crack a = 5 m, ramp load on the top edge, m = 5, "
-                     "plane stress, K_I by compute bbpd/dsif and compute bbpd/jintegral every "
-                     "step, errors (%) of eqs. "
-                     "44-45 over t <= 3 t_c against Freund's eq. 42 in two conventions: the "
-                     "paper's (nu = 0.3, C_d = 5944 m/s) and the BBPD model's own constants "
-                     "(plane stress nu = 1/3, C_d = 5434 m/s); see "
-                     "examples/mode1-semi-infinite/README.md.",
-            "table": "Table 2, Gaussian kernel:\n\n" + md_table(h2, rows2)
-                     + f"\n\nTable 3, dx = {MODE1_TABLE3_DX:g} m:\n\n" + md_table(h3, rows3),
-            "text": " ".join(text), "figures": figs}
+    table = ("Table 2, Gaussian kernel:\n\n" + md_table(h2, rows2)
+             + f"\n\nTable 3, dx = {MODE1_TABLE3_DX:g} m:\n\n" + md_table(h3, rows3))
+    return _section("mode1", table, text, figs)
 
 
 def mode2_section(specs, results, figdir, notes):
     header, rows, ok = tables.mode2_table(specs, results)
     text = prose.mode2_text(ok)
     figs = figures.mode2_figures(ok, figdir, notes)
-    return {"title": "Mode-II central crack under shear (sec. 4.2.2, Fig. 12)",
-            "setup": "Plate 104 x 40 mm, central crack 2a = 24 mm, step shear tau on both long "
-                     "edges, plane strain (nu = 1/4), m = 5. K_II by compute bbpd/dsif and by "
-                     "compute bbpd/jintegral (J columns); errors "
-                     "(%) of eqs. 44-45 against the early-time analytic reference (semi-infinite "
-                     "crack loaded by 2 tau, checked by classical FE) over its validity window "
-                     "5.77-9.77 us; see examples/mode2-central-crack/README.md.",
-            "table": md_table(header, rows), "text": " ".join(text), "figures": figs}
+    return _section("mode2", md_table(header, rows), text, figs)
 
 
 def kw_section(specs, results, figdir, notes):
@@ -71,13 +82,7 @@ def kw_section(specs, results, figdir, notes):
                         f"at {len(r['snapshots'])} times, drawn during the run by LAMMPS's "
                         "dump image (the input's variable images; the other runs leave it "
                         "off).")
-    return {"title": "Kalthoff-Winkler impact (sec. 4.2.3, Figs. 14-15)",
-            "setup": "Steel plate 100 x 200 mm with two 50 mm notches, impact at 32 m/s between "
-                     "them, plane strain, m = 5, 70 us. First bond: first broken bond within "
-                     "delta of a notch tip; damage band: first atom ahead of the tip with "
-                     "damage >= 0.35 (a crack band on the damage map); angle and speed over "
-                     "crack lengths 10-50 mm; see examples/kalthoff-winkler/README.md.",
-            "table": md_table(header, rows), "text": " ".join(text), "figures": figs}
+    return _section("kw", md_table(header, rows), text, figs)
 
 
 # the sections of REPORT.md in order: (Spec.bench of their runs, builder)
