@@ -62,13 +62,13 @@ static constexpr double BREAK_MARGIN_ULPS = 16.0;
 
 /* ---------------------------------------------------------------------- */
 
-PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name) :
+PairBBPD::PairBBPD(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name, Rules r) :
     Pair(lmp), kernel(k), style(style_name ? style_name : std::string("bbpd/") + k.name),
     model(BBPD::Model::Solid3D), geom(1.0), spacing(0.0), dt_safety(DT_SAFETY_DEFAULT), contact(0),
     contact_factor(CONTACT_FACTOR_DEFAULT), simd_request(BBPD::SimdPath::AUTO), spacing_user(0), fracture_any(0), youngs(nullptr),
     fracture_energy(nullptr), horizon(nullptr), micromodulus(nullptr), critical_stretch(nullptr),
     s0_user(nullptr), bondless(nullptr), bonds(nullptr), watchdog(nullptr), dt_bound_paper(0.0), dt_bound(0.0),
-    report_due(0), simd_path(BBPD::SimdPath::PORTABLE), simd_decided(false), alpha(nullptr), multi_s0(0), s0_single(0.0), break_margin(0.0)
+    report_due(0), simd_path(BBPD::SimdPath::PORTABLE), simd_decided(false), rules(r), alpha(nullptr), multi_s0(0), s0_single(0.0), break_margin(0.0)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -255,7 +255,7 @@ void PairBBPD::coeff(int narg, char **arg)
       s0 = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (s0 <= 0.0) error->all(FLERR, "Pair coeff for {}: critical_stretch must be > 0", style);
     } else if (strcmp(arg[iarg], "alpha") == 0) {
-      if (!silling_askari())
+      if (!rules.silling_askari)
         error->all(FLERR, "Pair coeff for {}: alpha is the Silling-Askari critical stretch, a "
                    "rule of pair style {}/alpha: use that style", style, style);
       a = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -384,7 +384,7 @@ void PairBBPD::init_style()
   law.horizon = BBPD::TypePairTable(atom->ntypes, horizon);
   law.bondless = BBPD::TypePairTable(atom->ntypes, bondless);
   // the Silling-Askari loop (pair_bbpd_alpha.cpp) reads partner indices, the others offsets too
-  bonds->set_rules(law, storage, !silling_askari());
+  bonds->set_rules(law, storage, !rules.silling_askari);
   send_run_limits();
 }
 
@@ -401,10 +401,10 @@ void PairBBPD::calibrate()
         error->all(FLERR, "Pair style {}: pair_coeff for types {} {} is missing (bbpd "
                    "styles do not mix coefficients)", style, i, j);
       // e.g. from a restart file of an older version, where alpha was a keyword of every style
-      if (alpha[i][j] > 0.0 && !silling_askari())
+      if (alpha[i][j] > 0.0 && !rules.silling_askari)
         error->all(FLERR, "Pair style {}: types {} {} have a Silling-Askari alpha {}, a rule of "
                    "pair style {}/alpha: use that style", style, i, j, alpha[i][j], style);
-      if (!pmb_rules())
+      if (!rules.pmb_rules)
         micromodulus[i][j] = BBPD::micromodulus(kernel, model, youngs[i][j], horizon[i][j], geom);
       if (bondless[i][j])
         critical_stretch[i][j] = std::numeric_limits<double>::infinity();    // nothing to break
@@ -979,7 +979,7 @@ void PairBBPD::write_restart_settings(FILE *fp)
   fwrite(&contact_factor, sizeof(double), 1, fp);
   const int storage_code = storage.code();
   fwrite(&storage_code, sizeof(int), 1, fp);
-  const int pmb = pmb_rules();
+  const int pmb = rules.pmb_rules;
   fwrite(&pmb, sizeof(int), 1, fp);
 }
 
@@ -1008,7 +1008,7 @@ void PairBBPD::read_restart_settings(FILE *fp)
   storage = BBPD::BondStorage::from_code(storage_code);
   MPI_Bcast(&pmb, 1, MPI_INT, 0, world);
   // written by an older version with 'compat pmb': peri/pmb's rules are now pair style bbpd/pmb
-  if (pmb != (int) pmb_rules())
+  if (pmb != (int) rules.pmb_rules)
     error->all(FLERR, "Pair style {}: the restart file has the pair coefficients of {}: "
                "redefine the pair style and its coefficients after read_restart", style,
                pmb ? "peri/pmb's rules (compat pmb, now pair style bbpd/pmb)" : "another bbpd style");

@@ -11,9 +11,10 @@
    forces over the storage's rows and breaks bonds through remove_bonds_if(); the
    storage never calls back (doc/architecture.rst).
 
-   A style with other breaking rules derives from this class and overrides the
-   hooks below "rules of a derived style": the Silling-Askari critical stretch
-   (pair_bbpd_alpha.h) and the rules of LAMMPS's peri/pmb (pair_bbpd_pmb.h).
+   A style with other breaking rules derives from this class, gives its Rules at
+   construction and overrides the hooks below "rules of a derived style": the
+   Silling-Askari critical stretch (pair_bbpd_alpha.h) and the rules of LAMMPS's
+   peri/pmb (pair_bbpd_pmb.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_BBPD_H
@@ -41,7 +42,15 @@ namespace LAMMPS_NS {
 
 class PairBBPD : public Pair {
  public:
-  PairBBPD(class LAMMPS *, BBPD::KernelInfo, const char *style = nullptr);
+  // what the shared code must know of a style's rules, given by the style at construction
+  // (the base class asks no derived class what it is)
+  struct Rules {
+    bool silling_askari;    // alpha is a rule of the style (pair_bbpd_alpha.h)
+    bool pmb_rules;         // peri/pmb's families, volumes and numbers (pair_bbpd_pmb.h)
+    bool short_range;       // short-range forces whatever 'contact' says (stable step)
+  };
+  PairBBPD(class LAMMPS *, BBPD::KernelInfo, const char *style = nullptr,
+           Rules = Rules{false, false, false});
   ~PairBBPD() override;
 
   void compute(int, int) override;
@@ -146,9 +155,8 @@ class PairBBPD : public Pair {
   // rules of a derived style (pair_bbpd_alpha.h, pair_bbpd_pmb.h)
   virtual void eval_bonds();                      // bond forces and breaking of one step
   virtual void init_rules() {}                    // init_style: after the bond fix exists
-  virtual bool silling_askari() const { return false; }    // alpha is a rule of the style
-  virtual bool pmb_rules() const { return false; }         // peri/pmb's families and volumes
-  virtual bool short_range_forces() const { return contact != 0; }    // in the stable step
+  const Rules rules;
+  bool short_range_forces() const { return rules.short_range || contact != 0; }    // stable step
   virtual std::string report_type_pair(int i, int j) const;
   virtual std::string report_rules() const { return {}; }
   // a bond's stiffness in the stable time step (eq. 26): its coefficient c C_v V_j / xi0

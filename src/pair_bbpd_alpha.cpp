@@ -36,8 +36,8 @@ static constexpr const char *ALPHA_FIX_ID = "BBPD_ALPHA";
 
 /* ---------------------------------------------------------------------- */
 
-PairBBPDAlpha::PairBBPDAlpha(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name) :
-    PairBBPD(lmp, k, style_name ? style_name : (std::string("bbpd/") + k.name + "/alpha").c_str()),
+PairBBPDAlpha::PairBBPDAlpha(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name, Rules r) :
+    PairBBPD(lmp, k, style_name ? style_name : (std::string("bbpd/") + k.name + "/alpha").c_str(), r),
     nmax_smin(0), smin_new(nullptr), alpha_state(nullptr)
 {
 }
@@ -56,7 +56,7 @@ void PairBBPDAlpha::init_rules()
   // before the families exist no atom has a bond: no smin yet (as peri/pmb)
   if (!bonds->families_built())
     for (int i = 0; i < atom->nlocal; i++) atom->s0[i] = NO_BOND_STRETCH;
-  if (pmb_rules() || comm->me != 0) return;
+  if (rules.pmb_rules || comm->me != 0) return;
   bool any = false;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)

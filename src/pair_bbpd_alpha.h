@@ -23,7 +23,8 @@ namespace LAMMPS_NS {
 
 class PairBBPDAlpha : public PairBBPD {
  public:
-  PairBBPDAlpha(class LAMMPS *, BBPD::KernelInfo, const char *style = nullptr);
+  PairBBPDAlpha(class LAMMPS *, BBPD::KernelInfo, const char *style = nullptr,
+                Rules = Rules{true, false, false});
   ~PairBBPDAlpha() override;
 
  protected:
@@ -33,7 +34,6 @@ class PairBBPDAlpha : public PairBBPD {
 
   void eval_bonds() override;
   void init_rules() override;
-  bool silling_askari() const override { return true; }
   std::string report_rules() const override;
 
   // PMB: peri/pmb's order (a bond acts in the step it breaks, round-off elongations are zero,

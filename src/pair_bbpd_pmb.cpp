@@ -27,14 +27,17 @@ using namespace BBPD::PMB;
 
 /* ---------------------------------------------------------------------- */
 
+// peri/pmb's rules: Silling-Askari breaking, its families and numbers, short-range forces
+static constexpr PairBBPD::Rules PERI_PMB_RULES{true, true, true};
+
 PairBBPDPMB::PairBBPDPMB(LAMMPS *lmp, const char *style_name) :
-    PairBBPDAlpha(lmp, BBPD::kernel_info<BBPD::ConstantKernel>(), style_name),
+    PairBBPDAlpha(lmp, BBPD::kernel_info<BBPD::ConstantKernel>(), style_name, PERI_PMB_RULES),
     lattice_constant(0.0)
 {
 }
 
 PairBBPDPMB::PairBBPDPMB(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name) :
-    PairBBPDAlpha(lmp, k, style_name), lattice_constant(0.0)
+    PairBBPDAlpha(lmp, k, style_name, PERI_PMB_RULES), lattice_constant(0.0)
 {
 }
 

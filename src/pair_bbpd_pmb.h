@@ -34,8 +34,6 @@ class PairBBPDPMB : public PairBBPDAlpha {
 
   void eval_bonds() override;
   void init_rules() override;
-  bool pmb_rules() const override { return true; }
-  bool short_range_forces() const override { return true; }
   std::string report_type_pair(int i, int j) const override;
   std::string report_rules() const override;
   void compute_short_range();

@@ -215,6 +215,27 @@ def test_a_loop_naming_a_model_is_found():
                         model_names()) == []
 
 
+def style_questions(header):
+    """the virtual yes/no questions a base class header asks its derived classes
+    ('virtual bool name(...) const'): what a style is belongs in a value it hands over"""
+    return re.findall(r"\bvirtual\s+bool\s+(\w+)\s*\([^)]*\)\s*const", without_comments(header))
+
+
+def test_the_base_class_asks_no_style_what_it_is():
+    """PairBBPD reads the rules a style gives it (PairBBPD::Rules at construction), and asks
+    no derived class whether it is one kind or another (doc/architecture.rst)"""
+    assert style_questions((SRC / "pair_bbpd.h").read_text()) == []
+    assert "Rules" in (SRC / "pair_bbpd.h").read_text()
+
+
+def test_a_style_question_is_found():
+    """negative control: the hooks as they were"""
+    before = ("  virtual bool silling_askari() const { return false; }    // alpha is a rule\n"
+              "  virtual bool pmb_rules() const { return false; }\n"
+              "  virtual double bond_stiffness(int i, int k) const;\n")
+    assert style_questions(before) == ["silling_askari", "pmb_rules"]
+
+
 def row_loops_outside_the_driver(files):
     """{file: n}: calls of the threaded row loop for_each_row outside the row driver
     (PairBBPD::eval_rows), in the code of files {name: text}"""

@@ -245,6 +245,27 @@ def test_cylinder_restart_equals_continuous_run(lmp, tmp_path, family):
 
 
 @pytest.mark.parametrize("family", ["ves", "eps"])
+def test_cylinder_resumes_from_a_restart_file_written_during_the_run(lmp, tmp_path, family):
+    """Kill and resume: a run that writes restart files every 100 steps ('restart 100'), as a
+    job that may be killed does; the file of step 200, read into a new process on 2 ranks,
+    continues to step 300 in the bits of the run that was not interrupted."""
+    script_text = cylinder(family, steps=300)
+    _, tail = script_text.split("fix             1 all nve", 1)
+    lmp(script_text.replace("run             ${steps}",
+                            "restart         100 cyl.*.restart\nrun             ${steps}") + END_DUMP)
+    straight = end_state(tmp_path)
+    assert (tmp_path / "cyl.200.restart").is_file()
+    (tmp_path / "start.dump").rename(tmp_path / "start1.dump")
+    resumed = ("plugin load bbpdplugin.so\nread_restart cyl.200.restart\nneighbor 0.0010 bin\n"
+               "lattice sc 0.0005\nvariable steps index 100\nfix 1 all nve" + tail + END_DUMP)
+    lmp(resumed, nprocs=2)
+    restarted = end_state(tmp_path, "start1.dump")
+    assert straight["c_1"].mean() > 0.05
+    for key in KEYS:
+        np.testing.assert_array_equal(straight[key], restarted[key])
+
+
+@pytest.mark.parametrize("family", ["ves", "eps"])
 def test_cylinder_follows_peri(lmp, tmp_path, family):
     """The smaller cylinder with peri/FAMILY and with bbpd/FAMILY: the same mean damage within
     2 % at every thermo step once bonds have broken."""
