@@ -156,6 +156,9 @@ class PairBBPD : public Pair {
   virtual void eval_bonds();                      // bond forces and breaking of one step
   virtual void init_rules() {}                    // init_style: after the bond fix exists
   const Rules rules;
+  // short-range contact stiffness 15 c0, as LAMMPS peri/pmb (Silling, EMU theory manual, 2005,
+  // p. 18): the forces and the stable time step
+  static constexpr double CONTACT_STIFFNESS_FACTOR = 15.0;
   bool short_range_forces() const { return rules.short_range || contact != 0; }    // stable step
   virtual std::string report_type_pair(int i, int j) const;
   virtual std::string report_rules() const { return {}; }
