@@ -66,8 +66,8 @@ def test_the_committed_runs_give_the_readme_delta_and_12_mpa_findings():
     kernels = ("constant", "triangular", "gaussian")
     fine = [by[f"{k}-s2-m4-d0.5"] for k in kernels]
     coarse = [by[f"{k}-s2-m4"] for k in kernels]
-    moves = [(round(f["x_split_mm"] - c["x_split_mm"], 1), round(f["t_split_us"] - c["t_split_us"], 1))
-             for f, c in zip(fine, coarse)]
+    moves = [(round(f["x_split_mm"] - c["x_split_mm"], 1),
+              round(f["t_split_us"] - c["t_split_us"], 1)) for f, c in zip(fine, coarse)]
     assert moves == [(-1.1, -0.6), (-0.2, -0.2), (-2.6, -1.6)]
     apart = branching.split_convergence(branching.read_rows())["dx_k"]    # kernels at 1 mm
     assert max(abs(x) for x, _ in moves) > apart
