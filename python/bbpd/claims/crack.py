@@ -41,6 +41,7 @@ PROPAGATION = {
         mode1_propagation.read_rows(PROPAGATION_CSV), csvfile.provenance(PROPAGATION_CSV))}
 KINK = {
     "kink": lambda data: kink.table(kink.read_rows(kink.RESULTS)),
+    "kink-verdict": lambda data: kink.verdict_table(kink.read_rows(kink.RESULTS)),
     "kink-kw": lambda data: kink_kalthoff_winkler.table(
         json.loads(kink_kalthoff_winkler.SUMMARY.read_text())),
     "kink-convergence": lambda data: kc.table(kc.read_rows(), _commands(kc.CSV)),
