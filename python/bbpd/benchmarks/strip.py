@@ -473,9 +473,6 @@ def section(specs, results, figdir, notes):
             "table": table_markdown(rows) if rows else "", "text": "\n".join(text), "figures": []}
 
 
-FIGURE_NAME = "kinetic_law.png"
-
-
 def figure(rows, path, H_over_delta=SWEEP_H_OVER_DELTA):
     """v_ss/c_R against Delta' (the model's U'/G_c) and Gamma/G_c against v_ss/c_R, one line
     per kernel and m at H/delta; runs that arrested drawn at 0, branched ones left out."""
