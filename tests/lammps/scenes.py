@@ -7,15 +7,20 @@ the path): `from scenes import peri_preamble`.
 
 impact_plate() gives the lines of the steel plate several tests strike at 32 m/s.
 assert_forces_match() holds a dump's forces and pe/atom against bbpd.reference.Bonds.
+kw_run() runs examples/kalthoff-winkler's input; drawn_kw_cracks() draws straight cracks on its
+plate for the post-processing alone.
 cylinder_dropin() runs the glass cylinder of LAMMPS's examples/peri with a peri/* style and
 with its bbpd/* port and checks that their damage agrees.
 """
+import math
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from bbpd import reference as ref
+from bbpd.benchmarks import kalthoff_winkler as kw
+from bbpd.runner import run_lammps
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 DROPIN_STEPS = (500, 1000)    # the steps whose damage is compared
@@ -101,3 +106,31 @@ def cylinder_dropin(lmp, model, scale, atoms_abs=0):
         assert d_peri > 0.05 and n_peri > 50    # the target cracks: the comparison means something
         assert d_ours == pytest.approx(d_peri, rel=DROPIN_RTOL)
         assert n_ours == pytest.approx(n_peri, rel=DROPIN_RTOL, abs=atoms_abs)
+
+
+def kw_run(work, dx, nprocs=1, script=None, **variables):
+    """examples/kalthoff-winkler/in.kalthoff_winkler (or script), Gaussian at spacing dx, with
+    the other -var variables given; returns work"""
+    v = {"kernel": "gaussian", "dx": repr(dx)}
+    v.update({k: str(x) for k, x in variables.items()})
+    run_lammps(script or str(kw.EXAMPLE), work, nprocs=nprocs, vars=v)
+    return work
+
+
+def drawn_kw_cracks(angle_deg, length, dx=1.0e-3):
+    """The Kalthoff-Winkler plate (100 x 200 mm, notches 50 mm long at y = 75 and 125 mm) as a
+    grid of spacing dx whose damage is 0.44 (as next to a cut) along both notches and along two
+    mirror cracks drawn straight from the tips at angle_deg for length: x, y, phi and the
+    geometry dict the benchmark's measures take"""
+    g = dict(dx=dx, delta=5 * dx, a=0.050, ylo=0.075, yhi=0.125, Lx=0.100, Ly=0.200)
+    i, j = (m.ravel() for m in np.mgrid[0:round(g["Lx"] / dx), 0:round(g["Ly"] / dx)])
+    x, y = (i + 0.5) * dx, (j + 0.5) * dx
+    phi = 0.0 * x
+    th = math.radians(angle_deg)
+    for yn, sign in ((g["ylo"], -1.0), (g["yhi"], 1.0)):
+        along_notch = (x < g["a"]) & (abs(y - yn) < dx)
+        # distance along and across the drawn segment tip -> tip + length (cos th, sign sin th)
+        s = (x - g["a"]) * math.cos(th) + sign * (y - yn) * math.sin(th)
+        d = abs(-(x - g["a"]) * math.sin(th) + sign * (y - yn) * math.cos(th))
+        phi[along_notch | ((s > 0) & (s <= length) & (d < 0.75 * dx))] = 0.44
+    return x, y, phi, g

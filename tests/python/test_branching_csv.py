@@ -51,3 +51,30 @@ def test_the_committed_runs_give_the_readme_findings():
     assert all(r["mirror_damage_frac"] == 0.0 for r in rows if branching.grown(r))
     mid = [by[f"{k}-s4-m4"] for k in ("constant", "triangular", "gaussian")]
     assert rng("t_split_us", mid) == (8.4, 8.8) and rng("x_split_mm", mid) == (6.9, 8.4)
+    assert rng("v_pre_over_cR", mid, 2) == (0.61, 0.67)
+    assert rng("v_mean_over_cR", mid, 2) == (0.59, 0.63)
+    assert rng("v_mean_over_cR", base, 2) == (0.39, 0.42) and rng("tips_end", mid, 0) == (4, 6)
+    assert rng("v_end_over_cR", base, 2) == (0.47, 0.50)
+
+
+def test_the_committed_runs_give_the_readme_delta_and_12_mpa_findings():
+    """README 'Findings', by hand: from delta = 1 to 0.5 mm the fork moves by -1.1 mm / -0.6 us,
+    -0.2 / -0.2, -2.6 / -1.6 (constant, triangular, Gaussian), more than the kernels differ at
+    1 mm, after 0.46-0.54 c_R; at 12 MPa the two waves' strain 2 sigma (1 - nu^2)/E is 109, 98
+    and 92 % of s0 and the mid-line breaks at 3.91 us, the path length jumping at 15.7-15.8 c_R"""
+    by = {r["run"]: r for r in branching.read_rows()}
+    kernels = ("constant", "triangular", "gaussian")
+    fine = [by[f"{k}-s2-m4-d0.5"] for k in kernels]
+    coarse = [by[f"{k}-s2-m4"] for k in kernels]
+    moves = [(round(f["x_split_mm"] - c["x_split_mm"], 1),
+              round(f["t_split_us"] - c["t_split_us"], 1)) for f, c in zip(fine, coarse)]
+    assert moves == [(-1.1, -0.6), (-0.2, -0.2), (-2.6, -1.6)]
+    apart = branching.split_convergence(branching.read_rows())["dx_k"]    # kernels at 1 mm
+    assert max(abs(x) for x, _ in moves) > apart
+    assert (round(min(f["v_pre_over_cR"] for f in fine), 2),
+            round(max(f["v_pre_over_cR"] for f in fine), 2)) == (0.46, 0.54)
+    high = [by[f"{k}-s12-m4"] for k in kernels]
+    strain = 2 * 12e6 * (1 - branching.NU**2) / branching.E
+    assert [round(100 * strain / r["s0"]) for r in high] == [109, 98, 92]
+    assert all(round(r["t_init_us"], 2) == 3.91 for r in high)
+    assert [round(r["v_max_over_cR"], 1) for r in high] == [15.8, 15.7, 15.8]

@@ -82,7 +82,7 @@ def test_a_crack_that_leaves_its_plane_is_branched_where_it_left(tmp_path):
     assert res["left_plane_over_H"] == pytest.approx((rows[30, 2] - a) / H)
     rows[:, 3] = -0.5 * strip.DX
     assert math.isnan(strip.measure(rows, 1.0, g, strip.DX)["left_plane_over_H"])
-    # the CSV keeps it, the table and the summary say it; a CSV from before the column reads NaN
+    # the CSV keeps it, the run table and the law table say it; a CSV from before the column reads NaN
     r = {c: 1.0 for c in strip.CSV_COLUMNS}
     r.update(kernel="gaussian", m=4.0, H_over_delta=80.0, Delta=2.0, crossed=False,
              state="branched", timing="1 rank, CPU A", left_plane_over_H=1.4925)
@@ -90,7 +90,7 @@ def test_a_crack_that_leaves_its_plane_is_branched_where_it_left(tmp_path):
     back = strip.read_rows(tmp_path / "s.csv")[0]
     assert back["left_plane_over_H"] == pytest.approx(1.4925)
     assert "no (branched at a + 1.49 H)" in strip.table_markdown([back])
-    assert "m = 4, H/delta = 80, Delta = 2 branched, off the plane at a + 1.49 H" in strip.summary_text([back])
+    assert "| 80 branched, off the plane at a + 1.49 H |" in strip.law_table([back])
     old = tmp_path / "old.csv"
     cols = [c for c in strip.CSV_COLUMNS if c != "left_plane_over_H"]
     old.write_text(",".join(cols) + "\n" + ",".join(

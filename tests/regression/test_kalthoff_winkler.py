@@ -10,10 +10,10 @@ break apart from the far-edge crack that the reflected wave opens (README, "far-
 """
 import math
 
-import numpy as np
 import pytest
 
 from bbpd.benchmarks import kalthoff_winkler as kw
+from scenes import drawn_kw_cracks
 
 # What each run must reproduce: the values measured with this code (table of
 # examples/kalthoff-winkler/README.md), per kernel and grid spacing (mm):
@@ -72,19 +72,9 @@ def test_path_measures_on_a_drawn_crack(angle_deg):
     """The post-processing alone: on a grid with two notches and two mirror cracks drawn at a
     known angle from the tips (crack rows at damage 0.44, as next to a cut), it finds the
     drawn tips and angle, and reports no far damage except a drawn far-edge spot."""
-    dx, L = 1.0e-3, 40.0e-3
-    g = dict(dx=dx, delta=5 * dx, a=0.050, ylo=0.075, yhi=0.125, Lx=0.100, Ly=0.200)
-    i, j = (m.ravel() for m in np.mgrid[0:100, 0:200])
-    x, y = (i + 0.5) * dx, (j + 0.5) * dx
-    phi = 0.0 * x
-    th = math.radians(angle_deg)
-    for yn, sign in ((g["ylo"], -1.0), (g["yhi"], 1.0)):
-        along_notch = (x < g["a"]) & (abs(y - yn) < dx)
-        # distance from the drawn crack segment (tip -> tip + L (cos th, sign sin th))
-        s = (x - g["a"]) * math.cos(th) + sign * (y - yn) * math.sin(th)
-        d = abs(-(x - g["a"]) * math.sin(th) + sign * (y - yn) * math.cos(th))
-        on_crack = (s > 0) & (s <= L) & (d < 0.75 * dx)
-        phi[along_notch | on_crack] = 0.44
+    L = 40.0e-3
+    x, y, phi, g = drawn_kw_cracks(angle_deg, L)
+    dx, th = g["dx"], math.radians(angle_deg)
     phi0 = phi.copy()                 # the run's damage at t = 0 would show the notches only
     phi0[~((x < g["a"]) & ((abs(y - g["ylo"]) < dx) | (abs(y - g["yhi"]) < dx)))] = 0.0
     phi[(x > 0.098) & (abs(y - 0.1) < 2 * dx)] = 0.2          # a far-edge spot

@@ -19,7 +19,7 @@ from scipy.spatial import cKDTree
 from bbpd import readers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_grid as kwg
-from bbpd.runner import run_lammps
+from scenes import kw_run
 
 DX = 2.0e-3
 A, YLO, YHI = 0.050, 0.074, 0.126          # notch tip x and notch lines at 2 mm
@@ -28,10 +28,7 @@ SHORT = repr(1.999 * DT)                    # two steps
 
 
 def run(work, nprocs=1, script=None, **variables):
-    v = {"kernel": "gaussian", "dx": repr(DX)}
-    v.update({k: str(x) for k, x in variables.items()})
-    run_lammps(script if script is not None else str(kw.EXAMPLE), work, nprocs=nprocs, vars=v)
-    return work
+    return kw_run(work, DX, nprocs, script, **variables)
 
 
 def snapshots(work):

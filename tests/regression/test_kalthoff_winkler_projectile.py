@@ -10,7 +10,6 @@ same bits; and the default prescribed loading gives the bits of the script befor
 projectile existed (digests of a run made with main at 1b2c9fb).
 """
 import hashlib
-import math
 import re
 
 import numpy as np
@@ -20,6 +19,7 @@ from scipy.spatial import cKDTree
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_projectile as kwp
 from bbpd.runner import run_lammps
+from scenes import kw_run
 
 DX = 2.0e-3
 TEND = "85e-6"        # past the contact's opening (71 us at 2 mm), before it touches again
@@ -35,10 +35,7 @@ MAIN_DIGESTS = {
 
 
 def run(work, nprocs=1, script=None, **variables):
-    v = {"kernel": "gaussian", "dx": repr(DX)}
-    v.update({k: str(x) for k, x in variables.items()})
-    run_lammps(script if script is not None else str(kw.EXAMPLE), work, nprocs=nprocs, vars=v)
-    return work
+    return kw_run(work, DX, nprocs, script, **variables)
 
 
 def total_bonds(work):

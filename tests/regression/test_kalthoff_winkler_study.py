@@ -13,6 +13,7 @@ import pytest
 from bbpd import readers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as kws
+from scenes import drawn_kw_cracks
 
 DX = 2.0e-3
 DT = 8.7e-8 * DX / 1.0e-3     # the script's default time step at 2 mm
@@ -111,16 +112,8 @@ def test_loading_variables_move_the_layer_as_documented(tmp_path):
 @pytest.mark.parametrize("angle_deg", [55.0, 70.0])
 def test_three_angles_on_a_drawn_crack(angle_deg):
     """A straight drawn crack: the initial, fit and chord angles all give the drawn angle."""
-    dx, L = 1.0e-3, 60.0e-3
-    g = dict(dx=dx, delta=5 * dx, a=0.050, ylo=0.075, yhi=0.125, Lx=0.100, Ly=0.200)
-    i, j = (m.ravel() for m in np.mgrid[0:100, 0:200])
-    x, y = (i + 0.5) * dx, (j + 0.5) * dx
-    phi = 0.0 * x
-    th = math.radians(angle_deg)
-    for yn, sign in ((g["ylo"], -1.0), (g["yhi"], 1.0)):
-        s = (x - g["a"]) * math.cos(th) + sign * (y - yn) * math.sin(th)
-        d = abs(-(x - g["a"]) * math.sin(th) + sign * (y - yn) * math.cos(th))
-        phi[((x < g["a"]) & (abs(y - yn) < dx)) | ((s > 0) & (s <= L) & (d < 0.75 * dx))] = 0.44
+    L = 60.0e-3
+    x, y, phi, g = drawn_kw_cracks(angle_deg, L)
     ang = kws.angles_of(x, y, phi, g)
     for side in ("lo", "hi"):
         for definition in kws.ANGLE_DEFS:

@@ -93,10 +93,11 @@ def test_sweep_reproduces_the_committed_csv(tmp_path):
 
 
 def test_readme_verdict_follows_the_csv():
-    """the verdict the README states by hand, from the committed kink.csv: the 24 coarse-grid
-    mixed-mode angles lie closest to max. hoop stress at 2 and 4 horizons (RMS 11.2 and 8.1 deg),
-    the 12 fine-grid ones closest to max. hoop strain (3.6 and 3.3 deg); 3 of 37 mixed-mode runs
-    locked onto a grid direction"""
+    """what the README states by hand beside its verdict table, from the committed kink.csv: the
+    24 coarse-grid mixed-mode angles lie closest to max. hoop stress at 2 and 4 horizons (RMS 11.2
+    and 8.1 deg), the 12 fine-grid ones closest to max. hoop strain (3.6 and 3.3 deg); 3 of 37
+    mixed-mode runs, all Gaussian on the coarse grid, locked onto a grid direction; the ramp
+    check's angles"""
     rows = bench.read_rows(CSV)
     for dist, rms in (("2d", 11.2), ("4d", 8.1)):
         v = bench.verdict(rows, dist, bench.COARSE[0])
@@ -104,8 +105,16 @@ def test_readme_verdict_follows_the_csv():
     for dist, rms in (("2d", 3.6), ("4d", 3.3)):
         v = bench.verdict(rows, dist, bench.FINE[0])
         assert (v["n"], v["best"], round(v["rms"]["hoop_strain"], 1)) == (12, "hoop_strain", rms)
-    assert len(bench.locked(rows)) == 3
+    stuck = bench.locked(rows)
+    assert [(r["kernel"], r["dx"], r["psi"], r["alpha"], round(r["angle_2d"], 1)) for r in stuck] \
+        == [("gaussian", 1e-3, 90.0, 0.0, -90.0), ("gaussian", 1e-3, 22.5, 22.5, -22.5),
+            ("gaussian", 1e-3, 45.0, 0.0, -45.0)]
     assert sum(1 for r in rows if r["psi"] > 0) == 37
+    # the ramp check: the same case at half the loading rate
+    ramp = {r["ncross"]: (round(r["angle_2d"], 1), round(r["angle_4d"], 1)) for r in rows
+            if (r["kernel"], r["psi"], r["alpha"], r["dx"]) == ("gaussian", 45.0, 0.0, 1e-3)}
+    assert ramp[bench.NCROSS] == (-54.6, -55.1)
+    assert [v for n, v in ramp.items() if n != bench.NCROSS] == [(-45.0, -50.4)]
 
 
 # The J-integral of the intact crack at K = 0.6 K_c (bench.loading_check: psi = 30 deg, crack

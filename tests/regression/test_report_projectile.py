@@ -65,7 +65,9 @@ def test_projectile_section_holds_the_runs_numbers(written):
     out, text, r, missing = written
     sec = section(text, kwp.REPORT_TITLE)
     assert "| 2D | projectile | gaussian | 4 | 69000 |" in sec
-    assert f"interface speed {r['v_interface']:.2f} m/s" in sec
+    assert f" {r['v_interface']:.2f} |" in sec      # the table's cell
+    dv = (r["v_interface"] / r["v_interface_theory"] - 1.0) * 100.0
+    assert f"{dv:+.1f} %" in sec and f"{r['v_interface_theory']:.2f} m/s" in sec
     assert f"{r['momentum_drift']:.1e}" in sec
     assert "Not measured (failed or not run): " + missing in sec
     assert "](kw_projectile_contact_gaussian_dx4mm.png)" in sec

@@ -32,12 +32,14 @@ import argparse
 import json
 import math
 import re
+import sys
 import time
 from pathlib import Path
 
 import numpy as np
 from scipy.spatial import cKDTree
 
+from bbpd import csvfile
 from bbpd import jobs as jobmod
 from bbpd import readers
 from bbpd.benchmarks import kalthoff_winkler as kw
@@ -341,6 +343,27 @@ def md_table(rows, header=TABLE_HEADER):
     return markdown.table(header, rows)
 
 
+CSV = kw.ROOT / "examples" / "kalthoff-winkler" / "results" / "study.csv"
+
+
+def write_csv(path, rows, command):
+    """the table's cells (table_rows) as a CSV, the command on its 'made by' line"""
+    csvfile.write_table(path, [dict(zip(TABLE_HEADER, r)) for r in rows], TABLE_HEADER,
+                        [f"made by: {command}"], text=TABLE_HEADER)
+
+
+def read_csv(path=CSV):
+    """the rows of write_csv as lists of cells, and its provenance lines"""
+    rows = csvfile.read_table(path, text=TABLE_HEADER)
+    return [[r[c] for c in TABLE_HEADER] for r in rows], csvfile.provenance(path)
+
+
+def readme_table(path=CSV):
+    """the README's table: the CSV's commands, then its rows"""
+    rows, made = read_csv(path)
+    return markdown.made_by([ln.partition(": ")[2] for ln in made]) + "\n\n" + md_table(rows)
+
+
 def cases_table():
     rows = []
     for name, (desc, v) in CASES.items():
@@ -475,9 +498,10 @@ def section(specs, results, figdir, notes):
             "figures": names}
 
 
-def main_study(work, figdir, workers=1, log=print, reuse_only=False):
-    """Run (or reuse) the study's runs in work and write study.md, study.json and figures.
-    reuse_only: re-analyse the finished run folders in work (with this code), run nothing."""
+def main_study(work, figdir, workers=1, log=print, reuse_only=False, csv=None, command=""):
+    """Run (or reuse) the study's runs in work and write study.md, study.json, figures and, given
+    csv, the table's CSV. reuse_only: re-analyse the finished run folders in work (with this
+    code), run nothing."""
     specs = sorted(jobs(), key=lambda s: s.job.estimate_s)   # the 1 mm runs first
     if reuse_only:
         done = {}
@@ -498,6 +522,8 @@ def main_study(work, figdir, workers=1, log=print, reuse_only=False):
     summary = {f"{c} {k} {d * 1e3:g}": {key: r.get(key) for key in SUMMARY_KEYS}
                for (c, k, d), r in done.items()}
     (Path(work) / "study.json").write_text(json.dumps(summary, indent=1))
+    if csv:
+        write_csv(csv, table_rows(done), command)
     log(text)
     return done
 
@@ -517,8 +543,13 @@ def main(argv=None):
     ap.add_argument("--figures", default=None, help="write the PNGs here (default: --work)")
     ap.add_argument("--reuse", action="store_true",
                     help="re-analyse finished runs in --work instead of running them")
+    ap.add_argument("--csv", default=None, help="write the table's CSV here (the README's table "
+                    "comes from it through tools/python -m bbpd.claims --write)")
     args = ap.parse_args(argv)
-    main_study(Path(args.work), Path(args.figures or args.work), reuse_only=args.reuse)
+    command = "tools/python -m bbpd.benchmarks.kalthoff_winkler_study " + " ".join(
+        sys.argv[1:] if argv is None else argv)
+    main_study(Path(args.work), Path(args.figures or args.work), reuse_only=args.reuse,
+               csv=args.csv, command=command)
 
 
 if __name__ == "__main__":

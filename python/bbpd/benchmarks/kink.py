@@ -362,6 +362,32 @@ def locked(rows):
             and min(abs(r["angle_2d"] - r[c]) for c in CRITERIA) > 2 * LOCK_DEG]
 
 
+def verdict_table(rows):
+    """The README's verdict as a table: per grid and distance from the tip (verdict()), the RMS
+    deviation from each criterion with the mean deviation and its standard error, the nearest
+    criterion overall and per kernel, the criteria within two standard errors, the grid's pull
+    and the kernels' spread (mean and largest)."""
+    out = []
+    for dx in (COARSE[0], FINE[0]):
+        for dist in ("2d", "4d"):
+            v = verdict(rows, dist, dx=dx)
+            if v["n"] < 2:
+                continue
+            admitted = [CRITERION_NAMES[c] for c in CRITERIA if abs(v["bias"][c]) <= 2 * v["se"][c]]
+            out.append([f"{dx * 1e3:g}", dist[0], v["n"],
+                        *(f"{v['rms'][c]:.1f} ({v['bias'][c]:+.1f} ± {v['se'][c]:.1f})"
+                          for c in CRITERIA),
+                        CRITERION_NAMES[v["best"]], ", ".join(admitted) or "none",
+                        "; ".join(f"{k} {CRITERION_NAMES[c]}" for k, c in v["best_kernel"].items()),
+                        f"{v['pull_mean']:.1f} ({v['pull_max']:.1f})",
+                        f"{v['kernel_spread_mean']:.1f} ({v['kernel_spread_max']:.1f})"])
+    head = ("dx (mm)", "horizons from the tip", "mixed-mode runs",
+            *(f"{CRITERION_NAMES[c]}: RMS (mean ± s.e.), deg" for c in CRITERIA), "nearest",
+            "within 2 s.e.", "nearest per kernel", "crack 0 -> 22.5 deg to the rows: change, "
+            "mean (max), deg", "kernels' spread at one case, mean (max), deg")
+    return md_table(head, out)
+
+
 def deviation_table(rows):
     """REPORT.md's table under the runs: per grid and distance from the tip, the RMS deviation
     of the mixed-mode angles from each criterion and the nearest criterion"""

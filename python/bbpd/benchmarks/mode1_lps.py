@@ -26,7 +26,6 @@ from bbpd.kernels import KERNELS
 
 ROOT = Path(__file__).resolve().parents[3]
 CSV = ROOT / "examples" / "mode1-semi-infinite" / "results" / "mode1_lps.csv"
-BOND_CSV = ROOT / "examples" / "mode1-semi-infinite" / "results" / "mode1.csv"
 NU = mode1.NU_PAPER                 # the paper's Poisson's ratio, now the model's own
 MODEL = "plane/strain"              # eq. 42 is Freund's plane-strain solution
 DXS = (0.1, 0.05, 0.025)

@@ -390,36 +390,16 @@ def _case(r):
     return f"{r['kernel']} m = {r['m']:g}, H/delta = {r['H_over_delta']:g}, Delta = {r['Delta']:g}"
 
 
-def summary_text(rows):
-    """REPORT.md's lines under the strip table: per kernel the threshold at each m, the steady
-    speed at Delta = 2 against the height, and the runs that did not run steadily; the energy
-    closure over all runs"""
-    out = []
-    for k in sorted({r["kernel"] for r in rows}):
-        for m in sorted({r["m"] for r in rows if r["kernel"] == k}):
-            lo, hi = threshold(rows, k, m)
-            if lo is not None or hi is not None:
-                out.append(f"{k} m = {m:g}, H/delta = {SWEEP_H_OVER_DELTA:g}: {f(lo, 'g')} < Delta_c "
-                           f"<= {f(hi, 'g')} (-: no run arrested / crossed).")
-            hd = sorted({r["H_over_delta"] for r in rows if r["kernel"] == k and r["m"] == m
-                         and r["Delta"] == 2.0 and r["crossed"]})
-            speeds = [(h, speed_at(rows, k, m, h, 2.0)) for h in hd]
-            conv = height_convergence(speeds)
-            if conv:
-                out.append(f"{k} m = {m:g}, Delta = 2: v_ss/c_R " + ", ".join(
-                    f"{v:.3f} at H/delta = {h:g}" for h, v in speeds) + f"; last change "
-                    f"{conv['last']:+.4f} (converged: {'yes' if conv['converged'] else 'no'}).")
-        bad = [r for r in rows if r["kernel"] == k and not r["crossed"] and r["state"] != "arrested"]
-        if bad:
-            out.append(f"{k}, no steady crack: " + "; ".join(
-                f"{_case(r)} {r['state']}{_where(r)}" for r in bad) + ".")
+def closure_line(rows):
+    """REPORT.md's line under the strip's tables (law_table has the thresholds, speeds and runs
+    that did not run steadily): the energy closure over the runs that crossed"""
     c = energy_closure(rows)
-    if c:
-        out.append(f"Closure Gamma + Phi = U' over the {c['n']} runs that crossed: within "
-                   f"{abs(c['worst']['closure_pct']):.1f} % ({_case(c['worst'])}); energy balance "
-                   f"drift at most {c['drift']:.2f} % of the broken-bond energy (all runs: "
-                   f"{c['drift_all']['balance_pct']:.2f} %, {_case(c['drift_all'])}).")
-    return "\n".join(out)
+    if not c:
+        return ""
+    return (f"Closure Gamma + Phi = U' over the {c['n']} runs that crossed: within "
+            f"{abs(c['worst']['closure_pct']):.1f} % ({_case(c['worst'])}); energy balance "
+            f"drift at most {c['drift']:.2f} % of the broken-bond energy (all runs: "
+            f"{c['drift_all']['balance_pct']:.2f} %, {_case(c['drift_all'])}).")
 
 
 def _where(r):
@@ -464,16 +444,14 @@ def jobs(full=False):
 
 def section(specs, results, figdir, notes):
     """The strip's section of report/REPORT.md."""
-    rows, text = jobmod.finished_rows(specs, results, lambda rows: [summary_text(rows)])
+    rows, text = jobmod.finished_rows(specs, results, lambda rows: [closure_line(rows)])
     return {"title": REPORT_TITLE,
             "setup": "Soda-lime glass (E = 72 GPa, G_c = 3.8 J/m2), plane stress, delta = 1 mm, "
                      "strip 8 H long with a seed crack H long, pre-stretched between fixed grips "
                      "to U' = Delta G_c; steady speed, bond and wave energies over the middle of "
                      "the strip. See examples/strip-steady-crack/README.md.",
-            "table": table_markdown(rows) if rows else "", "text": "\n".join(text), "figures": []}
-
-
-FIGURE_NAME = "kinetic_law.png"
+            "table": table_markdown(rows) + "\n\n" + law_table(rows) if rows else "",
+            "text": "\n".join(t for t in text if t), "figures": []}
 
 
 def figure(rows, path, H_over_delta=SWEEP_H_OVER_DELTA):

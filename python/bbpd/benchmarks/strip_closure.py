@@ -152,7 +152,6 @@ def _taller(r):
     return f"{r['l2_kinetic_taller_pct']:.1f} (x {r['law_shift_taller']:.3f})"
 
 
-CLOSURE_GOAL_DX = 0.025    # m: the grid at which the closure's goal is set
 CLOSURE_GOAL_PCT = 5.0    # L2 of l(t) at the finest grid (issue's criterion)
 
 

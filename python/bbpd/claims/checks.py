@@ -16,7 +16,6 @@ from .data import Data
 SPEED = re.compile(r"\b\d+(\.\d+)?\s?[x×](?=[\s,.;:)*|])(?! \d)")
 SPEED_CONTEXT = re.compile(r"faster|slower|speed|loop|pair time|ratio", re.I)
 CPU = re.compile(r"Xeon|EPYC|Zen \d|Sapphire Rapids|Ryzen|Core i\d|Apple M\d|Graviton")
-SPEED_FILES = ("README.md", "examples/*/README.md")
 
 
 WIDTH = {".md": 100, ".rst": 76}

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Tables of the crack-growth examples (examples/mode1-propagation, examples/kink-mixed-mode,
-examples/strip-steady-crack, examples/crack-branching, the projectile, grid-pull, deck and 3D
-parts of examples/kalthoff-winkler): per README, block name -> render(data), each rendered by
+examples/strip-steady-crack, examples/crack-branching, the study, projectile, grid-pull, deck and
+3D parts of examples/kalthoff-winkler): per README, block name -> render(data), each rendered by
 its benchmark module from the results it committed."""
 import json
 
@@ -10,6 +10,7 @@ from bbpd.benchmarks import kalthoff_winkler_3d as kw3d
 from bbpd.benchmarks import kalthoff_winkler_deck as deck
 from bbpd.benchmarks import kalthoff_winkler_grid as grid
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
+from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.benchmarks import kink_convergence as kc
 from bbpd.benchmarks import (branching, kink, kink_kalthoff_winkler, mode1_propagation, strip,
                              strip_closure)
@@ -40,6 +41,7 @@ PROPAGATION = {
         mode1_propagation.read_rows(PROPAGATION_CSV), csvfile.provenance(PROPAGATION_CSV))}
 KINK = {
     "kink": lambda data: kink.table(kink.read_rows(kink.RESULTS)),
+    "kink-verdict": lambda data: kink.verdict_table(kink.read_rows(kink.RESULTS)),
     "kink-kw": lambda data: kink_kalthoff_winkler.table(
         json.loads(kink_kalthoff_winkler.SUMMARY.read_text())),
     "kink-convergence": lambda data: kc.table(kc.read_rows(), _commands(kc.CSV)),
@@ -61,6 +63,7 @@ BRANCHING = {
     "branching-cost": lambda data: branching.cost_table(branching.read_rows())}
 KW = {
     "kw-projectile": lambda data: projectile.markdown(projectile.read_csv(PROJECTILE_CSV)),
+    "kw-study": lambda data: study.readme_table(),
     "kw-grid-pull": lambda data: grid.markdown(*reversed(grid.read_rows(grid.CSV))),
     "kw-deck": lambda data: deck.table(deck.read_rows()[1], _commands(deck.CSV)),
     "kw-3d": lambda data: kw3d.table(kw3d.read_rows(), _made_by(kw3d.CSV))}

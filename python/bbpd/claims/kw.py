@@ -6,7 +6,6 @@ from bbpd.benchmarks import kalthoff_winkler as kw_bench
 from .text import by_kernel, f, md_table, mm
 
 NAME = "kalthoff_winkler"
-ANGLE_TIE_DEG = 0.05    # angles closer than the table's 0.1 deg rounding count as equal
 
 
 def _consts():
