@@ -26,8 +26,8 @@ using PluginBondModel = CriticalStretchBond;
 
 }    // namespace BBPD
 
-// X(A, RULE) for every rule the Silling-Askari loop (pair_bbpd_alpha.cpp) is compiled with:
-// bbpd/KERNEL/alpha's (only compression lowers s0) and peri/pmb's (bbpd/pmb)
+// X(A, RULE) for every rule the Silling-Askari loop (pair_bbpd_silling_askari.cpp) is
+// compiled with: bbpd/KERNEL/alpha's (only compression lowers s0) and peri/pmb's (bbpd/pmb)
 #define BBPD_FOR_STRETCH_RULES(X, A) X(A, BBPD::SillingAskariRule<true>) X(A, BBPD::PeriPmbRule)
 
 #endif

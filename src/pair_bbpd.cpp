@@ -381,7 +381,8 @@ void PairBBPD::init_style()
   law.micromodulus = BBPD::TypePairTable(atom->ntypes, micromodulus);
   law.horizon = BBPD::TypePairTable(atom->ntypes, horizon);
   law.bondless = BBPD::TypePairTable(atom->ntypes, bondless);
-  // the Silling-Askari loop (pair_bbpd_alpha.cpp) reads partner indices, the others offsets too
+  // the Silling-Askari loop (pair_bbpd_silling_askari.cpp) reads partner indices, the others
+  // offsets too
   bonds->set_rules(law, storage, !rules.silling_askari);
   send_run_limits();
 }
@@ -819,7 +820,8 @@ double PairBBPD::breaking_length(int i, int j) const
   return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
-// the plain loop (eval) and the Silling-Askari loop (pair_bbpd_alpha.cpp) sum rows with these
+// the plain loop (eval) and the Silling-Askari loop (pair_bbpd_silling_askari.cpp) sum rows
+// with these
 template bool PairBBPD::row_force<0, 0, 0>(int, double *, const double *, double *,
                                            BBPD::CoefCache *);
 template bool PairBBPD::row_force<1, 0, 0>(int, double *, const double *, double *,

@@ -12,9 +12,11 @@
    storage never calls back (doc/architecture.rst).
 
    A style with other breaking rules derives from this class, gives its Rules at
-   construction and overrides the hooks below "rules of a derived style": the
-   Silling-Askari critical stretch (pair_bbpd_alpha.h) and the rules of LAMMPS's
-   peri/pmb (pair_bbpd_pmb.h).
+   construction and overrides the hooks below "rules of a derived style"; what styles
+   share is held or called, not inherited: the Silling-Askari state
+   (pair_bbpd_silling_askari_state.h, bbpd_silling_askari.h) and the pieces of LAMMPS's
+   peri/pmb rules (pair_bbpd_peri_rules.cpp). No style sits more than two classes
+   below Pair (doc/architecture.rst).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_BBPD_H
@@ -40,6 +42,8 @@ struct RowTally;     // bbpd_row.h
 
 namespace LAMMPS_NS {
 
+class SillingAskariState;    // pair_bbpd_silling_askari_state.h
+
 class PairBBPD : public Pair {
  public:
   // what the shared code must know of a style's rules, given by the style at construction
@@ -49,6 +53,9 @@ class PairBBPD : public Pair {
     bool pmb_rules;         // peri/pmb's families, volumes and numbers (pair_bbpd_pmb.h)
     bool short_range;       // short-range forces whatever 'contact' says (stable step)
   };
+  // peri/pmb's rules: Silling-Askari breaking, its families and numbers, short-range forces
+  // (bbpd/pmb and the LPS styles)
+  static constexpr Rules PERI_PMB_RULES{true, true, true};
   PairBBPD(class LAMMPS *, BBPD::KernelInfo, const char *style = nullptr,
            Rules = Rules{false, false, false});
   ~PairBBPD() override;
@@ -164,6 +171,22 @@ class PairBBPD : public Pair {
   virtual std::string report_rules() const { return {}; }
   // a bond's stiffness in the stable time step (eq. 26): its coefficient c C_v V_j / xi0
   virtual double bond_stiffness(int i, int k) const;
+
+  // the Silling-Askari loop (pair_bbpd_silling_askari.cpp): bond forces and breaking with
+  // the critical stretch of Rule (bbpd_plugin_model.h lists the rules) over a style's state;
+  // bbpd/KERNEL/alpha and bbpd/pmb call it
+  template <int EVFLAG, class Rule> void eval_silling_askari(SillingAskariState &);
+  template <int EVFLAG> double broken_bond_force(int i, int k, double *fb, double *acc);
+
+  // the pieces of peri/pmb's rules its styles call (bbpd/pmb, the LPS styles;
+  // pair_bbpd_peri_rules.cpp): no 'contact' keyword, the lattice constant lc, the
+  // short-range forces with lc and the report line
+  void forbid_contact() const;
+  double peri_lattice_constant() const;
+  void compute_short_range(double lc);
+  std::string peri_rules_report(double lc) const;
+  // the short-range stiffness of types i j per partner volume (peri/pmb: 15 c)
+  virtual double short_range_stiffness(int itype, int jtype) const;
 
   // candidates of the short-range forces ('contact', bbpd/pmb's): pairs that can come in
   // range before the atoms move half the search's skin, searched again when stale

@@ -5,41 +5,30 @@
    stretch (Silling & Askari, Comput. Struct. 83 (2005) 1526, eq. 40),
      s0 = s00 - alpha min(0, smallest bond stretch of the atom at the last step),
    'alpha A' in pair_coeff. A bond past it breaks and exerts no force (the bbpd
-   order). Its loop also serves pair style bbpd/pmb (pair_bbpd_pmb.h), whose
-   bonds act in the step they break and whose smin is not clamped.
-
-   smin lives in the per-atom s0 of atom_style peri, which LAMMPS already sends
-   to ghost atoms every step and carries through migration and restart files;
-   fix bbpd/alpha keeps what a second evaluation of the same step needs
-   (fix_bbpd_alpha.h).
+   order). The style holds its state (pair_bbpd_silling_askari_state.h) and calls
+   PairBBPD's Silling-Askari loop (pair_bbpd_silling_askari.cpp), which pair style
+   bbpd/pmb calls with peri/pmb's rule (pair_bbpd_pmb.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_BBPD_ALPHA_H
 #define LMP_PAIR_BBPD_ALPHA_H
 
 #include "pair_bbpd.h"
+#include "pair_bbpd_silling_askari_state.h"
 
 namespace LAMMPS_NS {
 
 class PairBBPDAlpha : public PairBBPD {
  public:
-  PairBBPDAlpha(class LAMMPS *, BBPD::KernelInfo, const char *style = nullptr,
-                Rules = Rules{true, false, false});
+  PairBBPDAlpha(class LAMMPS *, BBPD::KernelInfo);
   ~PairBBPDAlpha() override;
 
  protected:
-  int nmax_smin;
-  double *smin_new;                   // smallest bond stretch of each local atom in this step
-  class FixBBPDAlpha *alpha_state;    // what a second evaluation of the same step needs
+  SillingAskariState silling_askari;    // smin of this step and fix bbpd/alpha
 
   void eval_bonds() override;
   void init_rules() override;
   std::string report_rules() const override;
-
-  // PMB: peri/pmb's order (a bond acts in the step it breaks, round-off elongations are zero,
-  // smin is not clamped to compression)
-  template <int EVFLAG, class Rule> void eval_silling_askari();
-  template <int EVFLAG> double broken_bond_force(int i, int k, double *fb, double *acc);
 };
 
 }    // namespace LAMMPS_NS

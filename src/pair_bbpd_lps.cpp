@@ -64,7 +64,7 @@ PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, Family f) :
 }
 
 PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name) :
-    PairBBPDPMB(lmp, k, style_name), bulk(nullptr), shear(nullptr),
+    PairBBPD(lmp, k, style_name, PERI_PMB_RULES), lattice_constant(0.0), bulk(nullptr), shear(nullptr),
     dimension(LPS::DILATATION_FACTOR), deviatoric_share(PERI_LPS_DEVIATORIC_SHARE), lps_state(nullptr), nmax_lps(0), atom_states(nullptr),
     nmax_length(0), bond_length(nullptr), family(Family::LPS), relax_share(nullptr),
     relax_time(nullptr), yield_stress(nullptr), history(nullptr), nmax_slot(0), bond_slot(nullptr)
@@ -85,6 +85,8 @@ PairBBPDLPS::~PairBBPDLPS()
   memory->destroy(bond_slot);
   release_fix(lps_state, LPS_FIX_ID);
   release_fix(history, HISTORY_FIX_ID);
+  silling_askari.destroy(memory);
+  release_fix(silling_askari.fix, SillingAskariState::FIX_ID);
 }
 
 void PairBBPDLPS::allocate_moduli()
@@ -109,7 +111,8 @@ void PairBBPDLPS::settings(int narg, char **arg)
     error->all(FLERR, "Pair style {}: model '{}' is not available: {} is the 3D "
                "linear peridynamic solid, write 'pair_style {} 3d'", style_of(family), arg[imodel],
                peri_style_of(family), style_of(family));
-  PairBBPDPMB::settings(narg, arg);
+  PairBBPD::settings(narg, arg);
+  forbid_contact();
 }
 
 /* ----------------------------------------------------------------------
@@ -253,7 +256,10 @@ void PairBBPDLPS::read_restart(FILE *fp)
    coefficient of the bond storage, and the LPS state */
 void PairBBPDLPS::init_rules()
 {
-  PairBBPDPMB::init_rules();
+  silling_askari.attach(
+      static_cast<FixBBPDAlpha *>(own_fix(SillingAskariState::FIX_ID, "bbpd/alpha")), atom,
+      bonds->families_built());
+  lattice_constant = peri_lattice_constant();
   law.weighting = BBPD::LpsWeighting{{lattice_constant}};    // omega V_j ramp in the bond storage
   dimension = LPS::lps_dimension(model);    // 3 for bbpd/lps (model 3d)
   lps_state = static_cast<FixBBPDLPS *>(own_fix(LPS_FIX_ID, "bbpd/lps"));
@@ -295,7 +301,7 @@ std::string PairBBPDLPS::report_rules() const
       ? "  peri/eps history: per bond end the plastic deviatoric extension, per atom lambda; "
         "plastic steps return the deviatoric state to the yield surface\n"
       : "";
-  return PairBBPDPMB::report_rules() +
+  return peri_rules_report(lattice_constant) +
       fmt::format("  {} state: influence function 1/|xi|, weighted volume m fixed at the first "
                   "evaluation, dilatation theta every step (sent to the ghost atoms); stable time "
                   "step estimated as for a PMB bond of the same bulk modulus, c = 18 K / (pi "
@@ -328,13 +334,13 @@ void *PairBBPDLPS::extract(const char *name, int &dim)
     dim = 1;
     return lps_state ? (void *) lps_state->dilatation : nullptr;
   }
-  return PairBBPDPMB::extract(name, dim);
+  return PairBBPD::extract(name, dim);
 }
 
 double PairBBPDLPS::memory_usage()
 {
   const int n = atom->ntypes + 1;
-  return PairBBPDPMB::memory_usage() + 2.0 * n * n * sizeof(double) +
+  return PairBBPD::memory_usage() + 2.0 * n * n * sizeof(double) +
       (double) LPS_FORWARD_VALUES * nmax_lps * sizeof(double) + (double) nmax_length * sizeof(double);
 }
 
@@ -355,7 +361,7 @@ void PairBBPDLPS::eval_bonds()
   } else {
     eval_lps<0>();
   }
-  compute_short_range();
+  compute_short_range(lattice_constant);
 }
 
 /* m_i over the bonds each local atom has now (fix_peri_neigh sums wvolume as it builds the
@@ -414,12 +420,7 @@ bool PairBBPDLPS::begin_state()
     memory->destroy(bond_length);
     memory->create(bond_length, nmax_length, "pair:bond_length");
   }
-  if (nlocal > nmax_smin) {
-    nmax_smin = atom->nmax;
-    memory->destroy(smin_new);
-    memory->create(smin_new, nmax_smin, "pair:smin_new");
-  }
-  const bool replay = update->setupflag && update->ntimestep == alpha_state->last_step;
+  const bool replay = silling_askari.begin_step(memory, atom, update);
   if (!lps_state->ready) {
     sum_weighted_volumes();
     lps_state->ready = 1;
@@ -449,9 +450,7 @@ BBPD::SillingAskariCoefficients PairBBPDLPS::breaking_rule() const
 /* the new smin takes effect at the next step, once sent to the ghosts */
 void PairBBPDLPS::end_state()
 {
-  double *smin = atom->s0;    // smallest bond stretch at the previous step, ghosts included
-  for (int i = 0; i < atom->nlocal; i++) smin[i] = smin_new[i];
-  alpha_state->last_step = update->ntimestep;
+  silling_askari.end_step(atom, update);
 }
 
 template <int EVFLAG> void PairBBPDLPS::eval_lps()

@@ -4,8 +4,9 @@
    peri/lps (bbpd_lps.h) in the bbpd bond storage.
 
    'pair_style bbpd/lps 3d' takes 'pair_coeff I J K G delta s00 alpha' as peri/lps does
-   and follows its rules: peri/pmb's families, volume ramp, short-range forces and
-   Silling-Askari breaking (pair_bbpd_pmb.h), the influence function 1/|xi|, and per step
+   and follows its rules: peri/pmb's families, volume ramp, short-range forces
+   (pair_bbpd_peri_rules.cpp) and Silling-Askari breaking (bbpd_silling_askari.h,
+   pair_bbpd_silling_askari_state.h), the influence function 1/|xi|, and per step
      1. the dilatation theta_i of every local atom over its intact bonds, sent with
         theta_i / m_i and 1 / m_i to the ghost atoms (one forward communication);
      2. the bond forces of the LPS force state; a bond past s00 - alpha max(smin_i, smin_j)
@@ -25,11 +26,12 @@
 
 #include "bbpd_lps.h"
 #include "bbpd_silling_askari.h"
-#include "pair_bbpd_pmb.h"
+#include "pair_bbpd.h"
+#include "pair_bbpd_silling_askari_state.h"
 
 namespace LAMMPS_NS {
 
-class PairBBPDLPS : public PairBBPDPMB {
+class PairBBPDLPS : public PairBBPD {
  public:
   // the force state: peri/lps's, or one with a deviatoric history (peri/ves, peri/eps)
   enum class Family { LPS, VES, EPS };
@@ -55,6 +57,8 @@ class PairBBPDLPS : public PairBBPDPMB {
   double poisson_ratio(int itype) const override;
 
  protected:
+  SillingAskariState silling_askari;    // smin of this step and fix bbpd/alpha
+  double lattice_constant;              // lc of the lattice command, as in peri/pmb
   double **bulk, **shear;           // K and G of peri/lps, per type pair (2D: kappa' and G)
   double dimension;                 // d of the LPS (3; 2 for the 2D models of the kernel styles)
   double deviatoric_share;          // of atom i's deviatoric energy tallied at i: peri/lps 1/2

@@ -157,13 +157,13 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
   {
     make_plan();
     if (replay) {
-      p.smin_new[i] = smin_i;
+      p.silling_askari.smin_new[i] = smin_i;
       row_sum<false, true, false>(fi);
       return false;
     }
     const bool had_bonds = p.bonds->nbond[i] > 0;
     const bool broken = row_sum<true, true, true>(fi);
-    p.smin_new[i] = had_bonds ? snew : BBPD::PMB::NO_BOND_STRETCH;
+    p.silling_askari.smin_new[i] = had_bonds ? snew : BBPD::PMB::NO_BOND_STRETCH;
     return broken;
   }
   // as Row::breaks, with the family's force state of the bond (its history as this step left it)

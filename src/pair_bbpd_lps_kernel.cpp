@@ -33,7 +33,8 @@ PairBBPDLPSKernel::PairBBPDLPSKernel(LAMMPS *lmp, BBPD::KernelInfo k) :
 /* pair_style bbpd/lps/KERNEL MODEL [thickness h] [keywords]: the models of the LPS */
 void PairBBPDLPSKernel::settings(int narg, char **arg)
 {
-  PairBBPDPMB::settings(narg, arg);    // model, thickness and keywords of bbpd/pmb
+  PairBBPD::settings(narg, arg);    // model, thickness and keywords of bbpd/pmb
+  forbid_contact();
   if (model == BBPD::Model::Bar1D)
     error->all(FLERR, "Pair style {}: model 1d is not available: the LPS has 3d, plane/strain "
                "and plane/stress", style);
@@ -119,7 +120,7 @@ std::string PairBBPDLPSKernel::report_type_pair(int i, int j) const
 
 std::string PairBBPDLPSKernel::report_rules() const
 {
-  return PairBBPDPMB::report_rules() +
+  return peri_rules_report(lattice_constant) +
       fmt::format("  LPS state: influence function the {} kernel W(|xi|/delta), dilatation "
                   "factor d = {}, weighted volume m fixed at the first evaluation; stable time "
                   "step estimated as for the bond-based bond of the same E\n", kernel.name,

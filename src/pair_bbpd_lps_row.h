@@ -121,13 +121,13 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
   bool sum_and_check(double *fi)
   {
     if (replay) {
-      p.smin_new[i] = smin_i;
+      p.silling_askari.smin_new[i] = smin_i;
       row_sum<false, true>(fi);
       return false;
     }
     const bool had_bonds = p.bonds->nbond[i] > 0;
     const bool broken = row_sum<true, true>(fi);
-    p.smin_new[i] = had_bonds ? snew : BBPD::PMB::NO_BOND_STRETCH;
+    p.silling_askari.smin_new[i] = had_bonds ? snew : BBPD::PMB::NO_BOND_STRETCH;
     return broken;
   }
   // a bond past its critical stretch breaks, adding its force (fbroken, applied again by a
@@ -156,7 +156,7 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
   void sum(double *fi) { row_sum<false, false>(fi); }    // the row has shifted
   void finish(double *fi)
   {
-    double *fbroken = p.alpha_state->fbroken[i];
+    double *fbroken = p.silling_askari.fix->fbroken[i];
     if (!replay) {
       for (int c = 0; c < 3; c++) fbroken[c] = fb[c];
       p.lps_state->lost[i] = nlost;

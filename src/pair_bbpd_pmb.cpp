@@ -1,44 +1,40 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    BBPD plugin: pair style bbpd/pmb, the rules of LAMMPS's peri/pmb
-   (pair_bbpd_pmb.h): its coefficients, lattice constant and short-range forces;
-   the bonds are evaluated and broken by the Silling-Askari loop
-   (pair_bbpd_alpha.cpp) in peri/pmb's order.
+   (pair_bbpd_pmb.h): its coefficients and lattice constant; the bonds are
+   evaluated and broken by PairBBPD's Silling-Askari loop
+   (pair_bbpd_silling_askari.cpp) in peri/pmb's order, then the short-range
+   forces of pair_bbpd_peri_rules.cpp act.
 ------------------------------------------------------------------------- */
 
 #include "pair_bbpd_pmb.h"
-#include "bbpd_compat.h"
 #include "bbpd_pmb_rules.h"
 
 #include "atom.h"
-#include "domain.h"
 #include "error.h"
-#include "lattice.h"
+#include "fix_bbpd_alpha.h"
+#include "fix_bbpd_bonds.h"
+#include "memory.h"
 
-#include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
-#include <utility>
-#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace BBPD::PMB;
 
 /* ---------------------------------------------------------------------- */
 
-// peri/pmb's rules: Silling-Askari breaking, its families and numbers, short-range forces
-static constexpr PairBBPD::Rules PERI_PMB_RULES{true, true, true};
-
-PairBBPDPMB::PairBBPDPMB(LAMMPS *lmp, const char *style_name) :
-    PairBBPDAlpha(lmp, BBPD::kernel_info<BBPD::ConstantKernel>(), style_name, PERI_PMB_RULES),
+PairBBPDPMB::PairBBPDPMB(LAMMPS *lmp) :
+    PairBBPD(lmp, BBPD::kernel_info<BBPD::ConstantKernel>(), "bbpd/pmb", PERI_PMB_RULES),
     lattice_constant(0.0)
 {
 }
 
-PairBBPDPMB::PairBBPDPMB(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name) :
-    PairBBPDAlpha(lmp, k, style_name, PERI_PMB_RULES), lattice_constant(0.0)
+PairBBPDPMB::~PairBBPDPMB()
 {
+  if (copymode) return;
+  silling_askari.destroy(memory);
+  release_fix(silling_askari.fix, SillingAskariState::FIX_ID);
 }
 
 /* pair_style bbpd/pmb MODEL [thickness h] [area A] [spacing dx] [dt/safety f] [bond/storage s]:
@@ -46,17 +42,15 @@ PairBBPDPMB::PairBBPDPMB(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name
 void PairBBPDPMB::settings(int narg, char **arg)
 {
   PairBBPD::settings(narg, arg);
-  if (contact)
-    error->all(FLERR, "Pair style {} brings peri/{}'s short-range forces; drop "
-               "'contact yes'", style, style.substr(5));
+  forbid_contact();
 }
 
 /* the bond forces and breaking of one step in peri/pmb's order, then its short-range forces */
 void PairBBPDPMB::eval_bonds()
 {
-  if (evflag) eval_silling_askari<1, BBPD::PeriPmbRule>();
-  else eval_silling_askari<0, BBPD::PeriPmbRule>();
-  compute_short_range();
+  if (evflag) eval_silling_askari<1, BBPD::PeriPmbRule>(silling_askari);
+  else eval_silling_askari<0, BBPD::PeriPmbRule>(silling_askari);
+  compute_short_range(lattice_constant);
 }
 
 std::string PairBBPDPMB::report_type_pair(int i, int j) const
@@ -68,9 +62,7 @@ std::string PairBBPDPMB::report_type_pair(int i, int j) const
 
 std::string PairBBPDPMB::report_rules() const
 {
-  return fmt::format("  peri/pmb rules: families |xi| <= delta, volume ramp and short-range forces "
-                     "below min({} |xi|, {} lc), lattice constant lc = {:.6g}\n",
-                     SHORT_RANGE_BOND_FACTOR, SHORT_RANGE_LATTICE_FACTOR, lattice_constant);
+  return peri_rules_report(lattice_constant);
 }
 
 /* ----------------------------------------------------------------------
@@ -112,90 +104,12 @@ void PairBBPDPMB::coeff(int narg, char **arg)
   if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
 }
 
-/* part of init_style: the Silling-Askari state (PairBBPDAlpha) and the lattice constant */
+/* part of init_style: the Silling-Askari state and the lattice constant */
 void PairBBPDPMB::init_rules()
 {
-  PairBBPDAlpha::init_rules();
-  const Lattice *lat = domain->lattice;
-  if (!lat || lat->style == Lattice::NONE)
-    error->all(FLERR, "Pair style {} needs a lattice command before the run: "
-               "peri/pmb's volume ramp and short-range distance use its lattice constant", style);
-  if (lat->xlattice != lat->ylattice || lat->xlattice != lat->zlattice)
-    error->all(FLERR, "Pair style {} needs a lattice with the same constant "
-               "in x, y and z (as peri/{})", style, style.substr(5));
-  lattice_constant = lat->xlattice;
+  silling_askari.attach(
+      static_cast<FixBBPDAlpha *>(own_fix(SillingAskariState::FIX_ID, "bbpd/alpha")), atom,
+      bonds->families_built());
+  lattice_constant = peri_lattice_constant();
   law.weighting = BBPD::PmbWeighting{lattice_constant};    // the families and volume ramp of the bond fix
-  // the short-range partners are found among the local and ghost atoms (no neighbour list):
-  // the ghosts cover every pair closer than the horizon
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++)
-      if (setflag[i][j] && horizon[i][j] < SHORT_RANGE_LATTICE_FACTOR * lattice_constant)
-        error->all(FLERR, "Pair style {}: horizon {} for types {} {} is "
-                   "shorter than the short-range distance {} x lattice constant {}: use a horizon "
-                   "of at least {}", style, horizon[i][j], i, j, SHORT_RANGE_LATTICE_FACTOR,
-                   lattice_constant, SHORT_RANGE_LATTICE_FACTOR * lattice_constant);
-}
-
-/* ----------------------------------------------------------------------
-   short-range forces between all atoms (bonded or not) closer than
-   min(0.9 |xi|, 1.35 lc), stiffness 15 c V_j / delta. Each atom sums its own pairs
-   in tag order, so the result does not depend on the decomposition.
-------------------------------------------------------------------------- */
-
-void PairBBPDPMB::compute_short_range()
-{
-  double **x = atom->x, **f = atom->f;
-  const int *type = atom->type;
-  const tagint *tag = atom->tag;
-  const double *vfrac = atom->vfrac;
-  const double lc = lattice_constant;
-  const double rmax = SHORT_RANGE_LATTICE_FACTOR * lc;
-
-  const double *xx = x[0];
-  double **x0 = atom->x0;
-  double horizon_min = std::numeric_limits<double>::infinity();
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) horizon_min = std::min(horizon_min, horizon[i][j]);
-  // candidate pairs must stay within the horizon, which the ghost atoms cover
-  const double skin = std::min(SHORT_RANGE_CANDIDATE_SKIN * lc, horizon_min - rmax);
-  const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
-  // a pair's short-range distance, from its reference distance
-  update_close_pairs(rmax, std::max(skin, 0.0), [&](int i, int j) {
-    double d0[3] = {x0[i][0] - x0[j][0], x0[i][1] - x0[j][1], x0[i][2] - x0[j][2]};
-    if (periodic) BBPDCompat::minimum_image(domain, d0);
-    return short_range_distance(std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), lc);
-  });
-  const std::vector<int> &first = close_pairs.first, &pairs = close_pairs.pairs;
-  const std::vector<double> &dist = close_pairs.dist;
-  const int nlocal = atom->nlocal;
-
-  std::vector<std::pair<tagint, int>> close;
-  for (int i = 0; i < nlocal; i++) {
-    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
-    close.clear();
-    for (int m = first[i]; m < first[i + 1]; m++) {
-      const int j = pairs[m];
-      const double d = dist[m];
-      const double dx = xi - xx[3 * j], dy = yi - xx[3 * j + 1], dz = zi - xx[3 * j + 2];
-      const double rsq = dx * dx + dy * dy + dz * dz;
-      if (rsq >= d * d * (1.0 + 1.0e-12)) continue;    // the exact test follows
-      if (std::sqrt(rsq) < d) close.emplace_back(tag[j], m);
-    }
-    // sum in tag order: the candidates' order depends on the domain decomposition
-    std::sort(close.begin(), close.end());
-    for (const auto &c : close) {
-      const int j = pairs[c.second];
-      const double dx = xi - xx[3 * j], dy = yi - xx[3 * j + 1], dz = zi - xx[3 * j + 2];
-      const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
-      const int itype = type[i], jtype = type[j];
-      const double dr = r - dist[c.second];
-      // written as in peri/pmb
-      const double rk = (short_range_stiffness(itype, jtype) * vfrac[j]) * (dr / horizon[itype][jtype]);
-      const double fpair = r > 0.0 ? -(rk / r) : 0.0;
-      f[i][0] += dx * fpair;
-      f[i][1] += dy * fpair;
-      f[i][2] += dz * fpair;
-      if (evflag) tally_short_range(i, 0.25 * rk * dr, fpair, dx, dy, dz);
-    }
-  }
 }

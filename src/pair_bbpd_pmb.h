@@ -9,39 +9,34 @@
    min(0.9 |xi|, 1.35 lc), and in each step: all intact bonds exert their force,
    then a bond breaks when its stretch exceeds s00 - alpha max(smin_i, smin_j),
    smin being the smallest stretch of each atom's bonds at the previous step
-   (the Silling-Askari loop of pair_bbpd_alpha.h, in peri/pmb's order).
+   (PairBBPD's Silling-Askari loop, pair_bbpd_silling_askari.cpp, with peri/pmb's
+   rule and order; the short-range forces of pair_bbpd_peri_rules.cpp).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_BBPD_PMB_H
 #define LMP_PAIR_BBPD_PMB_H
 
-#include "bbpd_pmb_rules.h"
-#include "pair_bbpd_alpha.h"
+#include "pair_bbpd.h"
+#include "pair_bbpd_silling_askari_state.h"
 
 namespace LAMMPS_NS {
 
-class PairBBPDPMB : public PairBBPDAlpha {
+class PairBBPDPMB : public PairBBPD {
  public:
-  PairBBPDPMB(class LAMMPS *, const char *style = "bbpd/pmb");
-  // a style on peri/pmb's rules whose bonds carry a kernel (bbpd/lps/KERNEL)
-  PairBBPDPMB(class LAMMPS *, BBPD::KernelInfo, const char *style);
+  explicit PairBBPDPMB(class LAMMPS *);
+  ~PairBBPDPMB() override;
 
   void settings(int, char **) override;
   void coeff(int, char **) override;
 
  protected:
-  double lattice_constant;    // lc of the lattice command, as in peri/pmb
+  SillingAskariState silling_askari;    // smin of this step and fix bbpd/alpha
+  double lattice_constant;              // lc of the lattice command, as in peri/pmb
 
   void eval_bonds() override;
   void init_rules() override;
   std::string report_type_pair(int i, int j) const override;
   std::string report_rules() const override;
-  void compute_short_range();
-  // the short-range stiffness of types i j per partner volume (peri/pmb: 15 c)
-  virtual double short_range_stiffness(int itype, int jtype) const
-  {
-    return BBPD::PMB::SHORT_RANGE_STIFFNESS_FACTOR * micromodulus[itype][jtype];
-  }
 };
 
 }    // namespace LAMMPS_NS

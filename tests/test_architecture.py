@@ -136,7 +136,7 @@ MODEL_HEADERS = ("bbpd_bond_model.h", "bbpd_pmb_rules.h", "bbpd_bond_weighting.h
 LOOP_FILES = ("bbpd_row.h", "bbpd_stretch_row.h", "bbpd_row_path_kernels.h", "bbpd_row_avx2.cpp",
               "bbpd_row_avx512.cpp", "pair_bbpd_rows.h")
 LOOP_FUNCTIONS = {"pair_bbpd.cpp": ("eval", "row_force"),
-                  "pair_bbpd_alpha.cpp": ("eval_silling_askari", "broken_bond_force")}
+                  "pair_bbpd_silling_askari.cpp": ("eval_silling_askari", "broken_bond_force")}
 # a family named in code: the template switches the loops had before (bool PMB, law.pmb, ...)
 FAMILY_WORD = r"\b(?:PMB|pmb|LPS|lps)\b"
 
@@ -236,6 +236,70 @@ def test_a_style_question_is_found():
     assert style_questions(before) == ["silling_askari", "pmb_rules"]
 
 
+# ------------------------------------------------------------- a flat class picture
+
+# the pair classes' bases, from their declarations ('class Name : public Base {', also 'final'
+# and several bases); LAMMPS's Pair is the root
+CLASS_DECL = re.compile(r"\bclass\s+(\w+)\s*(?:final\s*)?:\s*([^{;]+)\{")
+# at most PairBBPD and one thin level between Pair and a pair class: what the styles share is
+# held (the Silling-Askari state) or called (the Silling-Askari loop, peri/pmb's pieces), not
+# inherited (doc/architecture.rst, "The class picture")
+MAX_LEVELS_BELOW_PAIR = 2
+
+
+def pair_class_bases(texts):
+    """{class: [bases]} of the classes declared with bases in the header texts"""
+    bases = {}
+    for text in texts:
+        for name, spec in CLASS_DECL.findall(without_comments(text)):
+            bases[name] = [b.split()[-1] for b in spec.split(",")]
+    return bases
+
+
+def levels_below_pair(bases):
+    """{class: the classes between Pair and it on its longest path} for the classes whose
+    bases lead to Pair (PairBBPD: 0, a class derived from it: 1, ...)"""
+    def levels(name, seen=()):
+        assert name not in seen, f"circular bases at {name}"
+        paths = []
+        for b in bases.get(name, []):
+            up = 0 if b == "Pair" else levels(b, seen + (name,)) if b in bases else None
+            if up is not None:
+                paths.append(up + (b != "Pair"))
+        return max(paths, default=None)
+    return {name: n for name in bases if (n := levels(name)) is not None}
+
+
+def too_deep(texts):
+    return sorted(n for n, lv in levels_below_pair(pair_class_bases(texts)).items()
+                  if lv > MAX_LEVELS_BELOW_PAIR)
+
+
+def test_no_pair_class_sits_more_than_two_levels_below_pair():
+    texts = [p.read_text() for p in sorted(SRC.glob("pair_*.h"))]
+    levels = levels_below_pair(pair_class_bases(texts))
+    # the parser sees every style class of the plugin
+    assert {"PairBBPD", "PairBBPDAlpha", "PairBBPDPMB", "PairBBPDLPS",
+            "PairBBPDLPSKernel"} <= set(levels), levels
+    assert levels["PairBBPD"] == 0
+    assert too_deep(texts) == [], levels
+
+
+def test_a_deep_pair_class_is_found():
+    """negative controls: a class three levels below Pair, and the chain as it was"""
+    three = ("class PairA : public PairBBPD {\n};\nclass PairB final : public PairA {\n};\n"
+             "class PairC : public PairB, public Other {\n};\n")
+    base = "class PairBBPD : public Pair {\n};\n"
+    assert levels_below_pair(pair_class_bases([base, three])) == {
+        "PairBBPD": 0, "PairA": 1, "PairB": 2, "PairC": 3}
+    assert too_deep([base, three]) == ["PairC"]
+    before = base + ("class PairBBPDAlpha : public PairBBPD {\n};\n"
+                     "class PairBBPDPMB : public PairBBPDAlpha {\n};\n"
+                     "class PairBBPDLPS : public PairBBPDPMB {\n};\n"
+                     "class PairBBPDLPSKernel : public PairBBPDLPS {\n};\n")
+    assert too_deep([before]) == ["PairBBPDLPS", "PairBBPDLPSKernel"]
+
+
 def row_loops_outside_the_driver(files):
     """{file: n}: calls of the threaded row loop for_each_row outside the row driver
     (PairBBPD::eval_rows), in the code of files {name: text}"""
@@ -253,7 +317,7 @@ def row_loops_outside_the_driver(files):
 def test_every_style_runs_its_rows_through_the_driver():
     files = {f.name: f.read_text() for f in sorted(SRC.glob("*.cpp")) + sorted(SRC.glob("*.h"))}
     assert "eval_rows" in without_comments(files["pair_bbpd_rows.h"])
-    for name in ("pair_bbpd.cpp", "pair_bbpd_alpha.cpp", "pair_bbpd_lps.cpp"):
+    for name in ("pair_bbpd.cpp", "pair_bbpd_silling_askari.cpp", "pair_bbpd_lps.cpp"):
         assert re.search(r"\beval_rows\s*<", without_comments(files[name])), name
     assert row_loops_outside_the_driver(files) == {}
 
