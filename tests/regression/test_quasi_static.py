@@ -36,6 +36,9 @@ def test_gaussian_error_falls_from_2_to_1_mm(tmp_path):
 # grow against LEFM, sqrt(E Gc) / (sqrt(pi a) F(a/b)) with Tada's finite-width factor. Measured,
 # Gaussian, delta = 2 mm, m = 4 (results/center_crack_gaussian.csv): -2.0 %, bracketed to 0.6 %.
 # A Gc off by a factor 2 moves the initiation stress by sqrt(2) (+41 %), far outside.
+# The agreement is m = 4's (README.md: m = 3 / 5 at this delta give +10.3 / -11.9 %): the test
+# guards the load steps, the bisection and the calibration of the critical stretch, not a
+# convergence to LEFM.
 INITIATION_TOL = 0.05
 
 
