@@ -23,6 +23,7 @@
 #include "fix_bbpd_history.h"
 #include "fix_bbpd_lps.h"
 #include "memory.h"
+#include "modify.h"
 #include "update.h"
 
 #include <cmath>
@@ -264,9 +265,26 @@ void PairBBPDLPS::init_rules()
   dimension = LPS::lps_dimension(model);    // 3 for bbpd/lps (model 3d)
   lps_state = static_cast<FixBBPDLPS *>(own_fix(LPS_FIX_ID, "bbpd/lps"));
   if (family == Family::LPS) return;
+  check_history_solver();
   history = static_cast<FixBBPDHistory *>(own_fix(HISTORY_FIX_ID, "bbpd/history"));
   // every rank the same width before atoms migrate (a restart file gave it to those with atoms)
   history->set_width(history_width());
+}
+
+/* The viscous and plastic states advance once per time step (peri/ves, peri/eps). A minimizer's
+   iterations and fix bbpd/relax's fictitious steps are no time steps: they would advance the
+   history along a path that is not the body's, so both are refused rather than run. */
+void PairBBPDLPS::check_history_solver() const
+{
+  const char *state = family == Family::VES ? "viscous" : "plastic";
+  if (update->whichflag == BBPD::BondHold::MINIMIZE)
+    error->all(FLERR, "pair_style {} cannot be used with minimize: its {} state advances once per "
+               "time step and a minimizer's iterations are not time steps; load the body with "
+               "'run' instead", style, state);
+  if (!modify->get_fix_by_style("^bbpd/relax$").empty())
+    error->all(FLERR, "pair_style {} cannot be used with fix bbpd/relax: its {} state advances once "
+               "per time step and the relaxation's fictitious steps are not time steps; load the "
+               "body with 'run' and fix nve instead", style, state);
 }
 
 double PairBBPDLPS::short_range_stiffness(int itype, int jtype) const

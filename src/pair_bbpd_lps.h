@@ -93,6 +93,7 @@ class PairBBPDLPS : public PairBBPD {
   int family_args() const;
   const char *family_coeffs() const;
   void check_family_coeffs(char **arg);
+  void check_history_solver() const;    // VES, EPS: no minimize, no fix bbpd/relax
   void set_family_coeffs(int i, int j, char **arg);
   void find_bond_slots();
   template <int EVFLAG, class F> void eval_history();

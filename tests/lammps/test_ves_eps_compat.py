@@ -298,6 +298,17 @@ BAD = {
 }
 
 
+# the history advances once per time step: solvers whose iterations are no time steps are refused
+# (bbpd/lps itself minimizes and relaxes: tests/lammps/test_minimize.py, test_relax.py)
+BAD_SOLVER = {
+    f"{family}-{solver}": (f"pair_style bbpd/{family} 3d", numbers, extra, run, expected)
+    for family, numbers in (("ves", f"{LPS_NUMBERS} 0.5 1.0e-3"), ("eps", f"{LPS_NUMBERS} 1.0e8"))
+    for solver, extra, run, expected in (
+        ("minimize", "", "minimize 0 1e-8 20 200", "cannot be used with minimize"),
+        ("relax", "fix relax all bbpd/relax tol 1e-6", "run 10", "cannot be used with fix bbpd/relax"))
+}
+
+
 # the computes with a style that has no dilatation or plasticity
 BAD_COMPUTE = {
     "plasticity-with-ves": (VES_STYLE, f"{LPS_NUMBERS} 0.5 1.0e-3", "plasticity/atom",
@@ -324,4 +335,12 @@ def test_computes_need_their_state(tmp_path, name):
     text = script(BASE_3D, pair_style=style, pair_coeff=f"pair_coeff * * {numbers}",
                   extra=f"compute c all bbpd/{compute}\ncompute s all reduce sum c_c\n"
                         "thermo_style custom step c_s")
+    check_error_exit(run_case(tmp_path, text), expected)
+
+
+@pytest.mark.parametrize("name", sorted(BAD_SOLVER))
+def test_solvers_without_time_steps_are_refused(tmp_path, name):
+    style, numbers, extra, run, expected = BAD_SOLVER[name]
+    text = script(BASE_3D, pair_style=style, pair_coeff=f"pair_coeff * * {numbers}", extra=extra,
+                  run=run)
     check_error_exit(run_case(tmp_path, text), expected)
