@@ -134,3 +134,31 @@ def drawn_kw_cracks(angle_deg, length, dx=1.0e-3):
         d = abs(-(x - g["a"]) * math.sin(th) + sign * (y - yn) * math.cos(th))
         phi[along_notch | ((s > 0) & (s <= length) & (d < 0.75 * dx))] = 0.44
     return x, y, phi, g
+
+
+# the issue's plate with a hole for quasi-static loading (test_minimize.py, test_relax.py):
+# 40 x 20 mm, a 6 mm hole at its centre, delta = 2 mm = 3 Delta, 1 mm thick
+HOLED_PLATE_DX, HOLED_PLATE_DELTA, HOLED_PLATE_H = 2.0e-3 / 3, 2.0e-3, 1.0e-3
+HOLED_PLATE_L, HOLED_PLATE_W, HOLED_PLATE_R = 0.04, 0.02, 0.003
+
+
+def holed_plate(pair_style, pair_coeff, density=2700.0):
+    """the plate with its pair style, and the groups left and right: one horizon at each end"""
+    dx, delta, h = HOLED_PLATE_DX, HOLED_PLATE_DELTA, HOLED_PLATE_H
+    length, width, radius = HOLED_PLATE_L, HOLED_PLATE_W, HOLED_PLATE_R
+    return peri_preamble(lattice=f"sq {dx} origin 0.5 0.5 0.0") + f"""
+region          plate block 0.0 {length} 0.0 {width} -0.5 0.5 units box
+create_box      1 plate
+create_atoms    1 region plate
+region          hole cylinder z {length / 2} {width / 2} {radius} INF INF units box
+delete_atoms    region hole
+set             group all density {density}
+set             group all volume {dx * dx * h}
+pair_style      {pair_style}
+pair_coeff      {pair_coeff}
+neighbor        {dx} bin
+region          left block INF {delta} INF INF INF INF units box
+region          right block {length - delta} INF INF INF INF INF units box
+group           left region left
+group           right region right
+"""

@@ -21,10 +21,9 @@ import re
 
 import pytest
 
-from scenes import peri_preamble
+from scenes import HOLED_PLATE_DELTA, HOLED_PLATE_H, HOLED_PLATE_L, holed_plate
 
-DX, DELTA, H = 2.0e-3 / 3, 2.0e-3, 1.0e-3    # grid spacing (m = 3), horizon, thickness (m)
-L, W, R = 0.04, 0.02, 0.003              # plate and hole (m)
+DELTA, H, L = HOLED_PLATE_DELTA, HOLED_PLATE_H, HOLED_PLATE_L    # the plate of scenes.holed_plate
 E, GC = 72.0e9, 3.8
 EPS_LOW, EPS_HIGH = 2.0e-5, 1.0e-3
 # the issue's minimize had 2000 iterations and 20000 evaluations; fewer here (the held and the
@@ -45,21 +44,7 @@ ELASTIC = {"gaussian": "gaussian", "gaussian/alpha": "gaussian", "lps/gaussian":
 def plate(style, gc, eps, after=""):
     pair, coeff = STYLES[style]
     fill = dict(h=H, E=E, Gc=gc, delta=DELTA)
-    return peri_preamble(lattice=f"sq {DX} origin 0.5 0.5 0.0") + f"""
-region          plate block 0.0 {L} 0.0 {W} -0.5 0.5 units box
-create_box      1 plate
-create_atoms    1 region plate
-region          hole cylinder z {L / 2} {W / 2} {R} INF INF units box
-delete_atoms    region hole
-set             group all density 2700.0
-set             group all volume {DX * DX * H}
-pair_style      {pair.format(**fill)}
-pair_coeff      {coeff.format(**fill)}
-neighbor        {DX} bin
-region          left block INF {DELTA} INF INF INF INF units box
-region          right block {L - DELTA} INF INF INF INF INF units box
-group           left region left
-group           right region right
+    return holed_plate(pair.format(**fill), coeff.format(**fill)) + f"""
 group           grips union left right
 fix             grips grips setforce 0.0 0.0 0.0
 fix             2d all enforce2d

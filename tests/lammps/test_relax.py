@@ -19,30 +19,16 @@ import re
 import pytest
 
 from bbpd.runner import LammpsError
-from scenes import peri_preamble
+from scenes import HOLED_PLATE_DELTA, HOLED_PLATE_DX, HOLED_PLATE_H, holed_plate
 
-DX, DELTA, H = 2.0e-3 / 3, 2.0e-3, 1.0e-3
-L, W, R = 0.04, 0.02, 0.003
+DX, DELTA, H = HOLED_PLATE_DX, HOLED_PLATE_DELTA, HOLED_PLATE_H    # the plate of scenes.holed_plate
 DU_HELD = 3.5e-6    # the equilibrium has 4 bonds past breaking (measured: minimize's report)
 DU_CRACK = 4.0e-6   # per load step: the crack starts at the hole and runs across in the second
 
 
 def plate(gc="3.8", body="", density=2700.0, bonds=""):
-    return peri_preamble(lattice=f"sq {DX} origin 0.5 0.5 0.0") + f"""
-region          plate block 0.0 {L} 0.0 {W} -0.5 0.5 units box
-create_box      1 plate
-create_atoms    1 region plate
-region          hole cylinder z {L / 2} {W / 2} {R} INF INF units box
-delete_atoms    region hole
-set             group all density {density}
-set             group all volume {DX * DX * H}
-pair_style      bbpd/gaussian plane/stress thickness {H}
-pair_coeff      * * 72.0e9 {gc} {DELTA}{bonds}
-neighbor        {DX} bin
-region          left block INF {DELTA} INF INF INF INF units box
-region          right block {L - DELTA} INF INF INF INF INF units box
-group           left region left
-group           right region right
+    return holed_plate(f"bbpd/gaussian plane/stress thickness {H}", f"* * 72.0e9 {gc} {DELTA}{bonds}",
+                       density) + f"""
 fix             lgrip left setforce 0.0 0.0 0.0
 fix             rgrip right setforce 0.0 0.0 0.0
 fix             2d all enforce2d
