@@ -1,6 +1,6 @@
 """examples/quasi-static: the stress concentration at a circular hole (d/W = 0.3) in a plate
 under uniaxial tension, relaxed by fix bbpd/relax, against Kirsch with Heywood's finite-width
-correction K_tg = [2 + (1 - d/W)^3] / (1 - d/W) = 3.347 (plate_hole.py says how K is measured).
+correction K_tg = [2 + (1 - d/W)^3] / (1 - d/W) = 3.347 (bbpd.benchmarks.plate_hole says how K is measured).
 
 Default suite: the Gaussian kernel at m = 4 on the two coarse grids, delta = 2 and 1 mm (4,688
 and 18,752 atoms, well under a minute): the load step converges, K is above the infinite-plate
@@ -8,16 +8,10 @@ and 18,752 atoms, well under a minute): the load step converges, K is above the 
 committed results, examples/quasi-static/results/plate_hole.csv, hold every kernel: the constant kernel's
 error rises as delta falls, README.md gives the measured cause). The finest grid is not run yet.
 
-And the centre-cracked plate (center_crack.py): the initiation stress of the Gaussian kernel at
+And the centre-cracked plate (bbpd.benchmarks.center_crack): the initiation stress of the Gaussian kernel at
 delta = 2 mm, m = 4 (3,200 atoms, 7 one-load-step trials) within INITIATION_TOL of LEFM.
 """
-import sys
-from pathlib import Path
-
-ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "examples" / "quasi-static"))
-import plate_hole    # noqa: E402
-import center_crack    # noqa: E402
+from bbpd.benchmarks import center_crack, plate_hole
 
 # measured at delta = 2 mm, m = 4 (results/plate_hole.csv): +14 %; the admitted error is the
 # coarse grid's, the test asks that it falls with delta (it does not for the constant kernel)
@@ -32,7 +26,7 @@ def test_gaussian_error_falls_from_2_to_1_mm(tmp_path):
     assert abs(fine["error"]) < abs(coarse["error"])
 
 
-# centre-cracked plate (center_crack.py): the far-field stress at which the pre-crack starts to
+# centre-cracked plate (bbpd.benchmarks.center_crack): the far-field stress at which the pre-crack starts to
 # grow against LEFM, sqrt(E Gc) / (sqrt(pi a) F(a/b)) with Tada's finite-width factor. Measured,
 # Gaussian, delta = 2 mm, m = 4 (results/center_crack_gaussian.csv): -2.0 %, bracketed to 0.6 %.
 # A Gc off by a factor 2 moves the initiation stress by sqrt(2) (+41 %), far outside.

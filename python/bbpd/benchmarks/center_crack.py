@@ -2,7 +2,7 @@
 """Crack initiation in a centre-cracked plate under displacement-controlled tension: in.center-crack
 relaxed by fix bbpd/relax, the far-field stress at which the pre-crack starts to grow against LEFM.
 
-    tools/python examples/quasi-static/center_crack.py [--full] [--kernels K1,K2] [--csv NAME]
+    tools/python -m bbpd.benchmarks.center_crack [--full] [--kernels K1,K2] [--csv NAME]
 
 LEFM (plane stress): the crack grows when K_I = sigma sqrt(pi a) F(a/b) reaches
 K_Ic = sqrt(E G_c), with a the half crack length, b = W/2 the half width and Tada's finite-width
@@ -20,14 +20,11 @@ import argparse
 import csv
 import math
 import re
-import sys
 from pathlib import Path
 
-HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE))
-from plate_hole import E, KERNELS, run_lammps    # noqa: E402
+from bbpd.benchmarks.plate_hole import E, HERE, KERNELS, run_lammps
 
-W, A, GC = 0.02, 0.004, 3.8    # in.center-crack: width, half crack length, glass (issue 57)
+W, A, GC = 0.02, 0.004, 3.8    # in.center-crack: width, half crack length, glass
 CASES = ((2.0e-3, 4), (1.0e-3, 4))    # (delta, m); --full adds FULL_EXTRA
 FULL_EXTRA = ((0.5e-3, 4), (1.0e-3, 3), (0.5e-3, 3))
 REL_RES = 0.01         # the bracket's width relative to its lower end (the issue's ~1 %)

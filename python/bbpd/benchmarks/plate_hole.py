@@ -2,7 +2,7 @@
 """Stress concentration at a circular hole in a plate under uniaxial tension: in.plate-hole
 relaxed by fix bbpd/relax, against Kirsch with Heywood's finite-width correction.
 
-    tools/python examples/quasi-static/plate_hole.py [--full] [--out DIR]
+    tools/python -m bbpd.benchmarks.plate_hole [--full] [--out DIR]
 
 Measured from displacements, not from bond forces: the hoop stress at the hole's edge is where
 the edge is a free surface, and a peridynamic virial stress (compute stress/atom) misses the
@@ -22,14 +22,13 @@ sec. 4.3.1), on the gross stress sigma = load / (W h).
 import argparse
 import csv
 import re
-import sys
 from pathlib import Path
 
 import numpy as np
 
-HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE.parents[1] / "python"))
-from bbpd.runner import run_lammps    # noqa: E402
+from bbpd.runner import run_lammps
+
+HERE = Path(__file__).resolve().parents[3] / "examples" / "quasi-static"    # inputs, results
 
 L, W, R, E, SIGMA = 0.06, 0.02, 0.003, 72.0e9, 10.0e6
 NU = 1.0 / 3.0    # plane stress bond-based peridynamics
