@@ -52,12 +52,13 @@ class PairBBPD : public Pair {
     bool silling_askari;    // alpha is a rule of the style (pair_bbpd_alpha.h)
     bool pmb_rules;         // peri/pmb's families, volumes and numbers (pair_bbpd_pmb.h)
     bool short_range;       // short-range forces whatever 'contact' says (stable step)
+    bool simd_rows;         // its bond rows have the AVX2 and AVX-512 paths (LPS rows: not yet)
   };
   // peri/pmb's rules: Silling-Askari breaking, its families and numbers, short-range forces
   // (bbpd/pmb and the LPS styles)
-  static constexpr Rules PERI_PMB_RULES{true, true, true};
+  static constexpr Rules PERI_PMB_RULES{true, true, true, true};
   PairBBPD(class LAMMPS *, BBPD::KernelInfo, const char *style = nullptr,
-           Rules = Rules{false, false, false});
+           Rules = Rules{false, false, false, true});
   ~PairBBPD() override;
 
   void compute(int, int) override;

@@ -65,7 +65,7 @@ PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, Family f) :
 }
 
 PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name) :
-    PairBBPD(lmp, k, style_name, PERI_PMB_RULES), lattice_constant(0.0), bulk(nullptr), shear(nullptr),
+    PairBBPD(lmp, k, style_name, LPS_RULES), lattice_constant(0.0), bulk(nullptr), shear(nullptr),
     dimension(LPS::DILATATION_FACTOR), deviatoric_share(PERI_LPS_DEVIATORIC_SHARE), lps_state(nullptr), nmax_lps(0), atom_states(nullptr),
     nmax_length(0), bond_length(nullptr), family(Family::LPS), relax_share(nullptr),
     relax_time(nullptr), yield_stress(nullptr), history(nullptr), nmax_slot(0), bond_slot(nullptr)

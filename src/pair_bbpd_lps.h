@@ -35,6 +35,8 @@ class PairBBPDLPS : public PairBBPD {
  public:
   // the force state: peri/lps's, or one with a deviatoric history (peri/ves, peri/eps)
   enum class Family { LPS, VES, EPS };
+  // peri/pmb's rules; the LPS rows run the portable loop only (no AVX2 or AVX-512 path yet)
+  static constexpr Rules LPS_RULES{true, true, true, false};
   PairBBPDLPS(class LAMMPS *, Family = Family::LPS);
   // the kernel-weighted styles (pair_bbpd_lps_kernel.h) share the state, loops and restart
   PairBBPDLPS(class LAMMPS *, BBPD::KernelInfo, const char *style);

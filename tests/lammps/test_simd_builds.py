@@ -224,6 +224,19 @@ def test_log_names_the_path_and_why(lmp):
         assert path == min(times, key=times.get)
 
 
+@pytest.mark.parametrize("style", ["lps", "ves", "eps"])
+def test_state_based_rows_report_the_portable_loop(lmp, style):
+    """the LPS rows have no SIMD path yet: the report says so, whatever 'simd' asks (it once
+    named the path the bond-based rows would have taken)"""
+    from test_bad_input import BASE_3D, script
+    extra = {"lps": "", "ves": " 0.5 1.0e-3", "eps": " 1.0e8"}[style]
+    text = script(BASE_3D, pair_style=f"pair_style bbpd/{style} 3d",
+                  pair_coeff=f"pair_coeff * * 14.9e9 14.9e9 0.003015 0.001 0.25{extra}")
+    for path in (None, "portable") + tuple(p for p in ("avx2",) if host_has(*NEEDS[p])):
+        assert loop_line(lmp(with_path(text, path)).output) == (
+            "portable", "the state-based rows have no AVX2 or AVX-512 path yet"), path
+
+
 def test_auto_takes_only_paths_the_cpu_runs(lmp, monkeypatch):
     monkeypatch.setenv("BBPD_SIMD_HIDE", "avx512,avx2")
     assert loop_line(lmp(SMALL).output) == ("portable", "auto: the only path every rank's CPU runs")
