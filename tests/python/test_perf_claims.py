@@ -72,3 +72,25 @@ def test_the_zen5_lines_of_doc_performance_follow_the_csvs():
     assert round(k / f, 2) == 3.24
     other = perf._rows(perf.RESULTS / "zen5-simd-auto-bench-cylinder-memory.csv")
     assert all(r["path"] == "avx2" for r in other if r["path"])
+
+
+def test_the_bpm_table_takes_each_variants_minimum_over_the_rounds(tmp_path, monkeypatch):
+    """perf/vs_bpm.py's table: a row per rank count and model, the minimum loop time of each
+    variant and the ratios to ours; a faster round moves the minimum and the ratio"""
+    import csv
+    rows = list(csv.DictReader(open(perf.VS_BPM_FILES[0], newline="")))
+    best = min(float(r["loop_s"]) for r in rows
+               if (r["ranks"], r["model"], r["variant"]) == ("1", "lps", "bpm"))
+    ours = min(float(r["loop_s"]) for r in rows
+               if (r["ranks"], r["model"], r["variant"]) == ("1", "lps", "ours"))
+    line = next(l for l in perf.vs_bpm(None).splitlines() if "| 1 | lps |" in l)
+    assert f"| {best:.2f} | {ours:.2f} |" in line and f"| {best / ours:.2f}× |" in line
+    faster = tmp_path / "vs-bpm.csv"
+    with open(faster, "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=rows[0].keys())
+        w.writeheader()
+        w.writerows(rows + [dict(r, loop_s=str(ours / 4)) for r in rows
+                            if (r["ranks"], r["model"], r["variant"]) == ("1", "lps", "ours")][:1])
+    monkeypatch.setattr(perf, "VS_BPM_FILES", (faster,))
+    line = next(l for l in perf.vs_bpm(None).splitlines() if "| 1 | lps |" in l)
+    assert f"| {ours / 4:.2f} |" in line and f"| {best / (ours / 4):.2f}× |" in line

@@ -29,5 +29,6 @@ BLOCKS = {
     BRANCHING: crack.BRANCHING,
     PERFORMANCE: {"zen3-avx2": perf.zen3_avx2, "lps-cylinder": perf.lps_cylinder,
                   "zen5-simd": perf.zen5_simd, "zen5-floor": perf.zen5_floor,
-                  "spr-simd": perf.spr_simd, "spr-floor": perf.spr_floor},
+                  "spr-simd": perf.spr_simd, "spr-floor": perf.spr_floor,
+                  "vs-bpm": perf.vs_bpm},
 }

@@ -200,3 +200,39 @@ def spr_simd(data):
 
 def spr_floor(data):
     return floor_table("spr")
+
+
+# LAMMPS's bpm/peri benchmark deck, ours against peri/* and bond_style bpm/peri
+# (perf/vs_bpm.py --csv): one file per CPU
+VS_BPM_FILES = (RESULTS / "spr-vs-bpm.csv",)
+BPM_MODELS = ("pmb", "lps", "ves", "eps")
+
+
+def vs_bpm(data):
+    """doc/performance.md's table of perf/vs_bpm.py: per CPU, rank count and model the minimum
+    loop time of each variant over the rounds, and the ratios of peri/* and bpm/peri to ours."""
+    lines = ["| CPU, path, load | ranks | model | `peri/*` (s) | `bpm/peri` (s) | ours (s) | "
+             "`peri/*` / ours | `bpm/peri` / ours |", "|" + "---|" * 8]
+    for path in VS_BPM_FILES:
+        rows = _rows(path)
+        r0 = rows[0]
+        # the path of the bond-based rows (pmb); the state-based rows run the portable loop
+        paths = sorted({r["path"] for r in rows if r["variant"] == "ours" and r["model"] == "pmb"})
+        where = (f"{r0['cpu']} (family {r0['family']} model {r0['cpu_model']}), "
+                 f"pmb: {'/'.join(paths)}, {r0['date'][:10]}, load {_loads(rows)}")
+        for ranks in sorted({int(r["ranks"]) for r in rows}):
+            for model in BPM_MODELS:
+                best = {}
+                for r in rows:
+                    if int(r["ranks"]) == ranks and r["model"] == model:
+                        t = float(r["loop_s"])
+                        best[r["variant"]] = min(best.get(r["variant"], t), t)
+                if not best:
+                    continue
+                cell = {v: f"{best[v]:.2f}" if v in best else "-" for v in ("legacy", "bpm", "ours")}
+                ratio = {v: f"{best[v] / best['ours']:.2f}×" if v in best and "ours" in best else "-"
+                         for v in ("legacy", "bpm")}
+                lines.append(f"| {where} | {ranks} | {model} | {cell['legacy']} | {cell['bpm']} | "
+                             f"{cell['ours']} | {ratio['legacy']} | {ratio['bpm']} |")
+                where = ""
+    return "\n".join(lines)
