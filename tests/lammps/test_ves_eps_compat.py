@@ -218,6 +218,18 @@ def test_cylinder_bitwise_on_2_threads_and_compact_storage(lmp, tmp_path, family
             np.testing.assert_array_equal(states[0][key], other[key])
 
 
+def resumed_script(restart_file, steps, tail):
+    """the cylinder continued from restart_file for steps, with the run's own tail"""
+    return (f"plugin load bbpdplugin.so\nread_restart {restart_file}\nneighbor 0.0010 bin\n"
+            f"lattice sc 0.0005\nvariable steps index {steps}\nfix 1 all nve" + tail + END_DUMP)
+
+
+def assert_same_end(straight, restarted):
+    assert straight["c_1"].mean() > 0.05
+    for key in KEYS:
+        np.testing.assert_array_equal(straight[key], restarted[key])
+
+
 @pytest.mark.parametrize("family", ["ves", "eps"])
 def test_cylinder_restart_equals_continuous_run(lmp, tmp_path, family):
     """Across write_restart/read_restart (new process on 1 rank; on 2 ranks with a 'balance'
@@ -232,16 +244,12 @@ def test_cylinder_restart_equals_continuous_run(lmp, tmp_path, family):
     straight = end_state(tmp_path)
     (tmp_path / "start.dump").rename(tmp_path / "start1.dump")
     lmp(cylinder(family, steps=150) + "write_restart state.restart\n")
-    second = ("plugin load bbpdplugin.so\nread_restart state.restart\nneighbor 0.0010 bin\n"
-              "lattice sc 0.0005\nvariable steps index 150\nfix 1 all nve" + tail + END_DUMP)
+    second = resumed_script("state.restart", 150, tail)
     rcb = "comm_style tiled\nbalance 1.0 rcb\n"
     for nprocs, extra in ((1, ""), (2, rcb), (4, "run 0\n" + rcb)):
         text = second.replace("run             ${steps}", extra + "run             ${steps}")
         lmp(text, nprocs=nprocs)
-        restarted = end_state(tmp_path, "start1.dump")
-        assert straight["c_1"].mean() > 0.05
-        for key in KEYS:
-            np.testing.assert_array_equal(straight[key], restarted[key])
+        assert_same_end(straight, end_state(tmp_path, "start1.dump"))
 
 
 @pytest.mark.parametrize("family", ["ves", "eps"])
@@ -256,13 +264,8 @@ def test_cylinder_resumes_from_a_restart_file_written_during_the_run(lmp, tmp_pa
     straight = end_state(tmp_path)
     assert (tmp_path / "cyl.200.restart").is_file()
     (tmp_path / "start.dump").rename(tmp_path / "start1.dump")
-    resumed = ("plugin load bbpdplugin.so\nread_restart cyl.200.restart\nneighbor 0.0010 bin\n"
-               "lattice sc 0.0005\nvariable steps index 100\nfix 1 all nve" + tail + END_DUMP)
-    lmp(resumed, nprocs=2)
-    restarted = end_state(tmp_path, "start1.dump")
-    assert straight["c_1"].mean() > 0.05
-    for key in KEYS:
-        np.testing.assert_array_equal(straight[key], restarted[key])
+    lmp(resumed_script("cyl.200.restart", 100, tail), nprocs=2)
+    assert_same_end(straight, end_state(tmp_path, "start1.dump"))
 
 
 @pytest.mark.parametrize("family", ["ves", "eps"])
