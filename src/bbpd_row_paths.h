@@ -21,6 +21,11 @@
 namespace BBPD {
 
 struct RowTally;    // bbpd_row.h
+namespace LPS {    // bbpd_lps.h, bbpd_lps_lanes.h
+  struct AtomState;
+  struct RowCoefficients;
+  struct ForceLanes;
+}    // namespace LPS
 
 // in the order of preference where no timing decides (widest first), AUTO last
 enum class SimdPath : int { PORTABLE = 0, AVX2 = 1, AVX512 = 2, AUTO = 3 };
@@ -52,7 +57,7 @@ using UniformCompactValues = RecomputedValues<CoefFunction, true>;
 #endif
 
 /* the SIMD row kernels of one path (row_force_avx2/avx512 of bbpd_row.h,
-   row_force_stretch_avx2/avx512 of bbpd_stretch_row.h), defined and instantiated in the path's own
+   row_force_stretch_avx2/avx512 of bbpd_stretch_row.h, the LPS passes of bbpd_lps_lanes.h), defined and instantiated in the path's own
    file: a caller sees declarations only, so no copy of them is ever compiled for another
    instruction set */
 struct BBPD_PATH_HIDDEN Avx2Path {
@@ -65,6 +70,12 @@ struct BBPD_PATH_HIDDEN Avx2Path {
                                 const double *smin, double s00, double alpha, double margin,
                                 double *smin_row, double *ax, double *ay, double *az,
                                 RowTally *tally);
+  template <class Idx, class Values>
+  static double lps_dilatation(const double *xx, int i, const Idx *bj, const Values &vals, int n);
+  template <int EV, int CHECK, class Idx, class Values>
+  static bool lps_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                        const LPS::AtomState *states, const LPS::RowCoefficients &c,
+                        const double *smin, double *snew, LPS::ForceLanes &out);
 };
 struct BBPD_PATH_HIDDEN Avx512Path {
   template <int FRACTURE, int EV, class Model, class Idx, class Values>
@@ -76,6 +87,12 @@ struct BBPD_PATH_HIDDEN Avx512Path {
                                 const double *smin, double s00, double alpha, double margin,
                                 double *smin_row, double *ax, double *ay, double *az,
                                 RowTally *tally);
+  template <class Idx, class Values>
+  static double lps_dilatation(const double *xx, int i, const Idx *bj, const Values &vals, int n);
+  template <int EV, int CHECK, class Idx, class Values>
+  static bool lps_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                        const LPS::AtomState *states, const LPS::RowCoefficients &c,
+                        const double *smin, double *snew, LPS::ForceLanes &out);
 };
 
 /* simd(Avx2Path()) or simd(Avx512Path()) on a SIMD path p the plugin holds, else portable() */

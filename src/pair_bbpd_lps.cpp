@@ -13,7 +13,7 @@
 #include "bbpd_eps.h"
 #include "bbpd_lps_kernel.h"
 #include "bbpd_ves.h"
-#include "bbpd_lps_row.h"
+#include "bbpd_lps_lanes.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -26,6 +26,7 @@
 #include "modify.h"
 #include "update.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -65,9 +66,9 @@ PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, Family f) :
 }
 
 PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name) :
-    PairBBPD(lmp, k, style_name, LPS_RULES), lattice_constant(0.0), bulk(nullptr), shear(nullptr),
+    PairBBPD(lmp, k, style_name, PERI_PMB_RULES), lattice_constant(0.0), bulk(nullptr), shear(nullptr),
     dimension(LPS::DILATATION_FACTOR), deviatoric_share(PERI_LPS_DEVIATORIC_SHARE), lps_state(nullptr), nmax_lps(0), atom_states(nullptr),
-    nmax_length(0), bond_length(nullptr), family(Family::LPS), relax_share(nullptr),
+    family(Family::LPS), relax_share(nullptr),
     relax_time(nullptr), yield_stress(nullptr), history(nullptr), nmax_slot(0), bond_slot(nullptr)
 {
   comm_forward = LPS_FORWARD_VALUES;
@@ -79,7 +80,6 @@ PairBBPDLPS::~PairBBPDLPS()
   memory->destroy(bulk);
   memory->destroy(shear);
   memory->sfree(atom_states);
-  memory->destroy(bond_length);
   memory->destroy(relax_share);
   memory->destroy(relax_time);
   memory->destroy(yield_stress);
@@ -359,7 +359,7 @@ double PairBBPDLPS::memory_usage()
 {
   const int n = atom->ntypes + 1;
   return PairBBPD::memory_usage() + 2.0 * n * n * sizeof(double) +
-      (double) LPS_FORWARD_VALUES * nmax_lps * sizeof(double) + (double) nmax_length * sizeof(double);
+      (double) LPS_FORWARD_VALUES * nmax_lps * sizeof(double);
 }
 
 /* ----------------------------------------------------------------------
@@ -397,25 +397,32 @@ void PairBBPDLPS::sum_weighted_volumes()
   }
 }
 
-/* theta_i over the intact bonds of local atom i, in row order; the bonds' current lengths into
-   r (the force loop reads them there) */
-double PairBBPDLPS::dilatation_of(int i, double *r)
+/* theta_i over the intact bonds of local atom i (bbpd_lps_lanes.h, on the pair style's path) */
+double PairBBPDLPS::dilatation_of(int i)
 {
   const double *xx = atom->x[0];
   const int n = bonds->nbond[i];
   const double sum = bonds->visit_row(i, *thread_coef_cache(), [&](const auto *bj, const auto &vals) {
-    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
-    double s = 0.0;
-    for (int k = 0; k < n; k++) {
-      const int j = BBPD::partner_index(bj, i, k);
-      const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
-      r[k] = std::sqrt(dx * dx + dy * dy + dz * dz);
-      const double xi0 = vals.xi0_at(k, j);
-      s += LPS::dilatation_term(vals.coef_at(k, j), xi0, LPS::elongation(r[k], xi0));
-    }
-    return s;
+    return BBPD::on_path(simd_path, [&](auto path) {
+      return decltype(path)::lps_dilatation(xx, i, bj, vals, n);
+    }, [&] { return LPS::dilatation_sum_portable(xx, i, bj, vals, n); });
   });
   return LPS::dilatation(sum, lps_state->weighted_volume[i], dimension);
+}
+
+/* seconds for the dilatations of rows first..last-1 on path p (results discarded): the auto
+   path's timing, over the pass that reads the same rows as the force pass */
+double PairBBPDLPS::time_path(BBPD::SimdPath p, int first, int last)
+{
+  const BBPD::SimdPath kept = simd_path;
+  simd_path = p;
+  double sum = 0.0;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int i = first; i < last; i++) sum += dilatation_of(i);
+  const auto t1 = std::chrono::steady_clock::now();
+  simd_path = kept;
+  timing_sink = sum;    // kept, so that no loop is optimised away
+  return std::chrono::duration<double>(t1 - t0).count();
 }
 
 /* the state of a step before its bonds: per-atom arrays grown, the weighted volumes at the
@@ -432,12 +439,6 @@ bool PairBBPDLPS::begin_state()
     atom_states = static_cast<LPS::AtomState *>(
         memory->smalloc(sizeof(LPS::AtomState) * nmax_lps, "pair:atom_states"));
   }
-  const int nends = nlocal > 0 ? bonds->bond_start[nlocal - 1] + bonds->nbond[nlocal - 1] : 0;
-  if (nends > nmax_length) {
-    nmax_length = nends + nends / 8;    // headroom: migration changes the count a little
-    memory->destroy(bond_length);
-    memory->create(bond_length, nmax_length, "pair:bond_length");
-  }
   const bool replay = silling_askari.begin_step(memory, atom, update);
   if (!lps_state->ready) {
     sum_weighted_volumes();
@@ -451,7 +452,7 @@ bool PairBBPDLPS::begin_state()
 #pragma omp parallel for num_threads(comm->nthreads) if (comm->nthreads > 1) schedule(static, 512)
 #endif
   for (int i = 0; i < nlocal; i++) {
-    const double th = dilatation_of(i, bond_length + bonds->bond_start[i]);
+    const double th = dilatation_of(i);
     if (!(replay && lost[i] > 0.0)) theta[i] = th;
     atom_states[i] = LPS::atom_state(theta[i], m[i]);
   }
@@ -478,8 +479,9 @@ template <int EVFLAG> void PairBBPDLPS::eval_lps()
   // 2. the bonds: forces, and breaking (peri/lps: a bond acts in the step it breaks)
   const bool canonical = bonds->raw_positions();    // periodic: both ends decide alike
   const BBPD::SillingAskariCoefficients rule = breaking_rule();
+  const double margin = stretch_margin();
   eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
-    return Row<EVFLAG>(*this, i, acc, cache, replay, canonical, rule);
+    return Row<EVFLAG>(*this, i, acc, cache, replay, canonical, rule, margin);
   });
   end_state();
 }

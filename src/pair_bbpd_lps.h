@@ -35,8 +35,7 @@ class PairBBPDLPS : public PairBBPD {
  public:
   // the force state: peri/lps's, or one with a deviatoric history (peri/ves, peri/eps)
   enum class Family { LPS, VES, EPS };
-  // peri/pmb's rules; the LPS rows run the portable loop only (no AVX2 or AVX-512 path yet)
-  static constexpr Rules LPS_RULES{true, true, true, false};
+  // peri/pmb's rules; the rows run on the path of the bond loops (bbpd_lps_lanes.h)
   PairBBPDLPS(class LAMMPS *, Family = Family::LPS);
   // the kernel-weighted styles (pair_bbpd_lps_kernel.h) share the state, loops and restart
   PairBBPDLPS(class LAMMPS *, BBPD::KernelInfo, const char *style);
@@ -73,8 +72,6 @@ class PairBBPDLPS : public PairBBPD {
   int nmax_slot;
   int *bond_slot;    // per intact bond end of this step: its partner slot in fix bbpd/bonds
   BBPD::LPS::AtomState *atom_states;    // theta / m, 1 / m of every local and ghost atom, this step
-  int nmax_length;
-  double *bond_length;    // current length of every intact bond end, from the dilatation pass
 
   void eval_bonds() override;
   void init_rules() override;
@@ -102,7 +99,8 @@ class PairBBPDLPS : public PairBBPD {
   template <int EVFLAG, class F> struct HistoryRow;
   template <class F> F family_of(int i) const;
   int history_width() const;    // doubles per atom in fix bbpd/history
-  double dilatation_of(int i, double *r);
+  double dilatation_of(int i);
+  double time_path(BBPD::SimdPath p, int first, int last) override;
   template <int EVFLAG> void eval_lps();
   // the row of an atom in eval_lps: its force state and breaking (pair_bbpd_lps.cpp)
   template <int EVFLAG> struct Row;

@@ -91,7 +91,6 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
   using Base::mod;
   using Base::nlost;
   using Base::p;
-  using Base::r_row;
   using Base::replay;
   using Base::si;
   using Base::smin_i;
@@ -106,8 +105,8 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
   const int *slot;
 
   HistoryRow(PairBBPDLPS &pair, int atom_i, double *acc_, BBPD::CoefCache *cache_, bool replay_,
-             bool canonical_, const BBPD::SillingAskariCoefficients &rule) :
-      Base(pair, atom_i, acc_, cache_, replay_, canonical_, rule),
+             bool canonical_, const BBPD::SillingAskariCoefficients &rule, double margin_) :
+      Base(pair, atom_i, acc_, cache_, replay_, canonical_, rule, margin_),
       fam(pair.family_of<F>(atom_i)), plan{}, atom_hist(pair.history->values[atom_i]),
       hist(atom_hist + F::ATOM_HISTORY), slot(pair.bond_slot + pair.bonds->bond_start[atom_i])
   {
@@ -122,7 +121,7 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
       if (!replay) {
         const double *xx = p.atom->x[0];
         norm = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
-          return LPS::history_row_norm<F, true, true>(xx, i, bj, vals, p.bonds->nbond[i], r_row,
+          return LPS::history_row_norm<F, true, false>(xx, i, bj, vals, p.bonds->nbond[i], nullptr,
                                                       p.atom_states, theta_third_i, fam, slot,
                                                       hist);
         });
@@ -133,18 +132,20 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
     }
   }
 
-  template <bool CHECK, bool CACHED, bool COMMIT> bool row_sum(double *f)
+  // with CHECK, the row's smallest stretch and whether a bond is past, or within margin of, its
+  // critical stretch (those decided canonically by breaks)
+  template <bool CHECK, bool COMMIT> bool row_sum(double *f)
   {
     const double *xx = p.atom->x[0];
     auto check = [&](int j, double e, double xi0) BBPD_ROW_BODY {
-      const double s = this->breaking_stretch(j, e, xi0);
+      const double s = LPSStretchRule::stretch(e, xi0);
       snew = std::min(snew, s);
-      return LPSStretchRule::past_critical(s, this->s0_with(j), 0.0);
+      return LPSStretchRule::past_critical(s, this->s0_with(j), this->margin);
     };
     LPS::RowSums sums;
     const bool past = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
-      return LPS::history_row_sums<F, EVFLAG != 0, CHECK, CACHED, COMMIT>(
-          xx, i, bj, vals, p.bonds->nbond[i], r_row, p.atom_states, mod.bulk, fam, plan,
+      return LPS::history_row_sums<F, EVFLAG != 0, CHECK, false, COMMIT>(
+          xx, i, bj, vals, p.bonds->nbond[i], nullptr, p.atom_states, mod.bulk, fam, plan,
           theta_third_i, slot, hist, check, sums);
     });
     for (int c = 0; c < 3; c++) f[c] = sums.f[c];
@@ -158,11 +159,11 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
     make_plan();
     if (replay) {
       p.silling_askari.smin_new[i] = smin_i;
-      row_sum<false, true, false>(fi);
+      row_sum<false, false>(fi);
       return false;
     }
     const bool had_bonds = p.bonds->nbond[i] > 0;
-    const bool broken = row_sum<true, true, true>(fi);
+    const bool broken = row_sum<true, true>(fi);
     p.silling_askari.smin_new[i] = had_bonds ? snew : BBPD::PMB::NO_BOND_STRETCH;
     return broken;
   }
@@ -210,7 +211,7 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
   void sum(double *fi)
   {
     slot_shift();
-    row_sum<false, false, false>(fi);
+    row_sum<false, false>(fi);
   }
   // the slots of the bonds left, in row order (the broken ones are gone from the row)
   void slot_shift()
@@ -229,8 +230,9 @@ template <int EVFLAG, class F> void PairBBPDLPS::eval_history()
   find_bond_slots();
   const bool canonical = bonds->raw_positions();
   const BBPD::SillingAskariCoefficients rule = breaking_rule();
+  const double margin = stretch_margin();
   eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
-    return HistoryRow<EVFLAG, F>(*this, i, acc, cache, replay, canonical, rule);
+    return HistoryRow<EVFLAG, F>(*this, i, acc, cache, replay, canonical, rule, margin);
   });
   end_state();
 }

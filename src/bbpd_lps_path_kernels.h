@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* -*- c++ -*- ----------------------------------------------------------
+   BBPD: the definitions and instantiations of one SIMD path's kernels of the linear
+   peridynamic solid's rows (bbpd_lps_lanes.h; declared in bbpd_row_paths.h), included by
+   bbpd_row_path_kernels.h inside namespace BBPD (after bbpd_lps_lanes.h), with BBPD_ROW_PATH
+   and BBPD_FOR_LAYOUTS defined there: the bond-based kernels' file names no model family, this one is the LPS's.
+------------------------------------------------------------------------- */
+
+#ifndef BBPD_LPS_PATH_KERNELS_H
+#define BBPD_LPS_PATH_KERNELS_H
+
+#if !defined(BBPD_ROW_PATH) || !defined(BBPD_FOR_LAYOUTS)
+#error "bbpd_lps_path_kernels.h is included by bbpd_row_path_kernels.h only"
+#endif
+
+template <class Idx, class Values>
+double BBPD_ROW_PATH::lps_dilatation(const double *xx, int i, const Idx *bj, const Values &vals, int n)
+{
+  return lps_dilatation_simd(xx, i, bj, vals, n);
+}
+
+template <int EV, int CHECK, class Idx, class Values>
+bool BBPD_ROW_PATH::lps_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                              const LPS::AtomState *states, const LPS::RowCoefficients &c,
+                              const double *smin, double *snew, LPS::ForceLanes &out)
+{
+  return lps_force_simd<EV, CHECK>(xx, i, bj, vals, n, states, c, smin, snew, out);
+}
+
+#define BBPD_LPS_DILATATION(A, B, IDX, VALUES)                                               \
+  template double BBPD_ROW_PATH::lps_dilatation<IDX, VALUES>(const double *, int, const IDX *, \
+                                                             const VALUES &, int);
+#define BBPD_LPS_FORCE(EV, CHECK, IDX, VALUES)                                                \
+  template bool BBPD_ROW_PATH::lps_force<EV, CHECK, IDX, VALUES>(                             \
+      const double *, int, const IDX *, const VALUES &, int, const LPS::AtomState *,          \
+      const LPS::RowCoefficients &, const double *, double *, LPS::ForceLanes &);
+BBPD_FOR_LAYOUTS(BBPD_LPS_DILATATION, 0, 0)
+BBPD_FOR_LAYOUTS(BBPD_LPS_FORCE, 0, 0)
+BBPD_FOR_LAYOUTS(BBPD_LPS_FORCE, 0, 1)
+BBPD_FOR_LAYOUTS(BBPD_LPS_FORCE, 1, 0)
+BBPD_FOR_LAYOUTS(BBPD_LPS_FORCE, 1, 1)
+#undef BBPD_LPS_FORCE
+#undef BBPD_LPS_DILATATION
+
+#endif
