@@ -139,11 +139,36 @@ namespace LPS {
     return past;
   }
 
+#ifdef BBPD_SIMD
+  // theta / m and 1 / m of 4 partners j (16-byte loads, unpacked; always inlined, as
+  // load_positions: each path's file has its own copy)
+  BBPD_GROUPS_INLINE inline void load_states4(const AtomState *states, const int *j, __m256d &tom, __m256d &inv_m)
+  {
+    auto pair = [&](int a, int b) {
+      return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(&states[a].theta_over_m)),
+                                  _mm_loadu_pd(&states[b].theta_over_m), 1);
+    };
+    const __m256d a02 = pair(j[0], j[2]), a13 = pair(j[1], j[3]);
+    tom = _mm256_unpacklo_pd(a02, a13);
+    inv_m = _mm256_unpackhi_pd(a02, a13);
+  }
+#endif
+
 #ifdef BBPD_AVX512
-  // a full or masked vector of partner states: theta / m and 1 / m of partners j1 (lanes off in m:
-  // zero); full vectors by 16-byte loads, as load_positions reads x and y
+  // a vector of partner states: theta / m and 1 / m of partners j1 (lanes off in m: zero); a full
+  // vector by 16-byte loads (as bond_lanes reads positions: cheaper than two gathers)
   inline void load_states(const AtomState *states, __m256i j1, __mmask8 m, __m512d &tom, __m512d &inv_m)
   {
+    if (m == 0xFF) {
+      alignas(32) int j[LANES];
+      _mm256_store_si256(reinterpret_cast<__m256i *>(j), j1);
+      __m256d t[2], v[2];
+      load_states4(states, j, t[0], v[0]);
+      load_states4(states, j + 4, t[1], v[1]);
+      tom = _mm512_insertf64x4(_mm512_castpd256_pd512(t[0]), t[1], 1);
+      inv_m = _mm512_insertf64x4(_mm512_castpd256_pd512(v[0]), v[1], 1);
+      return;
+    }
     const double *s = &states[0].theta_over_m;
     const __m256i j2 = _mm256_slli_epi32(j1, 1);
     tom = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, j2, s, 8);
@@ -225,17 +250,6 @@ namespace LPS {
 #endif
 
 #ifdef BBPD_AVX2
-  // theta / m and 1 / m of 4 partners j (16-byte loads, unpacked)
-  inline void load_states4(const AtomState *states, const int *j, __m256d &tom, __m256d &inv_m)
-  {
-    auto pair = [&](int a, int b) {
-      return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(&states[a].theta_over_m)),
-                                  _mm_loadu_pd(&states[b].theta_over_m), 1);
-    };
-    const __m256d a02 = pair(j[0], j[2]), a13 = pair(j[1], j[3]);
-    tom = _mm256_unpacklo_pd(a02, a13);
-    inv_m = _mm256_unpackhi_pd(a02, a13);
-  }
   // the same, masked (lanes off in m: zero), gathered
   inline void gather_states4(const AtomState *states, __m128i j1, __m256d m, __m256d &tom,
                              __m256d &inv_m)
