@@ -208,7 +208,7 @@ struct BondLanes {
   __m512d dx, dy, dz, r, xi0, coef, elong;
 };
 template <class Model, class Values>
-inline BondLanes bond_lanes(const double *xx, __m512d xi, __m512d yi, __m512d zi, __m256i j1,
+BBPD_GROUPS_INLINE inline BondLanes bond_lanes(const double *xx, __m512d xi, __m512d yi, __m512d zi, __m256i j1,
                             __mmask8 m, const Values &vals, int k)
 {
   BondLanes b;

@@ -9,7 +9,10 @@
 #ifndef BBPD_ROW_PATH_KERNELS_H
 #define BBPD_ROW_PATH_KERNELS_H
 
+#include "bbpd_eps.h"
+#include "bbpd_lps_history_lanes.h"
 #include "bbpd_lps_lanes.h"
+#include "bbpd_ves.h"
 #include "bbpd_plugin_model.h"
 #include "bbpd_row.h"
 #include "bbpd_row_paths.h"

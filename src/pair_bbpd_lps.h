@@ -71,6 +71,10 @@ class PairBBPDLPS : public PairBBPD {
   class FixBBPDHistory *history;         // VES, EPS: the history of bonds and atoms
   int nmax_slot;
   int *bond_slot;    // per intact bond end of this step: its partner slot in fix bbpd/bonds
+  // the bonds bond_slot was found for: cache generation, row removals, local atoms
+  bigint slot_generation = -1;
+  long slot_removals = -1;
+  int slot_nlocal = -1;
   BBPD::LPS::AtomState *atom_states;    // theta / m, 1 / m of every local and ghost atom, this step
 
   void eval_bonds() override;

@@ -226,3 +226,97 @@ TEST(LpsLanes, SimdCheckSeesTheMargin)
                                     c, s.smin.data(), &snew, lanes)));
 }
 #endif
+
+// ---------------------------------------------------------------- the families with history
+
+#include "bbpd_eps.h"
+#include "bbpd_lps_history_lanes.h"
+#include "bbpd_ves.h"
+
+namespace {
+
+namespace VES = BBPD::VES;
+namespace EPS = BBPD::EPS;
+
+// a bond end's history: random, in slots of their own in a shuffled order
+std::vector<double> history(int n, unsigned seed)
+{
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> u(-1e-6, 1e-6);
+  std::vector<double> h(2 * (n + 3));
+  for (double &v : h) v = u(gen);
+  return h;
+}
+std::vector<int> slots(int n)
+{
+  std::vector<int> s(n);
+  for (int k = 0; k < n; k++) s[k] = (k * 7 + 2) % (n + 3);    // distinct: 7 is prime to n + 3 here
+  return s;
+}
+
+LPS::HistoryCoefficients history_coefficients(const Scene &s, double margin)
+{
+  return {coefficients(s, margin), 3.0 * K};
+}
+
+}    // namespace
+
+#ifdef BBPD_SIMD
+template <class F, int EV, int CHECK> void expect_history_bits(const F &fam, const typename F::Plan &plan)
+{
+  for (int n : {0, 1, 3, 4, 5, 7, 8, 9, 13, 16, 31, 121, 122}) {
+    if ((n + 3) % 7 == 0) continue;    // slots would repeat
+    for (bool no_m : {false, true}) {
+      Scene t = scene(n, 200 + n);
+      if (no_m) t.states[0] = LPS::atom_state(0.0, 0.0);
+      const LPS::HistoryCoefficients c = history_coefficients(t, 1e-12);
+      const BBPD::PerBondValues vals{t.xi0.data(), t.wv.data()};
+      const std::vector<int> slot = slots(n);
+      std::vector<double> ha = history(n, n), hb = ha;
+      auto s0_of = [&](int j) {
+        return LPS::StretchRule::critical_stretch(c.s00, c.alpha, c.smin_i, t.smin[j]);
+      };
+      LPS::ForceLanes a, b;
+      double sa = 0.0, sb = 0.0;
+      const bool pa = LPS::history_force_portable<F, EV, CHECK, CHECK>(
+          t.x.data(), 0, t.partner.data(), vals, n, t.states.data(), fam, plan, c, slot.data(),
+          ha.data(), s0_of, &sa, a);
+      const bool pb = lps_history_force_simd<F, EV, CHECK, CHECK>(
+          t.x.data(), 0, t.offset.data(), vals, n, t.states.data(), fam, plan, c, slot.data(),
+          hb.data(), t.smin.data(), &sb, b);
+      EXPECT_TRUE(same_lanes(a, b, EV)) << "n = " << n;
+      EXPECT_TRUE(same_bits(ha.data(), hb.data(), static_cast<int>(ha.size()))) << "n = " << n;
+      if (CHECK) {
+        EXPECT_EQ(pa, pb) << "n = " << n;
+        EXPECT_EQ(sa, sb) << "n = " << n;
+      }
+    }
+  }
+}
+
+TEST(LpsLanes, HistoryKernelsGiveThePortableBits)
+{
+  const VES::Family ves{VES::coeffs(G, 0.5, 1e-5, 1e-7)};
+  expect_history_bits<VES::Family, 0, 0>(ves, {});
+  expect_history_bits<VES::Family, 1, 1>(ves, {});
+  const EPS::Family eps{{G, EPS::pointwise_yield_value(1e8, DELTA), 5e-15}};
+  for (const EPS::Family::Plan plan : {EPS::Family::Plan{false, 1.0, 0.0}, EPS::Family::Plan{true, 0.7, 1e-3}}) {
+    expect_history_bits<EPS::Family, 0, 0>(eps, plan);
+    expect_history_bits<EPS::Family, 1, 1>(eps, plan);
+  }
+  // the norm pass, rolling the history
+  for (int n : {1, 5, 8, 13, 122}) {
+    const Scene t = scene(n, 300 + n);
+    const BBPD::PerBondValues vals{t.xi0.data(), t.wv.data()};
+    const std::vector<int> slot = slots(n);
+    std::vector<double> ha = history(n, n), hb = ha;
+    const double na = LPS::history_norm_portable<EPS::Family, true>(
+        t.x.data(), 0, t.partner.data(), vals, n, t.states.data(), 1e-4, eps, slot.data(), ha.data());
+    const double nb = lps_history_norm_simd<EPS::Family, true>(
+        t.x.data(), 0, t.partner.data(), vals, n, t.states.data(), 1e-4, eps, slot.data(), hb.data());
+    EXPECT_EQ(na, nb) << "n = " << n;
+    EXPECT_GT(na, 0.0);
+    EXPECT_TRUE(same_bits(ha.data(), hb.data(), static_cast<int>(ha.size()))) << "n = " << n;
+  }
+}
+#endif
