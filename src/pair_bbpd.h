@@ -70,6 +70,8 @@ class PairBBPD : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   double memory_usage() override;
+  // what the fixes of the style's state hold (the state-based styles), for the setup report
+  virtual double state_memory() { return 0.0; }
   void *extract(const char *, int &) override;
 
   void setup() override;

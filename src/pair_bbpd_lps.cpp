@@ -26,6 +26,7 @@
 #include "modify.h"
 #include "update.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -359,7 +360,22 @@ double PairBBPDLPS::memory_usage()
 {
   const int n = atom->ntypes + 1;
   return PairBBPD::memory_usage() + 2.0 * n * n * sizeof(double) +
-      (double) LPS_FORWARD_VALUES * nmax_lps * sizeof(double);
+      (double) LPS_FORWARD_VALUES * nmax_lps * sizeof(double) + (double) nmax_slot * sizeof(int);
+}
+
+/* the per-atom state of the LPS (weighted volumes, dilatations) and of the families' history
+   (per atom and per bond end, and the bond ends' slots), held by fixes this style owns; the
+   history as the first step sizes it (the setup report comes before) */
+double PairBBPDLPS::state_memory()
+{
+  double bytes = lps_state ? lps_state->memory_usage() : 0.0;
+  if (history && bonds) {
+    const int nlocal = atom->nlocal;
+    const double nends = nlocal > 0 ? bonds->bond_start[nlocal - 1] + bonds->nbond[nlocal - 1] : 0;
+    bytes += std::max(history->memory_usage(), (double) history_width() * atom->nmax * sizeof(double)) +
+        std::max((double) nmax_slot, nends) * sizeof(int) - (double) nmax_slot * sizeof(int);
+  }
+  return bytes;
 }
 
 /* ----------------------------------------------------------------------

@@ -49,6 +49,7 @@ class PairBBPDLPS : public PairBBPD {
   void unpack_forward_comm(int, int, double *) override;
   void *extract(const char *, int &) override;
   double memory_usage() override;
+  double state_memory() override;
 
   // bbpd/eps: the plastic multiplier lambda of local atom i (compute bbpd/plasticity/atom)
   double plastic_multiplier(int i) const;
