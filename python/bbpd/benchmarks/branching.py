@@ -44,7 +44,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import crack_tip, csvfile, freund, readers
+from bbpd import crack_tip, csvfile, freund, plots, readers
 from bbpd import jobs as jobmod
 from bbpd.provenance import cpu
 from bbpd.kernels import KERNELS
@@ -282,33 +282,27 @@ SIGMA_MAP_TIMES_US = (4.0, 5.0, 10.0, 20.0, 43.0)
 
 def damage_maps(workdirs, path, times_us=MAP_TIMES_US):
     """Damage maps of the runs in workdirs ({label: folder}) at times_us, one row per run."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, axes = plt.subplots(len(workdirs), len(times_us), figsize=(3.2 * len(times_us),
-                             1.45 * len(workdirs) + 0.4), squeeze=False)
-    for row, (label, work) in zip(axes, workdirs.items()):
-        work = Path(work)
-        ref = readers.read_dump(work / "ref.dump")
-        pos = dict(zip(ref["id"].astype(int), zip(ref["x"], ref["y"])))
-        out = (work / "log.lammps").read_text()
-        dt = float(out.split("CRACK-BRANCHING:")[-1].split(" dt ")[1].split()[0])
-        snaps = readers.dump_snapshots(work / "damage.dump")
-        for ax, t_us in zip(row, times_us):
-            step, cols = min(snaps, key=lambda s: abs(s[0] * dt * 1e6 - t_us))
-            xy = np.array([pos[int(i)] for i in cols["id"]]) * 1e3
-            ax.scatter(xy[:, 0], xy[:, 1], c=cols["c_damage"], s=0.3, cmap="inferno_r",
-                       vmin=0.0, vmax=0.6, marker="s", linewidths=0)
-            ax.set_xlim(-50, 50)
-            ax.set_ylim(-20, 20)
-            ax.set_aspect("equal")
-            ax.set_xticks([])
-            ax.set_yticks([])
-            ax.set_title(f"{label}, t = {step * dt * 1e6:.0f} µs", fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=130)
-    plt.close(fig)
+    with plots.figure(path, len(workdirs), len(times_us), squeeze=False, dpi=130,
+                      figsize=(3.2 * len(times_us), 1.45 * len(workdirs) + 0.4)) as (fig, axes):
+        for row, (label, work) in zip(axes, workdirs.items()):
+            work = Path(work)
+            ref = readers.read_dump(work / "ref.dump")
+            pos = dict(zip(ref["id"].astype(int), zip(ref["x"], ref["y"])))
+            out = (work / "log.lammps").read_text()
+            dt = float(out.split("CRACK-BRANCHING:")[-1].split(" dt ")[1].split()[0])
+            snaps = readers.dump_snapshots(work / "damage.dump")
+            for ax, t_us in zip(row, times_us):
+                step, cols = min(snaps, key=lambda s: abs(s[0] * dt * 1e6 - t_us))
+                xy = np.array([pos[int(i)] for i in cols["id"]]) * 1e3
+                ax.scatter(xy[:, 0], xy[:, 1], c=cols["c_damage"], s=0.3, cmap="inferno_r",
+                           vmin=0.0, vmax=0.6, marker="s", linewidths=0)
+                ax.set_xlim(-50, 50)
+                ax.set_ylim(-20, 20)
+                ax.set_aspect("equal")
+                ax.set_xticks([])
+                ax.set_yticks([])
+                ax.set_title(f"{label}, t = {step * dt * 1e6:.0f} µs", fontsize=7)
+    return Path(path)
 
 
 KERNEL_SEPARATION = 2.0   # a kernel effect must exceed this many times the change from m = 3 to 4
@@ -374,18 +368,12 @@ def summary_text(rows):
 
 def section(specs, results, figdir, notes):
     """The section of REPORT.md (bbpd.report.document.write_report) from the report's branching runs."""
-    rows, text = jobmod.finished_rows(specs, results, summary_text)
-    names = []
-    maps = {f"{r['kernel']} {r['sigma_MPa']:g} MPa m = {r['m']:g}": r["workdir"] for r in rows
-            if Path(r.get("workdir", "")).joinpath("damage.dump").exists()}
-    if maps:
-        try:
-            damage_maps(maps, Path(figdir) / ("branching_" + FIGURE))
-            names = ["branching_" + FIGURE]
-        except Exception as exc:  # the report must still be written
-            notes.append(f"branching figure not made: {type(exc).__name__}: {exc}")
-    return {"title": REPORT_TITLE, "setup": REPORT_SETUP, "table": table(rows) if rows else "",
-            "text": " ".join(text), "figures": names}
+    def figures(rows):
+        maps = {f"{r['kernel']} {r['sigma_MPa']:g} MPa m = {r['m']:g}": r["workdir"] for r in rows
+                if Path(r.get("workdir", "")).joinpath("damage.dump").exists()}
+        return [damage_maps(maps, Path(figdir) / ("branching_" + FIGURE)).name] if maps else []
+    return jobmod.section(REPORT_TITLE, REPORT_SETUP, specs, results, table, summary_text,
+                          figures, notes)
 
 
 def main(argv=None):

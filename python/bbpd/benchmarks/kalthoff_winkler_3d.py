@@ -166,18 +166,9 @@ def against_2d(rows):
 
 
 def summary(rows):
-    """REPORT.md's lines under the 3D table: against_2d() filled into fixed templates"""
-    pairs, refine = against_2d(rows)
-    lines = [f"delta = {d3['delta_mm']:g} mm ({d3['horizons_through']:.0f} horizons through, "
-             f"{d3['atoms']:.0f} atoms, {d3['loop_s']:.0f} s on {d3['nprocs']:g} ranks, "
-             f"{d3['memory_MB']:.0f} MB): fit angle mid-plane {_f(d3['fit_deg'], '.1f')}°, faces "
-             f"{_f(d3['fit_face_lo_deg'], '.1f')} / {_f(d3['fit_face_hi_deg'], '.1f')}°, first bond "
-             f"{d3['first_bond_us']:.1f} µs, crack {d3['crack_stops']} µs"
-             + (f"; 2D of the same grid {d2['fit_deg']:.1f}° (3D {diff:+.1f}°)" if diff is not None else "")
-             + "." for d3, d2, diff in pairs]
-    if refine is not None:
-        lines.append(f"Refining delta moves the mid-plane fit angle by {refine:+.1f}°.")
-    return " ".join(lines) if lines else "No 3D run."
+    """REPORT.md's line under the 3D table (the table has each run's angles beside the 2D ones)"""
+    refine = against_2d(rows)[1]
+    return [] if refine is None else [f"Refining delta moves the mid-plane fit angle by {refine:+.1f}°."]
 
 
 # ---------------------------------------------------------------------------- report
@@ -204,14 +195,14 @@ def jobs():
 
 def section(specs, results, figdir, notes):
     """The 3D plate's section of REPORT.md (tools/reproduce --full)."""
-    return jobmod.rows_section(
-        REPORT_TITLE, specs, results,
-        f"Not run by default ({len(jobs())} runs, about 1.4 h on one core): `tools/reproduce "
-        "--full` runs them; the last measured table is in examples/kalthoff-winkler/README.md, "
-        "'3D plate resolved through its thickness'.",
-        f"The 9 mm plate struck by the projectile, Gaussian kernel, m = {M:g}, beside the 2D "
-        "plate of the same grid; see examples/kalthoff-winkler/README.md.",
-        table, summary)
+    return jobmod.section(
+        REPORT_TITLE, f"The 9 mm plate struck by the projectile, Gaussian kernel, m = {M:g}, beside "
+        "the 2D plate of the same grid; see examples/kalthoff-winkler/README.md.",
+        specs, results, table, summary,
+        not_run=f"Not run by default ({len(jobs())} runs, about 1.4 h on one core): "
+        "`tools/reproduce --full` runs them; the last measured table is in "
+        "examples/kalthoff-winkler/README.md, '3D plate resolved through its thickness'.")
+
 
 def read_rows(path=CSV):
     return csvfile.read_csv(path)[1]
@@ -241,7 +232,7 @@ def main(argv=None):
         cmd = "tools/python -m bbpd.benchmarks.kalthoff_winkler_3d " + " ".join(argv or sys.argv[1:])
         csvfile.write_csv(a.csv, rows, comments=[f"made by: {cmd}",
                                                  f"timing: LAMMPS loop time, {cpu()}, shared"])
-    print(summary(rows))
+    print(table(rows), *summary(rows), sep="\n")
     return 0
 
 

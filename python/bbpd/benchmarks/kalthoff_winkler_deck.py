@@ -155,22 +155,10 @@ def comparison(rows):
 
 
 def summary(rows):
-    """REPORT.md's lines under the decks' table: comparison() filled into fixed templates"""
-    c = comparison(rows)
-    lines = [f"Standard deck at {c['fine']:g} mm, angle (change from the paper's loading): "
-             + "; ".join(f"{d} {k} {a:.1f}° ({ch:+.1f}°)" for (d, k), (a, ch) in c["deck"].items()) + "."]
-    if c["grid"]:
-        lines.append(f"Standard deck's fit angle from {c['coarse']:g} to {c['fine']:g} mm: "
-                     + ", ".join(f"{k} {ch:+.1f}°" for k, ch in c["grid"].items()) + ".")
-    for what, deck, base in CHANGES:
-        if deck in c["changes"]:
-            dx, got = c["changes"][deck]
-            lines.append(f"Fit angle, {what}, at {dx:g} mm (change from deck {base}): "
-                         + ", ".join(f"{k} {a:.1f}° ({ch:+.1f}°)" for k, (a, ch) in got.items()) + ".")
-    lines.append(f"Within {study.ANGLE_TARGET_DEG:.0f} ± {study.ANGLE_TOL_DEG:.0f}° with cracks that "
-                 "cross the plate: " + ("; ".join(f"{d} {k} {dx:g} mm ({', '.join(defs)})"
-                                                for d, k, dx, defs in c["hits"]) or "none") + ".")
-    return " ".join(lines)
+    """REPORT.md's line under the decks' table: comparison()'s runs at the experiment's angle"""
+    hits = "; ".join(f"{d} {k} {dx:g} mm ({', '.join(defs)})" for d, k, dx, defs in comparison(rows)["hits"])
+    return [f"Within {study.ANGLE_TARGET_DEG:.0f} ± {study.ANGLE_TOL_DEG:.0f}° with cracks that cross "
+            f"the plate: {hits or 'none'}."]
 
 
 # ---------------------------------------------------------------------------- report
@@ -199,14 +187,14 @@ def jobs(nprocs=1):
 
 def section(specs, results, figdir, notes):
     """The standard deck's section of REPORT.md (tools/reproduce --full)."""
-    return jobmod.rows_section(
-        REPORT_TITLE, specs, results,
-        f"Not run by default ({len(jobs())} runs): `tools/reproduce --full` runs them; the last "
-        "measured table is in examples/kalthoff-winkler/README.md, 'The standard deck'.",
-        "; ".join(f"{d}: {DECKS[d][0]}" for d in DECKS) + ". Prescribed velocity on the struck "
-        "layer, to 100 us, the loading study's angles; see examples/kalthoff-winkler/README.md, "
-        "'The standard deck'.",
-        table, summary)
+    return jobmod.section(
+        REPORT_TITLE, "; ".join(f"{d}: {DECKS[d][0]}" for d in DECKS) + ". Prescribed velocity "
+        "on the struck layer, to 100 us, the loading study's angles; see "
+        "examples/kalthoff-winkler/README.md, 'The standard deck'.",
+        specs, results, table, summary,
+        not_run=f"Not run by default ({len(jobs())} runs): `tools/reproduce --full` runs them; "
+        "the last measured table is in examples/kalthoff-winkler/README.md, 'The standard deck'.")
+
 
 def read_rows(path=CSV):
     """(comment lines, rows) of a CSV main() wrote"""
@@ -239,7 +227,7 @@ def main(argv=None):
     if a.csv:
         csvfile.write_csv(a.csv, rows, comments=[*earlier, made,
                                                  f"timing: LAMMPS loop CPU time, {cpu()}"])
-    print(summary(rows))
+    print(table(rows), *summary(rows), sep="\n")
     return 0
 
 

@@ -356,28 +356,20 @@ def report_text(rows):
 
 def section(specs, results, figdir, notes):
     """The projectile's section of report/REPORT.md (bbpd.report.document.write_report)."""
-    done, bad = jobmod.finished(specs, results)
-    rows = [results[s.job.label] for s in done]
-    text = report_text(rows)
-    if bad:
-        text.append(jobmod.not_measured(bad))
-    names = []
-    for r in rows:
-        try:
-            name = f"kw_projectile_contact_{r['kernel']}_dx{r['dx_mm']:g}mm.png"
+    def figures(rows):
+        names = [f"kw_projectile_contact_{r['kernel']}_dx{r['dx_mm']:g}mm.png" for r in rows]
+        for r, name in zip(rows, names):
             plot_contact(r["workdir"], Path(figdir) / name)
-            names.append(name)
-        except Exception as exc:  # the report must still be written
-            notes.append(f"projectile figure not made: {type(exc).__name__}: {exc}")
-    table = markdown([{k: ("" if v is None else str(v)) for k, v in r.items()} for r in rows])
-    return {"title": REPORT_TITLE,
-            "setup": "The paper's plate (plane strain, m = 5, G_c = 6.9e4 J/m2) struck at 32 m/s "
-                     "by an elastic steel projectile 100 mm long of type 2 atoms, pushing through "
-                     "contact (no bonds between the bodies), its E and rho scaled by the "
-                     f"experiment's area ratio {AREA_RATIO:.3f}; to {TEND * 1e6:.0f} us. Angles "
-                     "as in the loading study (initial; fit and chord at 70 us). See "
-                     "examples/kalthoff-winkler/README.md, 'Projectile and toughness'.",
-            "table": table if rows else "", "text": " ".join(text), "figures": names}
+        return names
+    return jobmod.section(
+        REPORT_TITLE, "The paper's plate (plane strain, m = 5, G_c = 6.9e4 J/m2) struck at 32 m/s "
+        "by an elastic steel projectile 100 mm long of type 2 atoms, pushing through contact (no "
+        f"bonds between the bodies), its E and rho scaled by the experiment's area ratio "
+        f"{AREA_RATIO:.3f}; to {TEND * 1e6:.0f} us. Angles as in the loading study (initial; fit "
+        "and chord at 70 us). See examples/kalthoff-winkler/README.md, 'Projectile and toughness'.",
+        specs, results,
+        lambda rows: markdown([{k: ("" if v is None else str(v)) for k, v in r.items()} for r in rows]),
+        report_text, figures, notes)
 
 
 def main(argv=None):

@@ -2,28 +2,12 @@
 """Kalthoff-Winkler loading study: which loading and which angle measure reproduce the experiment.
 
 The paper's setup (32 m/s held on a delta-thick layer) gives cracks at about 61 deg and a first
-broken bond at ~12 us, against the experiment's ~70 deg and the paper's 20-21.7 us.  This study
-runs examples/kalthoff-winkler/in.kalthoff_winkler under several loadings (CASES), for the
-three kernels at dx = 1 mm and the Gaussian at 0.5 mm, to 100 us, and measures each run with
-the definitions below (examples/kalthoff-winkler/README.md, "Loading study").
+broken bond at ~12 us, against the experiment's ~70 deg and the paper's 20-21.7 us. This study
+runs examples/kalthoff-winkler/in.kalthoff_winkler under the loadings of CASES, for the three
+kernels at dx = 1 mm and the Gaussian at 0.5 mm, to 100 us; the measures (initial, fit and
+chord angles, crack stops, speeds, far-edge crack) are defined in
+examples/kalthoff-winkler/README.md, "Loading study".
 
-angles        all from the notch direction (+x) towards the outer side, evaluated on the
-              damage snapshot at T_EVAL_US (the paper's Fig. 14) and at the end of the run:
-  initial     principal axis of the crack atoms 3-15 mm from the notch tip (the direction in
-              which the crack leaves the tip, past the tip's own horizon), on the first
-              snapshot in which the crack is 15 mm long (the end snapshot if it never is)
-  fit         principal axis of the crack atoms 10-50 mm from the tip (kalthoff_winkler.py)
-  chord       direction of the line from the notch tip to the crack tip (the crack atom
-              farthest from the notch tip): what a protractor on a photograph measures
-initiation    first broken bond within delta of a tip, and the damage band (kalthoff_winkler.py)
-speed         mean over crack lengths 10-50 mm, and the largest speed over any window of
-              SPEED_WINDOW_US, both against the Rayleigh speed C_R
-edge          first snapshot at which a crack tip is within delta of the plate boundary
-far edge      first new damage at x > Lx - delta farther than delta + dx from the notch
-              cracks (when), and its distance from the mid-line |y - Ly/2| then (where)
-symmetry      tip mismatch and mirror damage difference (kalthoff_winkler.py)
-
-Command line (from the repository root; the runs are cached in --work):
   tools/python -m bbpd.benchmarks.kalthoff_winkler_study --work /tmp/kw-study --figures DIR
   ... --reuse                              re-analyse the finished runs, run nothing
 """
@@ -401,14 +385,10 @@ def plot_paths_case(results, case, path):
 
 def plot_damage_cases(results, kernel, dx, path):
     """Damage at the end of the run for every loading of one kernel and resolution."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     runs = [(c, r) for (c, k, d), r in sorted(results.items(), key=_order)
             if k == kernel and abs(d - dx) < 1e-12]
-    fig, axes = plt.subplots(1, len(runs), figsize=(2.0 * len(runs) + 0.8, 4.2), squeeze=False)
-    try:
-        sc = None
+    with plots.figure(path, 1, len(runs), figsize=(2.0 * len(runs) + 0.8, 4.2), squeeze=False,
+                      dpi=130) as (fig, axes):
         for ax, (c, r) in zip(axes[0], runs):
             m = r["damage_map"]
             sc = ax.scatter(np.array(m["x"]) * 1e3, np.array(m["y"]) * 1e3, c=m["phi"],
@@ -420,9 +400,6 @@ def plot_damage_cases(results, kernel, dx, path):
         fig.colorbar(sc, ax=list(axes[0]), label="damage", shrink=0.8)
         fig.suptitle(f"{kernel}, dx = {dx * 1e3:g} mm, t = "
                      f"{runs[0][1]['nsteps'] * runs[0][1]['dt'] * 1e6:.0f} us", fontsize=9)
-        fig.savefig(path, dpi=130, bbox_inches="tight")
-    finally:
-        plt.close(fig)
     return path
 
 
@@ -469,37 +446,22 @@ def collect(specs, results):
 
 def section(specs, results, figdir, notes):
     """The study's section of report/REPORT.md (bbpd.report.document.write_report)."""
-    title = "Kalthoff-Winkler loading study (what reproduces 70 deg and 20-22 us)"
-    if not specs:
-        return {"title": title,
-                "setup": "Not run by default (32 runs, about 1 h of single-core run time): "
-                "`tools/reproduce --full` runs it; the last measured table is in "
-                "examples/kalthoff-winkler/README.md, 'Loading study'.",
-                "table": "", "text": "", "figures": []}
     done = collect(specs, results)
-    failed = [s.job.label for s in specs if s.job.label not in
-              {f"Kalthoff-Winkler study {c} {k} dx = {d * 1e3:g} mm" for c, k, d in done}]
-    names = []
-    try:
-        names = figures(done, figdir) if done else []
-    except Exception as exc:  # the report must still be written
-        notes.append(f"study figures not made: {type(exc).__name__}: {exc}")
-    text = conclusion(done) if done else []
-    if failed:
-        text.append(jobmod.not_measured(failed))
-    return {"title": title,
-            "setup": cases_table() + "\n\nEvery run to 100 us. Angles from the notch direction "
-                     "towards the outer side at 70 us unless 'at end' (100 us): initial = "
-                     "principal axis of the crack atoms 3-15 mm from the tip, fit = 10-50 mm, "
-                     "chord = notch tip to crack tip. Projectile contact time t_c = 2 L / c_bar "
-                     f"= {T_CONTACT * 1e6:.1f} us (L = 50 mm). Rayleigh speed c_R = {C_R:.0f} m/s. "
-                     "See examples/kalthoff-winkler/README.md, 'Loading study'.",
-            "table": md_table(table_rows(done)) if done else "", "text": " ".join(text),
-            "figures": names}
+    return jobmod.section(
+        "Kalthoff-Winkler loading study (what reproduces 70 deg and 20-22 us)",
+        cases_table() + "\n\nEvery run to 100 us; angles at 70 us unless 'at end' (100 us), "
+        f"projectile contact time t_c = 2 L / c_bar = {T_CONTACT * 1e6:.1f} us (L = 50 mm), "
+        f"Rayleigh speed c_R = {C_R:.0f} m/s; the measures are defined in "
+        "examples/kalthoff-winkler/README.md, 'Loading study'.",
+        specs, results, lambda rows: md_table(table_rows(done)), lambda rows: conclusion(done),
+        lambda rows: figures(done, figdir), notes,
+        not_run="Not run by default (32 runs, about 1 h of single-core run time): "
+        "`tools/reproduce --full` runs it; the last measured table is in "
+        "examples/kalthoff-winkler/README.md, 'Loading study'.")
 
 
 def main_study(work, figdir, workers=1, log=print, reuse_only=False, csv=None, command=""):
-    """Run (or reuse) the study's runs in work and write study.md, study.json, figures and, given
+    """Run (or reuse) the study's runs in work and write study.md, figures and, given
     csv, the table's CSV. reuse_only: re-analyse the finished run folders in work (with this
     code), run nothing."""
     specs = sorted(jobs(), key=lambda s: s.job.estimate_s)   # the 1 mm runs first
@@ -519,20 +481,10 @@ def main_study(work, figdir, workers=1, log=print, reuse_only=False, csv=None, c
     figures(done, figdir)
     text = md_table(table_rows(done)) + "\n\n" + "\n".join(f"- {s}" for s in conclusion(done))
     (Path(work) / "study.md").write_text(cases_table() + "\n\n" + text + "\n")
-    summary = {f"{c} {k} {d * 1e3:g}": {key: r.get(key) for key in SUMMARY_KEYS}
-               for (c, k, d), r in done.items()}
-    (Path(work) / "study.json").write_text(json.dumps(summary, indent=1))
     if csv:
         write_csv(csv, table_rows(done), command)
     log(text)
     return done
-
-
-SUMMARY_KEYS = ("t_init_us", "t_band_us", "initial_deg", "t_initial_us", "fit_t70_deg",
-                "chord_t70_deg", "fit_end_deg", "chord_end_deg", "length_t70_mm", "length_end_mm",
-                "t_edge_us", "t_arrest_us",
-                "speed", "speed_peak", "speed_over_cR", "speed_peak_over_cR", "far_edge_own_us",
-                "far_edge_y_mm", "far_damage_other", "symmetry_tip_mm", "symmetry_phi", "wall_s")
 
 
 def main(argv=None):

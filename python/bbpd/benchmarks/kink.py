@@ -426,22 +426,12 @@ def summary_text(rows):
 
 def section(specs, results, figdir, notes):
     """The section of REPORT.md (bbpd.report.document.write_report) from the report's kink runs."""
-    done, bad = jobmod.finished(specs, results)
-    rows = [row_of(results[s.job.label]) for s in done]
-    text = summary_text(rows) if rows else []
-    if bad:
-        text.append(jobmod.not_measured(bad))
-    names = []
-    if rows:
-        path = Path(figdir) / "kink_angle.png"
-        try:
-            plot(rows, path)
-            names = [path.name]
-        except Exception as exc:  # the report must still be written
-            notes.append(f"kink figure not made: {type(exc).__name__}: {exc}")
-    tables = table(rows) + "\n\n" + deviation_table(rows) if rows else ""
-    return {"title": REPORT_TITLE, "setup": REPORT_SETUP, "table": tables,
-            "text": " ".join(text), "figures": names}
+    def figure(rows):
+        plot(rows, Path(figdir) / "kink_angle.png")
+        return ["kink_angle.png"]
+    return jobmod.section(REPORT_TITLE, REPORT_SETUP, specs, results,
+                          lambda rows: table(rows) + "\n\n" + deviation_table(rows), summary_text,
+                          figure, notes)
 
 
 def case_key(r):

@@ -52,7 +52,6 @@ CASES = ((5, 10), (10, 10), (5, 20), (15, 10), (10, 20), (20, 10))
 COLUMNS = ("kernel", "psi", "alpha", "m", "R_over_delta", "dx_mm", "atoms", "steps",
            "K_init_over_Kc", "extension_over_delta", "angle_2d", "angle_4d", "hoop_stress",
            "hoop_strain", "energy", "loop_s", "nprocs", "cpu")
-TIMING = "timing: "    # the CSV's comment line naming the CPU of rows without a cpu column
 
 
 def case_vars(m, r_over_delta, kernel=KERNEL, psi=PSI, alpha=ALPHA):
@@ -235,14 +234,6 @@ def loop_times(rows):
     return csvfile.loop_times_note(sorted(rows, key=_order), "cpu", case)
 
 
-def with_cpu(rows, comments):
-    """rows with their cpu: a CSV from before the cpu column names its one CPU on its timing
-    line ('timing: LAMMPS loop time, CPU, shared machine')"""
-    line = next((c[len(TIMING):] for c in comments if c.startswith(TIMING)), "")
-    cpu = line.split("loop time, ", 1)[-1].removesuffix(", shared machine") if line else "unknown"
-    return [dict(r, cpu=r.get("cpu") or cpu) for r in rows]
-
-
 FIGURE = kinkbench.FOLDER / "kink_convergence.png"
 
 
@@ -275,16 +266,6 @@ def figure(rows, path=FIGURE):
                 ax.grid(alpha=0.3)
             ax_row[0].set_ylabel("kink angle (deg)")
             ax_row[1].legend(fontsize=6.5, loc="best")
-
-
-def summary(rows):
-    """REPORT.md's line under the table: each sequence's finest angle, its nearest criterion and
-    its last step"""
-    out = [f"{s['kernel']} psi {s['psi']:g} alpha {s['alpha']:g}, {s['dist']}, R/delta {s['rd']:g}: "
-           f"{_f(s['angles'][-1])} deg at m = {s['ms'][-1]:g} (nearest: "
-           f"{NAMES.get(s['nearest'], 'criteria agree')}), last step {s['step']:+.1f} deg "
-           f"({'settled' if s['settled'] else 'not settled'})." for s in sequences(rows)]
-    return " ".join(out) if out else "No sequence in m yet: it needs two values of m at one R/delta."
 
 
 def limit_line(found):
@@ -320,19 +301,16 @@ def section(specs, results, figdir, notes):
     that the committed whole sweeps name (they take days, so no report run remakes them)."""
     committed = (f"The committed whole mixed-mode sweeps ({CSV.relative_to(kinkbench.ROOT)}): "
                  + limit_line(limit(read_rows())))
-    return jobmod.rows_section(
-        REPORT_TITLE, specs, results,
-        f"Not run by default ({len(jobs())} runs, about an hour): `tools/reproduce --full` runs "
+    return jobmod.section(
+        REPORT_TITLE, f"Gaussian kernel, pure Mode II, crack along the rows, delta = "
+        f"{DELTA * 1e3:g} mm; see examples/kink-mixed-mode/README.md. {committed}", specs, results,
+        lambda rows: table(rows) + "\n\n" + sequences_table(rows), not_run=f"Not run by default ({len(jobs())} runs, about an hour): `tools/reproduce --full` runs "
         "them; the last measured table is in examples/kink-mixed-mode/README.md, 'Convergence "
-        f"in m and in the disk's size'. {committed}",
-        f"Gaussian kernel, pure Mode II, crack along the rows, delta = {DELTA * 1e3:g} mm; see "
-        f"examples/kink-mixed-mode/README.md. {committed}",
-        table, summary)
+        f"in m and in the disk's size'. {committed}")
 
 
 def read_rows(path=CSV):
-    comments, rows = csvfile.read_csv(path)
-    return with_cpu(rows, comments)
+    return csvfile.read_csv(path)[1]
 
 
 def main(argv=None):
@@ -368,8 +346,8 @@ def main(argv=None):
         rows.append(r)
         if a.csv:    # after every run: a stopped sweep keeps what it measured
             csvfile.write_csv(a.csv, [{c: r.get(c) for c in COLUMNS} for r in rows], comments=[
-                *earlier, made, f"{TIMING}LAMMPS loop time (s); the CPU of each run in column cpu"])
-    print(summary(rows))
+                *earlier, made, "timing: LAMMPS loop time (s); the CPU of each run in column cpu"])
+    print(sequences_table(rows))
     return 0
 
 

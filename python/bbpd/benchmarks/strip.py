@@ -76,7 +76,6 @@ CSV_COLUMNS = ("kernel", "m", "H_over_delta", "dx", "Delta", "Delta_model", "cro
                "Phi_ahead_over_Gc", "closure_pct", "balance_pct", "atoms", "steps", "loop_s",
                "timing", "left_plane_over_H")
 TEXT_COLUMNS = ("kernel", "state", "timing")
-TIMING = "# timing: "
 
 
 def wave_speeds():
@@ -177,15 +176,8 @@ def write_csv(path, rows, command, earlier=()):
 
 def read_rows(path):
     """The CSV of write_csv as dicts (kernel, state and timing strings, crossed a bool, the rest
-    floats); a CSV from before the timing column names its one machine on the timing line."""
-    rows = csvfile.read_table(path, text=TEXT_COLUMNS, flags=("crossed",))
-    timing = [ln[len(TIMING):] for ln in Path(path).read_text().splitlines() if ln.startswith(TIMING)]
-    for r in rows:
-        if "timing" not in r:
-            r["timing"] = timing[0].split("loop time, ", 1)[-1] if timing else "unknown"
-        # a CSV from before the column: where its branched cracks left the plane is not known
-        r.setdefault("left_plane_over_H", float("nan"))
-    return rows
+    floats)"""
+    return csvfile.read_table(path, text=TEXT_COLUMNS, flags=("crossed",))
 
 
 def timing_markdown(rows):
@@ -444,14 +436,12 @@ def jobs(full=False):
 
 def section(specs, results, figdir, notes):
     """The strip's section of report/REPORT.md."""
-    rows, text = jobmod.finished_rows(specs, results, lambda rows: [closure_line(rows)])
-    return {"title": REPORT_TITLE,
-            "setup": "Soda-lime glass (E = 72 GPa, G_c = 3.8 J/m2), plane stress, delta = 1 mm, "
-                     "strip 8 H long with a seed crack H long, pre-stretched between fixed grips "
-                     "to U' = Delta G_c; steady speed, bond and wave energies over the middle of "
-                     "the strip. See examples/strip-steady-crack/README.md.",
-            "table": table_markdown(rows) + "\n\n" + law_table(rows) if rows else "",
-            "text": "\n".join(t for t in text if t), "figures": []}
+    return jobmod.section(
+        REPORT_TITLE, "Soda-lime glass (E = 72 GPa, G_c = 3.8 J/m2), plane stress, delta = 1 mm, "
+        "strip 8 H long with a seed crack H long, pre-stretched between fixed grips to U' = Delta "
+        "G_c; steady speed, bond and wave energies over the middle of the strip. See "
+        "examples/strip-steady-crack/README.md.", specs, results,
+        lambda rows: table_markdown(rows) + "\n\n" + law_table(rows), lambda rows: [closure_line(rows)])
 
 
 def figure(rows, path, H_over_delta=SWEEP_H_OVER_DELTA):
