@@ -4,37 +4,12 @@ for each kernel, horizon ratio m, horizon delta and traction sigma.
 
 Runs examples/crack-branching/in.crack_branching (Ha & Bobaru 2010; Bobaru & Zhang 2015) and
 reads what compute bbpd/crack/tip with branches yes wrote (tip.dat, tips.dat) and the damage
-dumps. Per run:
+dumps: the initiation, the first split (point, path length, fork time), the speeds before the
+fork (over PRE_WINDOW), from initiation to it and at the end (over END_WINDOW) against the
+model's c_R, the largest speed (above c_R the path jumped: no crack growth), the branch angle
+and the mirror symmetry of the two branches; examples/crack-branching/README.md defines each.
 
-t_init     first output at which the crack has grown from the notch tip (extension > 0).
-split      the first split the tracker recorded: its point (x, y) and path length l_s; the
-           fork time t_split is when the longest tip's path length first reached l_s (the
-           tracker sees a branch only once it stands `branch` = 2 links beyond its split
-           point, later: t_seen).
-v_pre      least-squares slope of the longest tip's path length over the PRE_WINDOW before
-           t_split, in m/s and over the model's Rayleigh speed c_R (plane stress, BBPD's
-           nu = 1/3: c_d = sqrt(E/(rho (1 - nu^2))), c_s = sqrt(E/(2 (1 + nu) rho))).
-v_mean     l_s / (t_split - t_init): the mean speed from initiation to the fork.
-v_end      slope of the longest tip's path length over the last END_WINDOW of the run.
-v_max      the largest speed of the longest tip the compute reported (over its window, 1 us):
-           above c_R the path length jumped, i.e. the crack joined damage that did not grow
-           from its tip (at sigma = 12 MPa the loading waves meet at y = 0 and break bonds
-           along the whole mid-line, README.md); such a run's split and speeds are no crack
-           growth and the table marks them.
-angle      branch angle: between the chords from the split point to the two tips of the first
-           split at the end of the run (the direction columns are chords over 2 links, which
-           the grid quantises).
-tips       tips and splits at the end.
-mirror     the largest |x_a - x_b| and |y_a + y_b| of the two tips of the first split over
-           every output that has them, in grid spacings; and the fraction of crack atoms
-           (damage >= 0.3) of the last dump whose mirror image about y = 0 is not one.
-
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.branching --work /tmp/branching \
-      --csv examples/crack-branching/results/branching.csv --figures examples/crack-branching
-(--runs NAME ... picks runs of RUNS; the CSV keeps the rows of runs not made again); then
-  tools/python -m bbpd.claims --write
-writes the CSV whose tables the README shows (blocks 'branching' and 'branching-cost', python -m bbpd.claims --write).
+Commands: examples/crack-branching/README.md.
 """
 
 import argparse

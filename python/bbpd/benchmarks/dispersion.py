@@ -15,9 +15,7 @@ analytic   bbpd-dispersion-curves (src/bbpd_dispersion.h) on the same k grid:
 errors     max |omega_measured/omega_analytic - 1| over the k whose ridge carries energy
            (power >= MIN_POWER of the strongest) in a k dx range.
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.dispersion --work /tmp/dispersion \
-      --figures DIR
+Commands: examples/dispersion-1d/README.md.
 """
 
 import argparse

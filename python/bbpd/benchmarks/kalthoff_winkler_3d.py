@@ -14,9 +14,7 @@ chord at 70 us) on the mid-plane (the middle layer's damage.dump) and on both fa
 (damage_faces.dump), the first broken bond and the damage band's departure (mid-plane),
 atoms, bonds, steps, loop time and memory (LAMMPS's per-rank maximum times the ranks).
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.kalthoff_winkler_3d --work /tmp/kw3d \
-      --csv examples/kalthoff-winkler/results/kw3d.csv
+Commands: examples/kalthoff-winkler/README.md.
 """
 
 import argparse

@@ -12,9 +12,7 @@ the loading study (bbpd.benchmarks.kalthoff_winkler_study: initial, fit and chor
 as influence function (pair_style bbpd/lps/KERNEL, family lps of the input) at nu = 0.3, the
 standard deck's own: what Poisson's ratio does to the angle.
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.kalthoff_winkler_deck --work /tmp/kw-deck \
-      --csv examples/kalthoff-winkler/results/standard_deck.csv
+Commands: examples/kalthoff-winkler/README.md.
 """
 
 import argparse

@@ -16,9 +16,7 @@ pull          per kernel, loading, grid spacing and angle definition: the square
               minus the mean over the cracks of every perturbed and rotated grid, with the
               standard deviation of those cracks and the standard error of their mean
 
-Command line (from the repository root; finished runs are cached in --work):
-  tools/python -m bbpd.benchmarks.kalthoff_winkler_grid --work /tmp/kw-grid \\
-      --csv examples/kalthoff-winkler/results/grid_pull.csv
+Commands: examples/kalthoff-winkler/README.md.
 """
 
 import argparse

@@ -20,10 +20,7 @@ contact open  first time after that at which the contact force on the projectile
               the two 1D bars separate exactly then (the relief from the projectile's rear and
               the tension from the plate's far edge arrive together)
 
-Command line (from the repository root; the runs are cached in --work):
-  tools/python -m bbpd.benchmarks.kalthoff_winkler_projectile --work /tmp/kw-proj \\
-      --dx 2e-3 --csv examples/kalthoff-winkler/projectile.csv
-then `tools/python -m bbpd.claims --write` puts the table into the README.
+Commands: examples/kalthoff-winkler/README.md.
 """
 
 import argparse
@@ -205,29 +202,6 @@ def plot_contact(workdir, path):
         a2.set_xlabel("t (us)")
         a1.set_title(f"projectile, {r['kernel']}, dx = {r['dx'] * 1e3:g} mm, "
                      f"Gc = {r['Gc']:g} J/m2", fontsize=9)
-    return path
-
-
-def plot_paths(workdirs, labels, path, title):
-    """Crack-tip paths of several runs with the 70-degree lines (kalthoff_winkler's frame)."""
-    with plots.figure(path, figsize=(3.8, 6.0)) as (fig, ax):
-        rs = [kw.analyse(w) for w in workdirs]
-        g = rs[0]
-        ax.plot([0, g["Lx"] * 1e3, g["Lx"] * 1e3, 0, 0], [0, 0, g["Ly"] * 1e3, g["Ly"] * 1e3, 0],
-                color="black", linewidth=0.8)
-        for r, name in zip(rs, labels):
-            tr = r["trajectory"]
-            line = None
-            for side, y0 in (("lo", r["ylo"]), ("hi", r["yhi"])):
-                L = np.array(tr["L_" + side])
-                p = np.vstack([[r["a"], y0], np.array(tr[side])[L > 0]]) * 1e3
-                ax.plot([0, r["a"] * 1e3], [y0 * 1e3] * 2, color="grey", linewidth=2)
-                line = ax.plot(p[:, 0], p[:, 1], "-", linewidth=1.1,
-                               color=None if line is None else line[0].get_color(),
-                               label=name if side == "lo" else None)
-        kw.draw_plate_frame(ax, g)
-        ax.legend(fontsize=6, loc="center left")
-        ax.set_title(title, fontsize=8)
     return path
 
 
@@ -427,8 +401,9 @@ def main(argv=None):
                             dirs.append(wd)
                             names.append(f"{loading}, Gc {gc:g}")
                 if len(dirs) > 1:
-                    plot_paths(dirs, names, figs / f"projectile_paths_{tag}.png",
-                               f"crack-tip paths, {kernel}, dx = {dx * 1e3:g} mm")
+                    kw.plot_paths([(n, kw.analyse(d), "-", None) for n, d in zip(names, dirs)],
+                                  figs / f"projectile_paths_{tag}.png",
+                                  f"crack-tip paths, {kernel}, dx = {dx * 1e3:g} mm")
 
 
 if __name__ == "__main__":

@@ -255,10 +255,8 @@ def in_init_window(t):
 
 
 def hits(results):
-    """The runs that give the experiment's angle (70 +- 2 deg, by which definitions) or the
-    paper's initiation window (by which reading), and those that give both:
-    {'angle': [(case, kernel, dx, definitions)], 'initiation': [(case, kernel, dx, readings)],
-    'both': [(case, kernel, dx)]}"""
+    """{'angle': [(case, kernel, dx, definitions)] of the runs at 70 +- 2 deg, 'initiation':
+    [(case, kernel, dx, readings)] in the paper's window, 'both': [(case, kernel, dx)]}"""
     out = {"angle": [], "initiation": [], "both": []}
     for (case, k, dx), r in sorted(results.items(), key=_order):
         defs = [d for d in ANGLE_DEFS if reaches_angle(r, d)]
@@ -331,56 +329,36 @@ CSV = kw.ROOT / "examples" / "kalthoff-winkler" / "results" / "study.csv"
 
 
 def write_csv(path, rows, command):
-    """the table's cells (table_rows) as a CSV, the command on its 'made by' line"""
     csvfile.write_table(path, [dict(zip(TABLE_HEADER, r)) for r in rows], TABLE_HEADER,
                         [f"made by: {command}"], text=TABLE_HEADER)
 
 
 def read_csv(path=CSV):
-    """the rows of write_csv as lists of cells, and its provenance lines"""
     rows = csvfile.read_table(path, text=TABLE_HEADER)
     return [[r[c] for c in TABLE_HEADER] for r in rows], csvfile.provenance(path)
 
 
 def readme_table(path=CSV):
-    """the README's table: the CSV's commands, then its rows"""
     rows, made = read_csv(path)
     return markdown.made_by([ln.partition(": ")[2] for ln in made]) + "\n\n" + md_table(rows)
 
 
 def cases_table():
-    rows = []
-    for name, (desc, v) in CASES.items():
-        rows.append([name, desc, f"{v.get('v0', 32.0):g}",
-                     f"{v.get('tramp', 0.0) * 1e6:g}",
-                     f"{v['thold'] * 1e6:.1f}" if "thold" in v else "held",
-                     "dx" if v.get("layer") == "dx" else "delta = 5 dx"])
+    rows = [[name, desc, f"{v.get('v0', 32.0):g}", f"{v.get('tramp', 0.0) * 1e6:g}",
+             f"{v['thold'] * 1e6:.1f}" if "thold" in v else "held",
+             "dx" if v.get("layer") == "dx" else "delta = 5 dx"] for name, (desc, v) in CASES.items()]
     return md_table(rows, ["case", "loading", "v0 (m/s)", "ramp (us)", "released at (us)",
                            "layer"])
 
 
 def plot_paths_case(results, case, path):
     """Crack-tip paths of one loading for every kernel/resolution, with the 70-degree line."""
-    runs = [(k, dx, r) for (c, k, dx), r in sorted(results.items(), key=_order) if c == case]
-    with plots.figure(path, figsize=(3.8, 6.0)) as (fig, ax):
-        g = runs[0][2]
-        ax.plot([0, g["Lx"] * 1e3, g["Lx"] * 1e3, 0, 0], [0, 0, g["Ly"] * 1e3, g["Ly"] * 1e3, 0],
-                color="black", linewidth=0.8)
-        for yn in (g["ylo"], g["yhi"]):
-            ax.plot([0, g["a"] * 1e3], [yn * 1e3] * 2, color="grey", linewidth=2)
-        for k, dx, r in runs:
-            tr = r["trajectory"]
-            style = "-" if dx >= 1e-3 - 1e-12 else ":"
-            for side, y0 in (("lo", r["ylo"]), ("hi", r["yhi"])):
-                L = np.array(tr["L_" + side])
-                p = np.vstack([[r["a"], y0], np.array(tr[side])[L > 0]]) * 1e3
-                ax.plot(p[:, 0], p[:, 1], style, color=COLORS[k], linewidth=1.2,
-                        label=(f"{k} {dx * 1e3:g} mm ({f(r.get('fit_t70_deg'), '.1f')} deg)"
-                               if side == "lo" else None))
-        kw.draw_plate_frame(ax, g)
-        ax.legend(fontsize=6, loc="center left")
-        ax.set_title(f"{CASES[case][0]}, to {g['nsteps'] * g['dt'] * 1e6:.0f} us", fontsize=7)
-    return path
+    runs = [(f"{k} {dx * 1e3:g} mm ({f(r.get('fit_t70_deg'), '.1f')} deg)", r,
+             "-" if dx >= 1e-3 - 1e-12 else ":", COLORS[k])
+            for (c, k, dx), r in sorted(results.items(), key=_order) if c == case]
+    g = runs[0][1]
+    return kw.plot_paths(runs, path, f"{CASES[case][0]}, to {g['nsteps'] * g['dt'] * 1e6:.0f} us",
+                         fontsize=6)
 
 
 def plot_damage_cases(results, kernel, dx, path):
@@ -436,12 +414,8 @@ def jobs(nprocs=1):
 
 def collect(specs, results):
     """{(case, kernel, dx): result} of the finished runs among specs."""
-    out = {}
-    for s in specs:
-        r = results.get(s.job.label)
-        if r is not None and "error" not in r:
-            out[(s.job.kwargs["args"]["case"], s.kernel, s.dx)] = r
-    return out
+    return {(s.job.kwargs["args"]["case"], s.kernel, s.dx): results[s.job.label]
+            for s in jobmod.finished(specs, results)[0]}
 
 
 def section(specs, results, figdir, notes):

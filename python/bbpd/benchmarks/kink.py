@@ -13,12 +13,7 @@ kink angle   bbpd.crack_path.kink_angles of the last snapshot of final.dump at t
              within dx of that distance, in the crack-tip frame; theta < 0 for K_II > 0)
 extension    the grown crack's reach from the tip when the run stopped (fix halt at 5 delta)
 
-Command line (from the repository root); the committed results came from the first two:
-  tools/python -m bbpd.benchmarks.kink --work /tmp/kink
-  tools/python -m bbpd.benchmarks.kink --work /tmp/kink-fine --fine-only --add-missing \
-      --nprocs 2 --workers 1                  (the fine-grid cases the CSV lacks, added to it)
-  tools/python -m bbpd.benchmarks.kink --from-csv   (the figure only)
-then `tools/python -m bbpd.claims --write` puts the table into the README.
+Commands: examples/kink-mixed-mode/README.md.
 """
 
 import argparse
@@ -31,8 +26,9 @@ import time
 from pathlib import Path
 
 import numpy as np
+from matplotlib.lines import Line2D
 
-from bbpd import crack_path, kink, readers
+from bbpd import crack_path, kink, plots, readers
 from bbpd import jobs as jobmod
 from bbpd.jobs import Job, run_jobs
 from bbpd.kernels import COLORS, KERNELS
@@ -276,34 +272,24 @@ def wall_cell(r):
     return f"{r['wall_s']:.0f}" + (f" ({ranks} ranks)" if ranks > 1 else "")
 
 
-def fmt(v, spec=".1f"):
-    return cell(v, spec)
-
-
 def table(rows):
-    head = ("| kernel | dx (mm) | m | crack to rows (deg) | psi (deg) | K at 1st break / K_c | "
-            "angle at 2 delta | angle at 4 delta | hoop stress | hoop strain | max G (HPU) | "
-            "extension (delta) | ramp (transits per K_c) | wall (s) |")
-    lines = [head, "|" + "---|" * head.count(" | ") + "---|"]
-    for r in sorted(rows, key=lambda r: (-r["dx"], r["ncross"], KERNELS.index(r["kernel"]),
-                                         r["alpha"], -r["psi"])):
-        lines.append("| " + " | ".join([
-            r["kernel"], f"{r['dx'] * 1e3:g}", f"{round(r['delta'] / r['dx'])}", f"{r['alpha']:g}",
-            f"{r['psi']:g}", fmt(r["K_init_over_Kc"], ".2f"), fmt(r["angle_2d"]), fmt(r["angle_4d"]),
-            f"{r['hoop_stress']:.1f}", f"{r['hoop_strain']:.1f}", f"{r['energy']:.1f}",
-            f"{r['extension_over_delta']:.1f}", f"{r['ncross']:g}", wall_cell(r)]) + " |")
-    return "\n".join(lines)
+    head = ("kernel", "dx (mm)", "m", "crack to rows (deg)", "psi (deg)", "K at 1st break / K_c",
+            "angle at 2 delta", "angle at 4 delta", "hoop stress", "hoop strain", "max G (HPU)",
+            "extension (delta)", "ramp (transits per K_c)", "wall (s)")
+    return md_table(head, ([
+        r["kernel"], f"{r['dx'] * 1e3:g}", f"{round(r['delta'] / r['dx'])}", f"{r['alpha']:g}",
+        f"{r['psi']:g}", cell(r["K_init_over_Kc"], ".2f"), cell(r["angle_2d"], ".1f"),
+        cell(r["angle_4d"], ".1f"), f"{r['hoop_stress']:.1f}", f"{r['hoop_strain']:.1f}",
+        f"{r['energy']:.1f}", f"{r['extension_over_delta']:.1f}", f"{r['ncross']:g}", wall_cell(r)]
+        for r in sorted(rows, key=lambda r: (-r["dx"], r["ncross"], KERNELS.index(r["kernel"]),
+                                             r["alpha"], -r["psi"]))))
 
 
 def plot(rows, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     psi = np.linspace(0.0, 90.0, 91)
     theory = {c: [kink.criteria_angles(0.0 if p == 90 else math.cos(math.radians(p)),
                                        math.sin(math.radians(p)))[c] for p in psi] for c in CRITERIA}
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2), sharey=True)
-    try:
+    with plots.figure(path, 1, 2, figsize=(10, 4.2), sharey=True, dpi=130) as (fig, axes):
         for ax, dist in zip(axes, ("2d", "4d")):
             for g in (-45.0, -90.0):     # a grid diagonal and column seen from a 0-deg crack
                 ax.axhline(g, color="grey", lw=0.8, alpha=0.5)
@@ -322,7 +308,6 @@ def plot(rows, path):
             ax.set_title(f"kink angle at {dist[0]} horizons from the tip", fontsize=10)
             ax.grid(alpha=0.3)
         axes[0].set_ylabel("kink angle theta (deg)")
-        from matplotlib.lines import Line2D
         handles = [Line2D([], [], color=COLORS[k], marker="o", ls="", label=k) for k in KERNELS]
         handles += [Line2D([], [], color="grey", marker=mk, ls="", mfc=f, label=lab)
                     for mk, f, lab in (("o", "grey", "crack 0 deg, dx 1 mm"),
@@ -333,10 +318,6 @@ def plot(rows, path):
                               label="grid directions (crack 0 deg)"))
         axes[0].legend(fontsize=7, loc="lower left")
         axes[1].legend(handles=handles, fontsize=7, loc="lower left")
-        fig.tight_layout()
-        fig.savefig(path, dpi=130)
-    finally:
-        plt.close(fig)
 
 
 # --------------------------------------------------------------------------- report

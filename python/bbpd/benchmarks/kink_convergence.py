@@ -16,15 +16,7 @@ MIXES_DEG and ALPHAS_DEG), each (kernel, psi, alpha) a sequence of its own. The 
 step is DT_PER_M * m * dx / c_d, the kink test's rule (0.8 at m = 5, 1.6 at m = 10): the
 stable step of a bond family scales with the horizon, not with dx.
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.kink_convergence --work /tmp/kink-conv --nprocs 2 \
-      --csv examples/kink-mixed-mode/results/kink_convergence.csv
-  # another kernel's cases, added to the same CSV:
-  tools/python -m bbpd.benchmarks.kink_convergence --work /tmp/kink-conv --kernel constant \
-      --cases 10:10 15:10 --append --csv examples/kink-mixed-mode/results/kink_convergence.csv
-  # another mix and crack direction:
-  tools/python -m bbpd.benchmarks.kink_convergence --work /tmp/kink-conv --psi 45 --alpha 22.5 \
-      --cases 10:20 --nprocs 2 --append --csv examples/kink-mixed-mode/results/kink_convergence.csv
+Commands: examples/kink-mixed-mode/README.md.
 """
 
 import argparse

@@ -17,8 +17,7 @@ prediction    the criteria's angles for that psi (bbpd.kink) and the kink test's
               at 2 and 4 horizons, interpolated in psi over the committed coarse-grid Gaussian
               results (examples/kink-mixed-mode/results/kink.csv, crack along the rows)
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.kink_kalthoff_winkler --dx 2e-3 --work /tmp/kw-kink
+Commands: examples/kink-mixed-mode/README.md.
 """
 
 import argparse

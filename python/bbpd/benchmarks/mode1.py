@@ -16,9 +16,7 @@ consistent  the constants of the BBPD model itself: plane stress nu = 1/3, whose
 In plane stress 2 mu/(kappa+1) = E/4 whatever nu is, so the two conventions give the same
 K_PD there; they differ only in the analytic curve (amplitude factor and arrival time).
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.mode1 --table2 --table3 \
-      --work /tmp/mode1 --figures examples/mode1-semi-infinite
+Commands: examples/mode1-semi-infinite/README.md.
 """
 
 import argparse

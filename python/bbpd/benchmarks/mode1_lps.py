@@ -10,9 +10,7 @@ influence function), m = 5 as the paper's, and gives K_I by displacement extrapo
 the J-integral against eq. 42, with the bond-based plane-stress runs of results/mode1.csv
 (consistent convention) beside them.
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.mode1_lps --work /tmp/mode1-lps \
-      --csv examples/mode1-semi-infinite/results/mode1_lps.csv
+Commands: examples/mode1-semi-infinite/README.md.
 """
 
 import argparse

@@ -21,11 +21,7 @@ width   largest |y| of the crack atoms (damage >= 0.3, x >= a) at 3 t_c, in hori
         crack between two rows has 0.5 dx; a wider band is a process zone that spreads.
 v       least-squares slope of l(t) over +-SPEED_HALF_WINDOW t_c around SPEED_TIMES t_c.
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.mode1_propagation --dx 0.1 0.05 \
-      --work /tmp/mode1-propagation --csv examples/mode1-propagation/results/mode1_propagation.csv \
-      --figures examples/mode1-propagation
-(add 0.025 to --dx for the finest grid; --full); then `tools/python -m bbpd.claims --write`.
+Commands: examples/mode1-propagation/README.md.
 """
 
 import argparse

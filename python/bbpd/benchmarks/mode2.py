@@ -16,9 +16,7 @@ edges arrive earlier (7.45 us) but are weak: doubling the plate length (corners 
 changes K_II by < 0.3 % up to 10 us (README).  Model: plane strain, whose implied nu = 1/4 is
 the plate's nu, so E, nu, c_s and c_d of the reference are those of the BBPD model.
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.mode2 --kernels constant triangular \
-      gaussian --dx 1e-3 0.5e-3 --work /tmp/mode2 --figures examples/mode2-central-crack
+Commands: examples/mode2-central-crack/README.md.
 """
 
 import argparse

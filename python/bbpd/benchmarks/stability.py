@@ -30,9 +30,7 @@ drift      a free (non-periodic) noisy plate at 0.5 Y for 20,000 steps, total en
            energy (the secular drift), and the relative standard deviation (the bounded
            fluctuation of the measured energy around velocity Verlet's conserved shadow energy).
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.stability --out DIR
-writes DIR/stability.json and DIR/stability.md (the table of doc/stability.md).
+Commands: doc/stability.md.
 """
 
 import argparse

@@ -1,34 +1,15 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Steady crack growth in a pre-stretched strip between fixed grips: the model's kinetic law.
 
-Runs examples/strip-steady-crack/in.strip and measures, per run (plane stress, BBPD's
-nu = 1/3; energies per unit thickness, i.e. the compute's joules over the slab thickness h):
+Runs examples/strip-steady-crack/in.strip and measures per run (plane stress, BBPD's nu = 1/3;
+energies per unit thickness): U' (the model's stored energy per unit length, compute
+bbpd/energy at t = 0) and Delta' = U'/G_c; the end state (crossed, arrested, branched or
+unsteady); over the MIDDLE of the strip (a + 2 H to L - H) the steady speed v_ss/c_R, the
+energy the broken bonds take (Gamma) and the waves carry off behind and ahead (Phi), the
+closure (Gamma + Phi - U')/U' and the drift of the energy balance.
+examples/strip-steady-crack/README.md defines each.
 
-U'        the model's stored energy per unit length of the uniform strain, measured at t = 0
-          by compute bbpd/energy on a column of atoms one strip height wide in the middle
-          (STRIP-UPRIME); Delta' = U'/G_c beside the nominal Delta = W H / G_c of CCM.
-crossed   the tip reached the far end (x >= L - H/2) before tend along y = 0 (state
-          'crossed'); else 'arrested', or 'branched' if the tip left y = 0 by more than a
-          horizon (the crack branched or turned: no steady state to measure), or
-          'unsteady' if the bonds took more energy per unit area than U' (Gamma > U': damage
-          spread off the plane or ahead of the tip).
-v_ss      steady speed: least-squares slope of the tip position x(t) while the tip runs over
-          the MIDDLE (from a + 2 H to L - H; the crack reaches a steady speed after about two
-          strip heights), over the model's Rayleigh speed c_R (Rayleigh equation, nu = 1/3).
-Gamma     energy the broken bonds take per unit crack area, slope of the broken-bond energy
-          against the tip position over the same span, over G_c.
-Phi       energy the crack leaves as waves per unit crack area, Phi_behind + Phi_ahead:
-          behind  slope against the tip position of the elastic + kinetic energy of the atoms
-                  more than H behind the tip plus what the damped seed zone absorbed (the
-                  waves sent back), over the same span;
-          ahead   slope of what the damped far zone absorbed (waves faster than the crack).
-closure   (Gamma + Phi - U')/U': zero at steady state (the grips do no work, and the strip
-          ahead of the near-tip field loses U' per unit length).
-balance   drift of compute bbpd/energy's balance over the run, over the broken-bond energy.
-
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.strip --kernels gaussian --Delta 1.5 2 3 \
-      --work /tmp/strip --csv examples/strip-steady-crack/results/strip.csv
+Commands: examples/strip-steady-crack/README.md.
 """
 
 import argparse

@@ -10,10 +10,7 @@ L2 error against the PD tip histories of examples/mode1-propagation
 (results/tip_histories.csv) is set beside the two constant-toughness forms (the errors of
 its results CSV, recomputed here the same way).
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.strip_closure \
-      --strip examples/strip-steady-crack/results/strip.csv \
-      --csv examples/strip-steady-crack/results/closure.csv
+Commands: examples/strip-steady-crack/README.md.
 """
 
 import argparse

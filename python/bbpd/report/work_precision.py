@@ -430,9 +430,8 @@ def section(specs, results, figdir, notes):
         if not any(r["benchmark"] == bench for r in table):
             continue
         path = figdir / f"work_precision_{bench}.png"
-        name = _figure(lambda: plot(path, table, bench, TITLES[bench],
-                                    lambda dx: _fmt_dx(bench, dx)), path, notes)
-        figs += [name] if name else []
+        figs += _figure(lambda: plot(path, table, bench, TITLES[bench],
+                                     lambda dx: _fmt_dx(bench, dx)), path, notes)
     reach = reach_table(table)
     text = ["The cost of reaching each target error:\n\n" + reach] if reach else []
     counts = sorted(set(samples.values()))
