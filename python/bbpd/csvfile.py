@@ -84,6 +84,13 @@ def read_table(path, text=(), flags=()):
     return [{n: cell(n, v) for n, v in zip(names, cells)} for cells in table[1:]]
 
 
+def comment(source, key):
+    """The text after 'key:' on the first such comment line of source (a CSV's path, or the
+    comment lines of read_csv), or None."""
+    lines = read_csv(source)[0] if isinstance(source, (str, Path)) else source
+    return next((c.split(":", 1)[1].strip() for c in lines if c.startswith(key + ":")), None)
+
+
 def provenance(path):
     """The 'made by' and 'rows added by' comment lines of a results CSV, in order: every
     command that wrote rows to it."""

@@ -197,13 +197,6 @@ def read_rows(path=RESULTS):
     return csvfile.read_table(path, text=TEXT_COLUMNS)
 
 
-def made_by(path=RESULTS):
-    for line in Path(path).read_text().splitlines():
-        if line.startswith("# made by: "):
-            return line[len("# made by: "):]
-    return None
-
-
 def _f(v, fmt):
     return "–" if v != v else format(v, fmt)
 
@@ -240,13 +233,6 @@ def table(rows, command=None, cpu=None):
         cells += [_f(r["v_max_over_cR"], ".2f"), _f(r["loop_s"], ".0f")]
         lines.append("| " + " | ".join(cells) + " |")
     return "\n".join(lines)
-
-
-def cpu_of(path=RESULTS):
-    for line in Path(path).read_text().splitlines():
-        if line.startswith("# timing: "):
-            return line[len("# timing: "):]
-    return None
 
 
 FIGURE = "damage_maps.png"

@@ -31,9 +31,10 @@ from bbpd import provenance, readers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
 from bbpd.benchmarks import kalthoff_winkler_study as study
-from bbpd.csvfile import read_csv, write_csv
+from bbpd.csvfile import comment, read_csv, write_csv
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as _f
+from bbpd.markdown import table as md_table
 
 CSV = kw.EXAMPLE.parent / "results" / "grid_pull.csv"
 COMMAND = ("tools/python -m bbpd.benchmarks.kalthoff_winkler_grid --work /tmp/kw-grid "
@@ -212,18 +213,16 @@ def _pair(r, d):
 def markdown(rows, comments=()):
     """The README's tables (one row per run, lower / upper crack; the pulls);
     comments: the CSV's '#' lines (what made it, on which machine)."""
-    head = ["loading", "kernel", "dx (mm)", "grid", "first bond (us)", "damage band (us)",
-            "initial lo / hi (deg)", "fit lo / hi (deg)", "chord lo / hi (deg)",
-            "crack length at end (mm)", "crack stops (us)", "loop CPU (s)"]
-    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-    for r in rows:
-        lines.append("| " + " | ".join([
-            r["loading"], r["kernel"], f"{float(r['dx_mm']):g}", r["grid"],
-            _f(r["first_bond_us"], ".1f"), _f(r["band_us"], ".1f"), _pair(r, "initial"),
-            _pair(r, "fit"), _pair(r, "chord"), _f(r["length_end_mm"], ".0f"),
-            r["crack_stops"], _f(r["loop_cpu_s"], ".0f")]) + " |")
-    text = "\n".join(lines)
-    made, cpu = made_by(comments), machine_of(comments)
+    text = md_table(
+        ["loading", "kernel", "dx (mm)", "grid", "first bond (us)", "damage band (us)",
+         "initial lo / hi (deg)", "fit lo / hi (deg)", "chord lo / hi (deg)",
+         "crack length at end (mm)", "crack stops (us)", "loop CPU (s)"],
+        ([r["loading"], r["kernel"], f"{float(r['dx_mm']):g}", r["grid"],
+          _f(r["first_bond_us"], ".1f"), _f(r["band_us"], ".1f"), _pair(r, "initial"),
+          _pair(r, "fit"), _pair(r, "chord"), _f(r["length_end_mm"], ".0f"), r["crack_stops"],
+          _f(r["loop_cpu_s"], ".0f")] for r in rows))
+    made = comment(comments, "made by")
+    cpu = (comment(comments, "machine") or "an unnamed CPU").split(",")[0]
     if made:
         text += (f"\n\nFrom `examples/kalthoff-winkler/results/grid_pull.csv` (made by: {made}). "
                  f"Loop CPU: LAMMPS's loop time x its CPU use, one rank, on {cpu} shared with "
@@ -316,23 +315,7 @@ def write(rows, path, command=COMMAND, workers=1):
 
 
 def read_rows(path=CSV):
-    comments, rows = read_csv(path)
-    return comments, rows
-
-
-def machine_of(comments):
-    """The CPU named in the CSV's 'machine:' line."""
-    for c in comments:
-        if c.startswith("machine:"):
-            return c[len("machine:"):].split(",")[0].strip()
-    return "an unnamed CPU"
-
-
-def made_by(comments):
-    for c in comments:
-        if c.startswith("made by:"):
-            return c[len("made by:"):].strip()
-    return None
+    return read_csv(path)
 
 
 def main(argv=None):
