@@ -15,7 +15,6 @@ import argparse
 import json
 import math
 import re
-import time
 from pathlib import Path
 
 import numpy as np
@@ -25,7 +24,7 @@ from scipy.spatial import cKDTree
 
 from bbpd import readers, snapshots
 from bbpd.kernels import KERNELS
-from bbpd.runner import run_lammps
+from bbpd.runner import run_noted
 from bbpd.markdown import cell as fmt
 from bbpd import plots
 
@@ -267,16 +266,12 @@ def run(kernel, dx, workdir, nprocs=2, tend=None, reuse=False, images=False):
     reuse: analyse the outputs of an earlier finished run in workdir instead of running.
     images: the input's damage pictures as well, listed as snapshots [(t in us, path)]."""
     workdir = Path(workdir)
-    wall_file = workdir / "wall_s.txt"
-    if not (reuse and wall_file.is_file()):
-        variables = {"kernel": kernel, "dx": repr(float(dx)), "images": "yes" if images else "no"}
-        if tend is not None:
-            variables["tend"] = repr(float(tend))
-        start = time.perf_counter()
-        run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=variables)
-        wall_file.write_text(f"{time.perf_counter() - start:.3f}\n")
+    variables = {"kernel": kernel, "dx": repr(float(dx)), "images": "yes" if images else "no"}
+    if tend is not None:
+        variables["tend"] = repr(float(tend))
+    note = run_noted(EXAMPLE, workdir, variables, {"kernel": kernel, "dx": dx}, nprocs, reuse)
     res = analyse(workdir)
-    res["wall_s"] = float(wall_file.read_text())
+    res["wall_s"] = note["wall_s"]
     if images:
         res["snapshots"] = [(step * res["dt"] * 1e6, str(path))
                             for step, path in snapshots.find(workdir)]

@@ -16,9 +16,7 @@ Commands: examples/kalthoff-winkler/README.md.
 """
 
 import argparse
-import json
 import sys
-import time
 from pathlib import Path
 
 from bbpd import csvfile
@@ -29,7 +27,7 @@ from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.provenance import cpu
 from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
-from bbpd.runner import run_lammps
+from bbpd.runner import run_noted
 from bbpd.markdown import cell as _f
 from bbpd.markdown import made_by, table as md_table
 
@@ -71,14 +69,8 @@ def case_vars(deck, kernel, dx):
 
 def run_case(workdir, deck, kernel, dx, nprocs=1, reuse=False):
     """Run one deck in workdir (unless reuse and it finished) and measure it: a CSV row."""
-    workdir = Path(workdir)
-    done = workdir / "case.json"
-    if not (reuse and done.is_file()):
-        start = time.perf_counter()
-        run_lammps(str(kw.EXAMPLE), workdir, nprocs=nprocs, vars=case_vars(deck, kernel, dx))
-        done.write_text(json.dumps({"deck": deck, "kernel": kernel, "dx": dx, "nprocs": nprocs,
-                                    "wall_s": time.perf_counter() - start}))
-    case = json.loads(done.read_text())
+    case = run_noted(kw.EXAMPLE, workdir, case_vars(deck, kernel, dx),
+                     {"deck": deck, "kernel": kernel, "dx": dx}, nprocs, reuse)
     r = projectile.analyse(workdir)
     r["nprocs"] = case["nprocs"]
     out = projectile.row(r)

@@ -17,7 +17,6 @@ import json
 import math
 import re
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
@@ -28,7 +27,7 @@ from bbpd import jobs as jobmod
 from bbpd import readers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.kernels import COLORS
-from bbpd.runner import run_lammps
+from bbpd.runner import run_noted
 from bbpd import markdown
 from bbpd.markdown import cell as f
 from bbpd import plots
@@ -88,15 +87,10 @@ def case_vars(case, kernel, dx, tend=TEND):
 
 def run_case(workdir, kernel, dx, case, nprocs=1, tend=TEND):
     """Run one loading case in workdir and measure it (the job of the study and the report)."""
-    workdir = Path(workdir)
-    start = time.perf_counter()
-    run_lammps(str(kw.EXAMPLE), workdir, nprocs=nprocs, vars=case_vars(case, kernel, dx, tend))
-    wall = time.perf_counter() - start
-    # what --reuse needs to re-analyse this folder without running it again
-    (workdir / "case.json").write_text(json.dumps({"case": case, "kernel": kernel, "dx": dx,
-                                                   "wall_s": wall, "nprocs": nprocs}))
+    note = run_noted(kw.EXAMPLE, workdir, case_vars(case, kernel, dx, tend),
+                     {"case": case, "kernel": kernel, "dx": dx}, nprocs)
     res = analyse(workdir)
-    res.update(case=case, wall_s=wall)
+    res.update(case=case, wall_s=note["wall_s"])
     return res
 
 
