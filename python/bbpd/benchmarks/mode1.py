@@ -30,7 +30,7 @@ from bbpd import freund, metrics, readers
 from bbpd.csvfile import write_csv
 from bbpd.kernels import KERNELS
 from bbpd.provenance import machine
-from bbpd.plots import plot_k_histories
+from bbpd.plots import plot_k
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -206,15 +206,14 @@ def figures(rows2, rows3, folder):
     exact, t_c = reference("consistent")
     exact_p, _ = reference("paper")
     tt = np.linspace(0.0, 3.0 * t_c, 400)
+    refs = [("eq. 42, BBPD constants", tt, exact(tt) / norm, "--", "black"),
+            ("eq. 42, nu = 0.3 (paper)", tt, exact_p(tt) / norm, "-.", "grey")]
     for name, rows, label in (("fig9_resolutions.png", rows2, lambda k: f"dx = {k} m"),
                               ("fig10_kernels.png", rows3, lambda k: k)):
-        if not rows:
-            continue
-        series = {label(k): (r["t"], r["k_consistent"] / norm) for k, r in rows.items()}
-        series["eq. 42, nu = 0.3 (paper)"] = (tt, exact_p(tt) / norm)
-        plot_k_histories(folder / name, series,
-                         analytic=("eq. 42, BBPD constants", tt, exact(tt) / norm),
-                         ylabel="K_I / (sigma0 sqrt(H))", window_end=3.0 * t_c)
+        if rows:
+            plot_k(folder / name, [(label(k), r["t"], r["k_consistent"] / norm, None)
+                                   for k, r in rows.items()], refs, (0.0, 3.0 * t_c),
+                   name.split(".")[0], "t (s)", "K_I / (sigma0 sqrt(H))")
 
 
 def main(argv=None):

@@ -28,7 +28,7 @@ import scipy.sparse as sparse
 
 from bbpd import freund, metrics, readers
 from bbpd.kernels import KERNELS
-from bbpd.plots import plot_k_histories
+from bbpd.plots import plot_k
 from bbpd.runner import run_lammps
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -235,13 +235,11 @@ def table(work, kernels=KERNELS, dxs=(1.0e-3, 0.5e-3), td=0.0, nprocs=1):
 def figure(rows, path, td=0.0):
     w = window()
     tt = np.linspace(0.0, T_END, 400)
-    series = {f"{k} dx = {dx * 1e3:g} mm": (r["t"] * 1e6, normalise(r["k_ii"]))
-              for (k, dx), r in rows.items()}
-    plot_k_histories(path, series,
-                     analytic=("semi-infinite crack, 2 tau", tt * 1e6,
-                               normalise(reference(td=td)(tt))),
-                     xlabel="t (us)", ylabel="K_II / (tau sqrt(pi a))",
-                     window_end=w.t_end_ignoring_corners * 1e6)
+    series = [(f"{k} dx = {dx * 1e3:g} mm", r["t"] * 1e6, normalise(r["k_ii"]), None)
+              for (k, dx), r in rows.items()]
+    plot_k(path, series, [("semi-infinite crack, 2 tau", tt * 1e6, normalise(reference(td=td)(tt)),
+                           "--", "black")], (0.0, w.t_end_ignoring_corners * 1e6), "Mode-II K_II(t)",
+           "t (us)", "K_II / (tau sqrt(pi a))")
 
 
 def main(argv=None):

@@ -11,7 +11,7 @@ from bbpd.benchmarks import dispersion as disp
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import mode1, mode2
 from bbpd.kernels import COLORS, KERNELS
-from bbpd import plots
+from bbpd.plots import plot_k
 
 from .runs import MODE1_TABLE3_DX
 
@@ -27,27 +27,6 @@ def _figure(make, path, notes):
     except Exception as exc:  # the report must still be written
         notes.append(f"figure {Path(path).name} not made: {type(exc).__name__}: {exc}")
         return []
-
-
-def plot_k(path, series, refs, window, title, xlabel, ylabel):
-    """K(t) figure: measured series (solid, colour), references (black/grey, dashed), and the
-    validity window of the comparison (dotted lines).
-    series: [(label, t, K, colour)]; refs: [(label, t, K, linestyle, colour)];
-    window: (start, end) in the units of t."""
-    with plots.figure(path, figsize=(7.0, 4.4)) as (fig, ax):
-        for label, t, k, color in series:
-            ax.plot(t, k, "-", color=color, linewidth=1.4, label=label)
-        for label, t, k, style, color in refs:
-            ax.plot(t, k, linestyle=style, color=color, linewidth=1.6, label=label)
-        for n, x in enumerate(x for x in window if x > 0):
-            ax.axvline(x, color="grey", linestyle=":", linewidth=1.0,
-                       label="window of the comparison" if n == 0 else None)
-        ax.set_xlabel(xlabel)
-        ax.set_ylabel(ylabel)
-        ax.set_title(title, fontsize=10)
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8, loc="upper left")
-    return path
 
 
 def dispersion_figures(runs, paper, cv, figdir, notes):
