@@ -2,19 +2,12 @@
 """Kalthoff-Winkler in 3D, the 9 mm plate resolved through its thickness.
 
 examples/kalthoff-winkler/in.kalthoff_winkler_3d struck by the projectile (Gaussian kernel, the
-paper's G_c), with m = delta/dx = 3 so that the horizon fits at least four times into the
-thickness (delta <= 2.25 mm) at a cost this machine can run: delta = 2.25 mm (dx = 0.75 mm,
-12 layers, 4 horizons) and, as the second resolution, delta = 3 mm (dx = 1 mm, 9 layers, 3
-horizons), on 2 MPI ranks, to 100 us (the crack must cross the plate), the tip and momentum
-monitors every MONITOR steps. Beside each, the 2D
-plate with the same dx, m, loading and kernel (in.kalthoff_winkler).
+paper's G_c) at m = delta/dx = M so that the horizon fits at least MIN_HORIZONS_THROUGH times
+into the thickness, at RESOLUTIONS, on NPROCS ranks, to 100 us, beside the 2D plate of the same
+grid. Measured: the loading study's angles (study.angles_of) on the mid-plane and on both faces,
+the first broken bond and the damage band, atoms, bonds, steps, loop time and memory.
 
-Measured per run: the angles of the loading study (initial, fit, chord: study.angles_of; fit and
-chord at 70 us) on the mid-plane (the middle layer's damage.dump) and on both faces
-(damage_faces.dump), the first broken bond and the damage band's departure (mid-plane),
-atoms, bonds, steps, loop time and memory (LAMMPS's per-rank maximum times the ranks).
-
-Commands: examples/kalthoff-winkler/README.md.
+Commands: examples/kalthoff-winkler/README.md, "3D plate resolved through its thickness".
 """
 
 import argparse

@@ -1,18 +1,14 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Kalthoff-Winkler on the field's standard deck, beside the paper's loading.
 
-Most published simulations of the experiment (phase field, peridynamics, XFEM) run the deck of
-Borden et al. (2012): the impact velocity 16.5 m/s held on the struck edge, E = 190 GPa,
-rho = 8000 kg/m^3, G_c = 2.213e4 J/m^2 (and nu = 0.3, which a bond-based model cannot take: in
-plane strain its Poisson ratio is 1/4). The paper's loading holds 32 m/s with rho = 7800 and
-G_c = 6.9e4. Both decks run examples/kalthoff-winkler/in.kalthoff_winkler (prescribed velocity
-on the struck layer, to 100 us) for the three kernels at 1 and 0.5 mm; the angles are those of
-the loading study (bbpd.benchmarks.kalthoff_winkler_study: initial, fit and chord). The decks
-'paper-lps' and 'standard-lps' run the same loadings on the state-based solid with the kernel
-as influence function (pair_style bbpd/lps/KERNEL, family lps of the input) at nu = 0.3, the
-standard deck's own: what Poisson's ratio does to the angle.
+Most published simulations of the experiment run the deck of Borden et al. (2012): 16.5 m/s
+held on the struck edge, rho = 8000 kg/m^3, G_c = 2.213e4 J/m^2 (and nu = 0.3, which a
+bond-based model cannot take); the paper holds 32 m/s with rho = 7800 and G_c = 6.9e4. DECKS
+runs both on in.kalthoff_winkler for the three kernels at DX_VALUES, and both loadings on the
+state-based solid (bbpd/lps/KERNEL) at nu = 0.3: what Poisson's ratio does to the angle. The
+angles are the loading study's.
 
-Commands: examples/kalthoff-winkler/README.md.
+Commands: examples/kalthoff-winkler/README.md, "The standard deck".
 """
 
 import argparse

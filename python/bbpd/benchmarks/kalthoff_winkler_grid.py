@@ -2,19 +2,11 @@
 """Kalthoff-Winkler on perturbed and rotated grids: how far the square grid's preferred
 directions move the crack angle (examples/kalthoff-winkler/README.md, "The grid's pull").
 
-Runs examples/kalthoff-winkler/in.kalthoff_winkler with `-var grid square | perturbed |
-rotated` (GRIDS), under the paper's prescribed loading and with the projectile, with the
-paper's G_c, to 100 us, and measures each run with the loading study's definitions
-(kalthoff_winkler_study.analyse; the projectile's contact measures from
-kalthoff_winkler_projectile.analyse).  The square grid is mirror-symmetric about the mid-line,
-so its two cracks are mirror images; off the square grid they are not (a rotated grid's
-mirror image is the grid rotated the other way), so every crack is measured on its own:
-
-angles        initial, fit and chord (the study's; fit and chord at 70 us) of each crack,
-              None for a crack shorter than 15 mm at 70 us
-pull          per kernel, loading, grid spacing and angle definition: the square grid's angle
-              minus the mean over the cracks of every perturbed and rotated grid, with the
-              standard deviation of those cracks and the standard error of their mean
+Runs in.kalthoff_winkler on the GRIDS (`-var grid square | perturbed | rotated`) under the
+paper's prescribed loading and with the projectile, and measures each crack on its own with
+the loading study's angles (off the square grid the two cracks are no mirror images). The
+pull, per kernel, loading, grid spacing and angle: the square grid's angle minus the mean
+over every off-grid crack, with its standard error.
 
 Commands: examples/kalthoff-winkler/README.md.
 """

@@ -4,17 +4,10 @@
 A pure-K problem has no length scale, so the angle at which the crack of
 examples/kink-mixed-mode/in.kink leaves the tip is a property of the model at a given m =
 delta/dx and kernel; the disk's size R/delta only has to be large enough for the Williams
-field to hold over the tip's neighbourhood. This sweep runs the Gaussian kernel under pure
-Mode II (psi = 90 deg, crack along the rows) at delta = 5 mm for
-
-  m = 5, 10, 15, 20 at R/delta = 10 (R = 50 mm, the kink test's disk), and
-  m = 5, 10 at R/delta = 20 (R = 100 mm),
-
-measured as bbpd.benchmarks.kink measures (angle at 2 and 4 horizons from the tip); --psi and
---alpha run the same cases at another mode mix and crack direction (the kink test's
-MIXES_DEG and ALPHAS_DEG), each (kernel, psi, alpha) a sequence of its own. The time
-step is DT_PER_M * m * dx / c_d, the kink test's rule (0.8 at m = 5, 1.6 at m = 10): the
-stable step of a bond family scales with the horizon, not with dx.
+field to hold over the tip's neighbourhood. The sweep runs CASES at delta = 5 mm, measured as
+bbpd.benchmarks.kink measures; --kernel, --psi and --alpha run them for another kernel, mode mix
+and crack direction. The time step is DT_PER_M * m * dx / c_d, the kink test's rule: the stable
+step of a bond family scales with the horizon, not with dx.
 
 Commands: examples/kink-mixed-mode/README.md.
 """

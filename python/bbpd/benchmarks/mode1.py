@@ -2,21 +2,10 @@
 """Stationary Mode-I semi-infinite crack (Bouaraquia & Mabssout 2026, sec. 4.2.1).
 
 Runs examples/mode1-semi-infinite/in.mode1 (compute bbpd/dsif every step) and compares
-K_I(t) with Freund's solution (eq. 42) for t <= 3 t_c with the errors of eqs. 44-45, in two
-conventions:
-
-paper       nu = 0.3 in eq. 42, in C_d (plane-strain formula: C_d = 5944 m/s, so that
-            t_c = H/C_d = 3.36e-4 s = t_d, the paper's rise time) and in mu, kappa of
-            eq. 39-40.  The pair style is plane stress (the paper's 2D formulation).
-consistent  the constants of the BBPD model itself: plane stress nu = 1/3, whose in-plane
-            equations are plane strain with nu' = nu/(1+nu) = 1/4 and C_d = sqrt(E/(rho
-            (1-nu^2))) = 5434 m/s; plane strain nu = 1/4, C_d = sqrt(1.2 E/rho) = 5612 m/s.
-            Eq. 42 is evaluated with (nu', C_d), eq. 39-40 with nu.
-
-In plane stress 2 mu/(kappa+1) = E/4 whatever nu is, so the two conventions give the same
-K_PD there; they differ only in the analytic curve (amplitude factor and arrival time).
-
-Commands: examples/mode1-semi-infinite/README.md.
+K_I(t) with Freund's solution (eq. 42) for t <= 3 t_c with the errors of eqs. 44-45, in the two
+conventions of examples/mode1-semi-infinite/README.md: the paper's (nu = 0.3, C_d = 5944 m/s)
+and the BBPD model's own constants ('consistent': plane stress nu = 1/3, i.e. eq. 42 with
+nu' = 1/4 and C_d = 5434 m/s). The README has the commands.
 """
 
 import argparse

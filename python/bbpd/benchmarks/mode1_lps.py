@@ -1,14 +1,11 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The stationary Mode-I crack with Poisson's ratio free: the LPS styles at nu = 0.3.
 
-Bond-based peridynamics fixes Poisson's ratio (1/3 in plane stress, 1/4 in plane strain), so
-the paper's Mode-I convention (nu = 0.3 in Freund's eq. 42 and in C_d) cannot be run
-consistently with it. The state-based styles bbpd/lps/KERNEL take nu in pair_coeff: in plane
-strain at nu = 0.3 the paper's convention and the model's are one and the same. This runs
-examples/mode1-semi-infinite/in.mode1 with family lps for the three kernels (the kernel as
-influence function), m = 5 as the paper's, and gives K_I by displacement extrapolation and by
-the J-integral against eq. 42, with the bond-based plane-stress runs of results/mode1.csv
-(consistent convention) beside them.
+Bond-based peridynamics fixes Poisson's ratio, so the paper's Mode-I convention (nu = 0.3) cannot
+be run consistently with it; bbpd/lps/KERNEL takes nu in pair_coeff, and in plane strain at nu =
+0.3 the paper's convention and the model's are one. This runs in.mode1 with family lps for the
+three kernels at m = 5, K_I by extrapolation and by the J-integral against eq. 42, beside the
+bond-based runs of results/mode1.csv (consistent convention).
 
 Commands: examples/mode1-semi-infinite/README.md.
 """

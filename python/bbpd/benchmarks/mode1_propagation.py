@@ -1,27 +1,13 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Mode-I crack growth under a stress wave, against Freund's equation of motion.
 
-Runs examples/mode1-propagation/in.mode1-propagation (the plate, notch and ramp load of the
-stationary Mode-I benchmark, mode1.py, with fracture on) and compares with
-bbpd.crack_motion (plane stress, the model's constants: nu = 1/3, i.e. eq. 42 with
-nu' = 1/4 and C_d = sqrt(E/(rho (1 - nu^2)))):
-
-t_i     against the root of K_I(t_i) = K_Ic = sqrt(E G_c) of eq. 42, two measures:
-        first bond  the first broken bond within 1 m of the tip (the damage sum there rises);
-        tip moved   the first dump in which the tracked tip has moved (by one grid spacing).
-        Errors relative to t_i - t_c (the loading time of the tip).
-J/G_c   J of compute bbpd/jintegral at the initial tip at each measured t_i, over G_c
-        (energy balance at initiation).
-l(t)    l = a + the extension of compute bbpd/crack/tip (grown from (a, 0), threshold 0.3,
-        link = the horizon; tip.dat); bbpd.crack_tip finds the tip in the damage dumps by
-        the same definition (the largest difference is reported, in grid spacings); L2 error of the extension l - a over
-        [t_i, 3 t_c] relative to the theory's, for the K_I = K_Ic (toughness) and the
-        G = G_c (energy) forms of the equation of motion.
-width   largest |y| of the crack atoms (damage >= 0.3, x >= a) at 3 t_c, in horizons: a
-        crack between two rows has 0.5 dx; a wider band is a process zone that spreads.
-v       least-squares slope of l(t) over +-SPEED_HALF_WINDOW t_c around SPEED_TIMES t_c.
-
-Commands: examples/mode1-propagation/README.md.
+Runs examples/mode1-propagation/in.mode1-propagation (the stationary Mode-I plate with fracture
+on) and compares with bbpd.crack_motion (plane stress, the model's constants): the initiation
+time t_i (first broken bond; first move of the tracked tip) against K_I(t_i) = K_Ic with J/G_c
+at each, the crack length l(t) of compute bbpd/crack/tip (checked against bbpd.crack_tip on the
+dumps) with its L2 error against the K_Ic and the energy forms of the equation of motion, the
+crack band's half-width at 3 t_c and the speed over +-SPEED_HALF_WINDOW t_c around SPEED_TIMES.
+examples/mode1-propagation/README.md defines each and has the commands.
 """
 
 import argparse

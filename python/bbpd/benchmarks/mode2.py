@@ -2,21 +2,12 @@
 """Mode-II central crack under uniform shear (Bouaraquia & Mabssout 2026, sec. 4.2.2).
 
 Runs examples/mode2-central-crack/in.mode2 (compute bbpd/dsif at both tips, every step) and
-compares K_II(t)/(tau sqrt(pi a)) with the early-time analytic reference of
-python/bbpd/freund.py (the paper's J-integral curve [22] is not available to us):
-
-  a semi-infinite crack whose faces are suddenly loaded by the shear 2 tau that the two
-  plane shear waves from the loaded edges carry across the crack plane when they meet there
-  at t_start = h/c_s (freund.mode2_step_dsif, or mode2_ramp_dsif for a ramp of rise td).
-
-It holds from t_start until the first wave that the semi-infinite problem does not have
-reaches the tip: the P wave diffracted at the other tip, t_start + 2a/c_d (freund.
-ModeIIWindow.t_end_ignoring_corners).  The cylindrical P waves from the corners of the loaded
-edges arrive earlier (7.45 us) but are weak: doubling the plate length (corners 92 mm away)
-changes K_II by < 0.3 % up to 10 us (README).  Model: plane strain, whose implied nu = 1/4 is
-the plate's nu, so E, nu, c_s and c_d of the reference are those of the BBPD model.
-
-Commands: examples/mode2-central-crack/README.md.
+compares K_II(t)/(tau sqrt(pi a)) with the early-time analytic reference of bbpd.freund (a
+semi-infinite crack whose faces are suddenly loaded by 2 tau when the two plane shear waves
+meet at t_start = h/c_s), valid until the P wave diffracted at the other tip arrives
+(freund.ModeIIWindow). Plane strain: its implied nu = 1/4 is the plate's, so the reference has
+the BBPD model's constants. examples/mode2-central-crack/README.md derives the window and has
+the commands.
 """
 
 import argparse

@@ -3,34 +3,15 @@
 printed at setup against the largest time step that is stable in practice.
 
 predicted  Y = min_i sqrt(2 rho_i / sum_j C_v V_j c(xi_ij)/xi_ij): the velocity-Verlet limit the
-           pair style prints (Silling & Askari 2005; paper eq. 25 is Y/sqrt(2)). It is
-           sufficient: the linearised equations are rho u_i'' = sum_j b_ij e e^T (u_j - u_i),
-           b_ij = C_v V_j c/xi, and Gershgorin bounds omega_max^2 <= 2 max_i sum_j b_ij / rho,
-           while velocity Verlet is stable iff omega_max dt < 2.
-exact      2/omega_max of the periodic plate, from its lattice dynamics: every mode is a plane
-           wave u = U exp(i k.x) on the plate's k grid and
-             rho omega^2(k) U = sum_j b_j (1 - cos k.xi_j) e_j e_j^T U,
-           computed here with NumPy from the paper's formulas (python/bbpd/reference.py),
-           independently of the C++ code.
-measured   bisection on r = dt/Y: a periodic plate (no surfaces, so every atom has the full
-           family and the exact limit above applies) of N x N atoms, plane stress, Gc none,
-           released at rest positions with random velocities (uniform in [-1, 1] m/s per
-           component, strains ~1e-4: linear); the step is stable if the run completes STEPS
-           steps without an ERROR and the largest total energy of its second half stays below
-           GROWTH x the largest of its first half. (Not "below GROWTH x the initial energy":
-           near the limit the energy velocity Verlet reports for a mode with omega dt -> 2
-           oscillates with an amplitude ~ 1/(1 - (omega dt/2)^2) while staying bounded, which
-           would flag stable runs up to 1 % below the limit. At omega dt = 2 (1 + eps) the
-           amplification factor of velocity Verlet is ~ 1 + 2 sqrt(2 eps), so the energy of
-           an unstable mode grows ~ exp(5.7 n sqrt(eps)) in n steps: a factor 10 in 5,000
-           steps for eps = 7e-9, far below RTOL.) Runs whose energy passes HALT x the initial
-           one are stopped early (fix halt) as unstable.
-drift      a free (non-periodic) noisy plate at 0.5 Y for 20,000 steps, total energy sampled
-           every 10 steps: the least-squares linear trend over the run relative to the initial
-           energy (the secular drift), and the relative standard deviation (the bounded
-           fluctuation of the measured energy around velocity Verlet's conserved shadow energy).
-
-Commands: doc/stability.md.
+           pair style prints (a Gershgorin bound, so sufficient).
+exact      2/omega_max of the periodic plate from its lattice dynamics, computed with NumPy from
+           the paper's formulas (bbpd.reference), independently of the C++ code.
+measured   bisection on r = dt/Y of a periodic noisy plate: a step is stable if the run completes
+           STEPS steps without an ERROR and the largest energy of its second half stays below
+           GROWTH x the largest of its first half (runs past HALT x the initial energy stop).
+drift      a free noisy plate at 0.5 Y for 20,000 steps: the energy's linear trend and its
+           fluctuation relative to the initial energy.
+doc/stability.md gives the reasons for each choice and the commands.
 """
 
 import argparse

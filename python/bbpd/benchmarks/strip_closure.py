@@ -1,14 +1,11 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Closure: the strip's kinetic law predicts the Mode-I crack of examples/mode1-propagation.
 
-The strip (bbpd.benchmarks.strip) measures G_run(v), the energy release rate a crack of the
-model needs to run steadily at speed v: U' at the steady speed v_ss, in the model's own
-units G_run/G_c against v/c_R (they depend on the kernel and m, not on the material or the
-scale). Fed into Freund's equation of motion (bbpd.crack_motion, criterion 'kinetic':
-g(v) K*^2/E' = G_run(v)) for the Mode-I plate, it gives l(t) without a fitted parameter; the
-L2 error against the PD tip histories of examples/mode1-propagation
-(results/tip_histories.csv) is set beside the two constant-toughness forms (the errors of
-its results CSV, recomputed here the same way).
+The strip's G_run(v)/G_c against v/c_R (bbpd.benchmarks.strip: U' at the steady speed), fed into
+Freund's equation of motion (bbpd.crack_motion, criterion 'kinetic') for the Mode-I plate, gives
+l(t) without a fitted parameter; its L2 error against the PD tip histories of
+examples/mode1-propagation (results/tip_histories.csv) stands beside the two
+constant-toughness forms' (recomputed here the same way).
 
 Commands: examples/strip-steady-crack/README.md.
 """
