@@ -26,6 +26,7 @@ import numpy as np
 from bbpd import readers
 from bbpd import reference as ref
 from bbpd.kernels import KERNELS
+from bbpd.markdown import table as md_table
 from bbpd.runner import LammpsError, run_lammps
 
 HORIZON_RATIOS = (1, 2, 3, 5, 10)    # m = delta/dx
@@ -57,21 +58,10 @@ def plate_side(m):
 
 # --------------------------------------------------------------------------- NumPy side
 
-def family_offsets(m, dx=DX):
-    """Lattice vectors xi (n x 3) of one family of the infinite square lattice, delta = m dx:
-    every |xi| < delta + dx/2, as the pair style builds them."""
-    reach = int(math.ceil(m + 0.5))
-    a = np.arange(-reach, reach + 1)
-    ij = np.array([(p, q) for p in a for q in a if (p, q) != (0, 0)], dtype=float)
-    xi = np.column_stack([ij * dx, np.zeros(len(ij))])
-    keep = np.linalg.norm(xi, axis=1) < (m + 0.5) * dx
-    return xi[keep]
-
-
 def bond_coefficients(kernel, m, youngs=YOUNGS, dx=DX, thickness=THICKNESS):
     """b_j = c(xi_j) C_v V_j / xi_j over one interior family (plane stress)."""
     delta = m * dx
-    xi = family_offsets(m, dx)
+    xi = ref.grid_family(m, 2) * dx    # every |xi| < delta + dx/2, as the pair style builds it
     r = np.linalg.norm(xi, axis=1)
     c0 = ref.micromodulus(kernel, "plane/stress", youngs, delta, thickness)
     return xi, c0 * ref.kernel(kernel)(r / delta) * ref.partial_volume(r, delta, dx) \
@@ -274,26 +264,23 @@ def drift_table(workdir, log=print):
 
 # --------------------------------------------------------------------------- report
 
+def _map_row(r):
+    lead = [r["kernel"], r["m"], f"{r['side']} x {r['side']}"]
+    if r.get("degenerate"):
+        return lead + ["-"] * 4
+    y, mid = r["bound_printed"], 0.5 * (r["measured_lo"] + r["measured_hi"])
+    return lead + [f"{y:.4e}", f"{r['exact_limit'] / y:.4f}",
+                   f"{r['measured_lo'] / y:.4f}-{r['measured_hi'] / y:.4f}", f"{mid / r['exact_limit']:.4f}"]
+
+
 def markdown(rows, drifts):
-    lines = ["| kernel | m | N x N | Y printed (s) | exact 2/omega_max / Y | measured / Y |"
-             " measured / exact |",
-             "|---|---|---|---|---|---|---|"]
-    for r in rows:
-        if r.get("degenerate"):
-            lines.append(f"| {r['kernel']} | {r['m']} | {r['side']} x {r['side']} | "
-                         "- | - | - | - |")
-            continue
-        y = r["bound_printed"]
-        mid = 0.5 * (r["measured_lo"] + r["measured_hi"])
-        lines.append(f"| {r['kernel']} | {r['m']} | {r['side']} x {r['side']} | {y:.4e} | "
-                     f"{r['exact_limit'] / y:.4f} | {r['measured_lo'] / y:.4f}-"
-                     f"{r['measured_hi'] / y:.4f} | {mid / r['exact_limit']:.4f} |")
-    lines += ["", "| kernel | m | plate | steps | dt / Y | energy drift | energy fluctuation |",
-              "|---|---|---|---|---|---|---|"]
-    for d in drifts:
-        lines.append(f"| {d['kernel']} | {d['m']} | {d['side']} x {d['side']} free | "
-                     f"{d['steps']} | {d['ratio']} | {d['drift']:+.2e} | {d['fluctuation']:.2e} |")
-    return "\n".join(lines) + "\n"
+    return (md_table(["kernel", "m", "N x N", "Y printed (s)", "exact 2/omega_max / Y",
+                      "measured / Y", "measured / exact"], map(_map_row, rows)) + "\n\n"
+            + md_table(["kernel", "m", "plate", "steps", "dt / Y", "energy drift",
+                        "energy fluctuation"],
+                       ([d["kernel"], d["m"], f"{d['side']} x {d['side']} free", d["steps"],
+                         d["ratio"], f"{d['drift']:+.2e}", f"{d['fluctuation']:.2e}"] for d in drifts))
+            + "\n")
 
 
 def main(argv=None):
