@@ -344,47 +344,27 @@ def locked(rows):
 
 
 def verdict_table(rows):
-    """The README's verdict as a table: per grid and distance from the tip (verdict()), the RMS
-    deviation from each criterion with the mean deviation and its standard error, the nearest
-    criterion overall and per kernel, the criteria within two standard errors, the grid's pull
-    and the kernels' spread (mean and largest)."""
+    """verdict() per grid and distance from the tip as a table: the README's verdict, and
+    REPORT.md's over the runs the report made."""
     out = []
-    for dx in (COARSE[0], FINE[0]):
+    for dx in sorted({r["dx"] for r in rows if r["ncross"] == NCROSS}, reverse=True):
         for dist in ("2d", "4d"):
             v = verdict(rows, dist, dx=dx)
             if v["n"] < 2:
                 continue
-            admitted = [CRITERION_NAMES[c] for c in CRITERIA if abs(v["bias"][c]) <= 2 * v["se"][c]]
             out.append([f"{dx * 1e3:g}", dist[0], v["n"],
                         *(f"{v['rms'][c]:.1f} ({v['bias'][c]:+.1f} ± {v['se'][c]:.1f})"
                           for c in CRITERIA),
-                        CRITERION_NAMES[v["best"]], ", ".join(admitted) or "none",
+                        CRITERION_NAMES[v["best"]],
+                        ", ".join(CRITERION_NAMES[c] for c in admitted(v)) or "none",
                         "; ".join(f"{k} {CRITERION_NAMES[c]}" for k, c in v["best_kernel"].items()),
-                        f"{v['pull_mean']:.1f} ({v['pull_max']:.1f})",
-                        f"{v['kernel_spread_mean']:.1f} ({v['kernel_spread_max']:.1f})"])
+                        f"{cell(v['pull_mean'], '.1f')} ({cell(v['pull_max'], '.1f')})",
+                        f"{cell(v['kernel_spread_mean'], '.1f')} "
+                        f"({cell(v['kernel_spread_max'], '.1f')})"])
     head = ("dx (mm)", "horizons from the tip", "mixed-mode runs",
             *(f"{CRITERION_NAMES[c]}: RMS (mean ± s.e.), deg" for c in CRITERIA), "nearest",
             "within 2 s.e.", "nearest per kernel", "crack 0 -> 22.5 deg to the rows: change, "
             "mean (max), deg", "kernels' spread at one case, mean (max), deg")
-    return md_table(head, out)
-
-
-def deviation_table(rows):
-    """REPORT.md's table under the runs: per grid and distance from the tip, the RMS deviation
-    of the mixed-mode angles from each criterion and the nearest criterion"""
-    main = [r for r in rows if r["ncross"] == NCROSS]
-    out = []
-    for grid in sorted({r["dx"] for r in main}, reverse=True):
-        on = [r for r in main if r["dx"] == grid]
-        for dist in ("2d", "4d"):
-            mixed = [r for r in on if r["psi"] > 0 and r[f"angle_{dist}"] is not None]
-            if mixed:
-                dev = {c: rms([r[f"angle_{dist}"] - r[c] for r in mixed]) for c in CRITERIA}
-                out.append([f"{grid * 1e3:g}", dist[0], len(mixed),
-                            *(f"{dev[c]:.1f}" for c in CRITERIA),
-                            CRITERION_NAMES[min(CRITERIA, key=dev.get)]])
-    head = ("dx (mm)", "horizons from the tip", "mixed-mode runs",
-            *(f"RMS from {CRITERION_NAMES[c]} (deg)" for c in CRITERIA), "nearest")
     return md_table(head, out)
 
 
@@ -411,7 +391,7 @@ def section(specs, results, figdir, notes):
         plot(rows, Path(figdir) / "kink_angle.png")
         return ["kink_angle.png"]
     return jobmod.section(REPORT_TITLE, REPORT_SETUP, specs, results,
-                          lambda rows: table(rows) + "\n\n" + deviation_table(rows), summary_text,
+                          lambda rows: table(rows) + "\n\n" + verdict_table(rows), summary_text,
                           figure, notes)
 
 
