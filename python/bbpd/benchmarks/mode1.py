@@ -131,28 +131,15 @@ def _row(res):
             f"{res['wall_time']:6.1f} s ({res['nprocs']} rank, dt {res['dt']:.3g})")
 
 
-def table2(work, dxs=(0.1, 0.05, 0.025), nprocs=1, model="plane/stress"):
+def paper_table(work, cases, nprocs=1, model="plane/stress"):
+    """Run cases {key: (kernel, dx, the paper's (peak, L2))} and print ours beside the paper's
+    (Table 2: the Gaussian by dx; Table 3: the kernels at one dx); returns {key: result}."""
+    print("case | paper's numbers: peak L2 | ours, paper convention: peak L2 | ours, "
+          "consistent: peak L2 | K_I from J, consistent: peak L2 | wall time")
     rows = {}
-    print("Table 2 (Gaussian, m = 5): dx | paper's numbers: peak L2 | ours, paper convention: "
-          "peak L2 | ours, consistent: peak L2 | K_I from J, consistent: peak L2 | wall time")
-    for dx in dxs:
-        res = run(Path(work) / f"gaussian_{dx}", "gaussian", dx, model, nprocs=nprocs)
-        rows[dx] = res
-        ref = PAPER_TABLE2.get(dx, (float("nan"), float("nan")))
-        print(f"{dx:6.3f} | {ref[0]:6.2f} {ref[1]:6.2f} | {_row(res)}")
-    return rows
-
-
-def table3(work, dx=0.05, nprocs=1, model="plane/stress"):
-    rows = {}
-    print(f"Table 3 (dx = {dx}, m = 5): kernel | paper's numbers: peak L2 | ours, paper "
-          "convention: peak L2 | ours, consistent: peak L2 | K_I from J, consistent: peak L2 | "
-          "wall time")
-    for kernel in KERNELS:
-        res = run(Path(work) / f"{kernel}_{dx}", kernel, dx, model, nprocs=nprocs)
-        rows[kernel] = res
-        ref = PAPER_TABLE3[kernel]
-        print(f"{kernel:10s} | {ref[0]:6.2f} {ref[1]:6.2f} | {_row(res)}")
+    for key, (kernel, dx, ref) in cases.items():
+        rows[key] = run(Path(work) / f"{kernel}_{dx}", kernel, dx, model, nprocs=nprocs)
+        print(f"{key} | {ref[0]:6.2f} {ref[1]:6.2f} | {_row(rows[key])}")
     return rows
 
 
@@ -219,8 +206,11 @@ def main(argv=None):
                          "from examples/mode1-semi-infinite/results/tips.csv)")
     ap.add_argument("--figures", help="folder for Fig. 9 and Fig. 10 PNGs")
     args = ap.parse_args(argv)
-    rows2 = table2(args.work, args.dx, args.nprocs, args.model) if args.table2 else {}
-    rows3 = table3(args.work, 0.05, args.nprocs, args.model) if args.table3 else {}
+    nan = (float("nan"), float("nan"))
+    rows2 = paper_table(args.work, {dx: ("gaussian", dx, PAPER_TABLE2.get(dx, nan))
+                                    for dx in args.dx}, args.nprocs, args.model) if args.table2 else {}
+    rows3 = paper_table(args.work, {k: (k, 0.05, PAPER_TABLE3[k]) for k in KERNELS},
+                        args.nprocs, args.model) if args.table3 else {}
     if args.tips or args.tips_csv:
         out = tip_study(args.work, nprocs=args.nprocs)
         if args.tips_csv:
