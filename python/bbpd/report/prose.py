@@ -6,30 +6,23 @@ from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import mode1
 from bbpd.kernels import KERNELS
 
-from .tables import DISP_KDX, f, run_time
-
 NEGATIVE_VG = -1.0e-3      # measured v_g/v below this counts as negative (the ridge's noise
                            # in the gradient is ~1e-5 of v)
 # largest share of the extrapolation's excess that K_II from J may carry for the verdict
 # "the excess is in the extrapolation" (and 1 minus it for "in the field")
 MODE2_FIELD_SHARE = 0.25
 
-DISPERSION = ("Measured ridge against the relation LAMMPS integrates (eq. 31 with C_v and the "
-              "velocity-Verlet shift), k dx {k0:g}-{k1:g}: largest deviation {dev:.1e} ({worst}). "
-              "Phase velocity c/v at k dx = {kdx:g}: {phase} (the paper: gaussian least, constant "
-              "most dispersive). Negative group velocity: eq. 31 as printed {printed} (the "
-              "paper's Fig. 6); with C_v {cv}; measured {measured} (smallest v_g/v: {min_vg}).")
-MODE1_TABLE3 = ("Table 3, L2 errors rank: consistent {consistent}, paper's convention {paper}, "
-                "the paper {published}; consistent L2 minus the paper's: {diff} points.")
-MODE1_TABLE2 = ("Table 2 (Gaussian), dx = {dxs} m: consistent L2 {l2} %, run times {times} s; "
-                "the paper {published} %.")
+DISPERSION = ("Largest deviation of the measured ridge from the relation LAMMPS integrates (eq. 31 "
+              "with C_v and the velocity-Verlet shift), k dx {k0:g}-{k1:g}: {dev:.1e} ({worst}). "
+              "Negative group velocity measured: {measured}; eq. 31 as printed: {printed} (the "
+              "paper's Fig. 6); with C_v: {cv}.")
+MODE1 = ("Table 3, L2 errors (consistent constants) rank {ours}; the paper's {paper}.")
 MODE1_J = ("K_I from the J-integral (annulus 0.5-1.5 m), peak errors {j[0]:.2f}-{j[1]:.2f} %; "
            "displacement extrapolation {d[0]:.2f}-{d[1]:.2f} %.")
-MODE2 = ("K_II/K_II,ref at the end of the window (extrapolation, tip on the first intact column, "
-         "r1 = dx, r2 = 2 dx): {ratio[0]:.3f}-{ratio[1]:.3f}. At dx = {dx:g} mm the L2 errors "
-         "rank {l2} and the peak errors {peak}.")
-MODE2_J = ("K_II from the J-integral (annulus 5-12.5 mm) at the window end: {j[0]:.3f}-{j[1]:.3f} "
-           "of the reference; the excess lives in the {where} (share J carries: {share}).")
+MODE2 = ("K_II/K_II,ref at the end of the window by extrapolation (tip on the first intact "
+         "column, r1 = dx, r2 = 2 dx): {ratio[0]:.3f}-{ratio[1]:.3f}.")
+MODE2_J = ("From the J-integral (annulus 5-12.5 mm): {j[0]:.3f}-{j[1]:.3f}; the excess lives in "
+           "the {where}.")
 KW_ORDER = ("dx = {dx:g} mm: the damage band leaves the tips in the order {order}; the paper's "
             "initiation: {paper}.")
 KW_SYMMETRY = "Mirror symmetry of the two cracks: tip mismatch <= {tip:.1g} mm."
@@ -51,39 +44,23 @@ def _span(values):
 
 def dispersion_text(numbers, table):
     """numbers: tables.dispersion_table's; table: dispersion.analytic_table's."""
-    phase, min_vg, dev = numbers["phase"], numbers["min_vg"], numbers["dev"]
+    min_vg, dev = numbers["min_vg"], numbers["dev"]
     if not dev:
         return []
     worst = max(dev, key=dev.get)
     negative = {c: _names([k for k in KERNELS if table[k][c]["group_negative"]])
                 for c in ("discrete", "discrete_cv")}
     return [DISPERSION.format(
-        k0=disp.KDX_RANGE[0], k1=disp.KDX_RANGE[1], dev=dev[worst], worst=worst, kdx=DISP_KDX[-1],
-        phase=ranking({k: p[-1] for k, p in phase.items()}), printed=negative["discrete"],
-        cv=negative["discrete_cv"],
+        k0=disp.KDX_RANGE[0], k1=disp.KDX_RANGE[1], dev=dev[worst], worst=worst,
         measured=_names([k for k, g in min_vg.items() if g is not None and g < NEGATIVE_VG]),
-        min_vg=", ".join(f"{k} {g:.3f}" for k, g in min_vg.items() if g is not None))]
+        printed=negative["discrete"], cv=negative["discrete_cv"])]
 
 
-def mode1_text(ok, rows2_ok, rows3_ok):
-    """ok: every finished run by (kernel, dx); rows2_ok: Table 2's by dx; rows3_ok: Table 3's
-    by kernel."""
-    text = []
-    if rows3_ok:
-        text.append(MODE1_TABLE3.format(
-            consistent=ranking({k: r["consistent"]["l2"] for k, r in rows3_ok.items()}),
-            paper=ranking({k: r["paper"]["l2"] for k, r in rows3_ok.items()}),
-            published=ranking({k: mode1.PAPER_TABLE3[k][1] for k in rows3_ok}),
-            diff=", ".join(f"{k} {r['consistent']['l2'] - mode1.PAPER_TABLE3[k][1]:+.2f}"
-                           for k, r in rows3_ok.items())))
-    if len(rows2_ok) > 1:
-        dxs = sorted(rows2_ok, reverse=True)
-        text.append(MODE1_TABLE2.format(
-            dxs=" -> ".join(f"{dx:g}" for dx in dxs),
-            l2=" -> ".join(f"{rows2_ok[dx]['consistent']['l2']:.2f}" for dx in dxs),
-            times=" -> ".join(f(run_time(rows2_ok[dx]), ".1f") for dx in dxs),
-            published=" -> ".join(f"{mode1.PAPER_TABLE2[dx][1]:.2f}" for dx in dxs
-                                  if dx in mode1.PAPER_TABLE2)))
+def mode1_text(ok, rows3_ok):
+    """ok: every finished run by (kernel, dx); rows3_ok: Table 3's by kernel."""
+    text = [MODE1.format(ours=ranking({k: r["consistent"]["l2"] for k, r in rows3_ok.items()}),
+                         paper=ranking({k: mode1.PAPER_TABLE3[k][1] for k in rows3_ok}))
+            ] if rows3_ok else []
     withj = [key for key, r in ok.items() if "jintegral" in r]
     if withj:
         text.append(MODE1_J.format(j=_span([ok[k]["jintegral"]["consistent"]["peak"] for k in withj]),
@@ -114,16 +91,9 @@ def mode2_text(ok):
     """ok: (kernel, dx) -> finished result."""
     if not ok:
         return []
-    dx = min(d for _, d in ok)
-    finest = {k: r for (k, d), r in ok.items() if d == dx}
-    text = [MODE2.format(ratio=_span([r["k_end"] / r["k_end_exact"] for r in ok.values()]),
-                         dx=dx * 1e3, l2=ranking({k: r["l2"] for k, r in finest.items()}),
-                         peak=ranking({k: r["peak"] for k, r in finest.items()}))]
     j = mode2_j(ok)
-    if j:
-        text.append(MODE2_J.format(j=_span(j["j"].values()), where=j["where"],
-                                   share=f(max(j["share"].values(), default=None), ".2f")))
-    return text
+    return ([MODE2.format(ratio=_span([r["k_end"] / r["k_end_exact"] for r in ok.values()]))]
+            + ([MODE2_J.format(j=_span(j["j"].values()), where=j["where"])] if j else []))
 
 
 def kw_text(ok):

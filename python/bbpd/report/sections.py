@@ -59,7 +59,7 @@ def dispersion_section(specs, results, figdir, notes):
 def mode1_section(specs, results, figdir, notes):
     by, ok = tables.mode1_results(specs, results)
     (h2, rows2, rows2_ok), (h3, rows3, rows3_ok) = tables.mode1_tables(by, ok)
-    text = prose.mode1_text(ok, rows2_ok, rows3_ok)
+    text = prose.mode1_text(ok, rows3_ok)
     figs = figures.mode1_figures(rows2_ok, rows3_ok, figdir, notes)
     table = ("Table 2, Gaussian kernel:\n\n" + md_table(h2, rows2)
              + f"\n\nTable 3, dx = {MODE1_TABLE3_DX:g} m:\n\n" + md_table(h3, rows3))
