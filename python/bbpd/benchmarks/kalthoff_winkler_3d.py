@@ -26,6 +26,7 @@ from bbpd.provenance import cpu
 from bbpd.jobs import ROOT
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as _f
+from bbpd.markdown import table as md_table
 
 CSV = ROOT / "examples" / "kalthoff-winkler" / "results" / "kw3d.csv"
 PLATE_THICKNESS = 9.0e-3          # m, the experiment's plate
@@ -121,23 +122,22 @@ def run_case(workdir, setup, dx, m=M, reuse=False, nprocs=None):
 
 
 def table(rows, command=None):
-    head = ("| setup | dx (mm) | m | delta (mm) | horizons through 9 mm | atoms | bonds | steps | "
-            "first bond (us) | damage band (us) | initial (deg) | fit, mid-plane (deg) | "
-            "fit, faces (deg) | chord, mid-plane / faces (deg) | crack length (mm) | crack stops (us) | "
-            "loop (s) | memory (MB) | ranks |")
-    lines = [head, "|" + "---|" * 19]
-    for r in sorted(rows, key=lambda r: (-r["dx_mm"], r["setup"])):
-        faces = ("-" if r["fit_face_lo_deg"] is None else
-                 f"{r['fit_face_lo_deg']:.1f} / {r['fit_face_hi_deg']:.1f}")
-        lines.append("| " + " | ".join([
-            r["setup"].upper(), f"{r['dx_mm']:g}", f"{r['m']:g}", f"{r['delta_mm']:g}",
-            _f(r["horizons_through"], ".0f"), _f(r["atoms"], ".0f"), _f(r["bonds"], ".3g"),
-            _f(r["steps"], ".0f"), _f(r["first_bond_us"], ".1f"), _f(r["band_us"], ".1f"),
-            _f(r["initial_deg"], ".1f"), _f(r["fit_deg"], ".1f"), faces,
-            f"{_f(r['chord_deg'], '.1f')} / {_f(r['chord_face_deg'], '.1f')}",
-            _f(r["length_end_mm"], ".0f"), r["crack_stops"], _f(r["loop_s"], ".0f"), _f(r["memory_MB"], ".0f"),
-            f"{r['nprocs']:g}"]) + " |")
-    out = "\n".join(lines)
+    def faces(r):
+        return ("-" if r["fit_face_lo_deg"] is None else
+                f"{r['fit_face_lo_deg']:.1f} / {r['fit_face_hi_deg']:.1f}")
+    out = md_table(
+        ("setup", "dx (mm)", "m", "delta (mm)", "horizons through 9 mm", "atoms", "bonds", "steps",
+         "first bond (us)", "damage band (us)", "initial (deg)", "fit, mid-plane (deg)",
+         "fit, faces (deg)", "chord, mid-plane / faces (deg)", "crack length (mm)",
+         "crack stops (us)", "loop (s)", "memory (MB)", "ranks"),
+        ([r["setup"].upper(), f"{r['dx_mm']:g}", f"{r['m']:g}", f"{r['delta_mm']:g}",
+          _f(r["horizons_through"], ".0f"), _f(r["atoms"], ".0f"), _f(r["bonds"], ".3g"),
+          _f(r["steps"], ".0f"), _f(r["first_bond_us"], ".1f"), _f(r["band_us"], ".1f"),
+          _f(r["initial_deg"], ".1f"), _f(r["fit_deg"], ".1f"), faces(r),
+          f"{_f(r['chord_deg'], '.1f')} / {_f(r['chord_face_deg'], '.1f')}",
+          _f(r["length_end_mm"], ".0f"), r["crack_stops"], _f(r["loop_s"], ".0f"),
+          _f(r["memory_MB"], ".0f"), f"{r['nprocs']:g}"]
+         for r in sorted(rows, key=lambda r: (-r["dx_mm"], r["setup"]))))
     return out if command is None else f"Made by `{command}`.\n\n" + out
 
 

@@ -18,6 +18,7 @@ from bbpd import csvfile
 from bbpd.benchmarks import mode1
 from bbpd.provenance import cpu
 from bbpd.kernels import KERNELS
+from bbpd.markdown import table as md_table
 
 ROOT = Path(__file__).resolve().parents[3]
 CSV = ROOT / "examples" / "mode1-semi-infinite" / "results" / "mode1_lps.csv"
@@ -51,17 +52,18 @@ def _bond(bond_rows, kernel, dx):
 
 
 def table(rows, bond_rows, command=None):
-    head = ("| kernel | dx (m) | LPS nu = 0.3, plane strain: DSIF peak / L2 (%) | J-integral peak / "
-            "L2 (%) | bond-based plane stress (nu = 1/3), consistent: DSIF peak / L2 (%) | "
-            "J-integral peak / L2 (%) | LPS loop (s) |")
-    lines = ([f"Made by `{command}`.", ""] if command else []) + [head, "|" + "---|" * 7]
-    for r in sorted(rows, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx_m"])):
+    def bond(r):
         b = _bond(bond_rows, r["kernel"], r["dx_m"])
-        bond = (f"{b['consistent_peak']:.2f} / {b['consistent_l2']:.2f} | {b['j_peak']:.2f} / "
-                f"{b['j_l2']:.2f} | " if b else "- | - | ")
-        lines.append(f"| {r['kernel']} | {r['dx_m']:g} | {r['peak_pct']:.2f} / {r['l2_pct']:.2f} | "
-                     f"{r['j_peak_pct']:.2f} / {r['j_l2_pct']:.2f} | {bond}{r['loop_s']:.1f} |")
-    return "\n".join(lines)
+        return ([f"{b['consistent_peak']:.2f} / {b['consistent_l2']:.2f}",
+                 f"{b['j_peak']:.2f} / {b['j_l2']:.2f}"] if b else ["-", "-"])
+    out = md_table(
+        ("kernel", "dx (m)", "LPS nu = 0.3, plane strain: DSIF peak / L2 (%)",
+         "J-integral peak / L2 (%)", "bond-based plane stress (nu = 1/3), consistent: DSIF peak / "
+         "L2 (%)", "J-integral peak / L2 (%)", "LPS loop (s)"),
+        ([r["kernel"], f"{r['dx_m']:g}", f"{r['peak_pct']:.2f} / {r['l2_pct']:.2f}",
+          f"{r['j_peak_pct']:.2f} / {r['j_l2_pct']:.2f}", *bond(r), f"{r['loop_s']:.1f}"]
+         for r in sorted(rows, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx_m"]))))
+    return f"Made by `{command}`.\n\n" + out if command else out
 
 
 def main(argv=None):
