@@ -17,7 +17,6 @@ Commands: examples/kink-mixed-mode/README.md.
 """
 
 import argparse
-import csv
 import json
 import math
 import re
@@ -28,7 +27,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.lines import Line2D
 
-from bbpd import crack_path, kink, plots, readers
+from bbpd import crack_path, csvfile, kink, plots, readers
 from bbpd import jobs as jobmod
 from bbpd.jobs import Job, run_jobs
 from bbpd.kernels import COLORS, KERNELS
@@ -235,34 +234,20 @@ def row_of(res):
 
 def write_csv(rows, path, command):
     path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, "w", newline="") as fh:
-        fh.write(f"# {command}\n# CPU: {cpu()}; nprocs MPI ranks per run (empty: "
-                 "one), on a shared machine (wall_s); angles in degrees (theta < 0 for K_II > 0), "
-                 "extension in horizons\n")
-        w = csv.writer(fh)
-        w.writerow(COLUMNS)
-        for r in rows:
-            w.writerow([("" if r.get(c) is None else
-                         (f"{r[c]:.6g}" if isinstance(r[c], float) else r[c])) for c in COLUMNS])
+    csvfile.write_csv(path, [{c: r.get(c) for c in COLUMNS} for r in rows], [
+        command, f"CPU: {cpu()}; nprocs MPI ranks per run (empty: one), on a shared machine "
+        "(wall_s); angles in degrees (theta < 0 for K_II > 0), extension in horizons"])
 
 
 def read_rows(path):
-    """Rows of a CSV written by write_csv, with numbers as floats and dx in m."""
-    with open(path) as fh:
-        raw = list(csv.DictReader(line for line in fh if not line.startswith("#")))
-    rows = []
-    for r in raw:
-        row = {}
-        for k, v in r.items():
-            if k == "kernel":
-                row[k] = v
-            elif k == "halted":
-                row[k] = v == "True"
-            else:    # rounded so that no -0.0 reaches the tables
-                row[k] = None if v == "" else round(float(v), 9) + 0.0
-        row["dx"] = row["dx_mm"] * 1e-3
-        row["delta"] = row["m"] * row["dx"]
-        rows.append(row)
+    """Rows of a CSV written by write_csv, numbers as floats (rounded, so that no -0.0 reaches
+    the tables), dx in m."""
+    rows = csvfile.read_csv(path)[1]
+    for r in rows:
+        r.update({k: round(v, 9) + 0.0 for k, v in r.items() if isinstance(v, float)},
+                 halted=r["halted"] == "True")
+        r["dx"] = r["dx_mm"] * 1e-3
+        r["delta"] = r["m"] * r["dx"]
     return rows
 
 
