@@ -11,7 +11,6 @@ Commands: examples/strip-steady-crack/README.md.
 """
 
 import argparse
-import csv
 import sys
 from pathlib import Path
 
@@ -52,15 +51,6 @@ def taller_shift(rows, kernel, m=M_MODE1, H_over_delta=strip.SWEEP_H_OVER_DELTA,
         return v[0] if v else None
     lo, hi = speed(H_over_delta), speed(taller)
     return None if lo is None or hi is None else hi / lo
-
-
-def histories(path=HISTORIES):
-    """{(kernel, dx): (t, l)} of the PD tip histories"""
-    out = {}
-    with open(path) as f:
-        for r in csv.DictReader(f):
-            out.setdefault((r["kernel"], float(r["dx"])), []).append((float(r["t"]), float(r["l"])))
-    return {k: tuple(np.array(c) for c in zip(*v)) for k, v in out.items()}
 
 
 def compare(law, t, l_pd, problem=None):
@@ -116,7 +106,7 @@ def main(argv=None):
     p.add_argument("--histories", default=str(HISTORIES))
     p.add_argument("--csv")
     a = p.parse_args(argv)
-    rows = closure_rows(strip.read_rows(a.strip), histories(a.histories))
+    rows = closure_rows(strip.read_rows(a.strip), mp.read_histories(a.histories))
     for r in rows:
         print(f"{r['kernel']} dx {r['dx']:g}: L2 kinetic {r['l2_kinetic_pct']:.1f} %, toughness "
               f"{r['l2_toughness_pct']:.1f} %, energy {r['l2_energy_pct']:.1f} %; extension at 3 t_c "
