@@ -22,8 +22,9 @@ def _num(v, digits=6):
     return f"{float(v):.{digits}g}"
 
 
-def write_csv(path, rows, comments=()):
-    columns = list(rows[0])
+def write_csv(path, rows, comments=(), columns=None):
+    """rows (dicts) in columns (default: the first row's keys), the comments first"""
+    columns = list(columns or rows[0])
     with open(path, "w", newline="") as fh:
         for line in comments:
             fh.write(f"# {line}\n")

@@ -26,7 +26,6 @@ report does not make already, and the timing repeats; section() turns the result
 report/csv/work_precision.csv, report/work_precision_<benchmark>.png and a report section.
 """
 
-import csv
 import importlib
 import math
 import shutil
@@ -37,6 +36,7 @@ import numpy as np
 
 from bbpd.benchmarks import dispersion
 from bbpd.benchmarks.kalthoff_winkler import EXPERIMENT_ANGLE_DEG
+from bbpd import csvfile
 from bbpd import jobs as jobmod
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import KERNELS
@@ -294,23 +294,12 @@ def write_csv(path, table):
     """table: rows() dicts -> CSV with CSV_COLUMNS (resolution: dx in m)."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    with path.open("w", newline="") as fh:
-        w = csv.writer(fh)
-        w.writerow(CSV_COLUMNS)
-        for r in table:
-            w.writerow([r["benchmark"], r["kernel"], r["method"], f"{r['resolution']:.10g}",
-                        r["error_metric"], f"{r['error']:.6g}", f"{r['wall_s']:.4g}"])
+    csvfile.write_csv(path, table, columns=CSV_COLUMNS)
     return path
 
 
 def read_csv(path):
-    with Path(path).open(newline="") as fh:
-        out = []
-        for r in csv.DictReader(fh):
-            for key in ("resolution", "error", "wall_s"):
-                r[key] = float(r[key])
-            out.append(r)
-        return out
+    return csvfile.read_csv(path)[1]
 
 
 # --------------------------------------------------------------------------- cost of a target
