@@ -58,32 +58,23 @@ def plate_side(m):
 
 # --------------------------------------------------------------------------- NumPy side
 
-def bond_coefficients(kernel, m, youngs=YOUNGS, dx=DX, thickness=THICKNESS):
-    """b_j = c(xi_j) C_v V_j / xi_j over one interior family (plane stress)."""
-    delta = m * dx
-    xi = ref.grid_family(m, 2) * dx    # every |xi| < delta + dx/2, as the pair style builds it
-    r = np.linalg.norm(xi, axis=1)
-    c0 = ref.micromodulus(kernel, "plane/stress", youngs, delta, thickness)
-    return xi, c0 * ref.kernel(kernel)(r / delta) * ref.partial_volume(r, delta, dx) \
-        * dx * dx * thickness / r
-
-
 def predicted_bound(kernel, m, youngs=YOUNGS, density=DENSITY, dx=DX):
-    """Y = sqrt(2 rho / sum_j b_j) of an atom with a full family (nan if sum_j b_j <= 0)."""
-    _, b = bond_coefficients(kernel, m, youngs, dx)
+    """Y = sqrt(2 rho / sum_j b_j), b_j = c(xi_j) C_v V_j / xi_j over the full family of an
+    interior atom (plane stress; nan if sum_j b_j <= 0)."""
+    delta = m * dx
+    r = np.linalg.norm(ref.grid_family(m, 2), axis=1) * dx    # the family the pair style builds
+    b = (ref.micromodulus(kernel, "plane/stress", youngs, delta, THICKNESS)
+         * ref.kernel(kernel)(r / delta) * ref.partial_volume(r, delta, dx) * dx * dx * THICKNESS / r)
     return math.sqrt(2.0 * density / b.sum()) if b.sum() > 0.0 else math.nan
 
 
 def exact_limit(kernel, m, side, youngs=YOUNGS, density=DENSITY, dx=DX):
-    """2/omega_max of a periodic side x side plate (lattice dynamics, see the module doc)."""
-    xi, b = bond_coefficients(kernel, m, youngs, dx)
-    e = xi[:, :2] / np.linalg.norm(xi[:, :2], axis=1)[:, None]
+    """2/omega_max of a periodic side x side plate: the largest eigenvalue of the lattice's
+    dynamic matrix (bbpd.reference.dynamic_matrix) over the plate's k grid."""
     k1 = 2.0 * math.pi * np.arange(side) / (side * dx)
-    kx, ky = [g.ravel() for g in np.meshgrid(k1, k1, indexing="ij")]
-    w = b[None, :] * (1.0 - np.cos(np.outer(kx, xi[:, 0]) + np.outer(ky, xi[:, 1])))
-    dxx, dyy, dxy = w @ (e[:, 0] ** 2), w @ (e[:, 1] ** 2), w @ (e[:, 0] * e[:, 1])
-    lam = 0.5 * (dxx + dyy) + np.sqrt(0.25 * (dxx - dyy) ** 2 + dxy ** 2)
-    return 2.0 / math.sqrt(lam.max() / density) if lam.max() > 0.0 else math.nan
+    lam = max(np.linalg.eigvalsh(ref.dynamic_matrix(kernel, "plane/stress", youngs, m, dx,
+                                                    (kx, ky, 0.0)))[-1] for kx in k1 for ky in k1)
+    return 2.0 / math.sqrt(lam / density) if lam > 0.0 else math.nan
 
 
 # --------------------------------------------------------------------------- LAMMPS side
