@@ -23,7 +23,7 @@ from bbpd import crack_tip, csvfile, freund, plots, readers
 from bbpd import jobs as jobmod
 from bbpd.provenance import cpu
 from bbpd.kernels import KERNELS
-from bbpd.runner import run_lammps
+from bbpd.runner import run_or_reuse
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "crack-branching" / "in.crack_branching"
@@ -162,10 +162,7 @@ def run_case(workdir, kernel, delta, m, sigma, name=None, reuse=False, nprocs=1)
     dx = delta / m
     workdir = Path(workdir)
     vars_ = {"kernel": kernel, "dx": repr(dx), "m": m, "sigma": repr(sigma)}
-    if reuse:
-        output = (workdir / "log.lammps").read_text()
-    else:
-        output = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_).output
+    output, _ = run_or_reuse(EXAMPLE, workdir, vars_, nprocs, reuse=reuse)
     loop_s, _ = readers.loop_time(output)
     s0 = readers.pair_setup(output)["critical_stretch"]
     head = output.split("CRACK-BRANCHING:")[-1].split("\n")[0].split()

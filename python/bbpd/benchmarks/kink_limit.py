@@ -33,8 +33,7 @@ def mix_of(r):
 
 
 AGREE_DEG = 0.05     # criteria closer than the table's last digit name no nearest one (pure Mode I)
-NAMES = {"hoop_stress": "max. hoop stress", "hoop_strain": "max. hoop strain",
-         "energy": "max. energy release rate"}
+NAMES = kinkbench.CRITERION_NAMES
 
 
 def _group_key(g):

@@ -11,7 +11,6 @@ examples/mode1-propagation/README.md defines each and has the commands.
 """
 
 import argparse
-import csv
 import sys
 from pathlib import Path
 
@@ -168,21 +167,16 @@ def merge_rows(earlier, new):
 
 def write_histories(path, rows):
     """Tip histories of every run (for the figures): kernel, dx, t, l."""
-    with open(path, "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(("kernel", "dx", "t", "l"))
-        for r in rows:
-            for t, l in zip(r["t_tip"], r["l_pd"]):
-                w.writerow((r["kernel"], f"{r['dx']:g}", f"{t:.6g}", f"{l:.6g}"))
+    csvfile.write_table(path, [{"kernel": r["kernel"], "dx": r["dx"], "t": t, "l": l} for r in rows
+                               for t, l in zip(r["t_tip"], r["l_pd"])], ("kernel", "dx", "t", "l"),
+                        text=("kernel",))
 
 
 def read_histories(path):
     """{(kernel, dx): (t, l)} of write_histories' file"""
     hist = {}
-    for ln in Path(path).read_text().splitlines()[1:]:
-        if ln:
-            k, dx, t, l = ln.split(",")
-            hist.setdefault((k, float(dx)), []).append((float(t), float(l)))
+    for r in csvfile.read_table(path, text=("kernel",)):
+        hist.setdefault((r["kernel"], r["dx"]), []).append((r["t"], r["l"]))
     return {key: tuple(np.array(v).T) for key, v in hist.items()}
 
 
