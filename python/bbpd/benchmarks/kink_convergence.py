@@ -283,9 +283,10 @@ def section(specs, results, figdir, notes):
     return jobmod.section(
         REPORT_TITLE, f"Gaussian kernel, pure Mode II, crack along the rows, delta = "
         f"{DELTA * 1e3:g} mm; see examples/kink-mixed-mode/README.md. {committed}", specs, results,
-        lambda rows: table(rows) + "\n\n" + sequences_table(rows), not_run=f"Not run by default ({len(jobs())} runs, about an hour): `tools/reproduce --full` runs "
-        "them; the last measured table is in examples/kink-mixed-mode/README.md, 'Convergence "
-        f"in m and in the disk's size'. {committed}")
+        lambda rows: table(rows) + "\n\n" + sequences_table(rows),
+        not_run=f"Not run by default ({len(jobs())} runs, about an hour): `tools/reproduce --full` "
+        "runs them; the last measured table is in examples/kink-mixed-mode/README.md, "
+        f"'Convergence in m and in the disk's size'. {committed}")
 
 
 def read_rows(path=CSV):
@@ -314,8 +315,6 @@ def main(argv=None):
     cases = CASES if not a.cases else [tuple(float(v) for v in c.split(":")) for c in a.cases]
     cmd = "tools/python -m bbpd.benchmarks.kink_convergence " + " ".join(argv or sys.argv[1:])
     earlier, rows, made = csvfile.continue_csv(a.csv if a.append else None, cmd)
-    if rows:
-        rows = read_rows(a.csv)    # with the CPU of rows from before the cpu column
     for m, rd in cases:
         start = time.perf_counter()
         r = run_case(a.work, m, rd, a.nprocs, a.reuse, a.kernel, a.psi, a.alpha)
@@ -324,8 +323,8 @@ def main(argv=None):
               f"{time.perf_counter() - start:.0f} s", flush=True)
         rows.append(r)
         if a.csv:    # after every run: a stopped sweep keeps what it measured
-            csvfile.write_csv(a.csv, [{c: r.get(c) for c in COLUMNS} for r in rows], comments=[
-                *earlier, made, "timing: LAMMPS loop time (s); the CPU of each run in column cpu"])
+            csvfile.write_csv(a.csv, rows, [*earlier, made, "timing: LAMMPS loop time (s); the "
+                                            "CPU of each run in column cpu"], columns=COLUMNS)
     print(sequences_table(rows))
     return 0
 
