@@ -17,12 +17,12 @@ import numpy as np
 
 from bbpd import freund, metrics, readers
 from bbpd.csvfile import write_csv
+from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 from bbpd.provenance import machine
 from bbpd.plots import plot_k
 from bbpd.runner import run_lammps
 
-ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "mode1-semi-infinite" / "in.mode1"
 
 # paper sec. 4.2.1

@@ -18,11 +18,11 @@ import numpy as np
 import scipy.sparse as sparse
 
 from bbpd import freund, metrics, readers
+from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 from bbpd.plots import plot_k
 from bbpd.runner import run_lammps
 
-ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "mode2-central-crack" / "in.mode2"
 
 # paper sec. 4.2.2 (plate 104 x 40 mm, 2a = 24 mm)
