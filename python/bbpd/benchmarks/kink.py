@@ -175,7 +175,7 @@ def verdict(rows, dist="2d", dx=COARSE[0], cases=None):
         d = np.array([r[key] - r[c] for r in mixed])
         out["rms"][c] = rms(d)
         out["bias"][c] = float(d.mean())
-        out["se"][c] = float(d.std(ddof=1) / math.sqrt(len(d)))
+        out["se"][c] = float(d.std(ddof=1) / math.sqrt(len(d))) if len(d) > 1 else math.nan
         for k in KERNELS:
             out["rms_kernel"][k, c] = rms([r[key] - r[c] for r in mixed if r["kernel"] == k])
         for a in ALPHAS_DEG:
