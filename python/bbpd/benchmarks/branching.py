@@ -43,16 +43,10 @@ END_WINDOW = 5.0e-6       # s at the end over which v_end is fitted
 THRESHOLD = crack_tip.DEFAULT_THRESHOLD
 
 # name -> (kernel, delta in m, m, sigma in Pa); the order is that of the CPU budget
-RUNS = {}
-for _k in KERNELS:
-    RUNS[f"{_k}-s2-m4"] = (_k, 1.0e-3, 4, 2.0e6)
-for _k in KERNELS:
-    RUNS[f"{_k}-s2-m3"] = (_k, 1.0e-3, 3, 2.0e6)
-for _s in (4, 12):
-    for _k in KERNELS:
-        RUNS[f"{_k}-s{_s}-m4"] = (_k, 1.0e-3, 4, _s * 1.0e6)
-for _k in KERNELS:
-    RUNS[f"{_k}-s2-m4-d0.5"] = (_k, 0.5e-3, 4, 2.0e6)
+RUNS = {f"{k}-s{s}-m{m}{suffix}": (k, delta, m, s * 1.0e6)
+        for s, m, delta, suffix in ((2, 4, 1.0e-3, ""), (2, 3, 1.0e-3, ""), (4, 4, 1.0e-3, ""),
+                                    (12, 4, 1.0e-3, ""), (2, 4, 0.5e-3, "-d0.5"))
+        for k in KERNELS}
 DEFAULT_RUNS = [n for n in RUNS if not n.endswith("d0.5")]
 
 CSV_COLUMNS = ("run", "kernel", "delta_mm", "m", "dx_mm", "sigma_MPa", "atoms", "steps",
