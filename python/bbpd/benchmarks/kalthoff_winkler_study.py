@@ -167,16 +167,12 @@ def analyse(workdir):
     # the initial angle on the first snapshot in which the crack reaches past INITIAL_RANGE
     # (later damage, e.g. the far-edge crack joining the path, cannot change it)
     tr = res["trajectory"]
-    res["initial_deg"], res["t_initial_us"] = None, None
     initial, when = {}, {}
-    for side, yn, sign in (("lo", g["ylo"], -1.0), ("hi", g["yhi"], 1.0)):
-        L = np.array(tr["L_" + side])
-        past = np.nonzero(L >= INITIAL_RANGE[1])[0]
+    for side in ("lo", "hi"):
+        past = np.nonzero(np.array(tr["L_" + side]) >= INITIAL_RANGE[1])[0]
         k = int(past[0]) if len(past) else len(snaps) - 1
         s = snaps[k][1]
-        cr = kw.notch_cracks(s["f_ref[1]"], s["f_ref[2]"], s["c_dmg"], g)
-        initial[side] = kw.crack_angle(s["f_ref[1]"], s["f_ref[2]"], cr[side], (g["a"], yn),
-                                       sign, fit_range=INITIAL_RANGE)
+        initial[side] = angles_of(s["f_ref[1]"], s["f_ref[2]"], s["c_dmg"], g)[side]["initial"]
         when[side] = times[k]
     res["initial_deg"] = mean_or_none(list(initial.values()))
     res["initial_side_deg"] = initial      # each crack's own: they differ off the square grid
