@@ -25,7 +25,7 @@ from bbpd import csvfile, freund, reference
 from bbpd import jobs as jobmod
 from bbpd.provenance import cpu
 from bbpd.kernels import COLORS
-from bbpd.plots import plt
+from bbpd import plots
 from bbpd.runner import LammpsError, run_or_reuse
 from bbpd.markdown import cell as f
 from bbpd.markdown import made_by
@@ -428,35 +428,33 @@ def section(specs, results, figdir, notes):
 def figure(rows, path, H_over_delta=SWEEP_H_OVER_DELTA):
     """v_ss/c_R against Delta' (the model's U'/G_c) and Gamma/G_c against v_ss/c_R, one line
     per kernel and m at H/delta; runs that arrested drawn at 0, branched ones left out."""
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
-    styles = {3.0: ":", 4.0: "-", 5.0: "--", 6.0: "-.", 8.0: (0, (1, 3))}
-    for k in sorted({r["kernel"] for r in rows}):
-        for m in sorted({r["m"] for r in rows if r["kernel"] == k}):
-            sel = sorted((r for r in rows if r["kernel"] == k and r["m"] == m and
-                          r["H_over_delta"] == H_over_delta and r["state"] in ("crossed", "arrested")),
-                         key=lambda r: r["Delta_model"])
-            if len(sel) < 2:
-                continue
-            ls = styles.get(m, "-")
-            a1.plot([r["Delta_model"] for r in sel], [r["v_ss_over_cR"] for r in sel], ls=ls,
-                    marker="o", color=COLORS[k], label=f"{k}, m = {m:g}")
-            run = [r for r in sel if r["crossed"]]
-            a2.plot([r["v_ss_over_cR"] for r in run], [r["Gamma_over_Gc"] for r in run], ls=ls,
-                    marker="o", color=COLORS[k], label=f"{k}, m = {m:g}")
-    a1.axvline(1.0, color="0.6", lw=0.8)
-    a1.set_xlabel("Delta' = U'/G_c (model)")
-    a1.set_ylabel("v_ss / c_R")
-    a1.set_title(f"steady speed (H = {H_over_delta:g} delta; 0: arrested)")
-    a2.axhline(1.0, color="0.6", lw=0.8)
-    a2.set_xlabel("v_ss / c_R")
-    a2.set_ylabel("Gamma / G_c")
-    a2.set_title("energy the broken bonds take")
-    for a in (a1, a2):
-        a.grid(alpha=0.3)
-        a.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    with plots.figure(path, 1, 2, figsize=(10, 4), dpi=110) as (fig, (a1, a2)):
+        styles = {3.0: ":", 4.0: "-", 5.0: "--", 6.0: "-.", 8.0: (0, (1, 3))}
+        for k in sorted({r["kernel"] for r in rows}):
+            for m in sorted({r["m"] for r in rows if r["kernel"] == k}):
+                sel = sorted((r for r in rows if r["kernel"] == k and r["m"] == m
+                              and r["H_over_delta"] == H_over_delta
+                              and r["state"] in ("crossed", "arrested")),
+                             key=lambda r: r["Delta_model"])
+                if len(sel) < 2:
+                    continue
+                ls = styles.get(m, "-")
+                a1.plot([r["Delta_model"] for r in sel], [r["v_ss_over_cR"] for r in sel], ls=ls,
+                        marker="o", color=COLORS[k], label=f"{k}, m = {m:g}")
+                run = [r for r in sel if r["crossed"]]
+                a2.plot([r["v_ss_over_cR"] for r in run], [r["Gamma_over_Gc"] for r in run], ls=ls,
+                        marker="o", color=COLORS[k], label=f"{k}, m = {m:g}")
+        a1.axvline(1.0, color="0.6", lw=0.8)
+        a1.set_xlabel("Delta' = U'/G_c (model)")
+        a1.set_ylabel("v_ss / c_R")
+        a1.set_title(f"steady speed (H = {H_over_delta:g} delta; 0: arrested)")
+        a2.axhline(1.0, color="0.6", lw=0.8)
+        a2.set_xlabel("v_ss / c_R")
+        a2.set_ylabel("Gamma / G_c")
+        a2.set_title("energy the broken bonds take")
+        for a in (a1, a2):
+            a.grid(alpha=0.3)
+            a.legend(fontsize=7)
 
 
 def work_precision_markdown(rows, Delta=2.0, m=M):
