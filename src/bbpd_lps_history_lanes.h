@@ -76,45 +76,17 @@ namespace LPS {
                                      const int *slot, double *hist, S0 s0_of, double *snew,
                                      ForceLanes &out)
   {
-    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
     const bool has_m = c.inv_m_i > 0.0;
-    for (int l = 0; l < LANES; l++) {
-      out.fx[l] = out.fy[l] = out.fz[l] = out.tally.eng[l] = 0.0;
-      for (auto &v : out.tally.vir) v[l] = 0.0;
-    }
-    double smin = std::numeric_limits<double>::max();
-    bool past = false;
-    for (int k = 0; k < n; k++) {
-      const int l = k % LANES;
-      const int j = partner_index(bj, i, k);
-      const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
-      const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
-      const double xi0 = vals.xi0_at(k, j), wv = vals.coef_at(k, j);
-      const double e = elongation(r, xi0);
-      double t = 0.0, energy = 0.0;
+    auto bond = [&](int k, int j, double r, double xi0, double wv, double e, double &energy) {
+      double t = 0.0;
       if (has_m && states[j].inv_m > 0.0) {
         double *h = hist + F::BOND_HISTORY * slot[k];
-        t = history_force_v<F, COMMIT>(fam, plan, c, wv, xi0, e, states[j].theta_over_m,
-                                       states[j].inv_m, h[0], h[1], energy);
+        t = history_force_v<F, COMMIT != 0>(fam, plan, c, wv, xi0, e, states[j].theta_over_m,
+                                            states[j].inv_m, h[0], h[1], energy);
       }
-      const double fpl = r > 0.0 ? t / r : 0.0;
-      out.fx[l] += fpl * dx;
-      out.fy[l] += fpl * dy;
-      out.fz[l] += fpl * dz;
-      if (EV) {
-        out.tally.eng[l] += energy;
-        const double d[3] = {dx, dy, dz};
-        const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
-        for (int v = 0; v < 6; v++) out.tally.vir[v][l] += fpl * d[pa[v]] * d[pb[v]];
-      }
-      if (CHECK) {
-        const double s = StretchRule::stretch(e, xi0);
-        smin = std::min(smin, s);
-        past |= StretchRule::past_critical(s, s0_of(j), c.margin);
-      }
-    }
-    if (CHECK) *snew = smin;
-    return past;
+      return r > 0.0 ? t / r : 0.0;
+    };
+    return force_pass_portable<EV, CHECK>(xx, i, bj, vals, n, bond, s0_of, c.margin, snew, out);
   }
 
 #ifdef BBPD_AVX512
@@ -163,13 +135,9 @@ namespace LPS {
                                    double *snew, ForceLanes &out)
   {
     const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
-                  zi = _mm512_set1_pd(xx[3 * i + 2]), zero = _mm512_setzero_pd(),
-                  one = _mm512_set1_pd(1.0), vsmin_i = _mm512_set1_pd(c.smin_i);
+                  zi = _mm512_set1_pd(xx[3 * i + 2]), zero = _mm512_setzero_pd();
     const __mmask8 row_ok = c.inv_m_i > 0.0 ? (__mmask8) 0xFF : (__mmask8) 0;
-    __m512d fx = zero, fy = zero, fz = zero, eng = zero;
-    __m512d vir[6] = {zero, zero, zero, zero, zero, zero};
-    __m512d vmin = _mm512_set1_pd(std::numeric_limits<double>::max());
-    __mmask8 past = 0;
+    ForceSums8<EV, CHECK> sums;
     for (int k = 0; k < n; k += LANES) {
       const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
       const __m256i j1 = load_partners(bj, m, i, k);
@@ -190,34 +158,10 @@ namespace LPS {
       }
       const __m512d t_ok = _mm512_maskz_mov_pd(ok, t.v);
       const __m512d fpl = vselect(Vec8(b.r) > Vec8(zero), Vec8(t_ok) / Vec8(b.r), Vec8(zero)).v;
-      fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fpl, b.dx));
-      fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fpl, b.dy));
-      fz = _mm512_mask_add_pd(fz, m, fz, _mm512_mul_pd(fpl, b.dz));
-      if (EV) {
-        eng = _mm512_mask_add_pd(eng, m, eng, _mm512_maskz_mov_pd(ok, energy.v));
-        const __m512d d[3] = {b.dx, b.dy, b.dz};
-        const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
-        for (int v = 0; v < 6; v++)
-          vir[v] = _mm512_mask_add_pd(vir[v], m, vir[v],
-                                      _mm512_mul_pd(_mm512_mul_pd(fpl, d[pa[v]]), d[pb[v]]));
-      }
-      if (CHECK) {
-        const Vec8 s = StretchRule::stretch(Vec8(b.elong), Vec8(_mm512_mask_mov_pd(one, m, b.xi0)));
-        vmin = _mm512_mask_min_pd(vmin, m, s.v, vmin);
-        const Vec8 s0 = StretchRule::critical_stretch(Vec8(c.s00), Vec8(c.alpha), Vec8(vsmin_i),
-                                                      Vec8(_mm512_mask_i32gather_pd(vsmin_i, m, j1, smin_all, 8)));
-        past |= m & StretchRule::past_critical(s, s0, Vec8(c.margin));
-      }
+      sums.add(m, b, fpl, _mm512_maskz_mov_pd(ok, energy.v));
+      sums.check(m, b, j1, c, smin_all);
     }
-    _mm512_storeu_pd(out.fx, fx);
-    _mm512_storeu_pd(out.fy, fy);
-    _mm512_storeu_pd(out.fz, fz);
-    if (EV) {
-      _mm512_storeu_pd(out.tally.eng, eng);
-      for (int v = 0; v < 6; v++) _mm512_storeu_pd(out.tally.vir[v], vir[v]);
-    }
-    if (CHECK) *snew = _mm512_reduce_min_pd(vmin);
-    return past != 0;
+    return sums.store(out, snew);
   }
 #define lps_history_norm_simd BBPD::LPS::history_norm_avx512
 #define lps_history_force_simd BBPD::LPS::history_force_avx512
@@ -327,14 +271,10 @@ namespace LPS {
                                  double *snew, ForceLanes &out)
   {
     const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
-                  zi = _mm256_set1_pd(xx[3 * i + 2]), zero = _mm256_setzero_pd(),
-                  one = _mm256_set1_pd(1.0), vsmin_i = _mm256_set1_pd(c.smin_i);
+                  zi = _mm256_set1_pd(xx[3 * i + 2]), zero = _mm256_setzero_pd();
     const bool has_m = c.inv_m_i > 0.0;
-    __m256d fx[2] = {zero, zero}, fy[2] = {zero, zero}, fz[2] = {zero, zero}, eng[2] = {zero, zero};
-    __m256d vir[6][2] = {{zero, zero}, {zero, zero}, {zero, zero}, {zero, zero}, {zero, zero}, {zero, zero}};
-    __m256d vmin = _mm256_set1_pd(std::numeric_limits<double>::max()), past = zero;
+    ForceSums4x2<EV, CHECK> sums;
     auto group = [&](auto half, int k, bool full) BBPD_GROUPS_INLINE {
-      constexpr int H = decltype(half)::value;
       const HistoryGroup4 g = history_group4(xx, bj, i, n, k, full, xi, yi, zi, vals, states);
       const __m256d ok = has_m ? _mm256_and_pd(g.m, _mm256_cmp_pd(g.inv_m, zero, _CMP_GT_OQ)) : zero;
       const int lanes = _mm256_movemask_pd(ok);
@@ -348,40 +288,15 @@ namespace LPS {
       if (COMMIT) write_history4<F>(slot, hist, k, lanes, h0.v, h1.v);
       const __m256d t_ok = _mm256_and_pd(ok, t.v);
       const __m256d fpl = vselect(Vec4(r) > Vec4(zero), Vec4(t_ok) / Vec4(r), Vec4(zero)).v;
-      fx[H] = lps_add<true>(fx[H], _mm256_mul_pd(fpl, g.dx), g.m);
-      fy[H] = lps_add<true>(fy[H], _mm256_mul_pd(fpl, g.dy), g.m);
-      fz[H] = lps_add<true>(fz[H], _mm256_mul_pd(fpl, g.dz), g.m);
-      if (EV) {
-        eng[H] = lps_add<true>(eng[H], _mm256_and_pd(ok, energy.v), g.m);
-        const __m256d d[3] = {g.dx, g.dy, g.dz};
-        const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
-        for (int v = 0; v < 6; v++)
-          vir[v][H] = lps_add<true>(vir[v][H], _mm256_mul_pd(_mm256_mul_pd(fpl, d[pa[v]]), d[pb[v]]), g.m);
-      }
-      if (CHECK) {
-        const Vec4 s = StretchRule::stretch(Vec4(e), Vec4(_mm256_blendv_pd(one, g.xi0, g.m)));
-        vmin = _mm256_blendv_pd(vmin, _mm256_min_pd(s.v, vmin), g.m);
-        const __m256d smin_j = _mm256_mask_i32gather_pd(vsmin_i, smin_all, g.j1, g.m, 8);
-        const Vec4 s0 = StretchRule::critical_stretch(Vec4(c.s00), Vec4(c.alpha), Vec4(vsmin_i), Vec4(smin_j));
-        past = _mm256_or_pd(past, _mm256_and_pd(g.m, StretchRule::past_critical(s, s0, Vec4(c.margin)).v));
-      }
+      constexpr int H = decltype(half)::value;
+      sums.template add<H, true>(g.m, g.dx, g.dy, g.dz, fpl, _mm256_and_pd(ok, energy.v));
+      const __m256d smin_j =
+          CHECK ? _mm256_mask_i32gather_pd(_mm256_set1_pd(c.smin_i), smin_all, g.j1, g.m, 8) : zero;
+      sums.template check<true>(g.m, e, g.xi0, smin_j, c);
     };
     for_each_group4(n, [&](auto half, int k) { group(half, k, true); },
                     [&](auto half, int k) { group(half, k, false); });
-    for (int h = 0; h < 2; h++) {
-      _mm256_storeu_pd(out.fx + 4 * h, fx[h]);
-      _mm256_storeu_pd(out.fy + 4 * h, fy[h]);
-      _mm256_storeu_pd(out.fz + 4 * h, fz[h]);
-      if (EV) {
-        _mm256_storeu_pd(out.tally.eng + 4 * h, eng[h]);
-        for (int v = 0; v < 6; v++) _mm256_storeu_pd(out.tally.vir[v] + 4 * h, vir[v][h]);
-      }
-    }
-    if (CHECK) {
-      const __m128d m2 = _mm_min_pd(_mm256_castpd256_pd128(vmin), _mm256_extractf128_pd(vmin, 1));
-      *snew = std::min(_mm_cvtsd_f64(m2), _mm_cvtsd_f64(_mm_unpackhi_pd(m2, m2)));
-    }
-    return _mm256_movemask_pd(past) != 0;
+    return sums.store(out, snew);
   }
 #define lps_history_norm_simd BBPD::LPS::history_norm_avx2
 #define lps_history_force_simd BBPD::LPS::history_force_avx2
