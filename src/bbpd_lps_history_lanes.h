@@ -175,7 +175,7 @@ namespace LPS {
     __m128i j1;
   };
   template <class Idx, class Values>
-  inline HistoryGroup4 history_group4(const double *xx, const Idx *bj, int i, int n, int k, bool full,
+  BBPD_GROUPS_INLINE inline HistoryGroup4 history_group4(const double *xx, const Idx *bj, int i, int n, int k, bool full,
                                       __m256d xi, __m256d yi, __m256d zi, const Values &vals,
                                       const AtomState *states)
   {
@@ -205,7 +205,7 @@ namespace LPS {
     return g;
   }
   // the history of the lanes in 'lanes' (bits) of bonds k..k+3, and writing it back
-  template <class F> inline void read_history4(const int *slot, double *hist, int k, int lanes,
+  template <class F> BBPD_GROUPS_INLINE inline void read_history4(const int *slot, double *hist, int k, int lanes,
                                                __m256d &h0, __m256d &h1)
   {
     alignas(32) double a[4] = {0.0, 0.0, 0.0, 0.0}, b[4] = {0.0, 0.0, 0.0, 0.0};
@@ -218,7 +218,7 @@ namespace LPS {
     h0 = _mm256_load_pd(a);
     h1 = _mm256_load_pd(b);
   }
-  template <class F> inline void write_history4(const int *slot, double *hist, int k, int lanes,
+  template <class F> BBPD_GROUPS_INLINE inline void write_history4(const int *slot, double *hist, int k, int lanes,
                                                 __m256d h0, __m256d h1)
   {
     alignas(32) double a[4], b[4];
@@ -255,8 +255,8 @@ namespace LPS {
       constexpr int H = decltype(half)::value;
       acc[H] = lps_add<true>(acc[H], term.v, g.m);
     };
-    for_each_group4(n, [&](auto half, int k) { group(half, k, true); },
-                    [&](auto half, int k) { group(half, k, false); });
+    for_each_group4(n, [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, k, true); },
+                    [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, k, false); });
     alignas(32) double lane[LANES];
     _mm256_store_pd(lane, acc[0]);
     _mm256_store_pd(lane + 4, acc[1]);
@@ -294,8 +294,8 @@ namespace LPS {
           CHECK ? _mm256_mask_i32gather_pd(_mm256_set1_pd(c.smin_i), smin_all, g.j1, g.m, 8) : zero;
       sums.template check<true>(g.m, e, g.xi0, smin_j, c);
     };
-    for_each_group4(n, [&](auto half, int k) { group(half, k, true); },
-                    [&](auto half, int k) { group(half, k, false); });
+    for_each_group4(n, [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, k, true); },
+                    [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, k, false); });
     return sums.store(out, snew);
   }
 #define lps_history_norm_simd BBPD::LPS::history_norm_avx2

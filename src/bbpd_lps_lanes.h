@@ -209,7 +209,8 @@ namespace LPS {
   }
 
   /* the sums of a force pass in 8 lanes and, with CHECK, its breaking test: the LPS rows and
-     the history rows (bbpd_lps_history_lanes.h) add their bonds' forces here */
+     the history rows (bbpd_lps_history_lanes.h) add their bonds' forces here (inlined into the
+     kernels: GCC left add() a call per group, 5 % of a VES step) */
   template <int EV, int CHECK> struct ForceSums8 {
     __m512d fx = _mm512_setzero_pd(), fy = _mm512_setzero_pd(), fz = _mm512_setzero_pd();
     __m512d eng = _mm512_setzero_pd();
@@ -218,7 +219,7 @@ namespace LPS {
     __m512d vmin = _mm512_set1_pd(std::numeric_limits<double>::max());
     __mmask8 past = 0;
     // the bonds of lanes m (b) with force per length fpl and energy terms 'energy'
-    void add(__mmask8 m, const BondLanes &b, __m512d fpl, __m512d energy)
+    BBPD_GROUPS_INLINE void add(__mmask8 m, const BondLanes &b, __m512d fpl, __m512d energy)
     {
       fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fpl, b.dx));
       fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fpl, b.dy));
@@ -233,7 +234,7 @@ namespace LPS {
       }
     }
     // their stretches against the critical stretches with partners j1 (smallest stretches smin)
-    void check(__mmask8 m, const BondLanes &b, __m256i j1, const RowCoefficients &c, const double *smin)
+    BBPD_GROUPS_INLINE void check(__mmask8 m, const BondLanes &b, __m256i j1, const RowCoefficients &c, const double *smin)
     {
       if (!CHECK) return;
       const __m512d smin_i = _mm512_set1_pd(c.smin_i);
@@ -322,7 +323,7 @@ namespace LPS {
       constexpr int H = decltype(half)::value;
       acc[H] = lps_add<decltype(masked)::value>(acc[H], t, m);
     };
-    auto full = [&](auto half, int k) {
+    auto full = [&](auto half, int k) BBPD_GROUPS_INLINE {
       const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
                         partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
       __m256d x, y, z, xi0, wv;
@@ -330,7 +331,7 @@ namespace LPS {
       load_values_full(vals, bj, i, k, xi0, wv);
       add(half, std::false_type(), all, _mm256_sub_pd(x, xi), _mm256_sub_pd(y, yi), _mm256_sub_pd(z, zi), xi0, wv);
     };
-    auto tail = [&](auto half, int k) {
+    auto tail = [&](auto half, int k) BBPD_GROUPS_INLINE {
       const TailGroup4 g(xx, bj, i, n, k, xi, yi, zi);
       __m256d xi0, wv;
       load_values(vals, g.m, g.m32, k, g.j1, xi0, wv);
@@ -357,7 +358,7 @@ namespace LPS {
     }
     // bonds of the lanes m (every lane if not MASKED) into half H
     template <int H, bool MASKED>
-    void add(__m256d m, __m256d dx, __m256d dy, __m256d dz, __m256d fpl, __m256d energy)
+    BBPD_GROUPS_INLINE void add(__m256d m, __m256d dx, __m256d dy, __m256d dz, __m256d fpl, __m256d energy)
     {
       fx[H] = lps_add<MASKED>(fx[H], _mm256_mul_pd(fpl, dx), m);
       fy[H] = lps_add<MASKED>(fy[H], _mm256_mul_pd(fpl, dy), m);
@@ -372,7 +373,7 @@ namespace LPS {
     }
     // the breaking test of their elongations e (reference lengths xi0, partners' smin_j)
     template <bool MASKED>
-    void check(__m256d m, __m256d e, __m256d xi0, __m256d smin_j, const RowCoefficients &c)
+    BBPD_GROUPS_INLINE void check(__m256d m, __m256d e, __m256d xi0, __m256d smin_j, const RowCoefficients &c)
     {
       if (!CHECK) return;
       const Vec4 s = StretchRule::stretch(Vec4(e), Vec4(MASKED ? _mm256_blendv_pd(_mm256_set1_pd(1.0), xi0, m) : xi0));
@@ -422,7 +423,7 @@ namespace LPS {
       sums.template add<H, MASKED>(m, dx, dy, dz, fpl, energy_term(c, Vec4(wv), Vec4(xi0), Vec4(e)).v);
       sums.template check<MASKED>(m, e, xi0, smin_j, c);
     };
-    auto full = [&](auto half, int k) {
+    auto full = [&](auto half, int k) BBPD_GROUPS_INLINE {
       const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
                         partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
       __m256d x, y, z, xi0, wv, tom, inv_m;
@@ -434,7 +435,7 @@ namespace LPS {
       add(half, std::false_type(), all, _mm256_sub_pd(x, xi), _mm256_sub_pd(y, yi), _mm256_sub_pd(z, zi),
           xi0, wv, tom, inv_m, smin_j);
     };
-    auto tail = [&](auto half, int k) {
+    auto tail = [&](auto half, int k) BBPD_GROUPS_INLINE {
       const TailGroup4 g(xx, bj, i, n, k, xi, yi, zi);
       __m256d xi0, wv, tom, inv_m;
       load_values(vals, g.m, g.m32, k, g.j1, xi0, wv);

@@ -387,13 +387,13 @@ inline __m128i load_partners(const PartnerOffset *bj, __m128i m32, int i, int k)
 
 // reference lengths and coefficients of the full group k..k+3
 template <class Idx>
-inline void load_values_full(const PerBondValues &v, const Idx *, int, int k, __m256d &xi0, __m256d &coef)
+BBPD_GROUPS_INLINE inline void load_values_full(const PerBondValues &v, const Idx *, int, int k, __m256d &xi0, __m256d &coef)
 {
   xi0 = _mm256_loadu_pd(v.xi0 + k);
   coef = _mm256_loadu_pd(v.coef + k);
 }
 template <class Idx>
-inline void load_values_full(const ClassValues &v, const Idx *, int, int k, __m256d &xi0, __m256d &coef)
+BBPD_GROUPS_INLINE inline void load_values_full(const ClassValues &v, const Idx *, int, int k, __m256d &xi0, __m256d &coef)
 {
   const int c0 = v.cls[k], c1 = v.cls[k + 1], c2 = v.cls[k + 2], c3 = v.cls[k + 3];
   xi0 = _mm256_setr_pd(v.xi0[c0], v.xi0[c1], v.xi0[c2], v.xi0[c3]);
