@@ -25,7 +25,10 @@ import argparse
 import csv
 import math
 import re
+import time
 from pathlib import Path
+
+from bbpd import provenance
 
 from bbpd.benchmarks.plate_hole import E, HERE, KERNELS, run_lammps
 
@@ -69,17 +72,18 @@ def sigma_lefm():
 def trial(kernel, delta, m, u, out, iters):
     dx = delta / m
     work = Path(out) / f"{kernel.replace('/', '-')}-d{delta * 1e3:g}mm-m{m}" / f"u{u:.6e}"
+    start = time.perf_counter()
     proc = run_lammps(str(HERE / "in.center-crack"), work,
                       vars={**kernel_vars(kernel, delta), "dx": repr(dx), "m": m, "u": repr(u),
                             "iters": iters})
-    r = re.search(r"CENTER-CRACK: u \S+ broken (\d+) stress (\S+) converged (\d) iterations (\d+)",
-                  proc.output)
+    r = re.search(r"CENTER-CRACK: u \S+ broken (\d+) stress (\S+) converged (\d) iterations (\d+)"
+                  r" bottom \S+ elastic (\S+)", proc.output)
     atoms = int(re.search(r"CENTER-CRACK-SETUP: .* atoms (\d+)", proc.output).group(1))
     broken, converged = int(r.group(1)), r.group(3) == "1"
     if not converged and broken == 0:
         raise RuntimeError(f"{work}: the elastic relaxation did not converge in {iters} iterations")
     return {"broken": broken, "converged": converged, "stress": float(r.group(2)), "iterations": int(r.group(4)),
-            "atoms": atoms}
+            "atoms": atoms, "elastic": float(r.group(5)), "wall_s": time.perf_counter() - start}
 
 
 def initiation(kernel, delta, m, out):
@@ -91,11 +95,11 @@ def initiation(kernel, delta, m, out):
     assert first["broken"] == 0, first
     k = first["stress"] / u0
     iters = CAP_FACTOR * first["iterations"] + 100
-    lo, hi, trials = None, None, 1
+    lo, hi, trials, wall = None, None, 1, first["wall_s"]
     u = FIRST_GUESS * s_lefm / k
     while lo is None or hi is None:
         r = trial(kernel, delta, m, u, out, iters)
-        trials += 1
+        trials, wall = trials + 1, wall + r["wall_s"]
         if r["broken"]:
             hi, at_hi = u, r
             u /= STEP
@@ -107,7 +111,7 @@ def initiation(kernel, delta, m, out):
     while hi / lo - 1.0 > REL_RES:
         u = 0.5 * (lo + hi)
         r = trial(kernel, delta, m, u, out, iters)
-        trials += 1
+        trials, wall = trials + 1, wall + r["wall_s"]
         if r["broken"]:
             hi, at_hi = u, r
         else:
@@ -119,7 +123,7 @@ def initiation(kernel, delta, m, out):
             "sigma_c_MPa": s_c / 1e6, "sigma_lefm_MPa": s_lefm / 1e6,
             "error": s_c / s_lefm - 1.0, "u_lo": lo, "u_hi": hi, "broken_at_hi": at_hi["broken"],
             "arrested_at_hi": int(at_hi["converged"]), "trials": trials,
-            "elastic_iterations": first["iterations"]}
+            "elastic_iterations": first["iterations"], "wall_s": wall, "cpu": provenance.cpu()}
 
 
 def main(argv=None):
