@@ -130,12 +130,15 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out", default="/tmp/bbpd-center-crack", help="work directory of the runs")
     ap.add_argument("--kernels", default=",".join(reversed(KERNELS)), help="comma-separated")
+    ap.add_argument("--lps", action="store_true",
+                    help="the state-based kernels lps/KERNEL of --kernels' kernels instead")
     ap.add_argument("--full", action="store_true", help="add delta = 0.5 mm and m = 3")
     ap.add_argument("--cases", help="instead: comma-separated delta:m pairs, e.g. 0.5e-3:4")
     ap.add_argument("--csv", default="center_crack.csv", help="file name under results/")
     args = ap.parse_args(argv)
     rows = []
     for kernel in args.kernels.split(","):
+        kernel = f"lps/{kernel}" if args.lps else kernel
         cases = CASES + (FULL_EXTRA if args.full else ())
         if args.cases:
             cases = [(float(c.split(":")[0]), int(c.split(":")[1])) for c in args.cases.split(",")]

@@ -43,6 +43,7 @@ from bbpd.benchmarks.plate_hole import HERE, run_lammps
 FIRST = 0.9           # the first load step, from rest, to this fraction of the LEFM opening
 DU = 0.005            # each further load step opens the grips by this fraction of it
 MAX_STEPS = 200
+STOP = 0.05           # the path ends when the load falls below this fraction of LEFM's
 
 LINE = re.compile(r"CENTER-CRACK: u (\S+) broken (\d+) stress (\S+) converged (\d) iterations "
                   r"(\d+) bottom (\S+) elastic (\S+) brokenenergy (\S+) tip (\S+) relaxations "
@@ -59,7 +60,8 @@ def path(kernel, delta, m, out, du=DU, first=FIRST, tol=1.0e-6, max_steps=MAX_ST
     u_lefm = sigma_lefm() * 1.0e-6 / probe["stress"]
     work = Path(out) / f"growth-{kernel.replace('/', '-')}-d{delta * 1e3:g}mm-m{m}-du{du:g}"
     vars = {**kernel_vars(kernel, delta), "dx": repr(dx), "m": m, "u": repr(first * u_lefm),
-            "du": repr(du * u_lefm), "steps": max_steps, "tol": repr(tol)}
+            "du": repr(du * u_lefm), "steps": max_steps, "tol": repr(tol),
+            "stop": repr(STOP * sigma_lefm())}
     proc = run_lammps(str(HERE / "in.center-crack"), work, vars=vars, timeout=7200)
     walls = {int(s): float(t) for s, t in RELAX.findall(proc.output)}
     steps = []
