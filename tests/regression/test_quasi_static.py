@@ -81,6 +81,16 @@ def test_crack_growth_energy_account(tmp_path):
     assert 0.0 < at["gap"] < GAP_TOL, at
     # the trapezoid over the converged points misses the load drop's triangle
     assert at["W_trap_J"] < at["W_J"], at
+    # where the release went, measured apart (thermo at every step of the same load step from
+    # rest): each breaking evaluation takes out the broken bonds' energy at their stretch, at
+    # least what B books at s0; the relaxations after them release the rest
+    events, split = center_crack_growth.breaking_split("gaussian", 2.0e-3, 4, at["u_m"], tmp_path)
+    assert sum(e["bonds"] for e in events) == at["broken"], events
+    for e in events:
+        assert e["bond_energy_J"] >= e["booked_J"] * (1.0 - 1.0e-6) > 0.0, e
+    assert split["booked_J"] == pytest.approx(at["dB_J"], rel=1.0e-9)
+    assert split["released_J"] == pytest.approx(at["released_J"], rel=1.0e-3)
+    assert split["overshoot_J"] > 0.0 and split["relaxation_J"] > 0.0, split
 
 
 # fix bbpd/relax with the state-based kernel styles and with bbpd/pmb, on the centre-cracked

@@ -29,7 +29,8 @@ The account. W = U + B + D: what the broken bonds carry away (B, the energy of e
 critical stretch, compute bbpd/energy) and what the body keeps (U) leave D, the energy released
 at fixed opening beyond B: the relaxation after bonds broke (the kinetic energy of a dynamic
 body, which a relaxation damps) and the bonds' energy above the critical stretch when they broke
-(a load step overshoots it). Per load step D_k = (U_k^- - U_k) - (B_k - B_{k-1}).
+(a load step overshoots it). Per load step D_k = (U_k^- - U_k) - (B_k - B_{k-1}); at the
+first break the two parts are measured apart (breaking_split, *_initiation_split.csv).
 """
 import argparse
 import csv
@@ -76,6 +77,32 @@ def path(kernel, delta, m, out, du=DU, first=FIRST, tol=1.0e-6, max_steps=MAX_ST
                     proc.output)
     assert steps and rel, proc.output[-2000:]
     return account(steps), u_lefm, probe["atoms"]
+
+
+def breaking_split(kernel, delta, m, u, out):
+    """Where the energy released at initiation goes: one load step from rest to the opening u
+    (the body is elastic until then: the state of the path) with thermo output at every step.
+    A breaking evaluation does not move the atoms, so the elastic energy it takes out is the
+    broken bonds' own energy at their stretch, against their energy at the critical stretch,
+    which B books; the rest of the release is the relaxation after it. Returns (events, totals)."""
+    work = Path(out) / f"split-{kernel.replace('/', '-')}-d{delta * 1e3:g}mm-m{m}"
+    proc = run_lammps(str(HERE / "in.center-crack"), work,
+                      vars={**kernel_vars(kernel, delta), "dx": repr(delta / m), "m": m,
+                            "u": repr(u), "thermo": 1})
+    rows = []    # step, bonds broken so far, U, B (thermo: step pe it broken rel stress U B tip)
+    for line in proc.output.splitlines():
+        f = line.split()
+        if len(f) == 9 and f[0].isdigit():
+            rows.append((int(f[0]), float(f[3]), float(f[6]), float(f[7])))
+    events = [{"step": b[0], "bonds": int(b[1] - a[1]), "bond_energy_J": a[2] - b[2],
+               "booked_J": b[3] - a[3]}
+              for a, b in zip(rows, rows[1:]) if b[0] == a[0] + 1 and b[1] > a[1]]
+    before = next(a for a, b in zip(rows, rows[1:]) if b[0] == a[0] + 1 and b[1] > a[1])
+    released = before[2] - rows[-1][2]
+    bonds = sum(e["bond_energy_J"] for e in events)
+    booked = sum(e["booked_J"] for e in events)
+    return events, {"released_J": released, "bond_energy_J": bonds, "booked_J": booked,
+                    "overshoot_J": bonds - booked, "relaxation_J": released - bonds}
 
 
 def account(steps):
@@ -149,6 +176,17 @@ def main(argv=None):
               f"it {s['iterations']}  {s['wall_s']:.2f} s")
     for k, v in summary(steps).items():
         print(f"{k}: {v:.6g}")
+    first = next(s for s in steps if s["broken"] > 0)
+    events, totals = breaking_split(args.kernel, args.delta, args.m, first["u_m"], args.out)
+    split = out.with_name(out.stem + "_initiation_split.csv")
+    with open(split, "w", newline="") as f:
+        wr = csv.DictWriter(f, fieldnames=["u_m"] + list(events[0]) + ["cpu"])
+        wr.writeheader()
+        for e in events:
+            wr.writerow({"u_m": f"{first['u_m']:.8g}", **{k: (f"{v:.8g}" if isinstance(v, float)
+                                                            else v) for k, v in e.items()},
+                         "cpu": cpu})
+    print("initiation: " + ", ".join(f"{k} {v:.6g}" for k, v in totals.items()))
     print(f"u_LEFM {u_lefm:.6g} m, {atoms} atoms, {cpu}; wrote {out}")
 
 
