@@ -2,7 +2,8 @@
 """Stable crack growth and its energy account: in.dcb, a double cantilever beam opened at its
 arms load step by load step with fix bbpd/relax.
 
-    tools/python -m bbpd.benchmarks.dcb_growth [--dx DX] [--u U] [--du DU] [--steps N] [--csv NAME]
+    tools/python -m bbpd.benchmarks.dcb_growth [--dx DX] [--m M] [--u U] [--du DU] [--steps N]
+        [--csv NAME]
 
 At a fixed opening the energy release rate of a DCB falls as its crack grows, so the crack
 grows stably, a little per load step, where the centre-cracked plate's runs (README.md). The
@@ -51,12 +52,13 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out", default="/tmp/bbpd-dcb", help="work directory of the runs")
     ap.add_argument("--dx", type=float, default=0.5e-3)
+    ap.add_argument("--m", type=int, default=4)
     ap.add_argument("--u", type=float, default=10e-6)
     ap.add_argument("--du", type=float, default=0.5e-6)
     ap.add_argument("--steps", type=int, default=24)
     ap.add_argument("--csv", default="dcb_growth.csv", help="file name under results/")
     args = ap.parse_args(argv)
-    rows, totals, atoms = path(args.out, args.dx, 4, args.u, args.du, args.steps)
+    rows, totals, atoms = path(args.out, args.dx, args.m, args.u, args.du, args.steps)
     cpu = provenance.cpu()
     out = HERE / "results" / args.csv
     with open(out, "w", newline="") as f:
@@ -64,7 +66,7 @@ def main(argv=None):
         wr.writeheader()
         for r in rows:
             wr.writerow({k: (f"{v:.8g}" if isinstance(v, float) else v) for k, v in
-                         {"dx_mm": args.dx * 1e3, "m": 4, "atoms": atoms, **r, "cpu": cpu}.items()})
+                         {"dx_mm": args.dx * 1e3, "m": args.m, "atoms": atoms, **r, "cpu": cpu}.items()})
     for r in rows:
         print(f"u {r['u_m'] * 1e6:6.2f} um  F {r['load_N']:.4f} N  broken {r['broken']:4d}  "
               f"released {r['released_J']:.3e}  dB {r['dB_J']:.3e}  gap {100 * r['gap']:+.2f} %  "
