@@ -4,6 +4,11 @@ relaxed by fix bbpd/relax, the far-field stress at which the pre-crack starts to
 
     tools/python -m bbpd.benchmarks.center_crack [--full] [--kernels K1,K2] [--csv NAME]
 
+Kernels: the bond-based constant, triangular, gaussian (pair_style bbpd/KERNEL, nu = 1/3) and
+pmb (bbpd/pmb, kernel_vars), the state-based lps/constant, lps/triangular, lps/gaussian (pair_style bbpd/lps/KERNEL
+plane/stress, pair_coeff E nu Gc delta with nu = LPS_NU, the bond-based value, so that the two
+families model the same plate).
+
 LEFM (plane stress): the crack grows when K_I = sigma sqrt(pi a) F(a/b) reaches
 K_Ic = sqrt(E G_c), with a the half crack length, b = W/2 the half width and Tada's finite-width
 factor F = (1 - 0.025 (a/b)^2 + 0.06 (a/b)^4) sqrt(sec(pi a / (2 b))), 0.1 % for any a/b
@@ -20,17 +25,37 @@ import argparse
 import csv
 import math
 import re
+import time
 from pathlib import Path
+
+from bbpd import provenance
 
 from bbpd.benchmarks.plate_hole import E, HERE, KERNELS, run_lammps
 
 W, A, GC = 0.02, 0.004, 3.8    # in.center-crack: width, half crack length, glass
+H_T = 1.0e-3                    # its thickness
 CASES = ((2.0e-3, 4), (1.0e-3, 4))    # (delta, m); --full adds FULL_EXTRA
 FULL_EXTRA = ((0.5e-3, 4), (1.0e-3, 3), (0.5e-3, 3))
 REL_RES = 0.01         # the bracket's width relative to its lower end (the issue's ~1 %)
 FIRST_GUESS = 1.0      # the first trial at this fraction of the LEFM opening
 STEP = 1.1             # bracket search: multiply / divide the opening by this
 CAP_FACTOR = 4         # iteration cap of a trial: this many elastic load steps' iterations
+LPS_NU = 1.0 / 3.0     # Poisson's ratio of the state-based kernels (lps/KERNEL)
+
+
+def kernel_vars(kernel, delta):
+    """in.center-crack's variables for a kernel: pair_coeff E nu Gc delta for the state-based
+    ones; for pmb (bbpd/pmb, peri/pmb's numbers c delta s00 alpha) the constant micromodulus and
+    critical stretch of 2D plane stress, c = 9 E / (pi h delta^3), s0 = sqrt(4 pi Gc / (9 E delta))
+    (Ha & Bobaru 2010), with the horizon a hair above m Delta (peri/pmb's families are
+    |xi| <= delta) and alpha = 0"""
+    if kernel.startswith("lps/"):
+        return {"kernel": kernel, "coeff": f"{E!r} {LPS_NU!r} {GC!r} {delta!r}"}
+    if kernel == "pmb":
+        c = 9.0 * E / (math.pi * H_T * delta ** 3)
+        s0 = math.sqrt(4.0 * math.pi * GC / (9.0 * E * delta))
+        return {"kernel": kernel, "coeff": f"{c!r} {delta * (1.0 + 1.0e-4)!r} {s0!r} 0.0"}
+    return {"kernel": kernel}
 
 
 def tada_factor(a_over_b):
@@ -46,18 +71,19 @@ def sigma_lefm():
 
 def trial(kernel, delta, m, u, out, iters):
     dx = delta / m
-    work = Path(out) / f"{kernel}-d{delta * 1e3:g}mm-m{m}" / f"u{u:.6e}"
+    work = Path(out) / f"{kernel.replace('/', '-')}-d{delta * 1e3:g}mm-m{m}" / f"u{u:.6e}"
+    start = time.perf_counter()
     proc = run_lammps(str(HERE / "in.center-crack"), work,
-                      vars={"kernel": kernel, "dx": repr(dx), "m": m, "u": repr(u),
+                      vars={**kernel_vars(kernel, delta), "dx": repr(dx), "m": m, "u": repr(u),
                             "iters": iters})
-    r = re.search(r"CENTER-CRACK: u \S+ broken (\d+) stress (\S+) converged (\d) iterations (\d+)",
-                  proc.output)
+    r = re.search(r"CENTER-CRACK: u \S+ broken (\d+) stress (\S+) converged (\d) iterations (\d+)"
+                  r" bottom \S+ elastic (\S+)", proc.output)
     atoms = int(re.search(r"CENTER-CRACK-SETUP: .* atoms (\d+)", proc.output).group(1))
     broken, converged = int(r.group(1)), r.group(3) == "1"
     if not converged and broken == 0:
         raise RuntimeError(f"{work}: the elastic relaxation did not converge in {iters} iterations")
     return {"broken": broken, "converged": converged, "stress": float(r.group(2)), "iterations": int(r.group(4)),
-            "atoms": atoms}
+            "atoms": atoms, "elastic": float(r.group(5)), "wall_s": time.perf_counter() - start}
 
 
 def initiation(kernel, delta, m, out):
@@ -69,11 +95,11 @@ def initiation(kernel, delta, m, out):
     assert first["broken"] == 0, first
     k = first["stress"] / u0
     iters = CAP_FACTOR * first["iterations"] + 100
-    lo, hi, trials = None, None, 1
+    lo, hi, trials, wall = None, None, 1, first["wall_s"]
     u = FIRST_GUESS * s_lefm / k
     while lo is None or hi is None:
         r = trial(kernel, delta, m, u, out, iters)
-        trials += 1
+        trials, wall = trials + 1, wall + r["wall_s"]
         if r["broken"]:
             hi, at_hi = u, r
             u /= STEP
@@ -85,7 +111,7 @@ def initiation(kernel, delta, m, out):
     while hi / lo - 1.0 > REL_RES:
         u = 0.5 * (lo + hi)
         r = trial(kernel, delta, m, u, out, iters)
-        trials += 1
+        trials, wall = trials + 1, wall + r["wall_s"]
         if r["broken"]:
             hi, at_hi = u, r
         else:
@@ -97,19 +123,22 @@ def initiation(kernel, delta, m, out):
             "sigma_c_MPa": s_c / 1e6, "sigma_lefm_MPa": s_lefm / 1e6,
             "error": s_c / s_lefm - 1.0, "u_lo": lo, "u_hi": hi, "broken_at_hi": at_hi["broken"],
             "arrested_at_hi": int(at_hi["converged"]), "trials": trials,
-            "elastic_iterations": first["iterations"]}
+            "elastic_iterations": first["iterations"], "wall_s": wall, "cpu": provenance.cpu()}
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out", default="/tmp/bbpd-center-crack", help="work directory of the runs")
     ap.add_argument("--kernels", default=",".join(reversed(KERNELS)), help="comma-separated")
+    ap.add_argument("--lps", action="store_true",
+                    help="the state-based kernels lps/KERNEL of --kernels' kernels instead")
     ap.add_argument("--full", action="store_true", help="add delta = 0.5 mm and m = 3")
     ap.add_argument("--cases", help="instead: comma-separated delta:m pairs, e.g. 0.5e-3:4")
     ap.add_argument("--csv", default="center_crack.csv", help="file name under results/")
     args = ap.parse_args(argv)
     rows = []
     for kernel in args.kernels.split(","):
+        kernel = f"lps/{kernel}" if args.lps else kernel
         cases = CASES + (FULL_EXTRA if args.full else ())
         if args.cases:
             cases = [(float(c.split(":")[0]), int(c.split(":")[1])) for c in args.cases.split(",")]

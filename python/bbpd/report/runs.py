@@ -15,7 +15,8 @@ from bbpd import jobs as jobmod
 from bbpd import readers
 from bbpd.benchmarks import (branching, dispersion, kalthoff_winkler_3d, kalthoff_winkler_deck,
                              kalthoff_winkler_grid, kalthoff_winkler_projectile,
-                             kalthoff_winkler_study, kink, kink_convergence, strip)
+                             kalthoff_winkler_study, kink, kink_convergence, quasi_static,
+                             strip)
 from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 
@@ -211,6 +212,7 @@ def benchmark_specs(full=False, study=None):
     specs += kink_specs(study)
     specs += strip.jobs(full=study)    # the strip: Gaussian on a short strip; --full the sweep
     specs += branching_specs(study)
+    specs += quasi_static.jobs(full=full)    # examples/quasi-static (fix bbpd/relax)
     if study:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
         specs += kalthoff_winkler_study.jobs()
         specs += kalthoff_winkler_grid.jobs()    # the grid's pull (44 runs)

@@ -4,7 +4,7 @@ paragraph and the figures, each from tables, prose and figures."""
 from bbpd.benchmarks import (branching, kalthoff_winkler_3d, kalthoff_winkler_deck,
                              kalthoff_winkler_grid, kalthoff_winkler_projectile,
                              kalthoff_winkler_study, kink, kink_convergence, mode1_propagation,
-                             strip)
+                             quasi_static, strip)
 
 from . import figures, prose, tables
 from .runs import MODE1_TABLE3_DX
@@ -93,4 +93,5 @@ BUILDERS = (("dispersion", dispersion_section), ("mode1", mode1_section),
             ("kw", kw_section), ("kwstudy", kalthoff_winkler_study.section),
             ("kwprojectile", kalthoff_winkler_projectile.section),
             ("kwgrid", kalthoff_winkler_grid.section), ("kwdeck", kalthoff_winkler_deck.section),
-            ("kw3d", kalthoff_winkler_3d.section), ("kinkconv", kink_convergence.section))
+            ("kw3d", kalthoff_winkler_3d.section), ("kinkconv", kink_convergence.section),
+            ("quasistatic", quasi_static.section))
