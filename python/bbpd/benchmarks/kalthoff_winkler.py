@@ -11,7 +11,6 @@ examples/kalthoff-winkler/README.md defines each.
 Commands: examples/kalthoff-winkler/README.md.
 """
 
-import argparse
 import json
 import math
 import re
@@ -27,6 +26,7 @@ from bbpd.kernels import KERNELS
 from bbpd.runner import run_noted
 from bbpd.markdown import cell as fmt
 from bbpd import plots
+from bbpd.benchmarks import cli
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "kalthoff-winkler" / "in.kalthoff_winkler"
@@ -358,15 +358,9 @@ def table(results):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--kernels", nargs="+", default=list(KERNELS), choices=KERNELS)
-    ap.add_argument("--dx", nargs="+", type=float, default=[2e-3, 1e-3])
-    ap.add_argument("--work", default="/tmp/kalthoff-winkler", help="run directories go here")
-    ap.add_argument("--figures", default=None, help="write the PNGs here (default: --work)")
-    ap.add_argument("--np", type=int, default=2, dest="nprocs")
-    ap.add_argument("--reuse", action="store_true",
-                    help="re-analyse finished runs in --work instead of running them again")
-    args = ap.parse_args(argv)
+    args = cli.parser(__doc__, "/tmp/kalthoff-winkler", nprocs=2, kernels=KERNELS,
+                      dx=[2e-3, 1e-3], figures="write the PNGs here (default: --work)",
+                      reuse=True).parse_args(argv)
     work = Path(args.work)
     figs = Path(args.figures or work)
     figs.mkdir(parents=True, exist_ok=True)

@@ -11,7 +11,6 @@ over every off-grid crack, with its standard error.
 Commands: examples/kalthoff-winkler/README.md.
 """
 
-import argparse
 import math
 import time
 from pathlib import Path
@@ -27,6 +26,7 @@ from bbpd.csvfile import comment, read_csv, write_csv
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as _f
 from bbpd.markdown import table as md_table
+from bbpd.benchmarks import cli
 
 CSV = kw.EXAMPLE.parent / "results" / "grid_pull.csv"
 COMMAND = ("tools/python -m bbpd.benchmarks.kalthoff_winkler_grid --work /tmp/kw-grid "
@@ -311,11 +311,9 @@ def read_rows(path=CSV):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--work", default="/tmp/kw-grid", help="the runs are cached here")
+    ap = cli.parser(__doc__, "/tmp/kw-grid", csv=True)
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time (single-rank each)")
     ap.add_argument("--coarse-only", action="store_true", help="the 2 mm runs only")
-    ap.add_argument("--csv", default=None, help="write the rows here")
     args = ap.parse_args(argv)
     cases = [c for c in CASES if not (args.coarse_only and c[1] < 1.5e-3)]
     specs = sorted(jobs(cases), key=lambda s: -s.job.estimate_s)

@@ -10,8 +10,6 @@ crack band's half-width at 3 t_c and the speed over +-SPEED_HALF_WINDOW t_c arou
 examples/mode1-propagation/README.md defines each and has the commands.
 """
 
-import argparse
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -23,6 +21,7 @@ from bbpd.kernels import COLORS, KERNELS
 from bbpd.markdown import made_by
 from bbpd.provenance import cpu
 from bbpd.runner import run_or_reuse
+from bbpd.benchmarks import cli
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "mode1-propagation" / "in.mode1-propagation"
@@ -322,24 +321,16 @@ def section(specs, results, figdir, notes):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--work", default="/tmp/bbpd-mode1-propagation")
-    ap.add_argument("--nprocs", type=int, default=1)
-    ap.add_argument("--dx", type=float, nargs="+", default=list(DX_DEFAULT))
+    ap = cli.parser(__doc__, "/tmp/bbpd-mode1-propagation", nprocs=1, kernels=KERNELS,
+                    dx=DX_DEFAULT, reuse=True, csv="results CSV to write (or, with --append, add "
+                    "to)", append="keep the CSV's rows and tip histories; a run of the same "
+                    "kernel and dx replaces its row",
+                    figures="folder for crack_extension.png and crack_speed.png")
     ap.add_argument("--full", action="store_true", help=f"dx = {DX_FULL}")
-    ap.add_argument("--kernels", nargs="+", default=list(KERNELS))
     ap.add_argument("--Gc", type=float, default=G_C)
-    ap.add_argument("--reuse", action="store_true",
-                    help="measure the outputs already in --work without running LAMMPS")
-    ap.add_argument("--csv", help="results CSV to write (or, with --append, add to)")
-    ap.add_argument("--append", action="store_true",
-                    help="keep the CSV's rows and tip histories; a run of the same kernel and "
-                         "dx replaces its row")
-    ap.add_argument("--figures", help="folder for crack_extension.png and crack_speed.png")
     args = ap.parse_args(argv)
     dxs = DX_FULL if args.full else args.dx
-    command = "tools/python -m bbpd.benchmarks.mode1_propagation " + " ".join(
-        a for a in (argv if argv is not None else sys.argv[1:]) if a != "--reuse")
+    command = cli.command("mode1_propagation", argv, drop=("--reuse",))
     rows = []
     for dx in dxs:
         for kernel in args.kernels:

@@ -10,7 +10,6 @@ the BBPD model's constants. examples/mode2-central-crack/README.md derives the w
 the commands.
 """
 
-import argparse
 import time
 from pathlib import Path
 
@@ -22,6 +21,7 @@ from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 from bbpd.plots import plot_k
 from bbpd.runner import run_lammps
+from bbpd.benchmarks import cli
 
 EXAMPLE = ROOT / "examples" / "mode2-central-crack" / "in.mode2"
 
@@ -234,13 +234,9 @@ def figure(rows, path, td=0.0):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--work", default="/tmp/bbpd-mode2")
-    ap.add_argument("--nprocs", type=int, default=1)
-    ap.add_argument("--kernels", nargs="*", default=list(KERNELS))
-    ap.add_argument("--dx", type=float, nargs="*", default=[1.0e-3, 0.5e-3])
+    ap = cli.parser(__doc__, "/tmp/bbpd-mode2", nprocs=1, kernels=KERNELS, dx=[1.0e-3, 0.5e-3],
+                    figures="folder for the Fig. 12 PNG")
     ap.add_argument("--td", type=float, default=0.0, help="load rise time (0: step)")
-    ap.add_argument("--figures", help="folder for the Fig. 12 PNG")
     ap.add_argument("--fe", type=float, nargs="*", metavar="H",
                     help="classical FE check of the reference at these element sizes")
     args = ap.parse_args(argv)

@@ -12,7 +12,6 @@ examples/strip-steady-crack/README.md defines each.
 Commands: examples/strip-steady-crack/README.md.
 """
 
-import argparse
 import math
 import re
 import subprocess
@@ -29,6 +28,7 @@ from bbpd import plots
 from bbpd.runner import LammpsError, run_or_reuse
 from bbpd.markdown import cell as f
 from bbpd.markdown import made_by
+from bbpd.benchmarks import cli
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "strip-steady-crack" / "in.strip"
@@ -179,16 +179,11 @@ def kinetic_law(rows, kernel, m=5.0, H_over_delta=SWEEP_H_OVER_DELTA):
 
 
 def main(argv=None):
-    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    p.add_argument("--kernels", nargs="+", default=["gaussian"])
+    p = cli.parser(__doc__, "/tmp/strip", nprocs=1, kernels=["gaussian"], reuse=True,
+                   csv="write (or, with --append, add to) this results CSV", append=True)
     p.add_argument("--Delta", nargs="+", type=float, default=[2.0])
     p.add_argument("--m", nargs="+", type=float, default=[M])
     p.add_argument("--H-over-delta", nargs="+", type=float, default=[H_OVER_DELTA])
-    p.add_argument("--work", default="/tmp/strip")
-    p.add_argument("--csv", help="write (or, with --append, add to) this results CSV")
-    p.add_argument("--append", action="store_true")
-    p.add_argument("--reuse", action="store_true", help="measure earlier runs in --work")
-    p.add_argument("--nprocs", type=int, default=1, help="MPI ranks of each run (default 1)")
     p.add_argument("--collect", action="store_true",
                    help="measure every run folder in --work (KERNEL-mM-HH-DD) again, run nothing")
     p.add_argument("--figure", help="draw the kinetic-law figure of the CSV's rows here")
@@ -219,8 +214,7 @@ def main(argv=None):
                     rows.append(r)
     rows.sort(key=lambda r: (r["kernel"], r["m"], r["H_over_delta"], r["Delta"]))
     if a.csv:
-        write_csv(a.csv, rows, "tools/python -m bbpd.benchmarks.strip " + " ".join(argv or sys.argv[1:]),
-                  earlier)
+        write_csv(a.csv, rows, cli.command("strip", argv), earlier)
     if a.figure:
         figure(rows, a.figure)
     return 0
