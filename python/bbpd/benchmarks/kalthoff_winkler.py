@@ -17,11 +17,10 @@ import re
 from pathlib import Path
 
 import numpy as np
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
 from bbpd import readers, snapshots
+from bbpd.crack_path import clusters
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_noted
 from bbpd.markdown import cell as fmt
@@ -75,16 +74,6 @@ def first_rise(steps, series, rel=1e-9):
     """First step at which series exceeds its first value (a bond broke), or None."""
     above = np.nonzero(series > series[0] * (1.0 + rel) + rel)[0]
     return int(steps[above[0]]) if len(above) else None
-
-
-def clusters(points, link):
-    """Connected-component label of each point, linking points closer than `link`."""
-    n = len(points)
-    if n == 0:
-        return np.zeros(0, dtype=int)
-    pairs = cKDTree(points).query_pairs(link, output_type="ndarray")
-    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
-    return connected_components(graph, directed=False)[1]
 
 
 def notch_cracks(x, y, phi, g):

@@ -173,15 +173,10 @@ def jobs():
     """The runs as bbpd.report specs (tools/reproduce --full)."""
     inputs = (kw.EXAMPLE, projectile.EXAMPLE_3D, Path(__file__), Path(kw.__file__),
               Path(study.__file__), Path(projectile.__file__))
-    specs = []
-    for dx in RESOLUTIONS:
-        for setup in ("2d", "3d"):
-            label = f"Kalthoff-Winkler {setup} m = {M:g} dx = {dx * 1e3:g} mm"
-            specs.append(jobmod.report_spec("kw3d", KERNEL, dx, label,
-                                            "bbpd.benchmarks.kalthoff_winkler_3d:run_case",
-                                            {"setup": setup, "dx": dx, "nprocs": 1}, inputs,
-                                            ESTIMATE_S[setup, dx]))
-    return specs
+    return jobmod.report_specs("kw3d", "bbpd.benchmarks.kalthoff_winkler_3d:run_case", inputs, (
+        (KERNEL, dx, f"Kalthoff-Winkler {setup} m = {M:g} dx = {dx * 1e3:g} mm",
+         {"setup": setup, "dx": dx, "nprocs": 1}, ESTIMATE_S[setup, dx])
+        for dx in RESOLUTIONS for setup in ("2d", "3d")))
 
 
 def section(specs, results, figdir, notes):

@@ -158,17 +158,11 @@ def jobs(nprocs=1):
     """The runs as bbpd.report specs (tools/reproduce --full)."""
     inputs = (kw.EXAMPLE, Path(__file__), Path(kw.__file__), Path(study.__file__),
               Path(projectile.__file__), kw.ROOT / "potentials" / "kalthoff_winkler_steel.bbpd")
-    specs = []
-    for dx in DX_VALUES:
-        for deck in DECKS:
-            for k in KERNELS:
-                label = f"Kalthoff-Winkler deck {deck} {k} dx = {dx * 1e3:g} mm"
-                specs.append(jobmod.report_spec("kwdeck", k, dx, label,
-                                                "bbpd.benchmarks.kalthoff_winkler_deck:run_case",
-                                                {"deck": deck, "kernel": k, "dx": dx,
-                                                 "nprocs": nprocs}, inputs,
-                                                ESTIMATE_S[dx] * (LPS_COST if deck in BOND_DECK else 1.0)))
-    return specs
+    return jobmod.report_specs("kwdeck", "bbpd.benchmarks.kalthoff_winkler_deck:run_case", inputs, (
+        (k, dx, f"Kalthoff-Winkler deck {deck} {k} dx = {dx * 1e3:g} mm",
+         {"deck": deck, "kernel": k, "dx": dx, "nprocs": nprocs},
+         ESTIMATE_S[dx] * (LPS_COST if deck in BOND_DECK else 1.0))
+        for dx in DX_VALUES for deck in DECKS for k in KERNELS))
 
 
 def section(specs, results, figdir, notes):

@@ -121,18 +121,11 @@ def jobs(cases=CASES, loadings=LOADINGS, nprocs=1):
     inputs = (kw.EXAMPLE, Path(kw.__file__), Path(study.__file__), Path(projectile.__file__),
               kw.ROOT / "potentials" / "kalthoff_winkler_steel.bbpd",
               Path(readers.__file__))
-    specs = []
-    for kernel, dx, grids in cases:
-        for grid in grids:
-            for loading in loadings:
-                label = f"Kalthoff-Winkler grid {grid} {loading} {kernel} dx = {dx * 1e3:g} mm"
-                estimate = ((8.0 if dx > 1.5e-3 else 60.0)
-                            * (2.5 if loading == "projectile" else 1.0))
-                specs.append(jobmod.report_spec("kwgrid", kernel, dx, label,
-                                                "bbpd.benchmarks.kalthoff_winkler_grid:run_case",
-                                                {"kernel": kernel, "dx": dx, "loading": loading,
-                                                 "grid": grid, "nprocs": nprocs}, inputs, estimate))
-    return specs
+    return jobmod.report_specs("kwgrid", "bbpd.benchmarks.kalthoff_winkler_grid:run_case", inputs, (
+        (kernel, dx, f"Kalthoff-Winkler grid {grid} {loading} {kernel} dx = {dx * 1e3:g} mm",
+         {"kernel": kernel, "dx": dx, "loading": loading, "grid": grid, "nprocs": nprocs},
+         (8.0 if dx > 1.5e-3 else 60.0) * (2.5 if loading == "projectile" else 1.0))
+        for kernel, dx, grids in cases for grid in grids for loading in loadings))
 
 
 def collect(specs, results):

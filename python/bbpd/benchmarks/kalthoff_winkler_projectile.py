@@ -277,14 +277,11 @@ def jobs(full=False, nprocs=1):
     """The report's projectile runs as bbpd.report specs."""
     inputs = (kw.EXAMPLE, Path(kw.__file__), Path(study.__file__), Path(__file__),
               kw.ROOT / "potentials" / "kalthoff_winkler_steel.bbpd")
-    specs = []
-    for kernel, dx in (REPORT_CASES_FULL if full else REPORT_CASES):
-        label = f"Kalthoff-Winkler projectile {kernel} dx = {dx * 1e3:g} mm"
-        specs.append(jobmod.report_spec("kwprojectile", kernel, dx, label,
-                                        "bbpd.benchmarks.kalthoff_winkler_projectile:report_run",
-                                        {"kernel": kernel, "dx": dx, "nprocs": nprocs}, inputs,
-                                        25.0 if dx > 1.5e-3 else 200.0))
-    return specs
+    return jobmod.report_specs(
+        "kwprojectile", "bbpd.benchmarks.kalthoff_winkler_projectile:report_run", inputs,
+        ((kernel, dx, f"Kalthoff-Winkler projectile {kernel} dx = {dx * 1e3:g} mm",
+          {"kernel": kernel, "dx": dx, "nprocs": nprocs}, 25.0 if dx > 1.5e-3 else 200.0)
+         for kernel, dx in (REPORT_CASES_FULL if full else REPORT_CASES)))
 
 
 def report_text(rows):

@@ -390,15 +390,11 @@ def jobs(nprocs=1):
     """The study's runs as bbpd.report specs (the report's --full and this module's command)."""
     inputs = (kw.EXAMPLE, Path(kw.__file__), Path(__file__),
               kw.ROOT / "potentials" / "kalthoff_winkler_steel.bbpd", Path(readers.__file__))
-    specs = []
-    for case in CASES:
-        for k, dx in STUDY_KERNEL_DX:
-            label = f"Kalthoff-Winkler study {case} {k} dx = {dx * 1e3:g} mm"
-            specs.append(jobmod.report_spec("kwstudy", k, dx, label,
-                                            "bbpd.benchmarks.kalthoff_winkler_study:run_case",
-                                            {"kernel": k, "dx": dx, "case": case, "nprocs": nprocs},
-                                            inputs, 500.0 if dx < 1e-3 else 90.0))
-    return specs
+    return jobmod.report_specs(
+        "kwstudy", "bbpd.benchmarks.kalthoff_winkler_study:run_case", inputs,
+        ((k, dx, f"Kalthoff-Winkler study {case} {k} dx = {dx * 1e3:g} mm",
+          {"kernel": k, "dx": dx, "case": case, "nprocs": nprocs}, 500.0 if dx < 1e-3 else 90.0)
+         for case in CASES for k, dx in STUDY_KERNEL_DX))
 
 
 def collect(specs, results):

@@ -265,14 +265,10 @@ REPORT_TITLE = "Kink test: convergence of the pure Mode II angle in m and in the
 def jobs(nprocs=1):
     """The runs as bbpd.report specs (tools/reproduce --full)."""
     inputs = (kinkbench.EXAMPLE, Path(__file__), Path(kinkbench.__file__))
-    specs = []
-    for m, rd in CASES:
-        label = f"kink convergence m = {m:g} R/delta = {rd:g}"
-        specs.append(jobmod.report_spec("kinkconv", KERNEL, DELTA / m, label,
-                                        "bbpd.benchmarks.kink_convergence:run_case",
-                                        {"m": m, "r_over_delta": rd, "nprocs": nprocs}, inputs,
-                                        90.0 * (m / 5.0) ** 3 * (rd / 10.0) ** 3))
-    return specs
+    return jobmod.report_specs("kinkconv", "bbpd.benchmarks.kink_convergence:run_case", inputs, (
+        (KERNEL, DELTA / m, f"kink convergence m = {m:g} R/delta = {rd:g}",
+         {"m": m, "r_over_delta": rd, "nprocs": nprocs}, 90.0 * (m / 5.0) ** 3 * (rd / 10.0) ** 3)
+        for m, rd in CASES))
 
 
 def section(specs, results, figdir, notes):

@@ -341,10 +341,9 @@ def main(argv=None):
                   f"{res['l2_toughness_pct']:.1f} / {res['l2_energy_pct']:.1f} %", flush=True)
     if args.csv:
         histories = Path(args.csv).with_name("tip_histories.csv")
-        provenance, this = [], f"made by: {command}"
-        if args.append and Path(args.csv).is_file():
-            provenance, this = csvfile.provenance(args.csv), f"rows added by: {command}"
-            earlier = read_rows(args.csv)
+        provenance, earlier, this = csvfile.continue_csv(args.csv if args.append else None,
+                                                         command, read_rows)
+        if earlier:
             hist = read_histories(histories)
             for r in earlier:
                 r["t_tip"], r["l_pd"] = hist[(r["kernel"], r["dx"])]

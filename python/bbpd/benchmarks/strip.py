@@ -147,12 +147,10 @@ def run(workdir, kernel="gaussian", Delta=2.0, dx=DX, m=M, H_over_delta=H_OVER_D
     return res
 
 
-def write_csv(path, rows, command, earlier=()):
-    """earlier: the 'made by' and 'rows added by' lines of the CSV that --append extends"""
-    made = list(earlier) + [f"{'rows added by' if earlier else 'made by'}: {command}"]
-    csvfile.write_table(path, rows, CSV_COLUMNS,
-                        made + ["timing: LAMMPS loop time; its ranks and CPU in column timing"],
-                        text=TEXT_COLUMNS)
+def write_csv(path, rows, provenance):
+    """provenance: the 'made by' and 'rows added by' lines (csvfile.continue_csv)"""
+    csvfile.write_table(path, rows, CSV_COLUMNS, list(provenance) + [
+        "timing: LAMMPS loop time; its ranks and CPU in column timing"], text=TEXT_COLUMNS)
 
 
 def read_rows(path):
@@ -188,9 +186,8 @@ def main(argv=None):
                    help="measure every run folder in --work (KERNEL-mM-HH-DD) again, run nothing")
     p.add_argument("--figure", help="draw the kinetic-law figure of the CSV's rows here")
     a = p.parse_args(argv)
-    appending = a.append and a.csv and Path(a.csv).is_file()
-    rows = read_rows(a.csv) if appending else []
-    earlier = csvfile.provenance(a.csv) if appending else []
+    earlier, rows, made = csvfile.continue_csv(a.csv if a.append else None,
+                                               cli.command("strip", argv), read_rows)
     if a.collect:
         rows = collect(a.work)
         a.kernels = []
@@ -214,7 +211,7 @@ def main(argv=None):
                     rows.append(r)
     rows.sort(key=lambda r: (r["kernel"], r["m"], r["H_over_delta"], r["Delta"]))
     if a.csv:
-        write_csv(a.csv, rows, cli.command("strip", argv), earlier)
+        write_csv(a.csv, rows, [*earlier, made])
     if a.figure:
         figure(rows, a.figure)
     return 0
@@ -398,15 +395,11 @@ def job(workdir, kernel, Delta, m, H_over_delta, nprocs=1):
 def jobs(full=False):
     """The report's strip runs as bbpd.report specs."""
     inputs = (EXAMPLE, Path(__file__), Path(freund.__file__))
-    specs = []
-    for kernel, D, m, hd in (REPORT_CASES_FULL if full else REPORT_CASES):
-        label = f"strip {kernel} m = {m:g} H/delta = {hd:g} Delta = {D:g}"
-        estimate = 30.0 * (m / M) ** 3 * (hd / 10.0) ** 3
-        specs.append(jobmod.report_spec("strip", kernel, DX * M / m, label,
-                                        "bbpd.benchmarks.strip:job",
-                                        {"kernel": kernel, "Delta": D, "m": m, "H_over_delta": hd},
-                                        inputs, estimate))
-    return specs
+    return jobmod.report_specs("strip", "bbpd.benchmarks.strip:job", inputs, (
+        (kernel, DX * M / m, f"strip {kernel} m = {m:g} H/delta = {hd:g} Delta = {D:g}",
+         {"kernel": kernel, "Delta": D, "m": m, "H_over_delta": hd},
+         30.0 * (m / M) ** 3 * (hd / 10.0) ** 3)
+        for kernel, D, m, hd in (REPORT_CASES_FULL if full else REPORT_CASES)))
 
 
 def section(specs, results, figdir, notes):
