@@ -179,9 +179,15 @@ def read_histories(path):
     return {key: tuple(np.array(v).T) for key, v in hist.items()}
 
 
-def read_rows(path):
-    """The CSV written by write_csv as a list of dicts (kernel and cpu strings, the rest floats)"""
-    return csvfile.read_table(path, text=TEXT_COLUMNS)
+def read_rows(path, histories=None):
+    """The CSV written by write_csv as a list of dicts (kernel and cpu strings, the rest floats),
+    given histories (write_histories' file) with each run's tip history as t_tip, l_pd"""
+    rows = csvfile.read_table(path, text=TEXT_COLUMNS)
+    if histories:
+        hist = read_histories(histories)
+        for r in rows:
+            r["t_tip"], r["l_pd"] = hist[(r["kernel"], r["dx"])]
+    return rows
 
 
 def cpu_markdown(rows):
@@ -228,11 +234,7 @@ FIGURE_NAMES = ("crack_extension.png", "crack_speed.png", "work_precision.png")
 
 def figures(histories_csv, results_csv, folder, prefix=""):
     """The figures of the example from its CSVs (see figures_of_rows)."""
-    rows = read_rows(results_csv)
-    hist = read_histories(histories_csv)
-    for r in rows:
-        r["t_tip"], r["l_pd"] = hist[(r["kernel"], r["dx"])]
-    return figures_of_rows(rows, folder, prefix)
+    return figures_of_rows(read_rows(results_csv, histories_csv), folder, prefix)
 
 
 def figures_of_rows(rows, folder, prefix=""):
@@ -342,11 +344,8 @@ def main(argv=None):
     if args.csv:
         histories = Path(args.csv).with_name("tip_histories.csv")
         provenance, earlier, this = csvfile.continue_csv(args.csv if args.append else None,
-                                                         command, read_rows)
+                                                         command, lambda p: read_rows(p, histories))
         if earlier:
-            hist = read_histories(histories)
-            for r in earlier:
-                r["t_tip"], r["l_pd"] = hist[(r["kernel"], r["dx"])]
             rows = merge_rows(earlier, rows)
         write_csv(args.csv, rows, provenance + [this])
         write_histories(histories, rows)
