@@ -23,7 +23,7 @@ from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
 from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.csvfile import comment, read_csv, write_csv
-from bbpd.runner import run_lammps
+from bbpd.runner import run_or_reuse
 from bbpd.markdown import cell as _f
 from bbpd.markdown import table as md_table
 from bbpd.benchmarks import cli
@@ -72,9 +72,7 @@ def run_case(workdir, kernel, dx, loading, grid, nprocs=1, tend=TEND):
     variables = {"kernel": kernel, "dx": repr(float(dx)), "tend": repr(float(tend)),
                  "loading": loading}
     variables.update(grid_vars(grid))
-    start = time.perf_counter()
-    run_lammps(str(kw.EXAMPLE), workdir, nprocs=nprocs, vars=variables)
-    wall = time.perf_counter() - start
+    wall = run_or_reuse(kw.EXAMPLE, workdir, variables, nprocs)[1]
     res = projectile.analyse(workdir)
     res.update(nprocs=nprocs, wall_s=wall, grid=grid)
     return {k: v for k, v in res.items() if k not in BULKY}

@@ -19,7 +19,7 @@ from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 from bbpd.provenance import machine
 from bbpd.plots import plot_k
-from bbpd.runner import run_lammps
+from bbpd.runner import run_or_reuse
 from bbpd.benchmarks import cli
 
 EXAMPLE = ROOT / "examples" / "mode1-semi-infinite" / "in.mode1"
@@ -97,16 +97,14 @@ def run(workdir, kernel="gaussian", dx=0.05, model="plane/stress", dt=None, npro
     if m is not None:
         vars_["m"] = m
     nu_model = nu if family == "lps" else None
-    start = time.perf_counter()
-    proc = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_)
-    wall = time.perf_counter() - start
-    loop_s, _ = readers.loop_time(proc.output)
+    output, wall = run_or_reuse(EXAMPLE, workdir, vars_, nprocs)
+    loop_s, _ = readers.loop_time(output)
     # k.dat: K_I (paper constants), K_I (consistent), K_II (consistent)
     t, k_paper, k_cons, k_ii = readers.k_history(workdir / "k.dat", dt)
     res = {"kernel": kernel, "dx": dx, "model": model, "family": family, "nu": nu_model,
            "dt": dt, "nprocs": nprocs,
            "wall_time": wall, "loop_time": loop_s,
-           "dt_fraction_of_limit": readers.pair_setup(proc.output)["dt_fraction"],
+           "dt_fraction_of_limit": readers.pair_setup(output)["dt_fraction"],
            "atoms": int(round(10.0 / dx)) * int(round(2 * H / dx)),
            "t": t, "k_paper": k_paper, "k_consistent": k_cons, "k_ii": k_ii}
     res.update(errors(t, k_paper, k_cons, model, nu=nu_model))
