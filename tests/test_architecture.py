@@ -456,7 +456,7 @@ PYTHON_LAYERS = [
      "bbpd.benchmarks.kink_limit", "bbpd.benchmarks.kalthoff_winkler_grid",
      "bbpd.benchmarks.kalthoff_winkler_deck", "bbpd.benchmarks.kalthoff_winkler_3d",
      "bbpd.benchmarks.strip", "bbpd.benchmarks.strip_closure", "bbpd.benchmarks.branching",
-     "bbpd.benchmarks.mode1_lps",
+     "bbpd.benchmarks.mode1_lps", "bbpd.benchmarks.cli",
      "bbpd.benchmarks.big_run", "bbpd.benchmarks.plate_hole", "bbpd.benchmarks.center_crack",
      "bbpd.benchmarks.center_crack_growth", "bbpd.benchmarks.quasi_static",
      "bbpd.benchmarks.dcb_growth"},

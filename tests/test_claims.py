@@ -104,12 +104,12 @@ def test_import_takes_report_results(tmp_path, monkeypatch):
 
 def test_the_verification_page_states_what_the_data_give():
     """doc/verification.md's list under the benchmark table, by hand: checked against the CSVs"""
-    from bbpd.claims import kw, mode1, mode2
+    from bbpd.claims import kw, mode1, mode2, text
     data = Data()
     disp = {r["kernel"]: r["phase_kdx2.5"] for r in data.rows("dispersion")}
     assert max(disp, key=disp.get) == "gaussian" and min(disp, key=disp.get) == "constant"
     _, t3 = mode1.paper()
-    at = mode1._at(data, mode1.TABLE3_DX)
+    at = text.at(data.rows(mode1.NAME), mode1.TABLE3_DX)
     assert sorted(at, key=lambda k: at[k]["consistent_l2"]) == sorted(at, key=lambda k: t3[k][1])
     assert max(abs(at[k][c] - t3[k][i]) for k in ("constant", "triangular")
                for i, c in ((0, "consistent_peak"), (1, "consistent_l2"))) < 2.1
@@ -120,12 +120,12 @@ def test_the_verification_page_states_what_the_data_give():
     assert max(r["j_peak"] for r in data.rows(mode1.NAME)) < 1.65
     assert mode2.excess(data) == "12–29 %"
     ratio = {(r["kernel"], r["dx_m"]): r["ratio_end"] for r in data.rows(mode2.NAME)}
-    grids = mode2._grids(data)
+    grids = text.grids(data.rows(mode2.NAME))
     assert all(ratio[k, grids[-1]] >= ratio[k, grids[0]] for k in ("constant", "triangular", "gaussian"))
     paper, exp = kw._consts()
-    flat = [exp - r["angle_deg"] for r in kw._at(data, 1.0e-3).values()]
+    flat = [exp - r["angle_deg"] for r in text.at(data.rows(kw.NAME), 1.0e-3).values()]
     assert 8.5 <= min(flat) and max(flat) < 10.5
-    band = {k: r["damage_band_us"] for k, r in kw._at(data, 1.0e-3).items()}
+    band = {k: r["damage_band_us"] for k, r in text.at(data.rows(kw.NAME), 1.0e-3).items()}
     assert sorted(band, key=band.get) == sorted(paper, key=paper.get)
 
 
@@ -161,11 +161,11 @@ def test_the_mode1_readme_states_what_the_data_give():
     """examples/mode1-semi-infinite/README.md, by hand: rankings, the paper's numbers, the
     J-integral's errors, the symmetry checks and the tips table's reading"""
     import re
-    from bbpd.claims import mode1
+    from bbpd.claims import mode1, text
     data = Data()
     rows = data.rows("mode1")
     _, t3 = mode1.paper()
-    at = mode1._at(data, mode1.TABLE3_DX)
+    at = text.at(data.rows(mode1.NAME), mode1.TABLE3_DX)
 
     def order(col, sel=at):
         return sorted(sel, key=lambda k: sel[k][col])
@@ -184,7 +184,7 @@ def test_the_mode1_readme_states_what_the_data_give():
     assert (round(min(r["j_l2"] for r in rows), 1), round(max(r["j_l2"] for r in rows), 1)) == (0.1, 1.6)
     for dx, want in ((0.1, ["gaussian", "constant", "triangular"]), (0.05, ["gaussian", "triangular", "constant"]),
                      (0.025, ["gaussian", "triangular", "constant"])):
-        assert order("j_peak", mode1._at(data, dx)) == want
+        assert order("j_peak", text.at(data.rows(mode1.NAME), dx)) == want
     low = [100 * (1 - r["kmax_ratio_j"]) for r in rows if r["kernel"] == "constant"]
     assert (round(min(low), 1), round(max(low), 1)) == (0.5, 1.6)
     tips = data.rows("mode1_tips")
@@ -200,7 +200,7 @@ def test_the_mode1_readme_states_what_the_data_give():
 def test_the_kalthoff_winkler_readme_states_what_the_data_give():
     """examples/kalthoff-winkler/README.md, 'Reading the table', by hand: initiation, angle,
     speed, symmetry and far-edge crack against results/kalthoff_winkler.csv"""
-    from bbpd.claims import kw
+    from bbpd.claims import kw, text
     data = Data()
     rows = data.rows("kalthoff_winkler")
     paper, exp = kw._consts()
@@ -210,14 +210,14 @@ def test_the_kalthoff_winkler_readme_states_what_the_data_give():
     assert [round(g[dx]["angle_deg"], 1) for dx in (2.0, 1.0, 0.5)] == [58.8, 61.1, 62.3]
     main = [r for r in rows if r["dx_m"] >= 1e-3]
     assert (round(min(r["first_bond_us"] for r in main), 1), round(max(r["first_bond_us"] for r in main), 1)) == (10.8, 12.4)
-    at = kw._at(data, 1.0e-3)
+    at = text.at(data.rows(kw.NAME), 1.0e-3)
     late = [paper[k] - r["first_bond_us"] for k, r in at.items()]
     assert (round(min(late), 1), round(max(late), 1)) == (8.7, 9.3)
     early = [paper[k] - r["damage_band_us"] for k, r in at.items()]
     assert (round(min(early), 1), round(max(early), 1)) == (1.7, 1.9)
     ang = {k: r["angle_deg"] for k, r in at.items()}
     assert round(max(ang.values()) - min(ang.values()), 1) == 1.2
-    two = kw._at(data, 2.0e-3)
+    two = text.at(data.rows(kw.NAME), 2.0e-3)
     moved = [ang[k] - two[k]["angle_deg"] for k in ang]
     assert (round(min(moved), 1), round(max(moved), 1)) == (2.3, 3.8)
     speed = [r["speed_m_s"] / 1e3 for r in main]

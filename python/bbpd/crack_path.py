@@ -44,6 +44,16 @@ def tip_frame(x, y, tip, alpha_deg):
     return dx * math.cos(a) + dy * math.sin(a), -dx * math.sin(a) + dy * math.cos(a)
 
 
+def clusters(points, link):
+    """Connected-component label of each point, linking points closer than `link`."""
+    n = len(points)
+    if n == 0:
+        return np.zeros(0, dtype=int)
+    pairs = cKDTree(points).query_pairs(link, output_type="ndarray")
+    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
+    return connected_components(graph, directed=False)[1]
+
+
 def grown_crack(x, y, damage, tip, dx, seed, threshold=CRACK_DAMAGE):
     """Boolean mask of the crack atoms linked to the tip (see the module's definitions)."""
     x, y, damage = map(np.asarray, (x, y, damage))
@@ -52,10 +62,7 @@ def grown_crack(x, y, damage, tip, dx, seed, threshold=CRACK_DAMAGE):
     if len(crack) == 0:
         return mask
     pts = np.column_stack([x[crack], y[crack]])
-    pairs = cKDTree(pts).query_pairs(LINK_DX * dx, output_type="ndarray")
-    n = len(crack)
-    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
-    labels = connected_components(graph, directed=False)[1]
+    labels = clusters(pts, LINK_DX * dx)
     near = np.hypot(pts[:, 0] - tip[0], pts[:, 1] - tip[1]) <= seed
     mask[crack[np.isin(labels, np.unique(labels[near]))]] = True
     return mask

@@ -99,13 +99,13 @@ def provenance(path):
             if ln.startswith(("# made by: ", "# rows added by: "))]
 
 
-def continue_csv(path, command):
-    """(earlier provenance lines, rows so far, this command's line) for a run that adds to the
-    results CSV at path (None: it starts one): an added run keeps the rows and the commands
-    that made them, and names itself 'rows added by'."""
+def continue_csv(path, command, read=lambda path: read_csv(path)[1]):
+    """(earlier provenance lines, rows so far (read(path)), this command's line) for a run that
+    adds to the results CSV at path (None: it starts one): an added run keeps the rows and the
+    commands that made them, and names itself 'rows added by'."""
     if path is None or not Path(path).is_file():
         return [], [], f"made by: {command}"
-    return provenance(path), read_csv(path)[1], f"rows added by: {command}"
+    return provenance(path), read(path), f"rows added by: {command}"
 
 
 def loop_times_note(rows, key, case):

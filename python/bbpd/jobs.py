@@ -54,6 +54,12 @@ def report_spec(bench, kernel, dx, label, target, args, inputs, estimate_s):
                                        inputs=tuple(str(p) for p in inputs), estimate_s=estimate_s))
 
 
+def report_specs(bench, target, inputs, cases):
+    """report_spec of every (kernel, dx, label, args, estimate_s) in cases"""
+    return [report_spec(bench, kernel, dx, label, target, args, inputs, estimate)
+            for kernel, dx, label, args, estimate in cases]
+
+
 def finished(specs, results):
     """(the specs whose run finished without an error, the labels of the others)"""
     done = [s for s in specs if results.get(s.job.label) and "error" not in results[s.job.label]]

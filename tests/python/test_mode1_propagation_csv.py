@@ -23,10 +23,7 @@ def test_append_keeps_rows_provenance_and_cpu(tmp_path):
     first = [row("gaussian", 0.1, 0.96), row("constant", 0.1, 1.01)]
     mp.write_csv(path, first, ["made by: first"])
     mp.write_histories(path.with_name("tip_histories.csv"), first)
-    earlier = mp.read_rows(path)
-    hist = mp.read_histories(path.with_name("tip_histories.csv"))
-    for r in earlier:
-        r["t_tip"], r["l_pd"] = hist[(r["kernel"], r["dx"])]
+    earlier = mp.read_rows(path, path.with_name("tip_histories.csv"))
     merged = mp.merge_rows(earlier, [row("gaussian", 0.05, 0.89, cpu="CPU B"),
                                      row("constant", 0.1, 1.00, cpu="CPU B")])
     mp.write_csv(path, merged, csvfile.provenance(path) + ["rows added by: second"])

@@ -21,7 +21,7 @@ def test_timing_column_round_trips_and_names_the_other_runs(tmp_path):
     path = tmp_path / "strip.csv"
     rows = [row("gaussian", 4.0, 10.0), row("gaussian", 4.0, 20.0),
             row("gaussian", 6.0, 40.0, timing="2 ranks, CPU B")]
-    strip.write_csv(path, rows, "first")
+    strip.write_csv(path, rows, ["made by: first"])
     back = strip.read_rows(path)
     assert [r["timing"] for r in back] == ["1 rank, CPU A", "1 rank, CPU A", "2 ranks, CPU B"]
     note = strip.timing_markdown(back)
@@ -77,7 +77,7 @@ def test_a_crack_that_leaves_its_plane_is_branched_where_it_left(tmp_path):
     r = {c: 1.0 for c in strip.CSV_COLUMNS}
     r.update(kernel="gaussian", m=4.0, H_over_delta=80.0, Delta=2.0, crossed=False,
              state="branched", timing="1 rank, CPU A", left_plane_over_H=1.4925)
-    strip.write_csv(tmp_path / "s.csv", [r], "x")
+    strip.write_csv(tmp_path / "s.csv", [r], ["made by: x"])
     back = strip.read_rows(tmp_path / "s.csv")[0]
     assert back["left_plane_over_H"] == pytest.approx(1.4925)
     assert "no (branched at a + 1.49 H)" in strip.table_markdown([back])

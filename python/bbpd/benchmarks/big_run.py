@@ -13,13 +13,13 @@ the fixed cost of the program and its libraries; the largest size that fits foll
 Commands: examples/big-run/README.md.
 """
 
-import argparse
 import re
 import subprocess
 from pathlib import Path
 
 from bbpd import readers
 from bbpd.runner import LMP, MPIRUN, error_line
+from bbpd.benchmarks import cli
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "big-run" / "in.big"
@@ -89,11 +89,9 @@ def fits(runs, memory_bytes):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap = cli.parser(__doc__, "/tmp/big-run", nprocs=2)
     ap.add_argument("--n", type=int, nargs="+", default=[40, 60, 80],
                     help="points per edge of each block (default 40 60 80)")
-    ap.add_argument("--nprocs", type=int, default=2, help="MPI ranks (default 2)")
-    ap.add_argument("--work", default="/tmp/big-run", help="folder of the runs")
     ap.add_argument("--memory-gb", type=float, default=None,
                     help="memory to extrapolate to, GB (default: MemAvailable of /proc/meminfo)")
     args = ap.parse_args()

@@ -12,8 +12,6 @@ and the mirror symmetry of the two branches; examples/crack-branching/README.md 
 Commands: examples/crack-branching/README.md.
 """
 
-import argparse
-import sys
 import time
 from pathlib import Path
 
@@ -24,6 +22,7 @@ from bbpd import jobs as jobmod
 from bbpd.provenance import cpu
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_or_reuse
+from bbpd.benchmarks import cli
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "crack-branching" / "in.crack_branching"
@@ -329,17 +328,13 @@ def section(specs, results, figdir, notes):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--work", default="/tmp/bbpd-branching")
+    ap = cli.parser(__doc__, "/tmp/bbpd-branching", reuse=True,
+                    csv="results CSV (rows of runs not made now are kept)",
+                    figures="folder for damage_maps.png (the sigma = 2 MPa, m = 4 runs) and "
+                    "damage_maps_sigma.png (the Gaussian at 2, 4, 12 MPa)")
     ap.add_argument("--runs", nargs="+", default=DEFAULT_RUNS, choices=list(RUNS))
-    ap.add_argument("--reuse", action="store_true",
-                    help="measure the outputs already in --work without running LAMMPS")
-    ap.add_argument("--csv", help="results CSV (rows of runs not made now are kept)")
-    ap.add_argument("--figures", help="folder for damage_maps.png (the sigma = 2 MPa, m = 4 "
-                    "runs) and damage_maps_sigma.png (the Gaussian at 2, 4, 12 MPa)")
     args = ap.parse_args(argv)
-    command = "tools/python -m bbpd.benchmarks.branching " + " ".join(
-        a for a in (argv if argv is not None else sys.argv[1:]) if a != "--reuse")
+    command = cli.command("branching", argv, drop=("--reuse",))
     rows = {}
     if args.csv and Path(args.csv).exists():
         rows = {r["run"]: r for r in read_rows(args.csv)}

@@ -18,7 +18,6 @@ errors     max |omega_measured/omega_analytic - 1| over the k whose ridge carrie
 Commands: examples/dispersion-1d/README.md.
 """
 
-import argparse
 import glob
 import json
 import math
@@ -35,6 +34,7 @@ from bbpd import plots, readers
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.readers import read_csv
 from bbpd.runner import run_lammps
+from bbpd.benchmarks import cli
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "dispersion-1d" / "in.dispersion"
@@ -353,11 +353,8 @@ def summary(results, table):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--kernels", nargs="+", default=list(KERNELS), choices=KERNELS)
-    ap.add_argument("--work", default="/tmp/bbpd-dispersion", help="run directories go here")
-    ap.add_argument("--figures", default=None, help="write the PNGs here (default: --work)")
-    ap.add_argument("--np", type=int, default=1, dest="nprocs")
+    ap = cli.parser(__doc__, "/tmp/bbpd-dispersion", nprocs=1, kernels=KERNELS,
+                    figures="write the PNGs here (default: --work)")
     ap.add_argument("--natoms", type=int, default=None)
     ap.add_argument("--nsteps", type=int, default=None)
     ap.add_argument("--dtv", type=float, default=None, help="time step in units of dx/v")

@@ -11,22 +11,21 @@ examples/kalthoff-winkler/README.md defines each.
 Commands: examples/kalthoff-winkler/README.md.
 """
 
-import argparse
 import json
 import math
 import re
 from pathlib import Path
 
 import numpy as np
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
 from bbpd import readers, snapshots
+from bbpd.crack_path import clusters
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_noted
 from bbpd.markdown import cell as fmt
 from bbpd import plots
+from bbpd.benchmarks import cli
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "kalthoff-winkler" / "in.kalthoff_winkler"
@@ -75,16 +74,6 @@ def first_rise(steps, series, rel=1e-9):
     """First step at which series exceeds its first value (a bond broke), or None."""
     above = np.nonzero(series > series[0] * (1.0 + rel) + rel)[0]
     return int(steps[above[0]]) if len(above) else None
-
-
-def clusters(points, link):
-    """Connected-component label of each point, linking points closer than `link`."""
-    n = len(points)
-    if n == 0:
-        return np.zeros(0, dtype=int)
-    pairs = cKDTree(points).query_pairs(link, output_type="ndarray")
-    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
-    return connected_components(graph, directed=False)[1]
 
 
 def notch_cracks(x, y, phi, g):
@@ -358,15 +347,9 @@ def table(results):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--kernels", nargs="+", default=list(KERNELS), choices=KERNELS)
-    ap.add_argument("--dx", nargs="+", type=float, default=[2e-3, 1e-3])
-    ap.add_argument("--work", default="/tmp/kalthoff-winkler", help="run directories go here")
-    ap.add_argument("--figures", default=None, help="write the PNGs here (default: --work)")
-    ap.add_argument("--np", type=int, default=2, dest="nprocs")
-    ap.add_argument("--reuse", action="store_true",
-                    help="re-analyse finished runs in --work instead of running them again")
-    args = ap.parse_args(argv)
+    args = cli.parser(__doc__, "/tmp/kalthoff-winkler", nprocs=2, kernels=KERNELS,
+                      dx=[2e-3, 1e-3], figures="write the PNGs here (default: --work)",
+                      reuse=True).parse_args(argv)
     work = Path(args.work)
     figs = Path(args.figures or work)
     figs.mkdir(parents=True, exist_ok=True)

@@ -10,7 +10,6 @@ the first broken bond and the damage band, atoms, bonds, steps, loop time and me
 Commands: examples/kalthoff-winkler/README.md, "3D plate resolved through its thickness".
 """
 
-import argparse
 import re
 import sys
 from pathlib import Path
@@ -27,6 +26,7 @@ from bbpd.jobs import ROOT
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as _f
 from bbpd.markdown import table as md_table
+from bbpd.benchmarks import cli
 
 CSV = ROOT / "examples" / "kalthoff-winkler" / "results" / "kw3d.csv"
 PLATE_THICKNESS = 9.0e-3          # m, the experiment's plate
@@ -173,15 +173,10 @@ def jobs():
     """The runs as bbpd.report specs (tools/reproduce --full)."""
     inputs = (kw.EXAMPLE, projectile.EXAMPLE_3D, Path(__file__), Path(kw.__file__),
               Path(study.__file__), Path(projectile.__file__))
-    specs = []
-    for dx in RESOLUTIONS:
-        for setup in ("2d", "3d"):
-            label = f"Kalthoff-Winkler {setup} m = {M:g} dx = {dx * 1e3:g} mm"
-            specs.append(jobmod.report_spec("kw3d", KERNEL, dx, label,
-                                            "bbpd.benchmarks.kalthoff_winkler_3d:run_case",
-                                            {"setup": setup, "dx": dx, "nprocs": 1}, inputs,
-                                            ESTIMATE_S[setup, dx]))
-    return specs
+    return jobmod.report_specs("kw3d", "bbpd.benchmarks.kalthoff_winkler_3d:run_case", inputs, (
+        (KERNEL, dx, f"Kalthoff-Winkler {setup} m = {M:g} dx = {dx * 1e3:g} mm",
+         {"setup": setup, "dx": dx, "nprocs": 1}, ESTIMATE_S[setup, dx])
+        for dx in RESOLUTIONS for setup in ("2d", "3d")))
 
 
 def section(specs, results, figdir, notes):
@@ -200,12 +195,8 @@ def read_rows(path=CSV):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--dx", nargs="+", type=float, default=list(RESOLUTIONS))
+    ap = cli.parser(__doc__, "/tmp/kw3d", dx=RESOLUTIONS, reuse=True, csv=True)
     ap.add_argument("--setups", nargs="+", default=["2d", "3d"], choices=["2d", "3d"])
-    ap.add_argument("--work", default="/tmp/kw3d")
-    ap.add_argument("--reuse", action="store_true")
-    ap.add_argument("--csv")
     a = ap.parse_args(argv)
     rows = []
     for dx in a.dx:
@@ -220,8 +211,7 @@ def main(argv=None):
                   f"{_f(r['memory_MB'], '.0f')} MB", flush=True)
             rows.append(r)
     if a.csv:
-        cmd = "tools/python -m bbpd.benchmarks.kalthoff_winkler_3d " + " ".join(argv or sys.argv[1:])
-        csvfile.write_csv(a.csv, rows, comments=[f"made by: {cmd}",
+        csvfile.write_csv(a.csv, rows, comments=[f"made by: {cli.command('kalthoff_winkler_3d', argv)}",
                                                  f"timing: LAMMPS loop time, {cpu()}, shared"])
     print(table(rows), *summary(rows), sep="\n")
     return 0

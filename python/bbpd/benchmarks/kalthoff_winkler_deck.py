@@ -11,7 +11,6 @@ angles are the loading study's.
 Commands: examples/kalthoff-winkler/README.md, "The standard deck".
 """
 
-import argparse
 import sys
 from pathlib import Path
 
@@ -26,6 +25,7 @@ from bbpd.kernels import KERNELS
 from bbpd.runner import run_noted
 from bbpd.markdown import cell as _f
 from bbpd.markdown import made_by, table as md_table
+from bbpd.benchmarks import cli
 
 CSV = ROOT / "examples" / "kalthoff-winkler" / "results" / "standard_deck.csv"
 
@@ -158,17 +158,11 @@ def jobs(nprocs=1):
     """The runs as bbpd.report specs (tools/reproduce --full)."""
     inputs = (kw.EXAMPLE, Path(__file__), Path(kw.__file__), Path(study.__file__),
               Path(projectile.__file__), kw.ROOT / "potentials" / "kalthoff_winkler_steel.bbpd")
-    specs = []
-    for dx in DX_VALUES:
-        for deck in DECKS:
-            for k in KERNELS:
-                label = f"Kalthoff-Winkler deck {deck} {k} dx = {dx * 1e3:g} mm"
-                specs.append(jobmod.report_spec("kwdeck", k, dx, label,
-                                                "bbpd.benchmarks.kalthoff_winkler_deck:run_case",
-                                                {"deck": deck, "kernel": k, "dx": dx,
-                                                 "nprocs": nprocs}, inputs,
-                                                ESTIMATE_S[dx] * (LPS_COST if deck in BOND_DECK else 1.0)))
-    return specs
+    return jobmod.report_specs("kwdeck", "bbpd.benchmarks.kalthoff_winkler_deck:run_case", inputs, (
+        (k, dx, f"Kalthoff-Winkler deck {deck} {k} dx = {dx * 1e3:g} mm",
+         {"deck": deck, "kernel": k, "dx": dx, "nprocs": nprocs},
+         ESTIMATE_S[dx] * (LPS_COST if deck in BOND_DECK else 1.0))
+        for dx in DX_VALUES for deck in DECKS for k in KERNELS))
 
 
 def section(specs, results, figdir, notes):
@@ -188,19 +182,12 @@ def read_rows(path=CSV):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap = cli.parser(__doc__, "/tmp/kw-deck", nprocs=1, kernels=KERNELS, dx=DX_VALUES, reuse=True,
+                    csv=True, append=True)
     ap.add_argument("--decks", nargs="+", default=list(DECKS), choices=list(DECKS))
-    ap.add_argument("--kernels", nargs="+", default=list(KERNELS), choices=KERNELS)
-    ap.add_argument("--dx", nargs="+", type=float, default=list(DX_VALUES))
-    ap.add_argument("--work", default="/tmp/kw-deck")
-    ap.add_argument("--np", dest="nprocs", type=int, default=1)
-    ap.add_argument("--reuse", action="store_true", help="measure finished runs in --work again")
-    ap.add_argument("--csv", help="write the rows here")
-    ap.add_argument("--append", action="store_true",
-                    help="add the rows to --csv, keeping its rows and the commands that made them")
     a = ap.parse_args(argv)
-    cmd = "tools/python -m bbpd.benchmarks.kalthoff_winkler_deck " + " ".join(argv or sys.argv[1:])
-    earlier, rows, made = csvfile.continue_csv(a.csv if a.append else None, cmd)
+    earlier, rows, made = csvfile.continue_csv(a.csv if a.append else None,
+                                               cli.command("kalthoff_winkler_deck", argv))
     for dx in a.dx:
         for deck in a.decks:
             for k in a.kernels:

@@ -11,7 +11,6 @@ over every off-grid crack, with its standard error.
 Commands: examples/kalthoff-winkler/README.md.
 """
 
-import argparse
 import math
 import time
 from pathlib import Path
@@ -24,9 +23,10 @@ from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
 from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.csvfile import comment, read_csv, write_csv
-from bbpd.runner import run_lammps
+from bbpd.runner import run_or_reuse
 from bbpd.markdown import cell as _f
 from bbpd.markdown import table as md_table
+from bbpd.benchmarks import cli
 
 CSV = kw.EXAMPLE.parent / "results" / "grid_pull.csv"
 COMMAND = ("tools/python -m bbpd.benchmarks.kalthoff_winkler_grid --work /tmp/kw-grid "
@@ -72,9 +72,7 @@ def run_case(workdir, kernel, dx, loading, grid, nprocs=1, tend=TEND):
     variables = {"kernel": kernel, "dx": repr(float(dx)), "tend": repr(float(tend)),
                  "loading": loading}
     variables.update(grid_vars(grid))
-    start = time.perf_counter()
-    run_lammps(str(kw.EXAMPLE), workdir, nprocs=nprocs, vars=variables)
-    wall = time.perf_counter() - start
+    wall = run_or_reuse(kw.EXAMPLE, workdir, variables, nprocs)[1]
     res = projectile.analyse(workdir)
     res.update(nprocs=nprocs, wall_s=wall, grid=grid)
     return {k: v for k, v in res.items() if k not in BULKY}
@@ -121,18 +119,11 @@ def jobs(cases=CASES, loadings=LOADINGS, nprocs=1):
     inputs = (kw.EXAMPLE, Path(kw.__file__), Path(study.__file__), Path(projectile.__file__),
               kw.ROOT / "potentials" / "kalthoff_winkler_steel.bbpd",
               Path(readers.__file__))
-    specs = []
-    for kernel, dx, grids in cases:
-        for grid in grids:
-            for loading in loadings:
-                label = f"Kalthoff-Winkler grid {grid} {loading} {kernel} dx = {dx * 1e3:g} mm"
-                estimate = ((8.0 if dx > 1.5e-3 else 60.0)
-                            * (2.5 if loading == "projectile" else 1.0))
-                specs.append(jobmod.report_spec("kwgrid", kernel, dx, label,
-                                                "bbpd.benchmarks.kalthoff_winkler_grid:run_case",
-                                                {"kernel": kernel, "dx": dx, "loading": loading,
-                                                 "grid": grid, "nprocs": nprocs}, inputs, estimate))
-    return specs
+    return jobmod.report_specs("kwgrid", "bbpd.benchmarks.kalthoff_winkler_grid:run_case", inputs, (
+        (kernel, dx, f"Kalthoff-Winkler grid {grid} {loading} {kernel} dx = {dx * 1e3:g} mm",
+         {"kernel": kernel, "dx": dx, "loading": loading, "grid": grid, "nprocs": nprocs},
+         (8.0 if dx > 1.5e-3 else 60.0) * (2.5 if loading == "projectile" else 1.0))
+        for kernel, dx, grids in cases for grid in grids for loading in loadings))
 
 
 def collect(specs, results):
@@ -311,11 +302,9 @@ def read_rows(path=CSV):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--work", default="/tmp/kw-grid", help="the runs are cached here")
+    ap = cli.parser(__doc__, "/tmp/kw-grid", csv=True)
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time (single-rank each)")
     ap.add_argument("--coarse-only", action="store_true", help="the 2 mm runs only")
-    ap.add_argument("--csv", default=None, help="write the rows here")
     args = ap.parse_args(argv)
     cases = [c for c in CASES if not (args.coarse_only and c[1] < 1.5e-3)]
     specs = sorted(jobs(cases), key=lambda s: -s.job.estimate_s)

@@ -12,7 +12,6 @@ two-bar estimate, the contact force's drop and the contact's opening against 2 L
 Commands: examples/kalthoff-winkler/README.md.
 """
 
-import argparse
 import csv
 import json
 import math
@@ -28,6 +27,7 @@ from bbpd.runner import run_noted
 from bbpd import plots
 from bbpd.markdown import cell
 from bbpd.markdown import table as md_table
+from bbpd.benchmarks import cli
 
 # ---------------------------------------------------------------------------- physics
 
@@ -277,14 +277,11 @@ def jobs(full=False, nprocs=1):
     """The report's projectile runs as bbpd.report specs."""
     inputs = (kw.EXAMPLE, Path(kw.__file__), Path(study.__file__), Path(__file__),
               kw.ROOT / "potentials" / "kalthoff_winkler_steel.bbpd")
-    specs = []
-    for kernel, dx in (REPORT_CASES_FULL if full else REPORT_CASES):
-        label = f"Kalthoff-Winkler projectile {kernel} dx = {dx * 1e3:g} mm"
-        specs.append(jobmod.report_spec("kwprojectile", kernel, dx, label,
-                                        "bbpd.benchmarks.kalthoff_winkler_projectile:report_run",
-                                        {"kernel": kernel, "dx": dx, "nprocs": nprocs}, inputs,
-                                        25.0 if dx > 1.5e-3 else 200.0))
-    return specs
+    return jobmod.report_specs(
+        "kwprojectile", "bbpd.benchmarks.kalthoff_winkler_projectile:report_run", inputs,
+        ((kernel, dx, f"Kalthoff-Winkler projectile {kernel} dx = {dx * 1e3:g} mm",
+          {"kernel": kernel, "dx": dx, "nprocs": nprocs}, 25.0 if dx > 1.5e-3 else 200.0)
+         for kernel, dx in (REPORT_CASES_FULL if full else REPORT_CASES)))
 
 
 def report_text(rows):
@@ -322,18 +319,12 @@ def section(specs, results, figdir, notes):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--kernels", nargs="+", default=["gaussian"], choices=kw.KERNELS)
-    ap.add_argument("--dx", nargs="+", type=float, default=[2e-3])
+    ap = cli.parser(__doc__, "/tmp/kw-projectile", nprocs=1, kernels=["gaussian"], dx=[2e-3],
+                    reuse=True, csv="write every finished run in --work here", figures=True)
     ap.add_argument("--loadings", nargs="+", default=["prescribed", "projectile"])
     ap.add_argument("--gc", nargs="+", type=float, default=list(GC_VALUES.values()))
     ap.add_argument("--dim", type=int, default=2, choices=(2, 3))
     ap.add_argument("--tend", type=float, default=TEND)
-    ap.add_argument("--work", default="/tmp/kw-projectile")
-    ap.add_argument("--np", type=int, default=1, dest="nprocs")
-    ap.add_argument("--reuse", action="store_true")
-    ap.add_argument("--csv", default=None, help="write every finished run in --work here")
-    ap.add_argument("--figures", default=None, help="write the PNGs here")
     args = ap.parse_args(argv)
     work = Path(args.work)
     for dx in args.dx:

@@ -12,11 +12,9 @@ examples/kalthoff-winkler/README.md, "Loading study".
   ... --reuse                              re-analyse the finished runs, run nothing
 """
 
-import argparse
 import json
 import math
 import re
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -31,6 +29,7 @@ from bbpd.runner import run_noted
 from bbpd import markdown
 from bbpd.markdown import cell as f
 from bbpd import plots
+from bbpd.benchmarks import cli
 
 # ---------------------------------------------------------------------------- physics
 
@@ -391,15 +390,11 @@ def jobs(nprocs=1):
     """The study's runs as bbpd.report specs (the report's --full and this module's command)."""
     inputs = (kw.EXAMPLE, Path(kw.__file__), Path(__file__),
               kw.ROOT / "potentials" / "kalthoff_winkler_steel.bbpd", Path(readers.__file__))
-    specs = []
-    for case in CASES:
-        for k, dx in STUDY_KERNEL_DX:
-            label = f"Kalthoff-Winkler study {case} {k} dx = {dx * 1e3:g} mm"
-            specs.append(jobmod.report_spec("kwstudy", k, dx, label,
-                                            "bbpd.benchmarks.kalthoff_winkler_study:run_case",
-                                            {"kernel": k, "dx": dx, "case": case, "nprocs": nprocs},
-                                            inputs, 500.0 if dx < 1e-3 else 90.0))
-    return specs
+    return jobmod.report_specs(
+        "kwstudy", "bbpd.benchmarks.kalthoff_winkler_study:run_case", inputs,
+        ((k, dx, f"Kalthoff-Winkler study {case} {k} dx = {dx * 1e3:g} mm",
+          {"kernel": k, "dx": dx, "case": case, "nprocs": nprocs}, 500.0 if dx < 1e-3 else 90.0)
+         for case in CASES for k, dx in STUDY_KERNEL_DX))
 
 
 def collect(specs, results):
@@ -452,20 +447,11 @@ def main_study(work, figdir, workers=1, log=print, reuse_only=False, csv=None, c
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description="The Kalthoff-Winkler loading study: every loading "
-                                 "case for the three kernels at 1 mm and the Gaussian at 0.5 mm, "
-                                 "one run at a time, finished runs cached in --work")
-    ap.add_argument("--work", default="/tmp/kw-study", help="run directories go here")
-    ap.add_argument("--figures", default=None, help="write the PNGs here (default: --work)")
-    ap.add_argument("--reuse", action="store_true",
-                    help="re-analyse finished runs in --work instead of running them")
-    ap.add_argument("--csv", default=None, help="write the table's CSV here (the README's table "
-                    "comes from it through tools/python -m bbpd.claims --write)")
-    args = ap.parse_args(argv)
-    command = "tools/python -m bbpd.benchmarks.kalthoff_winkler_study " + " ".join(
-        sys.argv[1:] if argv is None else argv)
+    args = cli.parser(__doc__, "/tmp/kw-study", figures="write the PNGs here (default: --work)",
+                      reuse=True, csv="write the table's CSV here (the README's table comes from "
+                      "it through tools/python -m bbpd.claims --write)").parse_args(argv)
     main_study(Path(args.work), Path(args.figures or args.work), reuse_only=args.reuse,
-               csv=args.csv, command=command)
+               csv=args.csv, command=cli.command("kalthoff_winkler_study", argv))
 
 
 if __name__ == "__main__":

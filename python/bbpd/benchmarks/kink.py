@@ -16,11 +16,9 @@ extension    the grown crack's reach from the tip when the run stopped (fix halt
 Commands: examples/kink-mixed-mode/README.md.
 """
 
-import argparse
 import json
 import math
 import re
-import sys
 import time
 from pathlib import Path
 
@@ -35,6 +33,7 @@ from bbpd.provenance import cpu
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell
 from bbpd.markdown import table as md_table
+from bbpd.benchmarks import cli
 
 ROOT = Path(__file__).resolve().parents[3]
 FOLDER = ROOT / "examples" / "kink-mixed-mode"
@@ -399,14 +398,11 @@ def first_line(path):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--work", default="/tmp/kink", help="run folders and the job cache")
+    ap = cli.parser(__doc__, "/tmp/kink", nprocs=1, kernels=KERNELS)
     ap.add_argument("--workers", type=int, default=2, help="runs at a time")
-    ap.add_argument("--nprocs", type=int, default=1, help="MPI ranks per run (same bits)")
     grids = ap.add_mutually_exclusive_group()
     grids.add_argument("--coarse-only", action="store_true")
     grids.add_argument("--fine-only", action="store_true")
-    ap.add_argument("--kernels", nargs="+", choices=KERNELS, default=list(KERNELS))
     ap.add_argument("--max-runs", type=int, help="the first N cases of the selection only")
     ap.add_argument("--add-missing", action="store_true",
                     help="run only the selected cases that --results lacks and add their rows "
@@ -437,8 +433,7 @@ def main(argv=None):
     failed = [j.label for j in jobs if "error" in results[j.label]]
     if failed:
         print("FAILED:", failed)
-    command = "tools/python -m bbpd.benchmarks.kink " + " ".join(
-        sys.argv[1:] if argv is None else argv)
+    command = cli.command("kink", argv)
     if args.add_missing and path.is_file():
         command = f"{first_line(path)}; rows added by {command.strip()}"
         rows = merged(rows, path)

@@ -12,7 +12,6 @@ step of a bond family scales with the horizon, not with dx.
 Commands: examples/kink-mixed-mode/README.md.
 """
 
-import argparse
 import sys
 import time
 from pathlib import Path
@@ -25,6 +24,7 @@ from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 from bbpd import plots
 from bbpd.markdown import table as md_table
+from bbpd.benchmarks import cli
 from bbpd.benchmarks.kink_limit import (ALPHA, HORIZONS, KERNEL, NAMES, PSI, coverage, disk_moves,
                                         kernel_spread, limit, limits, mix_of, resolution_deg,
                                         sequences, sweep_stats)
@@ -265,14 +265,10 @@ REPORT_TITLE = "Kink test: convergence of the pure Mode II angle in m and in the
 def jobs(nprocs=1):
     """The runs as bbpd.report specs (tools/reproduce --full)."""
     inputs = (kinkbench.EXAMPLE, Path(__file__), Path(kinkbench.__file__))
-    specs = []
-    for m, rd in CASES:
-        label = f"kink convergence m = {m:g} R/delta = {rd:g}"
-        specs.append(jobmod.report_spec("kinkconv", KERNEL, DELTA / m, label,
-                                        "bbpd.benchmarks.kink_convergence:run_case",
-                                        {"m": m, "r_over_delta": rd, "nprocs": nprocs}, inputs,
-                                        90.0 * (m / 5.0) ** 3 * (rd / 10.0) ** 3))
-    return specs
+    return jobmod.report_specs("kinkconv", "bbpd.benchmarks.kink_convergence:run_case", inputs, (
+        (KERNEL, DELTA / m, f"kink convergence m = {m:g} R/delta = {rd:g}",
+         {"m": m, "r_over_delta": rd, "nprocs": nprocs}, 90.0 * (m / 5.0) ** 3 * (rd / 10.0) ** 3)
+        for m, rd in CASES))
 
 
 def section(specs, results, figdir, notes):
@@ -294,27 +290,21 @@ def read_rows(path=CSV):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--work", default="/tmp/kink-conv")
-    ap.add_argument("--nprocs", type=int, default=1)
+    ap = cli.parser(__doc__, "/tmp/kink-conv", nprocs=1, reuse=True, csv=True, append=True)
     ap.add_argument("--cases", nargs="+", help="M:R_OVER_DELTA pairs (default: all)")
     ap.add_argument("--kernel", default=KERNEL, choices=KERNELS)
     ap.add_argument("--psi", type=float, default=PSI, choices=kinkbench.MIXES_DEG,
                     help="mode mix arctan(K_II/K_I) in degrees (default: pure Mode II)")
     ap.add_argument("--alpha", type=float, default=ALPHA, choices=kinkbench.ALPHAS_DEG,
                     help="crack direction to the grid's rows in degrees")
-    ap.add_argument("--reuse", action="store_true")
-    ap.add_argument("--csv")
-    ap.add_argument("--append", action="store_true",
-                    help="add the runs to --csv, keeping its rows and the commands that made them")
     ap.add_argument("--figure", help="draw the angle against m of the CSV's rows here (no runs)")
     a = ap.parse_args(argv)
     if a.figure:
         figure(read_rows(a.csv or CSV), a.figure)
         return 0
     cases = CASES if not a.cases else [tuple(float(v) for v in c.split(":")) for c in a.cases]
-    cmd = "tools/python -m bbpd.benchmarks.kink_convergence " + " ".join(argv or sys.argv[1:])
-    earlier, rows, made = csvfile.continue_csv(a.csv if a.append else None, cmd)
+    earlier, rows, made = csvfile.continue_csv(a.csv if a.append else None,
+                                               cli.command("kink_convergence", argv))
     for m, rd in cases:
         start = time.perf_counter()
         r = run_case(a.work, m, rd, a.nprocs, a.reuse, a.kernel, a.psi, a.alpha)

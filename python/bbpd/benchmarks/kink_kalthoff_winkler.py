@@ -12,7 +12,6 @@ interpolated in psi over the committed coarse-grid Gaussian results (results/kin
 Commands: examples/kink-mixed-mode/README.md.
 """
 
-import argparse
 import json
 import math
 from pathlib import Path
@@ -23,6 +22,7 @@ from bbpd import kink
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kink as kinktest
 from bbpd.runner import run_lammps
+from bbpd.benchmarks import cli
 
 ANCHOR = "fix             tips all ave/time"
 J_LINES = """compute         Jlo all bbpd/jintegral tip ${{a}} ${{ylo}} rin {rin!r} rout {rout!r}
@@ -112,11 +112,10 @@ def table(r):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap = cli.parser(__doc__, "/tmp/kw-kink")
     ap.add_argument("--kernel", default="gaussian")
     ap.add_argument("--dx", type=float, default=2e-3)
     ap.add_argument("--tend", type=float, default=70e-6)
-    ap.add_argument("--work", default="/tmp/kw-kink")
     ap.add_argument("--summary", default=str(SUMMARY), help="JSON to write (the README's table "
                     "comes from it through tools/python -m bbpd.claims --write)")
     args = ap.parse_args(argv)

@@ -8,8 +8,6 @@ and the BBPD model's own constants ('consistent': plane stress nu = 1/3, i.e. eq
 nu' = 1/4 and C_d = 5434 m/s). The README has the commands.
 """
 
-import argparse
-import sys
 import time
 from pathlib import Path
 
@@ -21,7 +19,8 @@ from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 from bbpd.provenance import machine
 from bbpd.plots import plot_k
-from bbpd.runner import run_lammps
+from bbpd.runner import run_or_reuse
+from bbpd.benchmarks import cli
 
 EXAMPLE = ROOT / "examples" / "mode1-semi-infinite" / "in.mode1"
 
@@ -98,16 +97,14 @@ def run(workdir, kernel="gaussian", dx=0.05, model="plane/stress", dt=None, npro
     if m is not None:
         vars_["m"] = m
     nu_model = nu if family == "lps" else None
-    start = time.perf_counter()
-    proc = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_)
-    wall = time.perf_counter() - start
-    loop_s, _ = readers.loop_time(proc.output)
+    output, wall = run_or_reuse(EXAMPLE, workdir, vars_, nprocs)
+    loop_s, _ = readers.loop_time(output)
     # k.dat: K_I (paper constants), K_I (consistent), K_II (consistent)
     t, k_paper, k_cons, k_ii = readers.k_history(workdir / "k.dat", dt)
     res = {"kernel": kernel, "dx": dx, "model": model, "family": family, "nu": nu_model,
            "dt": dt, "nprocs": nprocs,
            "wall_time": wall, "loop_time": loop_s,
-           "dt_fraction_of_limit": readers.pair_setup(proc.output)["dt_fraction"],
+           "dt_fraction_of_limit": readers.pair_setup(output)["dt_fraction"],
            "atoms": int(round(10.0 / dx)) * int(round(2 * H / dx)),
            "t": t, "k_paper": k_paper, "k_consistent": k_cons, "k_ii": k_ii}
     res.update(errors(t, k_paper, k_cons, model, nu=nu_model))
@@ -193,18 +190,15 @@ def figures(rows2, rows3, folder):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--work", default="/tmp/bbpd-mode1")
-    ap.add_argument("--nprocs", type=int, default=1)
+    ap = cli.parser(__doc__, "/tmp/bbpd-mode1", nprocs=1, dx=[0.1, 0.05, 0.025],
+                    figures="folder for Fig. 9 and Fig. 10 PNGs")
     ap.add_argument("--model", default="plane/stress")
     ap.add_argument("--table2", action="store_true")
-    ap.add_argument("--dx", type=float, nargs="+", default=[0.1, 0.05, 0.025])
     ap.add_argument("--table3", action="store_true")
     ap.add_argument("--tips", action="store_true", help="tip position / r1, r2 study")
     ap.add_argument("--tips-csv", metavar="PATH",
                     help="write the tip study to PATH as CSV (the README's table is generated "
                          "from examples/mode1-semi-infinite/results/tips.csv)")
-    ap.add_argument("--figures", help="folder for Fig. 9 and Fig. 10 PNGs")
     args = ap.parse_args(argv)
     nan = (float("nan"), float("nan"))
     rows2 = paper_table(args.work, {dx: ("gaussian", dx, PAPER_TABLE2.get(dx, nan))
@@ -214,8 +208,7 @@ def main(argv=None):
     if args.tips or args.tips_csv:
         out = tip_study(args.work, nprocs=args.nprocs)
         if args.tips_csv:
-            write_tips_csv(args.tips_csv, out, " ".join(["tools/python -m bbpd.benchmarks.mode1",
-                                                         *(argv or sys.argv[1:])]))
+            write_tips_csv(args.tips_csv, out, cli.command("mode1", argv).strip())
     if args.figures:
         figures(rows2, rows3, args.figures)
 

@@ -10,7 +10,6 @@ bond-based runs of results/mode1.csv (consistent convention).
 Commands: examples/mode1-semi-infinite/README.md.
 """
 
-import argparse
 import sys
 from pathlib import Path
 
@@ -19,6 +18,7 @@ from bbpd.benchmarks import mode1
 from bbpd.provenance import cpu
 from bbpd.kernels import KERNELS
 from bbpd.markdown import table as md_table
+from bbpd.benchmarks import cli
 
 ROOT = Path(__file__).resolve().parents[3]
 CSV = ROOT / "examples" / "mode1-semi-infinite" / "results" / "mode1_lps.csv"
@@ -67,15 +67,10 @@ def table(rows, bond_rows, command=None):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--work", default="/tmp/mode1-lps")
-    ap.add_argument("--dx", nargs="+", type=float, default=list(DXS))
-    ap.add_argument("--kernels", nargs="+", default=list(KERNELS), choices=KERNELS)
-    ap.add_argument("--nprocs", type=int, default=1)
-    ap.add_argument("--csv")
-    a = ap.parse_args(argv)
+    a = cli.parser(__doc__, "/tmp/mode1-lps", nprocs=1, kernels=KERNELS, dx=DXS,
+                   csv=True).parse_args(argv)
     rows = []
-    cmd = "tools/python -m bbpd.benchmarks.mode1_lps " + " ".join(argv or sys.argv[1:])
+    cmd = cli.command("mode1_lps", argv)
     for kernel in a.kernels:
         for dx in a.dx:
             r = run_case(a.work, kernel, dx, a.nprocs)

@@ -10,8 +10,6 @@ crack band's half-width at 3 t_c and the speed over +-SPEED_HALF_WINDOW t_c arou
 examples/mode1-propagation/README.md defines each and has the commands.
 """
 
-import argparse
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -23,6 +21,7 @@ from bbpd.kernels import COLORS, KERNELS
 from bbpd.markdown import made_by
 from bbpd.provenance import cpu
 from bbpd.runner import run_or_reuse
+from bbpd.benchmarks import cli
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "mode1-propagation" / "in.mode1-propagation"
@@ -180,9 +179,15 @@ def read_histories(path):
     return {key: tuple(np.array(v).T) for key, v in hist.items()}
 
 
-def read_rows(path):
-    """The CSV written by write_csv as a list of dicts (kernel and cpu strings, the rest floats)"""
-    return csvfile.read_table(path, text=TEXT_COLUMNS)
+def read_rows(path, histories=None):
+    """The CSV written by write_csv as a list of dicts (kernel and cpu strings, the rest floats),
+    given histories (write_histories' file) with each run's tip history as t_tip, l_pd"""
+    rows = csvfile.read_table(path, text=TEXT_COLUMNS)
+    if histories:
+        hist = read_histories(histories)
+        for r in rows:
+            r["t_tip"], r["l_pd"] = hist[(r["kernel"], r["dx"])]
+    return rows
 
 
 def cpu_markdown(rows):
@@ -229,11 +234,7 @@ FIGURE_NAMES = ("crack_extension.png", "crack_speed.png", "work_precision.png")
 
 def figures(histories_csv, results_csv, folder, prefix=""):
     """The figures of the example from its CSVs (see figures_of_rows)."""
-    rows = read_rows(results_csv)
-    hist = read_histories(histories_csv)
-    for r in rows:
-        r["t_tip"], r["l_pd"] = hist[(r["kernel"], r["dx"])]
-    return figures_of_rows(rows, folder, prefix)
+    return figures_of_rows(read_rows(results_csv, histories_csv), folder, prefix)
 
 
 def figures_of_rows(rows, folder, prefix=""):
@@ -322,24 +323,16 @@ def section(specs, results, figdir, notes):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--work", default="/tmp/bbpd-mode1-propagation")
-    ap.add_argument("--nprocs", type=int, default=1)
-    ap.add_argument("--dx", type=float, nargs="+", default=list(DX_DEFAULT))
+    ap = cli.parser(__doc__, "/tmp/bbpd-mode1-propagation", nprocs=1, kernels=KERNELS,
+                    dx=DX_DEFAULT, reuse=True, csv="results CSV to write (or, with --append, add "
+                    "to)", append="keep the CSV's rows and tip histories; a run of the same "
+                    "kernel and dx replaces its row",
+                    figures="folder for crack_extension.png and crack_speed.png")
     ap.add_argument("--full", action="store_true", help=f"dx = {DX_FULL}")
-    ap.add_argument("--kernels", nargs="+", default=list(KERNELS))
     ap.add_argument("--Gc", type=float, default=G_C)
-    ap.add_argument("--reuse", action="store_true",
-                    help="measure the outputs already in --work without running LAMMPS")
-    ap.add_argument("--csv", help="results CSV to write (or, with --append, add to)")
-    ap.add_argument("--append", action="store_true",
-                    help="keep the CSV's rows and tip histories; a run of the same kernel and "
-                         "dx replaces its row")
-    ap.add_argument("--figures", help="folder for crack_extension.png and crack_speed.png")
     args = ap.parse_args(argv)
     dxs = DX_FULL if args.full else args.dx
-    command = "tools/python -m bbpd.benchmarks.mode1_propagation " + " ".join(
-        a for a in (argv if argv is not None else sys.argv[1:]) if a != "--reuse")
+    command = cli.command("mode1_propagation", argv, drop=("--reuse",))
     rows = []
     for dx in dxs:
         for kernel in args.kernels:
@@ -350,13 +343,9 @@ def main(argv=None):
                   f"{res['l2_toughness_pct']:.1f} / {res['l2_energy_pct']:.1f} %", flush=True)
     if args.csv:
         histories = Path(args.csv).with_name("tip_histories.csv")
-        provenance, this = [], f"made by: {command}"
-        if args.append and Path(args.csv).is_file():
-            provenance, this = csvfile.provenance(args.csv), f"rows added by: {command}"
-            earlier = read_rows(args.csv)
-            hist = read_histories(histories)
-            for r in earlier:
-                r["t_tip"], r["l_pd"] = hist[(r["kernel"], r["dx"])]
+        provenance, earlier, this = csvfile.continue_csv(args.csv if args.append else None,
+                                                         command, lambda p: read_rows(p, histories))
+        if earlier:
             rows = merge_rows(earlier, rows)
         write_csv(args.csv, rows, provenance + [this])
         write_histories(histories, rows)

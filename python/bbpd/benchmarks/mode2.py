@@ -10,8 +10,6 @@ the BBPD model's constants. examples/mode2-central-crack/README.md derives the w
 the commands.
 """
 
-import argparse
-import time
 from pathlib import Path
 
 import numpy as np
@@ -21,7 +19,8 @@ from bbpd import freund, metrics, readers
 from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 from bbpd.plots import plot_k
-from bbpd.runner import run_lammps
+from bbpd.runner import run_or_reuse
+from bbpd.benchmarks import cli
 
 EXAMPLE = ROOT / "examples" / "mode2-central-crack" / "in.mode2"
 
@@ -85,10 +84,8 @@ def run(workdir, kernel="gaussian", dx=0.5e-3, model="plane/strain", td=0.0, dt=
     workdir = Path(workdir)
     vars_ = {"kernel": kernel, "dx": dx, "model": model, "dt": dt, "tend": t_end, "td": td,
              "Lx": 2.0 * half_length, "tipshift": tipshift, "r1": r1, "r2": r2}
-    start = time.perf_counter()
-    proc = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_)
-    wall = time.perf_counter() - start
-    loop_s, _ = readers.loop_time(proc.output)
+    output, wall = run_or_reuse(EXAMPLE, workdir, vars_, nprocs)
+    loop_s, _ = readers.loop_time(output)
     # k.dat: K_II right tip, K_I right tip, K_II left tip; J columns at the right tip
     t, k_ii, k_i, k_ii_left = readers.k_history(workdir / "k.dat", dt)
     res = {"kernel": kernel, "dx": dx, "model": model, "td": td, "dt": dt, "nprocs": nprocs,
@@ -234,13 +231,9 @@ def figure(rows, path, td=0.0):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--work", default="/tmp/bbpd-mode2")
-    ap.add_argument("--nprocs", type=int, default=1)
-    ap.add_argument("--kernels", nargs="*", default=list(KERNELS))
-    ap.add_argument("--dx", type=float, nargs="*", default=[1.0e-3, 0.5e-3])
+    ap = cli.parser(__doc__, "/tmp/bbpd-mode2", nprocs=1, kernels=KERNELS, dx=[1.0e-3, 0.5e-3],
+                    figures="folder for the Fig. 12 PNG")
     ap.add_argument("--td", type=float, default=0.0, help="load rise time (0: step)")
-    ap.add_argument("--figures", help="folder for the Fig. 12 PNG")
     ap.add_argument("--fe", type=float, nargs="*", metavar="H",
                     help="classical FE check of the reference at these element sizes")
     args = ap.parse_args(argv)

@@ -12,7 +12,6 @@ examples/strip-steady-crack/README.md defines each.
 Commands: examples/strip-steady-crack/README.md.
 """
 
-import argparse
 import math
 import re
 import subprocess
@@ -29,6 +28,7 @@ from bbpd import plots
 from bbpd.runner import LammpsError, run_or_reuse
 from bbpd.markdown import cell as f
 from bbpd.markdown import made_by
+from bbpd.benchmarks import cli
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "strip-steady-crack" / "in.strip"
@@ -147,12 +147,10 @@ def run(workdir, kernel="gaussian", Delta=2.0, dx=DX, m=M, H_over_delta=H_OVER_D
     return res
 
 
-def write_csv(path, rows, command, earlier=()):
-    """earlier: the 'made by' and 'rows added by' lines of the CSV that --append extends"""
-    made = list(earlier) + [f"{'rows added by' if earlier else 'made by'}: {command}"]
-    csvfile.write_table(path, rows, CSV_COLUMNS,
-                        made + ["timing: LAMMPS loop time; its ranks and CPU in column timing"],
-                        text=TEXT_COLUMNS)
+def write_csv(path, rows, provenance):
+    """provenance: the 'made by' and 'rows added by' lines (csvfile.continue_csv)"""
+    csvfile.write_table(path, rows, CSV_COLUMNS, list(provenance) + [
+        "timing: LAMMPS loop time; its ranks and CPU in column timing"], text=TEXT_COLUMNS)
 
 
 def read_rows(path):
@@ -179,23 +177,17 @@ def kinetic_law(rows, kernel, m=5.0, H_over_delta=SWEEP_H_OVER_DELTA):
 
 
 def main(argv=None):
-    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    p.add_argument("--kernels", nargs="+", default=["gaussian"])
+    p = cli.parser(__doc__, "/tmp/strip", nprocs=1, kernels=["gaussian"], reuse=True,
+                   csv="write (or, with --append, add to) this results CSV", append=True)
     p.add_argument("--Delta", nargs="+", type=float, default=[2.0])
     p.add_argument("--m", nargs="+", type=float, default=[M])
     p.add_argument("--H-over-delta", nargs="+", type=float, default=[H_OVER_DELTA])
-    p.add_argument("--work", default="/tmp/strip")
-    p.add_argument("--csv", help="write (or, with --append, add to) this results CSV")
-    p.add_argument("--append", action="store_true")
-    p.add_argument("--reuse", action="store_true", help="measure earlier runs in --work")
-    p.add_argument("--nprocs", type=int, default=1, help="MPI ranks of each run (default 1)")
     p.add_argument("--collect", action="store_true",
                    help="measure every run folder in --work (KERNEL-mM-HH-DD) again, run nothing")
     p.add_argument("--figure", help="draw the kinetic-law figure of the CSV's rows here")
     a = p.parse_args(argv)
-    appending = a.append and a.csv and Path(a.csv).is_file()
-    rows = read_rows(a.csv) if appending else []
-    earlier = csvfile.provenance(a.csv) if appending else []
+    earlier, rows, made = csvfile.continue_csv(a.csv if a.append else None,
+                                               cli.command("strip", argv), read_rows)
     if a.collect:
         rows = collect(a.work)
         a.kernels = []
@@ -219,8 +211,7 @@ def main(argv=None):
                     rows.append(r)
     rows.sort(key=lambda r: (r["kernel"], r["m"], r["H_over_delta"], r["Delta"]))
     if a.csv:
-        write_csv(a.csv, rows, "tools/python -m bbpd.benchmarks.strip " + " ".join(argv or sys.argv[1:]),
-                  earlier)
+        write_csv(a.csv, rows, [*earlier, made])
     if a.figure:
         figure(rows, a.figure)
     return 0
@@ -404,15 +395,11 @@ def job(workdir, kernel, Delta, m, H_over_delta, nprocs=1):
 def jobs(full=False):
     """The report's strip runs as bbpd.report specs."""
     inputs = (EXAMPLE, Path(__file__), Path(freund.__file__))
-    specs = []
-    for kernel, D, m, hd in (REPORT_CASES_FULL if full else REPORT_CASES):
-        label = f"strip {kernel} m = {m:g} H/delta = {hd:g} Delta = {D:g}"
-        estimate = 30.0 * (m / M) ** 3 * (hd / 10.0) ** 3
-        specs.append(jobmod.report_spec("strip", kernel, DX * M / m, label,
-                                        "bbpd.benchmarks.strip:job",
-                                        {"kernel": kernel, "Delta": D, "m": m, "H_over_delta": hd},
-                                        inputs, estimate))
-    return specs
+    return jobmod.report_specs("strip", "bbpd.benchmarks.strip:job", inputs, (
+        (kernel, DX * M / m, f"strip {kernel} m = {m:g} H/delta = {hd:g} Delta = {D:g}",
+         {"kernel": kernel, "Delta": D, "m": m, "H_over_delta": hd},
+         30.0 * (m / M) ** 3 * (hd / 10.0) ** 3)
+        for kernel, D, m, hd in (REPORT_CASES_FULL if full else REPORT_CASES)))
 
 
 def section(specs, results, figdir, notes):

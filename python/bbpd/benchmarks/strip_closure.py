@@ -19,6 +19,7 @@ import numpy as np
 from bbpd import crack_motion, csvfile
 from bbpd.benchmarks import mode1_propagation as mp
 from bbpd.benchmarks import strip
+from bbpd.benchmarks import cli
 
 ROOT = Path(__file__).resolve().parents[3]
 HISTORIES = ROOT / "examples" / "mode1-propagation" / "results" / "tip_histories.csv"
@@ -113,7 +114,7 @@ def main(argv=None):
               f"PD {r['ext_pd_3tc']:.3f} m, kinetic {r['ext_kinetic_3tc']:.3f} m; law moved as the taller "
               f"strip moves it (x {r['law_shift_taller']:.3f}): L2 {r['l2_kinetic_taller_pct']:.1f} %")
     if a.csv:
-        write_csv(a.csv, rows, "tools/python -m bbpd.benchmarks.strip_closure " + " ".join(argv or sys.argv[1:]))
+        write_csv(a.csv, rows, cli.command("strip_closure", argv))
     return 0
 
 

@@ -12,14 +12,6 @@ def _consts():
     return kw_bench.PAPER_INITIATION_US, kw_bench.EXPERIMENT_ANGLE_DEG
 
 
-def _at(data, dx):
-    return {r["kernel"]: r for r in data.rows(NAME) if abs(r["dx_m"] - dx) < 1e-12}
-
-
-def _grids(data):
-    return sorted({r["dx_m"] for r in data.rows(NAME)}, reverse=True)
-
-
 def _gauss(data):
     return [r for r in by_kernel(data.rows(NAME)) if r["kernel"] == "gaussian"]
 

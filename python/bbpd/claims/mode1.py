@@ -8,7 +8,7 @@ from bbpd.benchmarks import mode1 as mode1_bench
 from bbpd.benchmarks import mode1_lps
 from bbpd.kernels import KERNELS
 
-from .text import f, md_table
+from .text import at, f, md_table, run_note
 
 NAME = "mode1"
 TABLE3_DX = 0.05
@@ -21,17 +21,8 @@ def _gauss(data):
                   key=lambda r: -r["dx_m"])
 
 
-def _at(data, dx):
-    return {r["kernel"]: r for r in data.rows(NAME) if abs(r["dx_m"] - dx) < 1e-12}
-
-
 def _pair(r, a, b):
     return f"{r[a]:.2f} / {r[b]:.2f}"
-
-
-def note(data):
-    return (f"From {data.source(NAME)}; run time: one single-rank run, two at a time on "
-            f"{data.cpu(NAME)} (cores shared with other jobs).")
 
 
 def table2(data):
@@ -46,18 +37,18 @@ def table2(data):
                      _pair(r, "paper_peak", "paper_l2"),
                      _pair(r, "consistent_peak", "consistent_l2"), f"{r['dt_s']:g}",
                      f(r["run_time_s"], ".1f")])
-    return md_table(header, rows) + "\n\n" + note(data)
+    return md_table(header, rows) + "\n\n" + run_note(data, NAME)
 
 
 def table3(data):
     _, t3 = paper()
-    at = _at(data, TABLE3_DX)
+    at_dx = at(data.rows(NAME), TABLE3_DX)
     header = ["kernel", "paper's Table 3 peak / L2", "ours, paper convention peak / L2",
               "ours, consistent peak / L2", "run time (s)"]
-    rows = [[k, f"{t3[k][0]:.2f} / {t3[k][1]:.2f}", _pair(at[k], "paper_peak", "paper_l2"),
-             _pair(at[k], "consistent_peak", "consistent_l2"), f(at[k]["run_time_s"], ".1f")]
-            for k in KERNELS if k in at]
-    return md_table(header, rows) + "\n\n" + note(data)
+    rows = [[k, f"{t3[k][0]:.2f} / {t3[k][1]:.2f}", _pair(at_dx[k], "paper_peak", "paper_l2"),
+             _pair(at_dx[k], "consistent_peak", "consistent_l2"), f(at_dx[k]["run_time_s"], ".1f")]
+            for k in KERNELS if k in at_dx]
+    return md_table(header, rows) + "\n\n" + run_note(data, NAME)
 
 
 def jtable(data):
@@ -68,7 +59,7 @@ def jtable(data):
              f(r["run_time_s"], ".1f")]
             for r in sorted(data.rows(NAME), key=lambda r: (-r["dx_m"],
                                                             KERNELS.index(r["kernel"])))]
-    return md_table(header, rows) + "\n\n" + note(data)
+    return md_table(header, rows) + "\n\n" + run_note(data, NAME)
 
 
 TIPS = "mode1_tips"

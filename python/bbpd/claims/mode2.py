@@ -3,7 +3,7 @@
 doc/compute_bbpd_jintegral.rst, from examples/mode2-central-crack/results/mode2.csv."""
 from bbpd.kernels import KERNELS
 
-from .text import f, md_table, mm, span
+from .text import f, md_table, mm, run_note, span
 
 NAME = "mode2"
 WINDOW_END_US = 9.77    # t_start + 2a/c_d (README, "Reference")
@@ -13,19 +13,6 @@ def _rows(data):
     return sorted(data.rows(NAME), key=lambda r: (-r["dx_m"], KERNELS.index(r["kernel"])))
 
 
-def _grids(data):
-    return sorted({r["dx_m"] for r in data.rows(NAME)}, reverse=True)
-
-
-def _at(data, dx):
-    return {r["kernel"]: r for r in data.rows(NAME) if r["dx_m"] == dx}
-
-
-def note(data):
-    return (f"From {data.source(NAME)}; run time: one single-rank run, two at a time on "
-            f"{data.cpu(NAME)} (cores shared with other jobs).")
-
-
 def table(data):
     header = ["kernel", "dx (mm)", "atoms", "peak (%)", "L2 (%)",
               f"K_II/(tau sqrt(pi a)) at {WINDOW_END_US} us, ours / reference",
@@ -33,7 +20,7 @@ def table(data):
     rows = [[r["kernel"], mm(r["dx_m"]), f"{r['atoms']:,.0f}", f(r["peak"]), f(r["l2"]),
              f"{r['k_end']:.3f} / {r['k_end_exact']:.3f}", f(r["run_time_s"], ".1f")]
             for r in _rows(data)]
-    return md_table(header, rows) + "\n\n" + note(data)
+    return md_table(header, rows) + "\n\n" + run_note(data, NAME)
 
 
 def jtable(data):
@@ -43,7 +30,7 @@ def jtable(data):
     rows = [[r["kernel"], mm(r["dx_m"]), f"{r['peak']:.2f} / {r['l2']:.2f}",
              f"{r['ratio_end']:.3f}", f"{r['j_peak']:.2f} / {r['j_l2']:.2f}",
              f"{r['j_ratio_end']:.3f}", f(r["run_time_s"], ".1f")] for r in _rows(data)]
-    return md_table(header, rows) + "\n\n" + note(data)
+    return md_table(header, rows) + "\n\n" + run_note(data, NAME)
 
 
 def excess(data):

@@ -5,6 +5,8 @@ every benchmark's reference CSV), and the quick start's step times
 from bbpd.kernels import KERNELS
 
 from . import kw, mode1, mode2
+from .text import at as at_dx
+from .text import grids as grids_of
 from .text import md_table, mm, sci, span
 
 DISPERSION_KDX = 2.5    # the k dx of the c/v the table quotes (report.tables.DISP_KDX[-1])
@@ -26,13 +28,13 @@ def benchmarks(data):
     disp = {r["kernel"]: r for r in data.rows("dispersion")}
     cv = {k: r[f"phase_kdx{DISPERSION_KDX:g}"] for k, r in disp.items()}
     t2, t3 = mode1.paper()
-    at = mode1._at(data, mode1.TABLE3_DX)
-    g = mode1._gauss(data)
     m1 = data.rows(mode1.NAME)
-    grids = mode2._grids(data)
+    at = at_dx(m1, mode1.TABLE3_DX)
+    g = mode1._gauss(data)
     m2 = data.rows(mode2.NAME)
+    grids = grids_of(m2)
     paper, exp = kw._consts()
-    kat = kw._at(data, 1.0e-3)
+    kat = at_dx(data.rows(kw.NAME), 1.0e-3)
     fine = [r for r in kw._gauss(data) if r["dx_m"] < 1.0e-3]
     rows = [
         ["dispersion (sec. 4.1)", "measured ω(k) against the relation integrated, up to k dx = 2.5",
@@ -53,7 +55,7 @@ def benchmarks(data):
          "\"good agreement\"", mode2.excess(data)],
         ["", "K_II from the J-integral, peak error (%)", "-",
          span([r["j_peak"] for r in m2], ".1f") + "; Gaussian " + ", ".join(
-             f"{mode2._at(data, dx)['gaussian']['j_peak']:.1f}" for dx in grids)
+             f"{at_dx(m2, dx)['gaussian']['j_peak']:.1f}" for dx in grids)
          + " at dx = " + ", ".join(mm(dx) for dx in grids) + " mm"],
         ["Kalthoff-Winkler (Figs. 14-15)", "initiation (us): damage band at 1 mm", _three(paper, ".1f"),
          _three({k: r["damage_band_us"] for k, r in kat.items()}, ".1f")],

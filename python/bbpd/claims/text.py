@@ -26,3 +26,19 @@ def by_kernel(rows):
 
 def mm(dx):
     return f"{dx * 1e3:g}"
+
+
+def at(rows, dx):
+    """{kernel: row} of the rows at grid spacing dx (m)"""
+    return {r["kernel"]: r for r in rows if abs(r["dx_m"] - dx) < 1e-12}
+
+
+def grids(rows):
+    """the rows' grid spacings, coarsest first"""
+    return sorted({r["dx_m"] for r in rows}, reverse=True)
+
+
+def run_note(data, name):
+    """the note under a table of one single-rank run per row"""
+    return (f"From {data.source(name)}; run time: one single-rank run, two at a time on "
+            f"{data.cpu(name)} (cores shared with other jobs).")

@@ -74,25 +74,21 @@ def mode2_figures(ok, figdir, notes):
     tt = np.linspace(0.0, mode2.T_END, 600)
     refs = [("semi-infinite crack loaded by 2 tau", tt * 1e6,
              mode2.normalise(mode2.reference()(tt)), "--", "black")]
+    # the extrapolation's figure and the J-integral's: (file, K_II column, label, title)
+    kinds = (("kernels", "k_ii", lambda r: f"(L2 {r['l2']:.1f} %)",
+              "Fig. 12: Mode-II K_II(t), dx = {} mm, m = 5, three kernels"),
+             ("jintegral", "k_ii_j", lambda r: f"from J (peak {r['jintegral']['peak']:.1f} %)",
+              "Mode-II K_II(t) from the J-integral, dx = {} mm, three kernels"))
+    window = (win.t_start * 1e6, win.t_end_ignoring_corners * 1e6)
     for dx in sorted({dx for _, dx in ok}, reverse=True):
-        series = [(f"{k} (L2 {r['l2']:.1f} %)", r["t"] * 1e6, mode2.normalise(r["k_ii"]),
-                   COLORS[k]) for (k, d), r in ok.items() if d == dx]
-        path = figdir / f"fig12_kernels_dx{dx * 1e3:g}mm.png"
-        figs += _figure(lambda: plot_k(path, series, refs,
-                                       (win.t_start * 1e6, win.t_end_ignoring_corners * 1e6),
-                                       f"Fig. 12: Mode-II K_II(t), dx = {dx * 1e3:g} mm, m = 5, "
-                                       "three kernels", "t (us)",
-                                       r"$K_{II}/(\tau\sqrt{\pi a})$"), path, notes)
-        jseries = [(f"{k} from J (peak {r['jintegral']['peak']:.1f} %)", r["t"] * 1e6,
-                    mode2.normalise(r["k_ii_j"]), COLORS[k])
-                   for (k, d), r in ok.items() if d == dx and "k_ii_j" in r]
-        if jseries:
-            jpath = figdir / f"fig12_jintegral_dx{dx * 1e3:g}mm.png"
-            figs += _figure(lambda: plot_k(jpath, jseries, refs,
-                                           (win.t_start * 1e6, win.t_end_ignoring_corners * 1e6),
-                                           f"Mode-II K_II(t) from the J-integral, dx = "
-                                           f"{dx * 1e3:g} mm, three kernels", "t (us)",
-                                           r"$K_{II}/(\tau\sqrt{\pi a})$"), jpath, notes)
+        for name, col, label, title in kinds:
+            series = [(f"{k} {label(r)}", r["t"] * 1e6, mode2.normalise(r[col]), COLORS[k])
+                      for (k, d), r in ok.items() if d == dx and col in r]
+            if series:
+                path = figdir / f"fig12_{name}_dx{dx * 1e3:g}mm.png"
+                figs += _figure(lambda: plot_k(path, series, refs, window,
+                                               title.format(f"{dx * 1e3:g}"), "t (us)",
+                                               r"$K_{II}/(\tau\sqrt{\pi a})$"), path, notes)
     return figs
 
 

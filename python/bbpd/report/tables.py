@@ -144,37 +144,24 @@ def mode1_tables(by, ok):
                 f"{j['peak']:.2f} / {j['l2']:.2f}" if j else "-",
                 f"{r['dt']:.3g}", f(run_time(r), ".1f")]
 
-    h2 = ["dx (m)", "atoms", "paper's Table 2: peak / L2", "ours, paper convention: peak / L2",
-          "ours, consistent: peak / L2", "K_I from J, consistent: peak / L2", "dt (s)",
-          "run time (s)"]
-    rows2, rows2_ok = [], {}
-    for dx in sorted({dx for k, dx in by if k == "gaussian"}, reverse=True):
-        ref = mode1.PAPER_TABLE2.get(dx)
-        lead = [f"{dx:g}", f"{int(round(10 / dx))} x {int(round(4 / dx))}",
-                "-" if ref is None else f"{ref[0]:.2f} / {ref[1]:.2f}"]
-        r = ok.get(("gaussian", dx))
-        if r is None:
-            rows2.append(failed_row(by[("gaussian", dx)], len(h2), lead))
-        else:
-            rows2.append(lead + cells(r))
-            rows2_ok[dx] = r
+    def table(head, runs):
+        """runs: [(name, (kernel, dx), leading cells)] -> (header, rows, finished runs by name)"""
+        header = head + ["ours, paper convention: peak / L2", "ours, consistent: peak / L2",
+                         "K_I from J, consistent: peak / L2", "dt (s)", "run time (s)"]
+        rows = [lead + cells(ok[key]) if key in ok else failed_row(by[key], len(header), lead)
+                for _, key, lead in runs]
+        return header, rows, {name: ok[key] for name, key, _ in runs if key in ok}
 
-    h3 = ["kernel", "paper's Table 3: peak / L2", "ours, paper convention: peak / L2",
-          "ours, consistent: peak / L2", "K_I from J, consistent: peak / L2", "dt (s)",
-          "run time (s)"]
-    rows3, rows3_ok = [], {}
-    for k in KERNELS:
-        key = (k, MODE1_TABLE3_DX)
-        if key not in by:
-            continue
-        ref = mode1.PAPER_TABLE3[k]
-        lead = [k, f"{ref[0]:.2f} / {ref[1]:.2f}"]
-        if key not in ok:
-            rows3.append(failed_row(by[key], len(h3), lead))
-        else:
-            rows3.append(lead + cells(ok[key]))
-            rows3_ok[k] = ok[key]
-    return (h2, rows2, rows2_ok), (h3, rows3, rows3_ok)
+    def paper(ref):
+        return "-" if ref is None else f"{ref[0]:.2f} / {ref[1]:.2f}"
+
+    t2 = [(dx, ("gaussian", dx), [f"{dx:g}", f"{int(round(10 / dx))} x {int(round(4 / dx))}",
+                                  paper(mode1.PAPER_TABLE2.get(dx))])
+          for dx in sorted({dx for k, dx in by if k == "gaussian"}, reverse=True)]
+    t3 = [(k, (k, MODE1_TABLE3_DX), [k, paper(mode1.PAPER_TABLE3[k])])
+          for k in KERNELS if (k, MODE1_TABLE3_DX) in by]
+    return (table(["dx (m)", "atoms", "paper's Table 2: peak / L2"], t2),
+            table(["kernel", "paper's Table 3: peak / L2"], t3))
 
 
 # --------------------------------------------------------------------------- Mode II

@@ -1,29 +1,12 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Work-precision diagrams: error against run time for every benchmark of tools/reproduce.
+"""Work-precision diagrams: error against run time for every benchmark of tools/reproduce, one
+line per kernel through its resolutions (Mode I and II: per K extraction method as well). The
+errors, the run time (the median LAMMPS loop time of TIMING_REPEATS timings for runs expected
+under REPEAT_BELOW_S) and the figures are described in doc/work_precision.md.
 
-One line per kernel through its resolutions (Mode I and II: one per K extraction method as
-well), on log-log axes, so that a reader sees which kernel reaches an accuracy for the least
-compute:
-
-mode1             L2 and peak error (%) of K_I against Freund's eq. 42 in the consistent
-                  convention, dx = MODE1_DX (MODE1_DX_FULL with --full); K_I by displacement
-                  extrapolation (compute bbpd/dsif) and by the J-integral (compute
-                  bbpd/jintegral), both computed in the same run.
-mode2             L2 error (%) of K_II against the FE-checked early-time reference.
-dispersion        |c/c_29 - 1|: measured phase velocity against the continuum relation (eq. 29)
-                  at the fixed wavelength WAVELENGTH, on a ring of fixed length RING_LENGTH and
-                  fixed horizon, as m = delta/dx grows (DISPERSION_M).
-kalthoff_winkler  crack angle: |angle - angle of the kernel's finest run| and |angle - 70 deg|;
-                  and the initiation time (damage band leaves the tip), all against run time.
-
-Run time is the LAMMPS loop time ("Loop time of X on 1 procs", the time-stepping loop of the
-single-rank run, without start-up and setup).  Runs expected under REPEAT_BELOW_S are timed
-TIMING_REPEATS times (the report's run and repeats of the same run in separate jobs) and the
-median is used.
-
-The runs are jobs of bbpd.jobs like the report's own: extra_specs() adds only the runs the
-report does not make already, and the timing repeats; section() turns the results into
-report/csv/work_precision.csv, report/work_precision_<benchmark>.png and a report section.
+extra_specs() adds the runs the report does not make already, and the timing repeats; section()
+turns the results into report/csv/work_precision.csv, report/work_precision_<benchmark>.png and
+a report section.
 """
 
 import importlib
