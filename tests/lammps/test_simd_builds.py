@@ -322,6 +322,16 @@ def test_state_based_styles_report_their_path(lmp, style):
     assert why.startswith("auto: ") and path in ("portable", "avx2", "avx512")
 
 
+def test_silling_askari_kernel_styles_report_their_path(lmp):
+    """bbpd/KERNEL/alpha runs the path asked for (its rules once left out the field that said
+    it had SIMD rows, and it ran the portable loop whatever 'simd' said)"""
+    from test_bad_input import script
+    text = script(pair_style="pair_style bbpd/triangular/alpha plane/strain thickness 0.001",
+                  pair_coeff="pair_coeff * * 190.0e9 6.9e4 0.003015 alpha 0.25")
+    for path in ("portable",) + tuple(p for p in ("avx2", "avx512") if host_has(*NEEDS[p])):
+        assert loop_line(lmp(with_path(text, path)).output) == (path, "forced by the simd keyword")
+
+
 def test_auto_takes_only_paths_the_cpu_runs(lmp, monkeypatch):
     monkeypatch.setenv("BBPD_SIMD_HIDE", "avx512,avx2")
     assert loop_line(lmp(SMALL).output) == ("portable", "auto: the only path every rank's CPU runs")
