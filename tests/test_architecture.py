@@ -304,6 +304,41 @@ def test_a_deep_pair_class_is_found():
     assert too_deep([kernel_subclass]) == ["PairBBPDLPSKernel"]
 
 
+# the per-atom state of the internal fixes is grown, migrated and written to restart files in
+# one place, FixBBPDAtomState (fix_bbpd_atom_state.h); the bond storage keeps its own
+STATE_BASE = "FixBBPDAtomState"
+OWN_PER_ATOM_RESTART = {"FixBBPDAtomState", "FixBBPDBonds"}
+
+
+def per_atom_restart_classes(texts):
+    """the classes declared in the header texts that write per-atom restart data themselves
+    (declare pack_restart)"""
+    found = set()
+    for text in texts:
+        code = without_comments(text)
+        decls = list(re.finditer(r"\bclass\s+(\w+)\s*(?:final\s*)?:[^{;]+\{", code))
+        for k, m in enumerate(decls):
+            body = code[m.end():decls[k + 1].start() if k + 1 < len(decls) else len(code)]
+            if re.search(r"\bpack_restart\s*\(", body):
+                found.add(m.group(1))
+    return found
+
+
+def test_fixes_with_per_atom_state_share_one_base():
+    texts = [p.read_text() for p in sorted(SRC.glob("fix_*.h"))]
+    assert per_atom_restart_classes(texts) == OWN_PER_ATOM_RESTART
+    bases = pair_class_bases(texts)
+    for fix in ("FixBBPDAlpha", "FixBBPDHistory", "FixBBPDWork", "FixBBPDLPS"):
+        assert bases[fix] == [STATE_BASE], (fix, bases.get(fix))
+
+
+def test_a_fix_with_its_own_per_atom_restart_is_found():
+    """negative control: fix bbpd/lps as it was, its three arrays packed by itself"""
+    before = ("class FixBBPDLPS : public Fix {\n public:\n  void grow_arrays(int) override;\n"
+              "  int pack_restart(int, double *) override;\n  double *dilatation;\n};\n")
+    assert per_atom_restart_classes([before]) == {"FixBBPDLPS"}
+
+
 def row_loops_outside_the_driver(files):
     """{file: n}: calls of the threaded row loop for_each_row outside the row driver
     (PairBBPD::eval_rows), in the code of files {name: text}"""
