@@ -76,8 +76,13 @@ namespace EPS {
     template <bool ROLL>
     double norm_term(double wv, double omega, double ed, double inv_sum, double *h) const
     {
-      if (ROLL) h[0] = h[1];
-      const double s = SHEAR_FACTOR * c.shear * inv_sum * (ed - h[0]);
+      return norm_term_v<ROLL>(wv, omega, ed, inv_sum, h[0], h[1]);
+    }
+    // the same over any width V (double, Vec4, Vec8: bbpd_simd.h), the history in h0, h1
+    template <bool ROLL, class V> V norm_term_v(V wv, V omega, V ed, V inv_sum, V &h0, V &h1) const
+    {
+      if (ROLL) h0 = h1;
+      const V s = V(SHEAR_FACTOR * c.shear) * inv_sum * (ed - h0);
       return (s * omega) * (s * wv);
     }
     // elastic or plastic from the norm of the row
@@ -94,16 +99,23 @@ namespace EPS {
     double deviatoric(const Plan &p, double wv, double omega, double xi0, double ed, double inv_sum,
                       double *h, double &energy) const
     {
-      const double d = ed - h[0];
-      const double k = SHEAR_FACTOR * c.shear * inv_sum * d;
+      return deviatoric_v<COMMIT>(p, wv, omega, xi0, ed, inv_sum, h[0], h[1], energy);
+    }
+    // the same over any width V, the history in h0, h1
+    template <bool COMMIT, class V>
+    V deviatoric_v(const Plan &p, V wv, V omega, V xi0, V ed, V inv_sum, V &h0, V &h1,
+                   V &energy) const
+    {
+      const V d = ed - h0;
+      const V k = V(SHEAR_FACTOR * c.shear) * inv_sum * d;
       energy = wv * (d * d);
       if (!p.plastic) {
-        if (COMMIT) h[1] = 0.0;
+        if (COMMIT) h1 = V(0.0);
         return k * wv;
       }
       if (COMMIT)
-        h[1] = h[0] + (p.scale * (k * omega)) * p.delta_lambda * (PLASTIC_LENGTH_SHARE * xi0);
-      return p.scale * (k * wv);
+        h1 = h0 + (V(p.scale) * (k * omega)) * V(p.delta_lambda) * (V(PLASTIC_LENGTH_SHARE) * xi0);
+      return V(p.scale) * (k * wv);
     }
   };
 

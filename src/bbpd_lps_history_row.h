@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
    BBPD: the bond loop of one row of an LPS state whose deviatoric part has a history, for
-   a family policy F (bbpd_ves.h, bbpd_eps.h), with no LAMMPS dependency. The row of
-   PairBBPDLPS (pair_bbpd_lps_history.cpp) runs it for bbpd/ves and bbpd/eps.
+   a family policy F (bbpd_ves.h, bbpd_eps.h), with no LAMMPS dependency, summed with one
+   accumulator: the reference of the unit tests (test_ves_eps.cpp) and the force state of a
+   breaking bond (pair_bbpd_lps_history.cpp); the rows run its lanes form,
+   bbpd_lps_history_lanes.h.
 
    A family F provides
      F::BOND_HISTORY, F::ATOM_HISTORY   doubles of history per bond end and per atom
@@ -12,7 +14,8 @@
                                         (EPS: elastic or plastic from the norm of the trial
                                         state, norm_term() per bond, plan(norm)); else Plan is
                                         empty
-     deviatoric<COMMIT>(plan, wV, omega, xi0, ed, 1/m_i + 1/m_j, h, energy)
+     deviatoric<COMMIT>(plan, wV, omega, xi0, ed, 1/m_i + 1/m_j, h, energy), and
+     deviatoric_v over any width V with the history as (h0, h1) (bbpd_lps_history_lanes.h)
                                         the deviatoric force state of a bond end with
                                         history h; COMMIT (the first evaluation of a step)
                                         advances h; energy: its term of atom i's deviatoric

@@ -3,8 +3,9 @@
    BBPD: the bond loop of one row of the linear peridynamic solid (bbpd_lps.h), with no LAMMPS
    dependency (tests/unit/test_lps_row.cpp runs it on plain arrays): the force density on
    atom i from the force states of its bonds, the sums its energy and virial are made of, and,
-   with CHECK, the breaking test of each bond. The row of PairBBPDLPS (pair_bbpd_lps.cpp) runs
-   it for bbpd/lps and the LPS kernel styles.
+   with CHECK, the breaking test of each bond. The rows of the pair styles run its lanes form
+   (bbpd_lps_lanes.h, whose unit test takes this loop as reference); the families with history
+   take RowSums (bbpd_lps_history_row.h).
 
    The bonds are summed in row order with one accumulator per sum. The force state reads the
    state (theta / m, 1 / m) of both ends, so a bond's force is not a function of the bond alone,

@@ -91,14 +91,21 @@ inline bool row_force_portable(const double *xx, int i, const Idx *bj, int n, Xi
   return FRACTURE && broken;
 }
 
+#if defined(__GNUC__)
+#define BBPD_GROUPS_INLINE __attribute__((always_inline))
+#else
+#define BBPD_GROUPS_INLINE
+#endif
+
 #ifdef BBPD_SIMD
 /* Full vectors of bonds (no lane off) read the partner positions and the class entries with
    plain loads, 4 partners at a time: on AMD Zen 3 a 4-wide gather, and on Zen 5 an 8-wide one,
    costs more than the loads and unpacks that give the same values (doc/performance.md). */
 
 // x, y and z of the partners j[0..3]: (x, y) and (y, z) of each partner, 16 bytes each, paired
-// in 32-byte registers and unpacked
-inline void load_positions(const double *xx, const int *j, __m256d &x, __m256d &y, __m256d &z)
+// in 32-byte registers and unpacked (always inlined: a copy of its own in each path's file would
+// be one symbol to the linker, who could hand the AVX-512 copy to the AVX2 kernels)
+BBPD_GROUPS_INLINE inline void load_positions(const double *xx, const int *j, __m256d &x, __m256d &y, __m256d &z)
 {
   const double *p0 = xx + 3 * j[0], *p1 = xx + 3 * j[1], *p2 = xx + 3 * j[2], *p3 = xx + 3 * j[3];
   auto pair = [](const double *lo, const double *hi) {
@@ -201,7 +208,7 @@ struct BondLanes {
   __m512d dx, dy, dz, r, xi0, coef, elong;
 };
 template <class Model, class Values>
-inline BondLanes bond_lanes(const double *xx, __m512d xi, __m512d yi, __m512d zi, __m256i j1,
+BBPD_GROUPS_INLINE inline BondLanes bond_lanes(const double *xx, __m512d xi, __m512d yi, __m512d zi, __m256i j1,
                             __mmask8 m, const Values &vals, int k)
 {
   BondLanes b;
@@ -465,11 +472,6 @@ template <int FRACTURE, int EV, class Model> struct Avx2Lanes {
 /* A row of n bonds in groups of 4 for the AVX2 kernels: full(half, k) takes bonds k..k+3 and
    tail(half, k) the last n - k < 4, masked; groups alternate between the two 4-wide halves of
    the 8-wide accumulators (half 0, 1, 0, ...), so the sums match the AVX-512 kernel's lanes. */
-#if defined(__GNUC__)
-#define BBPD_GROUPS_INLINE __attribute__((always_inline))
-#else
-#define BBPD_GROUPS_INLINE
-#endif
 // inlined into the kernel: GCC left it a call, with the lambdas' captures built in memory for
 // every row (instruction counts: doc/performance.md)
 template <class Full, class Tail>

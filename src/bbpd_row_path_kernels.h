@@ -9,6 +9,10 @@
 #ifndef BBPD_ROW_PATH_KERNELS_H
 #define BBPD_ROW_PATH_KERNELS_H
 
+#include "bbpd_eps.h"
+#include "bbpd_lps_history_lanes.h"
+#include "bbpd_lps_lanes.h"
+#include "bbpd_ves.h"
 #include "bbpd_plugin_model.h"
 #include "bbpd_row.h"
 #include "bbpd_row_paths.h"
@@ -61,6 +65,8 @@ BBPD_FOR_LAYOUTS(BBPD_ROW_FORCE, 1, 1)
 BBPD_FOR_STRETCH_RULES(BBPD_STRETCH_LAYOUTS, 0)
 BBPD_FOR_STRETCH_RULES(BBPD_STRETCH_LAYOUTS, 1)
 #undef BBPD_STRETCH_LAYOUTS
+// the kernels of the state-based rows, with the same layouts
+#include "bbpd_lps_path_kernels.h"
 #undef BBPD_ROW_FORCE_STRETCH
 #undef BBPD_ROW_FORCE
 #undef BBPD_FOR_LAYOUTS

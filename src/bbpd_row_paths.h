@@ -21,6 +21,12 @@
 namespace BBPD {
 
 struct RowTally;    // bbpd_row.h
+namespace LPS {    // bbpd_lps.h, bbpd_lps_lanes.h
+  struct AtomState;
+  struct RowCoefficients;
+  struct HistoryCoefficients;
+  struct ForceLanes;
+}    // namespace LPS
 
 // in the order of preference where no timing decides (widest first), AUTO last
 enum class SimdPath : int { PORTABLE = 0, AVX2 = 1, AVX512 = 2, AUTO = 3 };
@@ -52,7 +58,8 @@ using UniformCompactValues = RecomputedValues<CoefFunction, true>;
 #endif
 
 /* the SIMD row kernels of one path (row_force_avx2/avx512 of bbpd_row.h,
-   row_force_stretch_avx2/avx512 of bbpd_stretch_row.h), defined and instantiated in the path's own
+   row_force_stretch_avx2/avx512 of bbpd_stretch_row.h, the LPS passes of bbpd_lps_lanes.h and
+   bbpd_lps_history_lanes.h), defined and instantiated in the path's own
    file: a caller sees declarations only, so no copy of them is ever compiled for another
    instruction set */
 struct BBPD_PATH_HIDDEN Avx2Path {
@@ -65,6 +72,22 @@ struct BBPD_PATH_HIDDEN Avx2Path {
                                 const double *smin, double s00, double alpha, double margin,
                                 double *smin_row, double *ax, double *ay, double *az,
                                 RowTally *tally);
+  template <class Idx, class Values>
+  static double lps_dilatation(const double *xx, int i, const Idx *bj, const Values &vals, int n);
+  template <int EV, int CHECK, class Idx, class Values>
+  static bool lps_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                        const LPS::AtomState *states, const LPS::RowCoefficients &c,
+                        const double *smin, double *snew, LPS::ForceLanes &out);
+  template <class F, bool ROLL, class Idx, class Values>
+  static double lps_history_norm(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                                 const LPS::AtomState *states, double theta_third_i, const F &fam,
+                                 const int *slot, double *hist);
+  template <class F, int EV, int CHECK, int COMMIT, class Idx, class Values>
+  static bool lps_history_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                                const LPS::AtomState *states, const F &fam,
+                                const typename F::Plan &plan, const LPS::HistoryCoefficients &c,
+                                const int *slot, double *hist, const double *smin, double *snew,
+                                LPS::ForceLanes &out);
 };
 struct BBPD_PATH_HIDDEN Avx512Path {
   template <int FRACTURE, int EV, class Model, class Idx, class Values>
@@ -76,6 +99,22 @@ struct BBPD_PATH_HIDDEN Avx512Path {
                                 const double *smin, double s00, double alpha, double margin,
                                 double *smin_row, double *ax, double *ay, double *az,
                                 RowTally *tally);
+  template <class Idx, class Values>
+  static double lps_dilatation(const double *xx, int i, const Idx *bj, const Values &vals, int n);
+  template <int EV, int CHECK, class Idx, class Values>
+  static bool lps_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                        const LPS::AtomState *states, const LPS::RowCoefficients &c,
+                        const double *smin, double *snew, LPS::ForceLanes &out);
+  template <class F, bool ROLL, class Idx, class Values>
+  static double lps_history_norm(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                                 const LPS::AtomState *states, double theta_third_i, const F &fam,
+                                 const int *slot, double *hist);
+  template <class F, int EV, int CHECK, int COMMIT, class Idx, class Values>
+  static bool lps_history_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                                const LPS::AtomState *states, const F &fam,
+                                const typename F::Plan &plan, const LPS::HistoryCoefficients &c,
+                                const int *slot, double *hist, const double *smin, double *snew,
+                                LPS::ForceLanes &out);
 };
 
 /* simd(Avx2Path()) or simd(Avx512Path()) on a SIMD path p the plugin holds, else portable() */

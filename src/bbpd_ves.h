@@ -43,10 +43,11 @@ namespace VES {
     return {shear, lambda, decay, 1.0 - c1 * (1.0 - decay)};
   }
 
-  // the back extension of this step from the bond end's history (ed_n, edb_n) and ed
-  inline double back_extension(const Coeffs &c, double ed, double ed_last, double edb_last)
+  // the back extension of this step from the bond end's history (ed_n, edb_n) and ed, over any
+  // width V (double, Vec4, Vec8: bbpd_simd.h)
+  template <class V> inline V back_extension(const Coeffs &c, V ed, V ed_last, V edb_last)
   {
-    return ed_last * (1.0 - c.decay) + edb_last * c.decay + c.beta * (ed - ed_last);
+    return ed_last * V(1.0 - c.decay) + edb_last * V(c.decay) + V(c.beta) * (ed - ed_last);
   }
 
   /* the family as the history row uses it (bbpd_lps_history_row.h) */
@@ -68,19 +69,25 @@ namespace VES {
        back extension (a second evaluation of the step). energy: its w V ((1 - lambda) ed^2 +
        lambda (ed - edb)^2) (15 G / (2 m_i) times it is atom i's energy density). */
     template <bool COMMIT>
-    double deviatoric(const Plan &, double wv, double, double, double ed, double inv_sum, double *h,
-                      double &energy) const
+    double deviatoric(const Plan &p, double wv, double omega, double xi0, double ed, double inv_sum,
+                      double *h, double &energy) const
     {
-      double edb = h[1];
+      return deviatoric_v<COMMIT>(p, wv, omega, xi0, ed, inv_sum, h[0], h[1], energy);
+    }
+    // the same over any width V, the history (h0, h1) = (ed_n, edb_n) in and out
+    template <bool COMMIT, class V>
+    V deviatoric_v(const Plan &, V wv, V, V, V ed, V inv_sum, V &h0, V &h1, V &energy) const
+    {
+      V edb = h1;
       if (COMMIT) {
-        edb = back_extension(c, ed, h[0], h[1]);
-        h[0] = ed;
-        h[1] = edb;
+        edb = back_extension(c, ed, h0, h1);
+        h0 = ed;
+        h1 = edb;
       }
-      const double k = SHEAR_FACTOR * c.shear * wv * inv_sum;
-      const double eb = ed - edb;
-      energy = wv * ((1.0 - c.lambda) * (ed * ed) + c.lambda * (eb * eb));
-      return (1.0 - c.lambda) * k * ed + c.lambda * k * eb;
+      const V k = V(SHEAR_FACTOR * c.shear) * wv * inv_sum;
+      const V eb = ed - edb;
+      energy = wv * (V(1.0 - c.lambda) * (ed * ed) + V(c.lambda) * (eb * eb));
+      return V(1.0 - c.lambda) * k * ed + V(c.lambda) * k * eb;
     }
   };
 

@@ -54,6 +54,7 @@
 #include "bbpd_row_paths.h"
 #include "fix.h"
 
+#include <atomic>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -176,7 +177,10 @@ class FixBBPDBonds : public Fix {
       }
     }
     // summed again rather than decremented: the same bits as after the next reneighboring
-    if (removed) vintact[i] = intact_volume(i);
+    if (removed) {
+      vintact[i] = intact_volume(i);
+      removals.fetch_add(1, std::memory_order_relaxed);    // rows run in threads
+    }
     return removed;
   }
   double xi0_of(int i, int k) const;                // reference length of bond k of atom i
@@ -191,6 +195,8 @@ class FixBBPDBonds : public Fix {
   double min_reference_length() const { return xi0_min; }
   // counts the rebuilds of the cache: unchanged while every local index keeps its meaning
   bigint cache_generation() const { return generation; }
+  // counts the rows that lost bonds: unchanged while every row keeps its bonds
+  long row_removals() const { return removals.load(std::memory_order_relaxed); }
   // for fix bbpd/watchdog: the body's size now (atoms with bonds) and when the bonds were made
   double bonded_extent();
   double initial_extent() const { return extent0; }
@@ -209,6 +215,7 @@ class FixBBPDBonds : public Fix {
   int nmax_raw;
   double **xraw;      // owner's (unshifted) position of each ghost
   bigint generation;
+  std::atomic<long> removals{0};
   double xi0_min;
   std::vector<tagint> tags_cached;    // tag of every local and ghost index at the last rebuild
   bool same_atoms_at_same_indices();

@@ -493,11 +493,6 @@ double PairBBPD::time_path(BBPD::SimdPath p, int first, int last)
 /* the path of the bond loops and why (once per pair_style command with auto) */
 void PairBBPD::choose_simd_path()
 {
-  if (!rules.simd_rows) {    // the report says what runs, whatever 'simd' asked
-    simd_path = BBPD::SimdPath::PORTABLE;
-    simd_reason = "the state-based rows have no AVX2 or AVX-512 path yet";
-    return;
-  }
   if (simd_request == BBPD::SimdPath::AUTO) {
     if (simd_decided) return;
     simd_decided = true;

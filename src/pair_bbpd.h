@@ -52,13 +52,12 @@ class PairBBPD : public Pair {
     bool silling_askari;    // alpha is a rule of the style (pair_bbpd_alpha.h)
     bool pmb_rules;         // peri/pmb's families, volumes and numbers (pair_bbpd_pmb.h)
     bool short_range;       // short-range forces whatever 'contact' says (stable step)
-    bool simd_rows;         // its bond rows have the AVX2 and AVX-512 paths (LPS rows: not yet)
   };
   // peri/pmb's rules: Silling-Askari breaking, its families and numbers, short-range forces
   // (bbpd/pmb and the LPS styles)
-  static constexpr Rules PERI_PMB_RULES{true, true, true, true};
+  static constexpr Rules PERI_PMB_RULES{true, true, true};
   PairBBPD(class LAMMPS *, BBPD::KernelInfo, const char *style = nullptr,
-           Rules = Rules{false, false, false, true});
+           Rules = Rules{false, false, false});
   ~PairBBPD() override;
 
   void compute(int, int) override;
@@ -71,6 +70,8 @@ class PairBBPD : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   double memory_usage() override;
+  // what the fixes of the style's state hold (the state-based styles), for the setup report
+  virtual double state_memory() { return 0.0; }
   void *extract(const char *, int &) override;
 
   void setup() override;
@@ -110,7 +111,7 @@ class PairBBPD : public Pair {
   bool simd_decided;    // auto: timed once per pair_style command, at its first setup
   void check_simd_request();
   void choose_simd_path();
-  double time_path(BBPD::SimdPath p, int first, int last);
+  virtual double time_path(BBPD::SimdPath p, int first, int last);
   double timing_sink = 0.0;
   void report();
   BBPD::BondLaw law;    // what the bond fix builds and caches with, filled in init_style()
@@ -153,6 +154,9 @@ class PairBBPD : public Pair {
   // carries away (fix bbpd/bonds' ebroken, term 3 of compute bbpd/energy)
   void book_broken_bond(int i, int k, double s0);
   double breaking_length(int i, int j) const;
+  // the stretch within which a row's quick test (local lengths) hands its bonds to
+  // breaking_length() in a periodic box; 0 otherwise (pair_bbpd_silling_askari.cpp)
+  double stretch_margin() const;
   template <int EVFLAG, int FRACTURE, int MULTI> void eval();
   // the row force of atom i; cache: the calling thread's coefficient cache (compact storage)
   template <int EVFLAG, int FRACTURE, int MULTI>

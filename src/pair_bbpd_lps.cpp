@@ -14,7 +14,7 @@
 #include "bbpd_eps.h"
 #include "bbpd_lps_kernel.h"
 #include "bbpd_ves.h"
-#include "bbpd_lps_row.h"
+#include "bbpd_lps_lanes.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -27,10 +27,13 @@
 #include "modify.h"
 #include "update.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <type_traits>
+#include <vector>
 
 using namespace LAMMPS_NS;
 namespace LPS = BBPD::LPS;
@@ -74,11 +77,11 @@ PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, BBPD::KernelInfo k) :
 
 PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, Family f, Coefficients c, BBPD::KernelInfo k,
                          const std::string &style_name) :
-    PairBBPD(lmp, k, style_name.c_str(), LPS_RULES), lattice_constant(0.0), bulk(nullptr), shear(nullptr),
+    PairBBPD(lmp, k, style_name.c_str(), PERI_PMB_RULES), lattice_constant(0.0), bulk(nullptr), shear(nullptr),
     dimension(LPS::DILATATION_FACTOR),
     deviatoric_share(c == Coefficients::KERNEL ? WHOLE_DEVIATORIC_ENERGY : PERI_LPS_DEVIATORIC_SHARE),
     lps_state(nullptr), nmax_lps(0), atom_states(nullptr),
-    nmax_length(0), bond_length(nullptr), family(f), coefficients(c), relax_share(nullptr),
+    family(f), coefficients(c), relax_share(nullptr),
     relax_time(nullptr), yield_stress(nullptr), history(nullptr), nmax_slot(0), bond_slot(nullptr)
 {
   comm_forward = LPS_FORWARD_VALUES;
@@ -90,7 +93,6 @@ PairBBPDLPS::~PairBBPDLPS()
   memory->destroy(bulk);
   memory->destroy(shear);
   memory->sfree(atom_states);
-  memory->destroy(bond_length);
   memory->destroy(relax_share);
   memory->destroy(relax_time);
   memory->destroy(yield_stress);
@@ -379,7 +381,22 @@ double PairBBPDLPS::memory_usage()
 {
   const int n = atom->ntypes + 1;
   return PairBBPD::memory_usage() + 2.0 * n * n * sizeof(double) +
-      (double) LPS_FORWARD_VALUES * nmax_lps * sizeof(double) + (double) nmax_length * sizeof(double);
+      (double) LPS_FORWARD_VALUES * nmax_lps * sizeof(double) + (double) nmax_slot * sizeof(int);
+}
+
+/* the per-atom state of the LPS (weighted volumes, dilatations) and of the families' history
+   (per atom and per bond end, and the bond ends' slots), held by fixes this style owns; the
+   history as the first step sizes it (the setup report comes before) */
+double PairBBPDLPS::state_memory()
+{
+  double bytes = lps_state ? lps_state->memory_usage() : 0.0;
+  if (history && bonds) {
+    const int nlocal = atom->nlocal;
+    const double nends = nlocal > 0 ? bonds->bond_start[nlocal - 1] + bonds->nbond[nlocal - 1] : 0;
+    bytes += std::max(history->memory_usage(), (double) history_width() * atom->nmax * sizeof(double)) +
+        std::max((double) nmax_slot, nends) * sizeof(int) - (double) nmax_slot * sizeof(int);
+  }
+  return bytes;
 }
 
 /* ----------------------------------------------------------------------
@@ -417,25 +434,53 @@ void PairBBPDLPS::sum_weighted_volumes()
   }
 }
 
-/* theta_i over the intact bonds of local atom i, in row order; the bonds' current lengths into
-   r (the force loop reads them there) */
-double PairBBPDLPS::dilatation_of(int i, double *r)
+/* theta_i over the intact bonds of local atom i (bbpd_lps_lanes.h, on the pair style's path) */
+double PairBBPDLPS::dilatation_of(int i)
 {
   const double *xx = atom->x[0];
   const int n = bonds->nbond[i];
   const double sum = bonds->visit_row(i, *thread_coef_cache(), [&](const auto *bj, const auto &vals) {
-    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
-    double s = 0.0;
-    for (int k = 0; k < n; k++) {
-      const int j = BBPD::partner_index(bj, i, k);
-      const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
-      r[k] = std::sqrt(dx * dx + dy * dy + dz * dz);
-      const double xi0 = vals.xi0_at(k, j);
-      s += LPS::dilatation_term(vals.coef_at(k, j), xi0, LPS::elongation(r[k], xi0));
-    }
-    return s;
+    return BBPD::on_path(simd_path, [&](auto path) {
+      return decltype(path)::lps_dilatation(xx, i, bj, vals, n);
+    }, [&] { return LPS::dilatation_sum_portable(xx, i, bj, vals, n); });
   });
   return LPS::dilatation(sum, lps_state->weighted_volume[i], dimension);
+}
+
+/* seconds for the two passes of rows first..last-1 on path p (results discarded): the auto
+   path's timing. The states are not there yet at the first setup: the force pass reads stand-in
+   states of the same layout (no dilatation, unit 1 / m), which cost what the real ones do. */
+double PairBBPDLPS::time_path(BBPD::SimdPath p, int first, int last)
+{
+  const BBPD::SimdPath kept = simd_path;
+  simd_path = p;
+  const std::vector<LPS::AtomState> states(atom->nlocal + atom->nghost, LPS::AtomState{0.0, 1.0});
+  const LPS::Moduli mod = moduli_of_type(1);
+  const LPS::RowCoefficients c{mod.dilatational, mod.deviatoric, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  const double *xx = atom->x[0];
+  BBPD::CoefCache *cache = thread_coef_cache();
+  double sum = 0.0;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int i = first; i < last; i++) {
+    sum += dilatation_of(i);
+    const int n = bonds->nbond[i];
+    BBPD::LPS::ForceLanes lanes;
+    double snew;
+    bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
+      return BBPD::on_path(simd_path, [&](auto path) {
+        return decltype(path)::template lps_force<0, 0>(xx, i, bj, vals, n, states.data(), c,
+                                                        nullptr, &snew, lanes);
+      }, [&] {
+        return LPS::force_row_portable<0, 0>(xx, i, bj, vals, n, states.data(), c,
+                                             [](int) { return 0.0; }, &snew, lanes);
+      });
+    });
+    sum += lanes.fx[0];
+  }
+  const auto t1 = std::chrono::steady_clock::now();
+  simd_path = kept;
+  timing_sink = sum;    // kept, so that no loop is optimised away
+  return std::chrono::duration<double>(t1 - t0).count();
 }
 
 /* the state of a step before its bonds: per-atom arrays grown, the weighted volumes at the
@@ -452,12 +497,6 @@ bool PairBBPDLPS::begin_state()
     atom_states = static_cast<LPS::AtomState *>(
         memory->smalloc(sizeof(LPS::AtomState) * nmax_lps, "pair:atom_states"));
   }
-  const int nends = nlocal > 0 ? bonds->bond_start[nlocal - 1] + bonds->nbond[nlocal - 1] : 0;
-  if (nends > nmax_length) {
-    nmax_length = nends + nends / 8;    // headroom: migration changes the count a little
-    memory->destroy(bond_length);
-    memory->create(bond_length, nmax_length, "pair:bond_length");
-  }
   const bool replay = silling_askari.begin_step(memory, atom, update);
   if (!lps_state->ready) {
     sum_weighted_volumes();
@@ -471,7 +510,7 @@ bool PairBBPDLPS::begin_state()
 #pragma omp parallel for num_threads(comm->nthreads) if (comm->nthreads > 1) schedule(static, 512)
 #endif
   for (int i = 0; i < nlocal; i++) {
-    const double th = dilatation_of(i, bond_length + bonds->bond_start[i]);
+    const double th = dilatation_of(i);
     if (!(replay && lost[i] > 0.0)) theta[i] = th;
     atom_states[i] = LPS::atom_state(theta[i], m[i]);
   }
@@ -498,8 +537,9 @@ template <int EVFLAG> void PairBBPDLPS::eval_lps()
   // 2. the bonds: forces, and breaking (peri/lps: a bond acts in the step it breaks)
   const bool canonical = bonds->raw_positions();    // periodic: both ends decide alike
   const BBPD::SillingAskariCoefficients rule = breaking_rule();
+  const double margin = stretch_margin();
   eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
-    return Row<EVFLAG>(*this, i, acc, cache, replay, canonical, rule);
+    return Row<EVFLAG>(*this, i, acc, cache, replay, canonical, rule, margin);
   });
   end_state();
 }

@@ -47,11 +47,11 @@ class PairBBPDLPS : public PairBBPD {
  public:
   // the force state: peri/lps's, or one with a deviatoric history (peri/ves, peri/eps)
   enum class Family { LPS, VES, EPS };
-  // peri/pmb's rules; the LPS rows run the portable loop only (no AVX2 or AVX-512 path yet)
-  static constexpr Rules LPS_RULES{true, true, true, false};
   // where the coefficients come from: peri/*'s numbers (K G delta s00 alpha, the 3D solid,
   // influence function 1/|xi|) or the kernel calibration (E nu Gc delta, bbpd_lps_kernel.h)
   enum class Coefficients { PERI, KERNEL };
+  // every style of the class has peri/pmb's rules; the rows run on the path of the bond loops
+  // (bbpd_lps_lanes.h)
   // bbpd/lps, bbpd/ves, bbpd/eps: a family with peri/*'s numbers
   PairBBPDLPS(class LAMMPS *, Family = Family::LPS);
   // bbpd/lps/KERNEL: the LPS with the kernel as influence function and its calibration
@@ -66,6 +66,7 @@ class PairBBPDLPS : public PairBBPD {
   void unpack_forward_comm(int, int, double *) override;
   void *extract(const char *, int &) override;
   double memory_usage() override;
+  double state_memory() override;
 
   // bbpd/eps: the plastic multiplier lambda of local atom i (compute bbpd/plasticity/atom)
   double plastic_multiplier(int i) const;
@@ -90,9 +91,11 @@ class PairBBPDLPS : public PairBBPD {
   class FixBBPDHistory *history;         // VES, EPS: the history of bonds and atoms
   int nmax_slot;
   int *bond_slot;    // per intact bond end of this step: its partner slot in fix bbpd/bonds
+  // the bonds bond_slot was found for: cache generation, row removals, local atoms
+  bigint slot_generation = -1;
+  long slot_removals = -1;
+  int slot_nlocal = -1;
   BBPD::LPS::AtomState *atom_states;    // theta / m, 1 / m of every local and ghost atom, this step
-  int nmax_length;
-  double *bond_length;    // current length of every intact bond end, from the dilatation pass
 
   void eval_bonds() override;
   void init_rules() override;
@@ -130,7 +133,8 @@ class PairBBPDLPS : public PairBBPD {
   template <int EVFLAG, class F> struct HistoryRow;
   template <class F> F family_of(int i) const;
   int history_width() const;    // doubles per atom in fix bbpd/history
-  double dilatation_of(int i, double *r);
+  double dilatation_of(int i);
+  double time_path(BBPD::SimdPath p, int first, int last) override;
   template <int EVFLAG> void eval_lps();
   // the row of an atom in eval_lps: its force state and breaking (pair_bbpd_lps.cpp)
   template <int EVFLAG> struct Row;

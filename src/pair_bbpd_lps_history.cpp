@@ -3,8 +3,8 @@
    BBPD plugin: the bond loop of pair styles bbpd/ves and bbpd/eps (pair_bbpd_lps.h), the
    LPS state with a family F whose deviatoric part has a history (bbpd_ves.h, bbpd_eps.h):
    the dilatations, breaking, tallies and short-range forces are those of bbpd/lps
-   (pair_bbpd_lps.cpp, pair_bbpd_lps_row.h); the row hands the family to the history row of
-   bbpd_lps_history_row.h and keeps the history in fix bbpd/history (fix_bbpd_history.h).
+   (pair_bbpd_lps.cpp, pair_bbpd_lps_row.h); the row hands the family to the history rows in
+   lanes of bbpd_lps_history_lanes.h (on the pair style's path) and keeps the history in fix bbpd/history (fix_bbpd_history.h).
 
    The history of a step is advanced once, by its first evaluation, as peri/ves and peri/eps
    do at every evaluation; a second evaluation of the same step (the setup of a new run,
@@ -14,6 +14,8 @@
 ------------------------------------------------------------------------- */
 
 #include "pair_bbpd_lps_row.h"
+
+#include "bbpd_lps_history_lanes.h"
 
 #include "bbpd_eps.h"
 #include "bbpd_lps_history_row.h"
@@ -61,6 +63,14 @@ double PairBBPDLPS::plastic_multiplier(int i) const
 void PairBBPDLPS::find_bond_slots()
 {
   const int nlocal = atom->nlocal;
+  // the slots change only when the cache is rebuilt or bonds break (a row that breaks bonds
+  // shifts its slots itself, in its step, and the next step finds them all again)
+  if (bonds->cache_generation() == slot_generation && bonds->row_removals() == slot_removals &&
+      nlocal == slot_nlocal)
+    return;
+  slot_generation = bonds->cache_generation();
+  slot_removals = bonds->row_removals();
+  slot_nlocal = nlocal;
   const int nends = nlocal > 0 ? bonds->bond_start[nlocal - 1] + bonds->nbond[nlocal - 1] : 0;
   if (nends > nmax_slot) {
     nmax_slot = nends + nends / 8;    // headroom, as bond_length
@@ -81,7 +91,7 @@ void PairBBPDLPS::find_bond_slots()
 }
 
 /* the row of local atom i for a family F with history: the force state of
-   bbpd_lps_history_row.h, the breaking, tallies and finish of the LPS row (Row) */
+   bbpd_lps_history_lanes.h, the breaking, tallies and finish of the LPS row (Row) */
 template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row<EVFLAG> {
   using Base = PairBBPDLPS::Row<EVFLAG>;
   using Base::acc;
@@ -91,7 +101,6 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
   using Base::mod;
   using Base::nlost;
   using Base::p;
-  using Base::r_row;
   using Base::replay;
   using Base::si;
   using Base::smin_i;
@@ -106,8 +115,8 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
   const int *slot;
 
   HistoryRow(PairBBPDLPS &pair, int atom_i, double *acc_, BBPD::CoefCache *cache_, bool replay_,
-             bool canonical_, const BBPD::SillingAskariCoefficients &rule) :
-      Base(pair, atom_i, acc_, cache_, replay_, canonical_, rule),
+             bool canonical_, const BBPD::SillingAskariCoefficients &rule, double margin_) :
+      Base(pair, atom_i, acc_, cache_, replay_, canonical_, rule, margin_),
       fam(pair.family_of<F>(atom_i)), plan{}, atom_hist(pair.history->values[atom_i]),
       hist(atom_hist + F::ATOM_HISTORY), slot(pair.bond_slot + pair.bonds->bond_start[atom_i])
   {
@@ -121,11 +130,17 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
       double norm = atom_hist[F::NORM];
       if (!replay) {
         const double *xx = p.atom->x[0];
-        norm = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
-          return LPS::history_row_norm<F, true, true>(xx, i, bj, vals, p.bonds->nbond[i], r_row,
-                                                      p.atom_states, theta_third_i, fam, slot,
-                                                      hist);
+        const int n = p.bonds->nbond[i];
+        const double sum = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
+          return BBPD::on_path(p.simd_path, [&](auto path) {
+            return decltype(path)::template lps_history_norm<F, true>(xx, i, bj, vals, n, p.atom_states,
+                                                                      theta_third_i, fam, slot, hist);
+          }, [&] {
+            return LPS::history_norm_portable<F, true>(xx, i, bj, vals, n, p.atom_states,
+                                                       theta_third_i, fam, slot, hist);
+          });
         });
+        norm = std::sqrt(sum);
         atom_hist[F::NORM] = norm;
       }
       plan = fam.plan(norm);
@@ -133,24 +148,40 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
     }
   }
 
-  template <bool CHECK, bool CACHED, bool COMMIT> bool row_sum(double *f)
+  // the row's force into f and its tallies (bbpd_lps_history_lanes.h, on the pair style's path;
+  // per type pair s00 and alpha: the portable loop); with CHECK its smallest stretch and whether
+  // a bond is past, or within margin of, its critical stretch (decided canonically by breaks);
+  // COMMIT: the first evaluation of a step, which advances the bonds' history
+  template <bool CHECK, bool COMMIT> bool row_sum(double *f)
   {
     const double *xx = p.atom->x[0];
-    auto check = [&](int j, double e, double xi0) BBPD_ROW_BODY {
-      const double s = this->breaking_stretch(j, e, xi0);
-      snew = std::min(snew, s);
-      return LPSStretchRule::past_critical(s, this->s0_with(j), 0.0);
-    };
-    LPS::RowSums sums;
+    const int n = p.bonds->nbond[i];
+    const LPS::HistoryCoefficients c{{mod.dilatational, mod.deviatoric, si.theta_over_m, si.inv_m,
+                                      theta_third_i, this->sa.s00_one, this->sa.alpha_one, smin_i,
+                                      this->margin},
+                                     F::BULK_FACTOR * mod.bulk};
+    constexpr int EV = EVFLAG != 0, CH = CHECK, CO = COMMIT;
+    LPS::ForceLanes lanes;
     const bool past = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
-      return LPS::history_row_sums<F, EVFLAG != 0, CHECK, CACHED, COMMIT>(
-          xx, i, bj, vals, p.bonds->nbond[i], r_row, p.atom_states, mod.bulk, fam, plan,
-          theta_third_i, slot, hist, check, sums);
+      auto portable = [&] {
+        return LPS::history_force_portable<F, EV, CH, CO>(
+            xx, i, bj, vals, n, p.atom_states, fam, plan, c, slot, hist,
+            [&](int j) { return this->s0_with(j); }, &snew, lanes);
+      };
+      if (this->sa.multi) return portable();
+      return BBPD::on_path(p.simd_path, [&](auto path) {
+        return decltype(path)::template lps_history_force<F, EV, CH, CO>(
+            xx, i, bj, vals, n, p.atom_states, fam, plan, c, slot, hist, p.atom->s0, &snew, lanes);
+      }, portable);
     });
-    for (int c = 0; c < 3; c++) f[c] = sums.f[c];
+    BBPD::lane_sum(lanes.fx, lanes.fy, lanes.fz, f);
     // atom i's deviatoric energy (half of it, as peri/ves and peri/eps) and half the virial
-    tally[0] = p.deviatoric_share * LPS::deviatoric_energy_of(mod, si.inv_m, sums.wv_ed2);
-    for (int c = 0; c < 6; c++) tally[1 + c] = -BondModel::virial_share(1.0, sums.fdd[c], 1.0);
+    if (EVFLAG) {
+      tally[0] = p.deviatoric_share *
+          LPS::deviatoric_energy_of(mod, si.inv_m, BBPD::lane_total(lanes.tally.eng));
+      for (int v = 0; v < 6; v++)
+        tally[1 + v] = -BondModel::virial_share(1.0, BBPD::lane_total(lanes.tally.vir[v]), 1.0);
+    }
     return past;
   }
   bool sum_and_check(double *fi)
@@ -158,11 +189,11 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
     make_plan();
     if (replay) {
       p.silling_askari.smin_new[i] = smin_i;
-      row_sum<false, true, false>(fi);
+      row_sum<false, false>(fi);
       return false;
     }
     const bool had_bonds = p.bonds->nbond[i] > 0;
-    const bool broken = row_sum<true, true, true>(fi);
+    const bool broken = row_sum<true, true>(fi);
     p.silling_askari.smin_new[i] = had_bonds ? snew : BBPD::PMB::NO_BOND_STRETCH;
     return broken;
   }
@@ -210,7 +241,7 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
   void sum(double *fi)
   {
     slot_shift();
-    row_sum<false, false, false>(fi);
+    row_sum<false, false>(fi);
   }
   // the slots of the bonds left, in row order (the broken ones are gone from the row)
   void slot_shift()
@@ -229,8 +260,9 @@ template <int EVFLAG, class F> void PairBBPDLPS::eval_history()
   find_bond_slots();
   const bool canonical = bonds->raw_positions();
   const BBPD::SillingAskariCoefficients rule = breaking_rule();
+  const double margin = stretch_margin();
   eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
-    return HistoryRow<EVFLAG, F>(*this, i, acc, cache, replay, canonical, rule);
+    return HistoryRow<EVFLAG, F>(*this, i, acc, cache, replay, canonical, rule, margin);
   });
   end_state();
 }

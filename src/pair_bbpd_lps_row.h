@@ -12,7 +12,8 @@
 #include "pair_bbpd_lps.h"
 #include "pair_bbpd_rows.h"
 
-#include "bbpd_lps_row.h"
+#include "bbpd_lps_lanes.h"
+#include "bbpd_row_paths.h"
 
 #include "atom.h"
 #include "fix_bbpd_alpha.h"
@@ -65,23 +66,22 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
   BBPD::CoefCache *cache;
   bool replay, canonical;    // as in eval_lps
   BBPD::SillingAskariCoefficients sa;
+  double margin;    // periodic box: a stretch this close to s0 is decided canonically (breaks)
   BBPD::LPS::Moduli mod;                  // i's type
   BBPD::LPS::AtomState si;
   double theta_i, theta_third_i, smin_i;
-  const double *r_row;    // the bond lengths of the dilatation pass (the row as it was then)
   double tally[7];        // the row's energy and virial
   double fb[3];           // the forces of the bonds it breaks
   int nlost;              // how many bonds it breaks
   double snew;            // its smallest stretch now (summed with CHECK)
 
   Row(PairBBPDLPS &pair, int atom_i, double *acc_, BBPD::CoefCache *cache_, bool replay_,
-      bool canonical_, const BBPD::SillingAskariCoefficients &sa_) :
+      bool canonical_, const BBPD::SillingAskariCoefficients &sa_, double margin_) :
       p(pair), i(atom_i), acc(acc_), cache(cache_), replay(replay_), canonical(canonical_),
-      sa(sa_), mod(p.moduli_of_type(p.atom->type[i])),
+      sa(sa_), margin(margin_), mod(p.moduli_of_type(p.atom->type[i])),
       si(p.atom_states[i]), theta_i(p.lps_state->dilatation[i]),
       theta_third_i(BBPD::LPS::third(theta_i, p.dimension)), smin_i(p.atom->s0[i]),
-      r_row(p.bond_length + p.bonds->bond_start[i]), fb{0.0, 0.0, 0.0}, nlost(0),
-      snew(std::numeric_limits<double>::max())
+      fb{0.0, 0.0, 0.0}, nlost(0), snew(std::numeric_limits<double>::max())
   {
   }
   double s0_with(int j) const
@@ -95,38 +95,46 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
     return canonical ? LPSStretchRule::stretch(BBPD::LPS::elongation(p.breaking_length(i, j), xi0), xi0)
                      : LPSStretchRule::stretch(e, xi0);
   }
-  // the row's force into f and its tallies into tally (bbpd_lps_row.h); with CHECK also its
-  // smallest stretch (snew) and whether a bond is past its critical stretch; with CACHED the
-  // bond lengths of the dilatation pass
-  template <bool CHECK, bool CACHED> bool row_sum(double *f)
+  // the row's force into f and its tallies into tally (bbpd_lps_lanes.h, on the pair style's
+  // path; per type pair s00 and alpha: the portable loop); with CHECK also its smallest stretch
+  // (snew) and whether a bond is past, or within margin of, its critical stretch
+  template <bool CHECK> bool row_sum(double *f)
   {
     const double *xx = p.atom->x[0];
-    auto check = [&](int j, double e, double xi0) BBPD_ROW_BODY {
-      const double s = breaking_stretch(j, e, xi0);
-      snew = std::min(snew, s);
-      return LPSStretchRule::past_critical(s, s0_with(j), 0.0);
-    };
-    BBPD::LPS::RowSums sums;
+    const BBPD::LPS::RowCoefficients c{mod.dilatational, mod.deviatoric, si.theta_over_m, si.inv_m,
+                                       theta_third_i, sa.s00_one, sa.alpha_one, smin_i, margin};
+    const int n = p.bonds->nbond[i];
+    BBPD::LPS::ForceLanes lanes;
     const bool past = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
-      return BBPD::LPS::row_sums<EVFLAG != 0, CHECK, CACHED>(xx, i, bj, vals, p.bonds->nbond[i], r_row,
-                                                      p.atom_states, mod, theta_third_i, check,
-                                                      sums);
+      auto portable = [&] {
+        return BBPD::LPS::force_row_portable<EVFLAG, CHECK>(
+            xx, i, bj, vals, n, p.atom_states, c, [&](int j) { return s0_with(j); }, &snew, lanes);
+      };
+      if (sa.multi) return portable();
+      return BBPD::on_path(p.simd_path, [&](auto path) {
+        return decltype(path)::template lps_force<EVFLAG, CHECK>(xx, i, bj, vals, n, p.atom_states,
+                                                                 c, p.atom->s0, &snew, lanes);
+      }, portable);
     });
-    for (int c = 0; c < 3; c++) f[c] = sums.f[c];
+    BBPD::lane_sum(lanes.fx, lanes.fy, lanes.fz, f);
     // atom i's deviatoric energy (bbpd/lps: half of it, as peri/lps) and half the virial
-    tally[0] = p.deviatoric_share * BBPD::LPS::deviatoric_energy_of(mod, si.inv_m, sums.wv_ed2);
-    for (int c = 0; c < 6; c++) tally[1 + c] = -BondModel::virial_share(1.0, sums.fdd[c], 1.0);
+    if (EVFLAG) {
+      tally[0] = p.deviatoric_share *
+          BBPD::LPS::deviatoric_energy_of(mod, si.inv_m, BBPD::lane_total(lanes.tally.eng));
+      for (int v = 0; v < 6; v++)
+        tally[1 + v] = -BondModel::virial_share(1.0, BBPD::lane_total(lanes.tally.vir[v]), 1.0);
+    }
     return past;
   }
   bool sum_and_check(double *fi)
   {
     if (replay) {
       p.silling_askari.smin_new[i] = smin_i;
-      row_sum<false, true>(fi);
+      row_sum<false>(fi);
       return false;
     }
     const bool had_bonds = p.bonds->nbond[i] > 0;
-    const bool broken = row_sum<true, true>(fi);
+    const bool broken = row_sum<true>(fi);
     p.silling_askari.smin_new[i] = had_bonds ? snew : BBPD::PMB::NO_BOND_STRETCH;
     return broken;
   }
@@ -153,7 +161,7 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
     nlost++;
     return true;
   }
-  void sum(double *fi) { row_sum<false, false>(fi); }    // the row has shifted
+  void sum(double *fi) { row_sum<false>(fi); }    // the row has shifted
   void finish(double *fi)
   {
     double *fbroken = p.silling_askari.fix->fbroken[i];

@@ -83,9 +83,9 @@ void PairBBPD::report()
   // ranks choose partner offsets or indices on their own: the largest storage over the ranks
   double bytes = fb->bytes_per_bond(), gbytes = 0.0;
   MPI_Allreduce(&bytes, &gbytes, 1, MPI_DOUBLE, MPI_MAX, world);
-  // what the bonds fix and the pair style hold (their memory_usage, part of LAMMPS's "Per MPI
-  // rank memory" line): the size of a big run per atom and per bond
-  const double mine = bonds->memory_usage() + memory_usage();
+  // what the bonds fix, the pair style and the fixes of its state hold (their memory_usage, part
+  // of LAMMPS's "Per MPI rank memory" line): the size of a big run per atom and per bond
+  const double mine = bonds->memory_usage() + memory_usage() + state_memory();
   double mem_sum = 0.0, mem_max = 0.0;
   MPI_Allreduce(&mine, &mem_sum, 1, MPI_DOUBLE, MPI_SUM, world);
   MPI_Allreduce(&mine, &mem_max, 1, MPI_DOUBLE, MPI_MAX, world);

@@ -52,8 +52,7 @@ template <int EVFLAG, class Rule> void PairBBPD::eval_silling_askari(SillingAska
   // difference of the two views (break_margin / shortest reference length), with a factor
   // for the rounding of the stretch itself.
   const bool canonical = bonds->raw_positions();
-  const double margin = canonical && break_margin > 0.0
-      ? STRETCH_MARGIN_FACTOR * break_margin / bonds->min_reference_length() : 0.0;
+  const double margin = stretch_margin();
   // the row of atom i: its critical stretches from the smallest stretches of the last step;
   // snew, its smallest stretch now; fb, the forces of the bonds it breaks in this step
   struct Row {
@@ -158,6 +157,12 @@ template <int EVFLAG, class Rule> void PairBBPD::eval_silling_askari(SillingAska
                {0.0, 0.0, 0.0}};
   });
   state.end_step(atom, update);
+}
+
+double PairBBPD::stretch_margin() const
+{
+  return bonds->raw_positions() && break_margin > 0.0
+      ? STRETCH_MARGIN_FACTOR * break_margin / bonds->min_reference_length() : 0.0;
 }
 
 /* add the force density of bond k of atom i (about to break) to fb, in the order the

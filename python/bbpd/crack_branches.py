@@ -15,11 +15,7 @@ point S, l = 0).
 import functools
 
 import numpy as np
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import dijkstra
-from scipy.spatial import cKDTree
-
-from bbpd.crack_tip import DEFAULT_THRESHOLD, TIE
+from bbpd.crack_tip import DEFAULT_THRESHOLD, TIE, crack_graph
 
 BRANCH_DEFAULT = 2.0      # the compute's default min_length, in units of the link
 
@@ -29,23 +25,8 @@ def branch_tips(x, y, damage, start, link, min_length=None, threshold=DEFAULT_TH
     """The tips of one damage field, longest first: a list of dicts with x, y, extension
     (path length), split_x, split_y, split_length; [] if no node is connected to S."""
     min_length = BRANCH_DEFAULT * link if min_length is None else min_length
-    d = np.asarray(direction, dtype=float)
-    d = d / np.hypot(d[0], d[1])
-    s = np.asarray(start, dtype=float)
-    p = np.column_stack((np.asarray(x, dtype=float), np.asarray(y, dtype=float)))
-    keep = (np.asarray(damage, dtype=float) >= threshold) & ((p - s) @ d >= 0.0)
-    p = p[keep]
-    p = p[np.lexsort((p[:, 0], p[:, 1]))]     # node order: y, then x
+    p, s, pairs, length = crack_graph(x, y, damage, start, link, threshold, direction)
     n = len(p)
-    if n == 0:
-        return []
-    pairs = cKDTree(p).query_pairs(link, output_type="ndarray")
-    seed = np.flatnonzero(np.hypot(*(p - s).T) <= link)
-    both = np.vstack([p, s])                  # node n is S
-    i = np.concatenate([pairs[:, 0], pairs[:, 1], np.full(len(seed), n)])
-    j = np.concatenate([pairs[:, 1], pairs[:, 0], seed])
-    w = np.hypot(*(both[i] - both[j]).T)
-    length = dijkstra(coo_matrix((w, (i, j)), shape=(n + 1, n + 1)).tocsr(), indices=n)[:n]
     reached = np.flatnonzero(np.isfinite(length))
     if len(reached) == 0:
         return []

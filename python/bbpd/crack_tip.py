@@ -25,8 +25,9 @@ DEFAULT_THRESHOLD = 0.3   # the compute's default: the first row beside a grown 
 TIE = 1e-9                # path lengths within TIE * link of the largest are a tie
 
 
-def crack_tip(x, y, damage, start, link, threshold=DEFAULT_THRESHOLD, direction=(1.0, 0.0)):
-    """(tip x, tip y, extension) of one damage field (see the module docstring)."""
+def crack_graph(x, y, damage, start, link, threshold=DEFAULT_THRESHOLD, direction=(1.0, 0.0)):
+    """(nodes N x 2 ordered by y then x, S, the linked node pairs, each node's path length from
+    S: inf where it is not connected): the graph of the module docstring"""
     if not link > 0.0:
         raise ValueError(f"link must be > 0, got {link!r}")
     if not 0.0 < threshold <= 1.0:
@@ -35,21 +36,24 @@ def crack_tip(x, y, damage, start, link, threshold=DEFAULT_THRESHOLD, direction=
     norm = np.hypot(d[0], d[1])
     if norm == 0.0:
         raise ValueError("direction must be non-zero")
-    d = d / norm
     s = np.asarray(start, dtype=float)
     p = np.column_stack((np.asarray(x, dtype=float), np.asarray(y, dtype=float)))
-    damage = np.asarray(damage, dtype=float)
-    p = p[(damage >= threshold) & ((p - s) @ d >= 0.0)]
+    p = p[(np.asarray(damage, dtype=float) >= threshold) & ((p - s) @ (d / norm) >= 0.0)]
+    p = p[np.lexsort((p[:, 0], p[:, 1]))]
     n = len(p)
-    if n == 0:
-        return float(s[0]), float(s[1]), 0.0
-    pairs = cKDTree(p).query_pairs(link, output_type="ndarray")
+    pairs = cKDTree(p).query_pairs(link, output_type="ndarray") if n else np.zeros((0, 2), int)
     seed = np.flatnonzero(np.hypot(*(p - s).T) <= link)
     both = np.vstack([p, s])          # node n is S itself
     i = np.concatenate([pairs[:, 0], pairs[:, 1], np.full(len(seed), n)])
     j = np.concatenate([pairs[:, 1], pairs[:, 0], seed])
     w = np.hypot(*(both[i] - both[j]).T)
     length = dijkstra(coo_matrix((w, (i, j)), shape=(n + 1, n + 1)).tocsr(), indices=n)[:n]
+    return p, s, pairs, length
+
+
+def crack_tip(x, y, damage, start, link, threshold=DEFAULT_THRESHOLD, direction=(1.0, 0.0)):
+    """(tip x, tip y, extension) of one damage field (see the module docstring)."""
+    p, s, _, length = crack_graph(x, y, damage, start, link, threshold, direction)
     reached = np.isfinite(length)
     if not reached.any():
         return float(s[0]), float(s[1]), 0.0

@@ -22,8 +22,9 @@ def _num(v, digits=6):
     return f"{float(v):.{digits}g}"
 
 
-def write_csv(path, rows, comments=()):
-    columns = list(rows[0])
+def write_csv(path, rows, comments=(), columns=None):
+    """rows (dicts) in columns (default: the first row's keys), the comments first"""
+    columns = list(columns or rows[0])
     with open(path, "w", newline="") as fh:
         for line in comments:
             fh.write(f"# {line}\n")
@@ -82,6 +83,13 @@ def read_table(path, text=(), flags=()):
     def cell(n, v):
         return v if n in text else (v == "True") if n in flags else float(v)
     return [{n: cell(n, v) for n, v in zip(names, cells)} for cells in table[1:]]
+
+
+def comment(source, key):
+    """The text after 'key:' on the first such comment line of source (a CSV's path, or the
+    comment lines of read_csv), or None."""
+    lines = read_csv(source)[0] if isinstance(source, (str, Path)) else source
+    return next((c.split(":", 1)[1].strip() for c in lines if c.startswith(key + ":")), None)
 
 
 def provenance(path):

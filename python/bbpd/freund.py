@@ -154,14 +154,6 @@ def crack_plane_amplitude(edge_traction, loaded_edges):
     return float(edge_traction) * loaded_edges
 
 
-def ramp_load(t, amplitude, t_d):
-    """Ramp traction of eq. 41: amplitude * min(t/t_d, 1) for t >= 0, else 0."""
-    _check_positive(t_d=t_d)
-    arr = _as_time(t)
-    value = amplitude * np.clip(arr / t_d, 0.0, 1.0)
-    return _same_kind(t, value)
-
-
 def crack_arrival_time(H, c_d):
     """t_c = H / C_d: time for the longitudinal wave to reach the crack (eq. 42)."""
     _check_positive(c_d=c_d)

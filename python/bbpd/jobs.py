@@ -55,38 +55,35 @@ def report_spec(bench, kernel, dx, label, target, args, inputs, estimate_s):
 
 
 def finished(specs, results):
-    """(the specs whose run finished without an error, the labels of the others): what a
-    report section can show and what it must name as not measured"""
+    """(the specs whose run finished without an error, the labels of the others)"""
     done = [s for s in specs if results.get(s.job.label) and "error" not in results[s.job.label]]
     return done, [s.job.label for s in specs if s not in done]
 
 
 def not_measured(labels):
-    """the report's sentence for runs that failed or did not run"""
     return "Not measured (failed or not run): " + ", ".join(labels) + "."
 
 
-def finished_rows(specs, results, text):
-    """(the finished runs' results, text(rows) as a list of lines with the runs not measured
-    named after them): the start of a report section"""
-    done, bad = finished(specs, results)
-    rows = [results[s.job.label] for s in done]
-    lines = list(text(rows)) if rows else []
-    return rows, lines + ([not_measured(bad)] if bad else [])
-
-
-def rows_section(title, specs, results, not_run, setup, table, text):
-    """A report section whose runs each return one row: the one-line not_run when no spec ran,
-    else table(rows) and text(rows) of the finished rows, the others named as not measured"""
-    if not specs:
+def section(title, setup, specs, results, table, text=None, figures=None, notes=None,
+            not_run=None):
+    """A report section whose runs each return one result (a row): the setup not_run when it is
+    given and no spec ran; else table(rows), the lines text(rows) with the runs not measured
+    named after them, and the figure names figures(rows) (a failure is noted in notes: the
+    report must still be written)"""
+    if not specs and not_run is not None:
         return {"title": title, "setup": not_run, "table": "", "text": "", "figures": []}
     done, bad = finished(specs, results)
     rows = [results[s.job.label] for s in done]
-    body = text(rows) if rows else ""
-    if bad:
-        body += " " + not_measured(bad)
-    return {"title": title, "setup": setup, "table": table(rows) if rows else "", "text": body,
-            "figures": []}
+    lines = list(text(rows)) if rows and text else []
+    names = []
+    if rows and figures:
+        try:
+            names = list(figures(rows))
+        except Exception as exc:  # the report must still be written
+            notes.append(f"{title}: figures not made: {type(exc).__name__}: {exc}")
+    return {"title": title, "setup": setup, "table": table(rows) if rows else "",
+            "text": " ".join(t for t in lines + ([not_measured(bad)] if bad else []) if t),
+            "figures": names}
 
 
 def plugin_path():

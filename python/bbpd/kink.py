@@ -1,75 +1,28 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Kink angle of a straight crack under mixed-mode loading (K_I, K_II), three criteria, and
-the Williams near-tip displacement field that loads the kink test (examples/kink-mixed-mode).
+the Williams near-tip displacement field that loads the kink test (examples/kink-mixed-mode;
+its README states the criteria).
 
-Frame and sign convention
-    Crack-tip polar coordinates (r, theta): the tip at the origin, the crack along the negative
-    x axis (its faces at theta = +-pi), theta measured counter-clockwise from the direction the
-    crack would run straight ahead (+x). K_II > 0 is the usual sense: the upper face (theta =
-    +pi) slides towards +x relative to the lower one. A positive K_II then kinks the crack to
-    NEGATIVE theta (towards the lower face side); every function returns theta_c in degrees
-    with this sign, and theta_c(K_I, -K_II) = -theta_c(K_I, K_II). K_I < 0 (faces pressed
-    together) is refused unless closed=True: then the criteria are evaluated for faces that
-    pass through each other, as a peridynamic notch without contact does.
+Frame and sign convention: crack-tip polar coordinates (r, theta), the tip at the origin, the
+crack along the negative x axis (faces at theta = +-pi), theta counter-clockwise from +x. K_II >
+0 is the usual sense (the upper face slides towards +x relative to the lower one) and kinks the
+crack to NEGATIVE theta; every function returns theta_c in degrees with this sign, and
+theta_c(K_I, -K_II) = -theta_c(K_I, K_II). K_I < 0 (faces pressed together) is refused unless
+closed=True: then the criteria are evaluated for faces that pass through each other, as a
+peridynamic notch without contact does.
 
-Near-tip stresses (Williams 1957, leading terms; e.g. Anderson, Fracture Mechanics, ch. 2)::
-
-    sqrt(2 pi r) s_rr = K_I (5 cos(t/2) - cos(3t/2))/4 + K_II (-5 sin(t/2) + 3 sin(3t/2))/4
-    sqrt(2 pi r) s_tt = K_I (3 cos(t/2) + cos(3t/2))/4 - K_II 3 (sin(t/2) + sin(3t/2))/4
-                      = cos(t/2) [K_I cos^2(t/2) - 3/2 K_II sin t]
-    sqrt(2 pi r) s_rt = K_I (sin(t/2) + sin(3t/2))/4 + K_II (cos(t/2) + 3 cos(3t/2))/4
-                      = cos(t/2)/2 [K_I sin t + K_II (3 cos t - 1)]
-
-(i) Maximum hoop stress (Erdogan & Sih 1963): s_tt is stationary where s_rt = 0,
-    K_I sin t + K_II (3 cos t - 1) = 0, whose root with s_tt > 0 is::
-
-        theta_c = 2 arctan[(K_I - sqrt(K_I^2 + 8 K_II^2)) / (4 K_II)]
-
-    pure Mode II: 2 arctan(-1/sqrt 2) = -70.53 deg.
-
-(ii) Maximum hoop strain (the rule a critical bond stretch resembles): e_tt from the same
-    stresses with Hooke's law, maximised over theta numerically::
-
-        plane stress:  E e_tt = s_tt - nu s_rr
-        plane strain:  E e_tt = (1 + nu) [(1 - nu) s_tt - nu s_rr]
-
-    Plane strain is plane stress with nu' = nu/(1 - nu), so BBPD's two Poisson ratios, 1/3 in
-    plane stress and 1/4 in plane strain (nu' = 1/3), give the same angle: pure Mode II
-    -63.61 deg. The maximum is the largest positive e_tt (a tensile direction).
-
-(iii) Maximum energy release rate: G(theta) = (K_I*^2 + K_II*^2)/E' with the stress
-    intensity factors K_I*, K_II* of an infinitesimal kink at angle theta, maximised
-    numerically. Two approximations of K*:
-
-    'hpu' (default; Hussain, Pu & Underwood 1974, written in this module's sign convention,
-    i.e. with theta -> -theta against their paper)::
-
-        g = 4/(3 + cos^2 t) * ((1 - t/pi)/(1 + t/pi))^(t/(2 pi))
-        K_I*  = g (K_I cos t - 3/2 K_II sin t)
-        K_II* = g (K_II cos t + 1/2 K_I sin t)
-
-    pure Mode II: -75.23 deg. The exact kinked-crack factors (Amestoy & Leblond 1992, a
-    series not coded here) put the maximum near -77 deg: criterion (iii) is uncertain by about
-    2 deg through the approximation of K*, which the comparison must allow for;
-
-    'first-order' (Cotterell & Rice 1980, first order in theta; the parent field's s_tt and
-    s_rt rotated onto the kink line)::
-
-        K_I*  = cos^3(t/2) K_I - 3 sin(t/2) cos^2(t/2) K_II
-        K_II* = sin(t/2) cos^2(t/2) K_I + cos(t/2) (1 - 3 sin^2(t/2)) K_II
-
-    Since d s_tt/dt = -3/2 s_rt, d(s_tt^2 + s_rt^2)/dt = 2 s_rt (d s_rt/dt - 3/2 s_tt)
-    vanishes with s_rt: the first-order maximum-G angle IS the hoop-stress angle (the unit
-    tests check it), so it adds nothing to criterion (i) and the comparison uses 'hpu'.
-
-Williams displacement field (the boundary load)::
-
-    u_x = sqrt(r/(2 pi))/(2 mu) [K_I cos(t/2)(kappa - 1 + 2 sin^2(t/2))
-                                 + K_II sin(t/2)(kappa + 1 + 2 cos^2(t/2))]
-    u_y = sqrt(r/(2 pi))/(2 mu) [K_I sin(t/2)(kappa + 1 - 2 cos^2(t/2))
-                                 - K_II cos(t/2)(kappa - 1 - 2 sin^2(t/2))]
-
-    kappa = 3 - 4 nu (plane strain), (3 - nu)/(1 + nu) (plane stress).
+(i) Maximum hoop stress (Erdogan & Sih 1963): the root of s_rt = 0 with s_tt > 0 of the leading
+    Williams stresses (e.g. Anderson, Fracture Mechanics, ch. 2); pure Mode II -70.53 deg.
+(ii) Maximum hoop strain: e_tt from the same stresses and Hooke's law, maximised numerically.
+    Plane strain is plane stress with nu' = nu/(1 - nu), so BBPD's two Poisson ratios (1/3 in
+    plane stress, 1/4 in plane strain) give the same angle: pure Mode II -63.61 deg.
+(iii) Maximum energy release rate G = (K_I*^2 + K_II*^2)/E' of an infinitesimal kink, among
+    the kinks that open, with K* of Hussain, Pu & Underwood 1974 ('hpu', in this module's sign
+    convention, theta -> -theta against their paper): pure Mode II -75.23 deg. The exact
+    kinked-crack factors (Amestoy & Leblond 1992, not coded here) put it near -77 deg, so this
+    criterion is uncertain by about 2 deg. The 'first-order' factors (Cotterell & Rice 1980:
+    s_tt and s_rt rotated onto the kink) give exactly the hoop-stress angle (the unit tests
+    check it), so the comparison uses 'hpu'.
 """
 
 import math

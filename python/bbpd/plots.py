@@ -8,11 +8,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (backend must be set first)
 
-FIGSIZE = (6.4, 4.2)
 DPI = 150
-ANALYTIC_STYLE = {"color": "black", "linestyle": "--", "linewidth": 1.5}
-SERIES_LINEWIDTH = 1.2
-WINDOW_STYLE = {"color": "grey", "linestyle": ":", "linewidth": 1.0}
 
 
 @contextmanager
@@ -28,34 +24,24 @@ def figure(path, *args, dpi=DPI, **kwargs):
         plt.close(fig)
 
 
-def plot_k_histories(path, series, analytic=None, xlabel="t (s)",
-                     ylabel="normalised K", title=None, window_end=None):
-    """Plot several K(t) series and an optional analytic curve to a PNG.
-
-    series:     mapping label -> (t, K)
-    analytic:   (label, t, K) or None
-    window_end: optional time marked with a vertical line (end of validity).
-    Returns the path written.
-    """
-    if not series and analytic is None:
+def plot_k(path, series, refs, window, title, xlabel, ylabel):
+    """K(t) figure: measured series (solid, colour), references (black/grey, dashed), and the
+    validity window of the comparison (dotted lines).
+    series: [(label, t, K, colour)]; refs: [(label, t, K, linestyle, colour)];
+    window: (start, end) in the units of t."""
+    if not series and not refs:
         raise ValueError("nothing to plot")
-    fig, ax = plt.subplots(figsize=FIGSIZE)
-    try:
-        for label, (t, k) in series.items():
-            ax.plot(t, k, label=label, linewidth=SERIES_LINEWIDTH)
-        if analytic is not None:
-            label, t, k = analytic
-            ax.plot(t, k, label=label, **ANALYTIC_STYLE)
-        if window_end is not None:
-            ax.axvline(window_end, label="end of validity", **WINDOW_STYLE)
+    with figure(path, figsize=(7.0, 4.4)) as (fig, ax):
+        for label, t, k, color in series:
+            ax.plot(t, k, "-", color=color, linewidth=1.4, label=label)
+        for label, t, k, style, color in refs:
+            ax.plot(t, k, linestyle=style, color=color, linewidth=1.6, label=label)
+        for n, x in enumerate(x for x in window if x > 0):
+            ax.axvline(x, color="grey", linestyle=":", linewidth=1.0,
+                       label="window of the comparison" if n == 0 else None)
         ax.set_xlabel(xlabel)
         ax.set_ylabel(ylabel)
-        if title:
-            ax.set_title(title)
+        ax.set_title(title, fontsize=10)
         ax.grid(True, alpha=0.3)
-        ax.legend()
-        fig.tight_layout()
-        fig.savefig(path, dpi=DPI)
-    finally:
-        plt.close(fig)
+        ax.legend(fontsize=8, loc="upper left")
     return path

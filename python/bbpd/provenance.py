@@ -64,9 +64,8 @@ def cpu():
     """'CPU model (family F model M), ISA' for the timing columns of the benchmarks' CSVs: a
     model name alone may not tell the generation apart (AMD EPYC: Zen 3 and Zen 4)"""
     model, numbers, flags = _cpuinfo()
-    isa = "AVX-512" if "avx512f" in flags else "AVX2" if "avx2" in flags else "SSE"
     ident = f" (family {numbers['cpu family']} model {numbers['model']})" if len(numbers) == 2 else ""
-    return f"{model}{ident}, {isa}"
+    return f"{model}{ident}, {vector_isa(flags)}"
 
 
 def machine():

@@ -77,12 +77,9 @@ def dump_snapshots(path):
 
 def read_dump(path):
     """Last snapshot of a text dump as {column: array}, rows sorted by id."""
-    text = Path(path).read_text().splitlines()
-    start = max(k for k, line in enumerate(text) if line.startswith("ITEM: ATOMS"))
-    cols = text[start].split()[2:]
-    data = np.array([[float(v) for v in line.split()] for line in text[start + 1:] if line.strip()])
-    data = data[np.argsort(data[:, cols.index("id")])]
-    return {c: data[:, k] for k, c in enumerate(cols)}
+    cols = dump_snapshots(path)[-1][1]
+    order = np.argsort(cols["id"])
+    return {c: v[order] for c, v in cols.items()}
 
 
 # --------------------------------------------------------------------------- fix print files

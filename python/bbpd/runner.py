@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Run our LAMMPS build (tools/lmp) on an input script, serially or under mpirun."""
+import json
 import os
 import subprocess
 import time
@@ -43,6 +44,18 @@ def run_or_reuse(script, workdir, vars, nprocs=1, timeout=1800, reuse=False):
     else:
         output = run_lammps(str(script), workdir, nprocs=nprocs, vars=vars, timeout=timeout).output
     return output, time.perf_counter() - start
+
+
+def run_noted(script, workdir, vars, case, nprocs=1, reuse=False, timeout=1800):
+    """Run script in workdir, unless reuse and an earlier run finished there, and note the case
+    (a dict) with the run's wall time and ranks in workdir/case.json; returns that note: what
+    measuring the folder again needs without running it."""
+    note = Path(workdir) / "case.json"
+    if not (reuse and note.is_file()):
+        start = time.perf_counter()
+        run_lammps(str(script), workdir, nprocs=nprocs, vars=vars, timeout=timeout)
+        note.write_text(json.dumps(dict(case, wall_s=time.perf_counter() - start, nprocs=nprocs)))
+    return json.loads(note.read_text())
 
 
 def run_lammps(script, workdir, nprocs=1, version=None, check=True, vars=None, timeout=1800,

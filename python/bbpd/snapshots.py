@@ -5,6 +5,8 @@ growing, as REPORT.md shows it."""
 import re
 from pathlib import Path
 
+from bbpd import plots
+
 PATTERN = re.compile(r"^damage\.(\d+)\.png$")
 STRIP_DPI = 150
 PANEL_WIDTH_IN = 1.6      # one snapshot's width in the strip, inches
@@ -19,24 +21,15 @@ def find(workdir):
 
 def draw_strip(frames, path, title):
     """One row of the pictures with their times: frames = [(label, png path)]."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     if not frames:
         raise ValueError("no damage pictures to set in a row")
-    images = [plt.imread(str(p)) for _, p in frames]
+    images = [plots.plt.imread(str(p)) for _, p in frames]
     aspect = images[0].shape[0] / images[0].shape[1]    # height / width of one picture
-    fig, axes = plt.subplots(1, len(frames), squeeze=False,
-                             figsize=(PANEL_WIDTH_IN * len(frames),
-                                      PANEL_WIDTH_IN * aspect + 0.7))
-    try:
+    with plots.figure(path, 1, len(frames), squeeze=False, dpi=STRIP_DPI,
+                      figsize=(PANEL_WIDTH_IN * len(frames), PANEL_WIDTH_IN * aspect + 0.7)) as (fig, axes):
         for ax, (label, _), image in zip(axes[0], frames, images):
             ax.imshow(image)
             ax.set_title(label, fontsize=8)
             ax.axis("off")
         fig.suptitle(title, fontsize=9)
-        fig.tight_layout()
-        fig.savefig(path, dpi=STRIP_DPI)
-    finally:
-        plt.close(fig)
     return path

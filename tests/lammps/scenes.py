@@ -54,6 +54,13 @@ def peri_preamble(dim=2, boundary=None, lattice=None, data=None, plugin=True, cl
     return "\n".join(lines) + "\n"
 
 
+def idle_compute_is_harmless(lmp, setup, compute):
+    """A compute whose tip is off the plate is harmless as long as nothing uses it: setup (no
+    plugin line) with the compute added runs 5 steps without an ERROR."""
+    return "ERROR" not in lmp(f"plugin load bbpdplugin.so\n{setup}{compute}\nfix 1 all nve\n"
+                              "run 5\n").output
+
+
 def impact_plate(pair_style, gc):
     """After create_atoms on a 1 mm square lattice: steel (7800 kg/m3, E = 190 GPa, G_c = gc,
     delta = 5 mm) with pair_style, its left three columns moving at 32 m/s, fix nve in 2D."""

@@ -14,7 +14,7 @@ import pytest
 
 from bbpd import dsif
 from bbpd.runner import LammpsError
-from scenes import peri_preamble
+from scenes import idle_compute_is_harmless, peri_preamble
 
 DX = 1.0              # grid spacing (m): nodes at (i + 1/2, j + 1/2)
 HALF = 20             # plate [-20, 20]^2 around the origin, 1600 atoms
@@ -155,10 +155,7 @@ def test_missing_node_error_names_the_point(lmp):
 
 
 def test_no_work_unless_invoked(lmp):
-    # a compute whose tip is off the plate is harmless as long as nothing uses it
-    script = ("plugin load bbpdplugin.so\n" + field_script() +
-              "compute K all bbpd/dsif tip 100.0 0.0\nfix 1 all nve\nrun 5\n")
-    assert "ERROR" not in lmp(script).output
+    assert idle_compute_is_harmless(lmp, field_script(), "compute K all bbpd/dsif tip 100.0 0.0")
 
 
 def test_r2_must_exceed_r1(lmp):

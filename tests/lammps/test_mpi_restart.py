@@ -62,16 +62,21 @@ def blocks_data(path):
     write_data(path, left + right, box, DX * DX * THICKNESS)
 
 
-# 2D: a small Kalthoff-Winkler plate, 60 x 30 atoms, notch from the left edge between the
-# atom rows at y = 15 mm, impact layer of 3 mm below it
-SETUP_2D = peri_preamble(2, processors="{grid}", data="atoms.data") + f"""\
+def plate_2d(impact_top):
+    """A small Kalthoff-Winkler plate (the atoms of atoms.data), its impact layer 3 mm wide from
+    y = 0 to impact_top, struck at V_IMPACT."""
+    return peri_preamble(2, processors="{grid}", data="atoms.data") + f"""\
 pair_style bbpd/triangular plane/strain thickness {THICKNESS!r}
 pair_coeff * * {E!r} {GC!r} 0.003015
-region impact block INF 0.003 INF 0.015 INF INF units box
+region impact block INF 0.003 INF {impact_top!r} INF INF units box
 group impact region impact
 velocity impact set {V_IMPACT!r} 0.0 0.0 units box
-fix notch all bbpd/notch segment 0.0 0.015 0.02 0.015
 """
+
+
+# 2D: 60 x 30 atoms, notch from the left edge between the atom rows at y = 15 mm, the impact
+# layer below it
+SETUP_2D = plate_2d(0.015) + "fix notch all bbpd/notch segment 0.0 0.015 0.02 0.015\n"
 
 # 3D: a 16 x 10 x 6 block, notch plane y = 5 mm from the left face to x = 6 mm
 SETUP_3D = peri_preamble(3, processors="{grid}", data="atoms.data") + f"""\

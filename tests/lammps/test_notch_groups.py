@@ -14,10 +14,9 @@ from pathlib import Path
 import pytest
 
 from test_mpi_restart import SETUP_3D as SETUP_3D_MPI
-from test_mpi_restart import (BONDS_RE, DT, DYNAMICS, E, FINISH, GC, GRIDS, THICKNESS, V_IMPACT,
-                              check_identical, final_state, grid_data)
+from test_mpi_restart import (BONDS_RE, DT, DYNAMICS, FINISH, GRIDS, check_identical, final_state,
+                              grid_data, plate_2d)
 from bbpd.runner import run_lammps
-from scenes import peri_preamble
 
 NX, NY = 60, 30
 SPLIT_Y = 0.015        # the line between the atom rows at 14.5 and 15.5 mm
@@ -26,12 +25,7 @@ SHORT_NOTCH = "segment 0.0 0.007 0.02 0.007"                     # from the left
 STEPS = 100
 CUT_RE = re.compile(r"fix notch bbpd/notch: (\d+) bonds cut by (\d+) notch")
 
-SETUP = peri_preamble(2, processors="{grid}", data="atoms.data") + f"""\
-pair_style bbpd/triangular plane/strain thickness {THICKNESS!r}
-pair_coeff * * {E!r} {GC!r} 0.003015
-region impact block INF 0.003 INF 0.007 INF INF units box
-group impact region impact
-velocity impact set {V_IMPACT!r} 0.0 0.0 units box
+SETUP = plate_2d(0.007) + f"""\
 region lower block INF INF INF {SPLIT_Y!r} INF INF units box
 group lower region lower
 group upper subtract all lower

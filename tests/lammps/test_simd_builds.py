@@ -21,7 +21,10 @@ import re
 import subprocess
 from pathlib import Path
 
+import numpy as np
 import pytest
+
+from bbpd import reference as ref
 
 ROOT = Path(__file__).resolve().parents[2]
 VERSION = os.environ.get("BBPD_LAMMPS_VERSION", "20260704")
@@ -37,6 +40,14 @@ _spec = importlib.util.spec_from_file_location("bbpd_test_pmb_compat",
                                                Path(__file__).with_name("test_pmb_compat.py"))
 pmb_compat = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(pmb_compat)
+_spec = importlib.util.spec_from_file_location("bbpd_test_lps_compat",
+                                               Path(__file__).with_name("test_lps_compat.py"))
+lps_compat = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(lps_compat)
+_spec = importlib.util.spec_from_file_location("bbpd_test_ves_eps_compat",
+                                               Path(__file__).with_name("test_ves_eps_compat.py"))
+ves_eps_compat = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(ves_eps_compat)
 
 
 def cache_value(key):
@@ -131,6 +142,59 @@ def states(lmp, tmp_path, path):
             "far partners": far_partners_state(lmp, tmp_path, path)}
 
 
+# a periodic LPS block set moving until bonds break: its rows are decided from local lengths
+# with a margin and, near breaking, from the canonical ones (PairBBPD::breaking_length)
+PERIODIC_LPS = """plugin load bbpdplugin.so
+atom_style peri
+units si
+boundary p p p
+atom_modify map array
+lattice sc 0.0005
+region box block 0 10 0 10 0 10 units lattice
+create_box 1 box
+create_atoms 1 box
+pair_style bbpd/lps 3d
+pair_coeff * * 14.9e9 14.9e9 0.0015001 0.0005 0.25
+set group all density 2200
+set group all volume 1.25e-10
+variable L equal 0.005
+variable vx atom 1.5*sin(2*PI*x/v_L)+0.5*sin(2*PI*y/v_L)
+variable vy atom 1.5*sin(2*PI*z/v_L)
+variable vz atom 1.5*sin(2*PI*x/v_L)
+velocity all set v_vx v_vy v_vz units box
+compute 1 all bbpd/damage/atom
+compute dmean all reduce ave c_1
+thermo_style custom step pe ke c_dmean
+thermo 300
+write_dump all custom start.dump id x y z modify sort id format float %.17g
+fix 1 all nve
+timestep 1.0e-7
+run 300
+"""
+
+
+def state_based_states(lmp, tmp_path, path):
+    """Final states of the state-based rows (dilatation and force passes): the shattering LPS,
+    VES and EPS cylinders (free boundaries) and the periodic LPS block, bonds breaking in each"""
+    scripts = {"lps cylinder": lps_compat.cylinder(),
+               "ves cylinder": ves_eps_compat.cylinder("ves"),
+               "eps cylinder": ves_eps_compat.cylinder("eps"),
+               "lps periodic": PERIODIC_LPS}
+    found = {}
+    for scene, script in scripts.items():
+        out = lmp(with_path(script, path) + lps_compat.END_DUMP).output
+        assert ref.thermo_tables(out)[-1]["c_dmean"][-1] > 0.005, scene    # bonds broke
+        found[scene] = (tmp_path / "end.dump").read_text()
+    return found
+
+
+@pytest.fixture(scope="module")
+def portable_state_based(tmp_path_factory):
+    from bbpd.runner import run_lammps
+    wd = tmp_path_factory.mktemp("portable-state-based")
+    return state_based_states(lambda s: run_lammps(s, workdir=wd), wd, "portable")
+
+
 @pytest.fixture(scope="module")
 def portable_states(tmp_path_factory):
     from bbpd.runner import run_lammps
@@ -200,6 +264,26 @@ def test_every_path_gives_the_portable_bits(lmp, tmp_path, portable_states, path
         assert got[scene] == state, f"{scene}: simd {path} differs from simd portable"
 
 
+@pytest.mark.parametrize("path", [pytest.param("avx2", marks=needs_path("avx2")),
+                                  pytest.param("avx512", marks=needs_path("avx512")), "auto"])
+def test_state_based_rows_give_the_portable_bits(lmp, tmp_path, portable_state_based, path):
+    got = state_based_states(lmp, tmp_path, path)
+    for scene, state in portable_state_based.items():
+        assert got[scene] == state, f"{scene}: simd {path} differs from simd portable"
+
+
+def test_periodic_lps_block_is_the_same_on_1_2_4_ranks(lmp, tmp_path):
+    """bonds decided near breaking from the canonical lengths: the same bits on any rank count
+    (atoms ordered by their starting positions: create_atoms numbers them by rank)"""
+    ends = []
+    for nprocs in (1, 2, 4):
+        lmp(PERIODIC_LPS + lps_compat.END_DUMP, nprocs=nprocs)
+        ends.append(lps_compat.end_state(tmp_path))
+    for other in ends[1:]:
+        for key in lps_compat.KEYS:
+            np.testing.assert_array_equal(ends[0][key], other[key])
+
+
 def test_native_build_gives_the_portable_bits(lmp, tmp_path, portable_states):
     plugin = build_variant("native", ["-D", "BBPD_NATIVE=ON"])
     assert crack_state(lmp, tmp_path, "auto", plugin=plugin)[0] == portable_states["crack"]
@@ -225,16 +309,17 @@ def test_log_names_the_path_and_why(lmp):
 
 
 @pytest.mark.parametrize("style", ["lps", "ves", "eps"])
-def test_state_based_rows_report_the_portable_loop(lmp, style):
-    """the LPS rows have no SIMD path yet: the report says so, whatever 'simd' asks (it once
-    named the path the bond-based rows would have taken)"""
+def test_state_based_styles_report_their_path(lmp, style):
+    """the LPS rows run on the path asked for, and the report says so (it once named the path
+    while the rows ran the portable loop whatever 'simd' said)"""
     from test_bad_input import BASE_3D, script
     extra = {"lps": "", "ves": " 0.5 1.0e-3", "eps": " 1.0e8"}[style]
     text = script(BASE_3D, pair_style=f"pair_style bbpd/{style} 3d",
                   pair_coeff=f"pair_coeff * * 14.9e9 14.9e9 0.003015 0.001 0.25{extra}")
-    for path in (None, "portable") + tuple(p for p in ("avx2",) if host_has(*NEEDS[p])):
-        assert loop_line(lmp(with_path(text, path)).output) == (
-            "portable", "the state-based rows have no AVX2 or AVX-512 path yet"), path
+    for path in ("portable",) + tuple(p for p in ("avx2", "avx512") if host_has(*NEEDS[p])):
+        assert loop_line(lmp(with_path(text, path)).output) == (path, "forced by the simd keyword")
+    path, why = loop_line(lmp(text).output)
+    assert why.startswith("auto: ") and path in ("portable", "avx2", "avx512")
 
 
 def test_auto_takes_only_paths_the_cpu_runs(lmp, monkeypatch):

@@ -336,15 +336,15 @@ def test_dsif_bad_input(call):
 
 
 # ---------------------------------------------------------------------- plots
-def test_plot_k_histories_writes_png(tmp_path, speeds2):
+def test_plot_k_writes_png(tmp_path, speeds2):
     from bbpd import plots
 
     c_s, c_d = speeds2
     t = np.linspace(0.0, 5e-6, 50)
     k = freund.normalised_mode2(freund.mode2_step_dsif(t, TAU, c_s, c_d), TAU, A2)
-    out = plots.plot_k_histories(tmp_path / "k.png", {"noisy": (t, 1.05 * k)},
-                                 analytic=("exact", t, k), window_end=4e-6)
+    out = plots.plot_k(tmp_path / "k.png", [("noisy", t, 1.05 * k, None)],
+                       [("exact", t, k, "--", "black")], (0.0, 4e-6), "K(t)", "t (s)", "K")
     data = out.read_bytes()
     assert data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) > 1000
     with pytest.raises(ValueError):
-        plots.plot_k_histories(tmp_path / "empty.png", {})
+        plots.plot_k(tmp_path / "empty.png", [], [], (), "", "", "")

@@ -41,15 +41,6 @@ def test_append_keeps_rows_provenance_and_cpu(tmp_path):
     assert "| CPU B | every other run |\n| CPU A | gaussian at dx = 0.1 m |" in table
 
 
-def test_a_csv_without_the_cpu_column_takes_its_timing_line(tmp_path):
-    path = tmp_path / "old.csv"
-    cols = [c for c in mp.CSV_COLUMNS if c != "cpu"]
-    path.write_text("# made by: x\n# timing: LAMMPS loop time, 1 rank, AMD EPYC, AVX2\n"
-                    + ",".join(cols) + "\n" + ",".join("gaussian" if c == "kernel" else "1"
-                                                       for c in cols) + "\n")
-    assert mp.read_rows(path)[0]["cpu"] == "AMD EPYC, AVX2"
-
-
 def test_growth_verdict_settles_only_a_small_last_change():
     gap = 0.98 - 0.77
     small = mp.SETTLED_SHARE_OF_GAP * gap / 2

@@ -10,9 +10,9 @@ allocation" (its own count) and the loop, pair and output (restart) times. The m
 two sizes, (RSS_2 - RSS_1) / (atoms_2 - atoms_1), is the memory one more atom costs, free of
 the fixed cost of the program and its libraries; the largest size that fits follows from it.
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.big_run --n 40 60 80 --nprocs 2 --work /tmp/big-run
+Commands: examples/big-run/README.md.
 """
+
 import argparse
 import re
 import subprocess

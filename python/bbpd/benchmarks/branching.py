@@ -4,37 +4,12 @@ for each kernel, horizon ratio m, horizon delta and traction sigma.
 
 Runs examples/crack-branching/in.crack_branching (Ha & Bobaru 2010; Bobaru & Zhang 2015) and
 reads what compute bbpd/crack/tip with branches yes wrote (tip.dat, tips.dat) and the damage
-dumps. Per run:
+dumps: the initiation, the first split (point, path length, fork time), the speeds before the
+fork (over PRE_WINDOW), from initiation to it and at the end (over END_WINDOW) against the
+model's c_R, the largest speed (above c_R the path jumped: no crack growth), the branch angle
+and the mirror symmetry of the two branches; examples/crack-branching/README.md defines each.
 
-t_init     first output at which the crack has grown from the notch tip (extension > 0).
-split      the first split the tracker recorded: its point (x, y) and path length l_s; the
-           fork time t_split is when the longest tip's path length first reached l_s (the
-           tracker sees a branch only once it stands `branch` = 2 links beyond its split
-           point, later: t_seen).
-v_pre      least-squares slope of the longest tip's path length over the PRE_WINDOW before
-           t_split, in m/s and over the model's Rayleigh speed c_R (plane stress, BBPD's
-           nu = 1/3: c_d = sqrt(E/(rho (1 - nu^2))), c_s = sqrt(E/(2 (1 + nu) rho))).
-v_mean     l_s / (t_split - t_init): the mean speed from initiation to the fork.
-v_end      slope of the longest tip's path length over the last END_WINDOW of the run.
-v_max      the largest speed of the longest tip the compute reported (over its window, 1 us):
-           above c_R the path length jumped, i.e. the crack joined damage that did not grow
-           from its tip (at sigma = 12 MPa the loading waves meet at y = 0 and break bonds
-           along the whole mid-line, README.md); such a run's split and speeds are no crack
-           growth and the table marks them.
-angle      branch angle: between the chords from the split point to the two tips of the first
-           split at the end of the run (the direction columns are chords over 2 links, which
-           the grid quantises).
-tips       tips and splits at the end.
-mirror     the largest |x_a - x_b| and |y_a + y_b| of the two tips of the first split over
-           every output that has them, in grid spacings; and the fraction of crack atoms
-           (damage >= 0.3) of the last dump whose mirror image about y = 0 is not one.
-
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.branching --work /tmp/branching \
-      --csv examples/crack-branching/results/branching.csv --figures examples/crack-branching
-(--runs NAME ... picks runs of RUNS; the CSV keeps the rows of runs not made again); then
-  tools/python -m bbpd.claims --write
-writes the CSV whose tables the README shows (blocks 'branching' and 'branching-cost', python -m bbpd.claims --write).
+Commands: examples/crack-branching/README.md.
 """
 
 import argparse
@@ -44,11 +19,11 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import crack_tip, csvfile, freund, readers
+from bbpd import crack_tip, csvfile, freund, plots, readers
 from bbpd import jobs as jobmod
 from bbpd.provenance import cpu
 from bbpd.kernels import KERNELS
-from bbpd.runner import run_lammps
+from bbpd.runner import run_or_reuse
 
 ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "crack-branching" / "in.crack_branching"
@@ -68,16 +43,10 @@ END_WINDOW = 5.0e-6       # s at the end over which v_end is fitted
 THRESHOLD = crack_tip.DEFAULT_THRESHOLD
 
 # name -> (kernel, delta in m, m, sigma in Pa); the order is that of the CPU budget
-RUNS = {}
-for _k in KERNELS:
-    RUNS[f"{_k}-s2-m4"] = (_k, 1.0e-3, 4, 2.0e6)
-for _k in KERNELS:
-    RUNS[f"{_k}-s2-m3"] = (_k, 1.0e-3, 3, 2.0e6)
-for _s in (4, 12):
-    for _k in KERNELS:
-        RUNS[f"{_k}-s{_s}-m4"] = (_k, 1.0e-3, 4, _s * 1.0e6)
-for _k in KERNELS:
-    RUNS[f"{_k}-s2-m4-d0.5"] = (_k, 0.5e-3, 4, 2.0e6)
+RUNS = {f"{k}-s{s}-m{m}{suffix}": (k, delta, m, s * 1.0e6)
+        for s, m, delta, suffix in ((2, 4, 1.0e-3, ""), (2, 3, 1.0e-3, ""), (4, 4, 1.0e-3, ""),
+                                    (12, 4, 1.0e-3, ""), (2, 4, 0.5e-3, "-d0.5"))
+        for k in KERNELS}
 DEFAULT_RUNS = [n for n in RUNS if not n.endswith("d0.5")]
 
 CSV_COLUMNS = ("run", "kernel", "delta_mm", "m", "dx_mm", "sigma_MPa", "atoms", "steps",
@@ -187,10 +156,7 @@ def run_case(workdir, kernel, delta, m, sigma, name=None, reuse=False, nprocs=1)
     dx = delta / m
     workdir = Path(workdir)
     vars_ = {"kernel": kernel, "dx": repr(dx), "m": m, "sigma": repr(sigma)}
-    if reuse:
-        output = (workdir / "log.lammps").read_text()
-    else:
-        output = run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=vars_).output
+    output, _ = run_or_reuse(EXAMPLE, workdir, vars_, nprocs, reuse=reuse)
     loop_s, _ = readers.loop_time(output)
     s0 = readers.pair_setup(output)["critical_stretch"]
     head = output.split("CRACK-BRANCHING:")[-1].split("\n")[0].split()
@@ -220,13 +186,6 @@ def write_csv(path, rows, command):
 
 def read_rows(path=RESULTS):
     return csvfile.read_table(path, text=TEXT_COLUMNS)
-
-
-def made_by(path=RESULTS):
-    for line in Path(path).read_text().splitlines():
-        if line.startswith("# made by: "):
-            return line[len("# made by: "):]
-    return None
 
 
 def _f(v, fmt):
@@ -267,13 +226,6 @@ def table(rows, command=None, cpu=None):
     return "\n".join(lines)
 
 
-def cpu_of(path=RESULTS):
-    for line in Path(path).read_text().splitlines():
-        if line.startswith("# timing: "):
-            return line[len("# timing: "):]
-    return None
-
-
 FIGURE = "damage_maps.png"
 MAP_TIMES_US = (15.0, 25.0, 35.0, 43.0)
 SIGMA_FIGURE = "damage_maps_sigma.png"
@@ -282,33 +234,27 @@ SIGMA_MAP_TIMES_US = (4.0, 5.0, 10.0, 20.0, 43.0)
 
 def damage_maps(workdirs, path, times_us=MAP_TIMES_US):
     """Damage maps of the runs in workdirs ({label: folder}) at times_us, one row per run."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, axes = plt.subplots(len(workdirs), len(times_us), figsize=(3.2 * len(times_us),
-                             1.45 * len(workdirs) + 0.4), squeeze=False)
-    for row, (label, work) in zip(axes, workdirs.items()):
-        work = Path(work)
-        ref = readers.read_dump(work / "ref.dump")
-        pos = dict(zip(ref["id"].astype(int), zip(ref["x"], ref["y"])))
-        out = (work / "log.lammps").read_text()
-        dt = float(out.split("CRACK-BRANCHING:")[-1].split(" dt ")[1].split()[0])
-        snaps = readers.dump_snapshots(work / "damage.dump")
-        for ax, t_us in zip(row, times_us):
-            step, cols = min(snaps, key=lambda s: abs(s[0] * dt * 1e6 - t_us))
-            xy = np.array([pos[int(i)] for i in cols["id"]]) * 1e3
-            ax.scatter(xy[:, 0], xy[:, 1], c=cols["c_damage"], s=0.3, cmap="inferno_r",
-                       vmin=0.0, vmax=0.6, marker="s", linewidths=0)
-            ax.set_xlim(-50, 50)
-            ax.set_ylim(-20, 20)
-            ax.set_aspect("equal")
-            ax.set_xticks([])
-            ax.set_yticks([])
-            ax.set_title(f"{label}, t = {step * dt * 1e6:.0f} µs", fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=130)
-    plt.close(fig)
+    with plots.figure(path, len(workdirs), len(times_us), squeeze=False, dpi=130,
+                      figsize=(3.2 * len(times_us), 1.45 * len(workdirs) + 0.4)) as (fig, axes):
+        for row, (label, work) in zip(axes, workdirs.items()):
+            work = Path(work)
+            ref = readers.read_dump(work / "ref.dump")
+            pos = dict(zip(ref["id"].astype(int), zip(ref["x"], ref["y"])))
+            out = (work / "log.lammps").read_text()
+            dt = float(out.split("CRACK-BRANCHING:")[-1].split(" dt ")[1].split()[0])
+            snaps = readers.dump_snapshots(work / "damage.dump")
+            for ax, t_us in zip(row, times_us):
+                step, cols = min(snaps, key=lambda s: abs(s[0] * dt * 1e6 - t_us))
+                xy = np.array([pos[int(i)] for i in cols["id"]]) * 1e3
+                ax.scatter(xy[:, 0], xy[:, 1], c=cols["c_damage"], s=0.3, cmap="inferno_r",
+                           vmin=0.0, vmax=0.6, marker="s", linewidths=0)
+                ax.set_xlim(-50, 50)
+                ax.set_ylim(-20, 20)
+                ax.set_aspect("equal")
+                ax.set_xticks([])
+                ax.set_yticks([])
+                ax.set_title(f"{label}, t = {step * dt * 1e6:.0f} µs", fontsize=7)
+    return Path(path)
 
 
 KERNEL_SEPARATION = 2.0   # a kernel effect must exceed this many times the change from m = 3 to 4
@@ -374,18 +320,12 @@ def summary_text(rows):
 
 def section(specs, results, figdir, notes):
     """The section of REPORT.md (bbpd.report.document.write_report) from the report's branching runs."""
-    rows, text = jobmod.finished_rows(specs, results, summary_text)
-    names = []
-    maps = {f"{r['kernel']} {r['sigma_MPa']:g} MPa m = {r['m']:g}": r["workdir"] for r in rows
-            if Path(r.get("workdir", "")).joinpath("damage.dump").exists()}
-    if maps:
-        try:
-            damage_maps(maps, Path(figdir) / ("branching_" + FIGURE))
-            names = ["branching_" + FIGURE]
-        except Exception as exc:  # the report must still be written
-            notes.append(f"branching figure not made: {type(exc).__name__}: {exc}")
-    return {"title": REPORT_TITLE, "setup": REPORT_SETUP, "table": table(rows) if rows else "",
-            "text": " ".join(text), "figures": names}
+    def figures(rows):
+        maps = {f"{r['kernel']} {r['sigma_MPa']:g} MPa m = {r['m']:g}": r["workdir"] for r in rows
+                if Path(r.get("workdir", "")).joinpath("damage.dump").exists()}
+        return [damage_maps(maps, Path(figdir) / ("branching_" + FIGURE)).name] if maps else []
+    return jobmod.section(REPORT_TITLE, REPORT_SETUP, specs, results, table, summary_text,
+                          figures, notes)
 
 
 def main(argv=None):

@@ -15,9 +15,7 @@ analytic   bbpd-dispersion-curves (src/bbpd_dispersion.h) on the same k grid:
 errors     max |omega_measured/omega_analytic - 1| over the k whose ridge carries energy
            (power >= MIN_POWER of the strongest) in a k dx range.
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.dispersion --work /tmp/dispersion \
-      --figures DIR
+Commands: examples/dispersion-1d/README.md.
 """
 
 import argparse
@@ -31,8 +29,9 @@ import subprocess
 from pathlib import Path
 
 import numpy as np
+from matplotlib.lines import Line2D
 
-from bbpd import readers
+from bbpd import plots, readers
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.readers import read_csv
 from bbpd.runner import run_lammps
@@ -267,11 +266,6 @@ def plot_figures(results, paper, cv, figdir, v=None):
     kernels: continuous (eq. 29), discrete as printed (eq. 31), discrete with C_v, and, where a
     run exists, discrete with C_v and the run's time step (what LAMMPS integrates) with the
     measured points on top. paper, cv: analytic_table() curves (v = 1). Returns the PNG paths."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from matplotlib.lines import Line2D
-
     figdir = Path(figdir)
     figdir.mkdir(parents=True, exist_ok=True)
     runs = [r["info"] for r in results.values()]
@@ -289,50 +283,47 @@ def plot_figures(results, paper, cv, figdir, v=None):
                "Fig. 6: group velocity"))
     paths = []
     for fname, what, ylabel, title in panels:
-        fig, ax = plt.subplots(figsize=(9.0, 4.8))
-        # the analytic curves have v = 1: omega scales with v, velocities are c/v and v_g/v
-        scale = v / OMEGA_UNIT if what == "omega" else 1.0
-        unit = OMEGA_UNIT if what == "omega" else 1.0
-        for kernel in KERNELS:
-            col = COLORS[kernel]
-            for curves, suffix, style, _ in relations:
-                c = curves[kernel]
-                ax.plot(c["k"], c[f"{what}_{suffix}"] * scale, style, color=col, linewidth=1.2)
-            if kernel not in results:
-                continue
-            meas, ana = results[kernel]["measured"], results[kernel]["analytic"][kernel]
-            # the run's curves carry its own E and rho: omega in rad/s already
-            ax.plot(ana["k"], ana[f"{what}_discrete_dt"] / unit, color=col, **dt_style)
-            if what == "omega":
-                y = meas["omega"] / OMEGA_UNIT
-            elif what == "phase":
-                y = meas["omega"] / meas["k"] / v
-            else:
-                y = measured_group_velocity(meas) / v
-            s = slice(MARK_EVERY - 1, None, MARK_EVERY)
-            ax.plot(meas["k"][s], y[s], "o", color=col, markersize=3.5, markerfacecolor="none")
-        handles = [Line2D([], [], color=COLORS[k], linewidth=2.0, label=k) for k in KERNELS]
-        handles += [Line2D([], [], color="black", linestyle=st, label=lab)
-                    for _, _, st, lab in relations]
-        if runs:
-            dts = sorted({f"{r['dt']:.3g}" for r in runs})
-            handles.append(Line2D([], [], color="black", label=r"discrete with $C_v$, "
-                                  f"time step {', '.join(dts)} s", **dt_style))
-            handles.append(Line2D([], [], color="black", marker="o", linestyle="none",
-                                  markerfacecolor="none", label="measured (LAMMPS + FFT)"))
-        ax.set_xlabel(r"wave number $k$ (1/m)")
-        ax.set_ylabel(ylabel)
-        ax.set_title(f"{title} (m = {PAPER_M}, $\\delta$ = {PAPER_DELTA * 1e3:g} mm"
-                     + (f", v = {v:g} m/s)" if what == "omega" else ")"))
-        top = ax.secondary_xaxis("top", functions=(lambda k: k * dx, lambda q: q / dx))
-        top.set_xlabel(r"$k\,\Delta x$")
-        if what == "group":
-            ax.axhline(0.0, color="black", linewidth=0.6)
-        ax.grid(True, alpha=0.3)
-        ax.legend(handles=handles, fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
-        fig.tight_layout()
-        fig.savefig(figdir / fname, dpi=150)
-        plt.close(fig)
+        with plots.figure(figdir / fname, figsize=(9.0, 4.8)) as (fig, ax):
+            # the analytic curves have v = 1: omega scales with v, velocities are c/v and v_g/v
+            scale = v / OMEGA_UNIT if what == "omega" else 1.0
+            unit = OMEGA_UNIT if what == "omega" else 1.0
+            for kernel in KERNELS:
+                col = COLORS[kernel]
+                for curves, suffix, style, _ in relations:
+                    c = curves[kernel]
+                    ax.plot(c["k"], c[f"{what}_{suffix}"] * scale, style, color=col, linewidth=1.2)
+                if kernel not in results:
+                    continue
+                meas, ana = results[kernel]["measured"], results[kernel]["analytic"][kernel]
+                # the run's curves carry its own E and rho: omega in rad/s already
+                ax.plot(ana["k"], ana[f"{what}_discrete_dt"] / unit, color=col, **dt_style)
+                if what == "omega":
+                    y = meas["omega"] / OMEGA_UNIT
+                elif what == "phase":
+                    y = meas["omega"] / meas["k"] / v
+                else:
+                    y = measured_group_velocity(meas) / v
+                s = slice(MARK_EVERY - 1, None, MARK_EVERY)
+                ax.plot(meas["k"][s], y[s], "o", color=col, markersize=3.5, markerfacecolor="none")
+            handles = [Line2D([], [], color=COLORS[k], linewidth=2.0, label=k) for k in KERNELS]
+            handles += [Line2D([], [], color="black", linestyle=st, label=lab)
+                        for _, _, st, lab in relations]
+            if runs:
+                dts = sorted({f"{r['dt']:.3g}" for r in runs})
+                handles.append(Line2D([], [], color="black", label=r"discrete with $C_v$, "
+                                      f"time step {', '.join(dts)} s", **dt_style))
+                handles.append(Line2D([], [], color="black", marker="o", linestyle="none",
+                                      markerfacecolor="none", label="measured (LAMMPS + FFT)"))
+            ax.set_xlabel(r"wave number $k$ (1/m)")
+            ax.set_ylabel(ylabel)
+            ax.set_title(f"{title} (m = {PAPER_M}, $\\delta$ = {PAPER_DELTA * 1e3:g} mm"
+                         + (f", v = {v:g} m/s)" if what == "omega" else ")"))
+            top = ax.secondary_xaxis("top", functions=(lambda k: k * dx, lambda q: q / dx))
+            top.set_xlabel(r"$k\,\Delta x$")
+            if what == "group":
+                ax.axhline(0.0, color="black", linewidth=0.6)
+            ax.grid(True, alpha=0.3)
+            ax.legend(handles=handles, fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
         paths.append(figdir / fname)
     return paths
 

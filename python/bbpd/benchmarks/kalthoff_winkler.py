@@ -1,45 +1,20 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Kalthoff-Winkler impact benchmark (Bouaraquia & Mabssout 2026, sec. 4.2.3).
 
-Runs examples/kalthoff-winkler/in.kalthoff_winkler and measures, from its outputs only:
+Runs examples/kalthoff-winkler/in.kalthoff_winkler and measures, from its outputs only, the
+initiation (first broken bond within delta of a tip; the damage band: an atom ahead of the tip
+on the outer side reaching PHI_CRACK), the crack path (crack atoms, damage >= PHI_CRACK, linked
+to the notch flanks), its angle (principal axis over FIT_RANGE) and speed, the mirror symmetry
+of the two cracks and the damage far from both (the far-edge crack and any other):
+examples/kalthoff-winkler/README.md defines each.
 
-initiation    first bond: first time step at which a bond with an end within delta of a
-              notch tip breaks (tips.dat: the damage summed over those atoms rises above its
-              value at t = 0, i.e. above what the notch cut); also the first break anywhere
-              in the plate, to show where fracture starts.
-              damage band: first time step at which an atom within delta of the tip, ahead of
-              it (x > tip x) on the outer side, reaches damage PHI_CRACK, i.e. the crack band
-              that a damage map shows has left the tip (before, those atoms have <= 0.12).
-crack path    at every damage snapshot (~1 us apart): crack atoms are those with damage
-              >= PHI_CRACK; the ones linked (8-neighbour grid links, <= 1.5 dx) to the notch
-              flanks form the notch's crack; the crack tip is its atom ahead of the notch tip
-              (x > tip x) on the outer side of the notch (away from the impacted strip, where
-              the experiment's cracks run) that is farthest from the notch tip.
-angle         direction of the principal axis of the crack atoms at the end whose distance
-              from the notch tip lies in FIT_RANGE, measured from the notch direction (+x)
-              towards the outer side (experiment: about 70 degrees).
-speed         slope of a least-squares line through crack length (tip distance from the notch
-              tip) against time, over the snapshots whose length lies in FIT_RANGE.
-symmetry      largest distance between the lower crack tip and the mirror image (about
-              y = Ly/2) of the upper one over all snapshots, and the largest damage difference
-              between mirror atoms at the end.
-far damage    atoms whose damage grew during the run and lie farther than delta + dx from
-              both notches and both crack paths, grouped into clusters (<= 1.5 dx links).
-              A cluster reaching the far edge (x > Lx - delta) is the far-edge crack opened by
-              the reflected impact wave (t_far_edge_us: first snapshot with new damage there);
-              anything else is reported as other far damage.
-
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.kalthoff_winkler \
-      --kernels constant triangular gaussian --dx 2e-3 1e-3 --work /tmp/kw --figures DIR
-The loading study has its own command: python -m bbpd.benchmarks.kalthoff_winkler_study.
+Commands: examples/kalthoff-winkler/README.md.
 """
 
 import argparse
 import json
 import math
 import re
-import time
 from pathlib import Path
 
 import numpy as np
@@ -49,7 +24,7 @@ from scipy.spatial import cKDTree
 
 from bbpd import readers, snapshots
 from bbpd.kernels import KERNELS
-from bbpd.runner import run_lammps
+from bbpd.runner import run_noted
 from bbpd.markdown import cell as fmt
 from bbpd import plots
 
@@ -291,16 +266,12 @@ def run(kernel, dx, workdir, nprocs=2, tend=None, reuse=False, images=False):
     reuse: analyse the outputs of an earlier finished run in workdir instead of running.
     images: the input's damage pictures as well, listed as snapshots [(t in us, path)]."""
     workdir = Path(workdir)
-    wall_file = workdir / "wall_s.txt"
-    if not (reuse and wall_file.is_file()):
-        variables = {"kernel": kernel, "dx": repr(float(dx)), "images": "yes" if images else "no"}
-        if tend is not None:
-            variables["tend"] = repr(float(tend))
-        start = time.perf_counter()
-        run_lammps(str(EXAMPLE), workdir, nprocs=nprocs, vars=variables)
-        wall_file.write_text(f"{time.perf_counter() - start:.3f}\n")
+    variables = {"kernel": kernel, "dx": repr(float(dx)), "images": "yes" if images else "no"}
+    if tend is not None:
+        variables["tend"] = repr(float(tend))
+    note = run_noted(EXAMPLE, workdir, variables, {"kernel": kernel, "dx": dx}, nprocs, reuse)
     res = analyse(workdir)
-    res["wall_s"] = float(wall_file.read_text())
+    res["wall_s"] = note["wall_s"]
     if images:
         res["snapshots"] = [(step * res["dt"] * 1e6, str(path))
                             for step, path in snapshots.find(workdir)]
@@ -326,47 +297,44 @@ def plot_damage_map(res, path):
     return path
 
 
-def draw_plate_frame(ax, g):
-    """The plate in mm with the experiment's 70 deg lines from both notch tips (paths figures)."""
-    ang = math.radians(EXPERIMENT_ANGLE_DEG)
-    for y0, sign in ((g["ylo"], -1), (g["yhi"], 1)):
-        length = y0 / math.sin(ang) if sign < 0 else (g["Ly"] - y0) / math.sin(ang)
-        ax.plot([g["a"] * 1e3, (g["a"] + length * math.cos(ang)) * 1e3],
-                [y0 * 1e3, (y0 + sign * length * math.sin(ang)) * 1e3], "k--", linewidth=1.0,
-                label="70 deg (experiment)" if sign < 0 else None)
-    ax.set_aspect("equal")
-    ax.set_xlim(-5, g["Lx"] * 1e3 + 5)
-    ax.set_ylim(-5, g["Ly"] * 1e3 + 5)
-    ax.set_xlabel("x (mm)")
-    ax.set_ylabel("y (mm)")
-
-
-def plot_paths(results, path):
-    """Crack-tip trajectories of several runs, the notches and the 70-degree line (Fig. 15)."""
+def plot_paths(runs, path, title, fontsize=7):
+    """Crack-tip paths of runs [(label, result, line style, colour or None)] in the plate with
+    its notches and the experiment's 70 deg lines (paper Fig. 15)."""
     with plots.figure(path, figsize=(3.8, 6.0)) as (fig, ax):
-        g = results[0]
+        g = runs[0][1]
         ax.plot([0, g["Lx"] * 1e3, g["Lx"] * 1e3, 0, 0], [0, 0, g["Ly"] * 1e3, g["Ly"] * 1e3, 0],
                 color="black", linewidth=0.8)
-        for res in results:
-            ax.plot([0, res["a"] * 1e3], [res["ylo"] * 1e3] * 2, color="grey", linewidth=2)
-            ax.plot([0, res["a"] * 1e3], [res["yhi"] * 1e3] * 2, color="grey", linewidth=2)
-        by_dx = len({r["dx"] for r in results}) > 1    # a convergence plot, else kernels
-        palette = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple"]
-        for n, res in enumerate(results):
-            tr = res["trajectory"]
-            color = palette[n % len(palette)]
-            name = f"dx = {res['dx'] * 1e3:g} mm" if by_dx else res["kernel"]
-            for side, y0 in (("lo", res["ylo"]), ("hi", res["yhi"])):
-                L = np.array(tr["L_" + side])
-                p = np.array(tr[side])[L > 0]
-                p = np.vstack([[res["a"], y0], p]) * 1e3
-                ax.plot(p[:, 0], p[:, 1], "-", color=color, linewidth=1.2,
-                        label=f"{name} ({res['angle_deg']:.1f} deg)" if side == "lo" else None)
-        draw_plate_frame(ax, g)
-        ax.legend(fontsize=7, loc="center left")
-        ax.set_title(f"crack-tip paths, {g['kernel']}" if by_dx
-                     else f"crack-tip paths, dx = {g['dx'] * 1e3:g} mm", fontsize=9)
+        for label, r, style, color in runs:
+            for side, y0 in (("lo", r["ylo"]), ("hi", r["yhi"])):
+                ax.plot([0, r["a"] * 1e3], [y0 * 1e3] * 2, color="grey", linewidth=2)
+                L = np.array(r["trajectory"]["L_" + side])
+                p = np.vstack([[r["a"], y0], np.array(r["trajectory"][side])[L > 0]]) * 1e3
+                color = ax.plot(p[:, 0], p[:, 1], style, color=color, linewidth=1.2,
+                                label=label if side == "lo" else None)[0].get_color()
+        ang = math.radians(EXPERIMENT_ANGLE_DEG)
+        for y0, sign in ((g["ylo"], -1), (g["yhi"], 1)):
+            length = y0 / math.sin(ang) if sign < 0 else (g["Ly"] - y0) / math.sin(ang)
+            ax.plot([g["a"] * 1e3, (g["a"] + length * math.cos(ang)) * 1e3],
+                    [y0 * 1e3, (y0 + sign * length * math.sin(ang)) * 1e3], "k--", linewidth=1.0,
+                    label="70 deg (experiment)" if sign < 0 else None)
+        ax.set_aspect("equal")
+        ax.set_xlim(-5, g["Lx"] * 1e3 + 5)
+        ax.set_ylim(-5, g["Ly"] * 1e3 + 5)
+        ax.set_xlabel("x (mm)")
+        ax.set_ylabel("y (mm)")
+        ax.legend(fontsize=fontsize - 1, loc="center left")
+        ax.set_title(title, fontsize=fontsize + 1)
     return path
+
+
+def plot_runs(results, path):
+    """plot_paths of the kernels at one dx, or of one kernel's grids"""
+    by_dx = len({r["dx"] for r in results}) > 1
+    g = results[0]
+    return plot_paths([((f"dx = {r['dx'] * 1e3:g} mm" if by_dx else r["kernel"])
+                        + f" ({r['angle_deg']:.1f} deg)", r, "-", None) for r in results], path,
+                      f"crack-tip paths, {g['kernel']}" if by_dx
+                      else f"crack-tip paths, dx = {g['dx'] * 1e3:g} mm", fontsize=8)
 
 
 # --------------------------------------------------------------------------- table
@@ -414,11 +382,11 @@ def main(argv=None):
             plot_damage_map(res, figs / f"damage_{kernel}_dx{dx * 1e3:g}mm.png")
         same = [r for r in results if r["dx"] == dx]
         if len(same) > 1:
-            plot_paths(same, figs / f"paths_dx{dx * 1e3:g}mm.png")
+            plot_runs(same, figs / f"paths_dx{dx * 1e3:g}mm.png")
     for kernel in args.kernels:
         same = sorted((r for r in results if r["kernel"] == kernel), key=lambda r: -r["dx"])
         if len(same) > 1:
-            plot_paths(same, figs / f"paths_{kernel}_convergence.png")
+            plot_runs(same, figs / f"paths_{kernel}_convergence.png")
     # the table covers every finished run in --work, also those of earlier invocations
     runs = sorted(work.glob("*/results.json"))
     results = [json.loads(p.read_text()) for p in runs]

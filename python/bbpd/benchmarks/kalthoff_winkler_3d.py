@@ -2,21 +2,12 @@
 """Kalthoff-Winkler in 3D, the 9 mm plate resolved through its thickness.
 
 examples/kalthoff-winkler/in.kalthoff_winkler_3d struck by the projectile (Gaussian kernel, the
-paper's G_c), with m = delta/dx = 3 so that the horizon fits at least four times into the
-thickness (delta <= 2.25 mm) at a cost this machine can run: delta = 2.25 mm (dx = 0.75 mm,
-12 layers, 4 horizons) and, as the second resolution, delta = 3 mm (dx = 1 mm, 9 layers, 3
-horizons), on 2 MPI ranks, to 100 us (the crack must cross the plate), the tip and momentum
-monitors every MONITOR steps. Beside each, the 2D
-plate with the same dx, m, loading and kernel (in.kalthoff_winkler).
+paper's G_c) at m = delta/dx = M so that the horizon fits at least MIN_HORIZONS_THROUGH times
+into the thickness, at RESOLUTIONS, on NPROCS ranks, to 100 us, beside the 2D plate of the same
+grid. Measured: the loading study's angles (study.angles_of) on the mid-plane and on both faces,
+the first broken bond and the damage band, atoms, bonds, steps, loop time and memory.
 
-Measured per run: the angles of the loading study (initial, fit, chord: study.angles_of; fit and
-chord at 70 us) on the mid-plane (the middle layer's damage.dump) and on both faces
-(damage_faces.dump), the first broken bond and the damage band's departure (mid-plane),
-atoms, bonds, steps, loop time and memory (LAMMPS's per-rank maximum times the ranks).
-
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.kalthoff_winkler_3d --work /tmp/kw3d \
-      --csv examples/kalthoff-winkler/results/kw3d.csv
+Commands: examples/kalthoff-winkler/README.md, "3D plate resolved through its thickness".
 """
 
 import argparse
@@ -35,6 +26,7 @@ from bbpd.provenance import cpu
 from bbpd.jobs import ROOT
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as _f
+from bbpd.markdown import table as md_table
 
 CSV = ROOT / "examples" / "kalthoff-winkler" / "results" / "kw3d.csv"
 PLATE_THICKNESS = 9.0e-3          # m, the experiment's plate
@@ -130,23 +122,22 @@ def run_case(workdir, setup, dx, m=M, reuse=False, nprocs=None):
 
 
 def table(rows, command=None):
-    head = ("| setup | dx (mm) | m | delta (mm) | horizons through 9 mm | atoms | bonds | steps | "
-            "first bond (us) | damage band (us) | initial (deg) | fit, mid-plane (deg) | "
-            "fit, faces (deg) | chord, mid-plane / faces (deg) | crack length (mm) | crack stops (us) | "
-            "loop (s) | memory (MB) | ranks |")
-    lines = [head, "|" + "---|" * 19]
-    for r in sorted(rows, key=lambda r: (-r["dx_mm"], r["setup"])):
-        faces = ("-" if r["fit_face_lo_deg"] is None else
-                 f"{r['fit_face_lo_deg']:.1f} / {r['fit_face_hi_deg']:.1f}")
-        lines.append("| " + " | ".join([
-            r["setup"].upper(), f"{r['dx_mm']:g}", f"{r['m']:g}", f"{r['delta_mm']:g}",
-            _f(r["horizons_through"], ".0f"), _f(r["atoms"], ".0f"), _f(r["bonds"], ".3g"),
-            _f(r["steps"], ".0f"), _f(r["first_bond_us"], ".1f"), _f(r["band_us"], ".1f"),
-            _f(r["initial_deg"], ".1f"), _f(r["fit_deg"], ".1f"), faces,
-            f"{_f(r['chord_deg'], '.1f')} / {_f(r['chord_face_deg'], '.1f')}",
-            _f(r["length_end_mm"], ".0f"), r["crack_stops"], _f(r["loop_s"], ".0f"), _f(r["memory_MB"], ".0f"),
-            f"{r['nprocs']:g}"]) + " |")
-    out = "\n".join(lines)
+    def faces(r):
+        return ("-" if r["fit_face_lo_deg"] is None else
+                f"{r['fit_face_lo_deg']:.1f} / {r['fit_face_hi_deg']:.1f}")
+    out = md_table(
+        ("setup", "dx (mm)", "m", "delta (mm)", "horizons through 9 mm", "atoms", "bonds", "steps",
+         "first bond (us)", "damage band (us)", "initial (deg)", "fit, mid-plane (deg)",
+         "fit, faces (deg)", "chord, mid-plane / faces (deg)", "crack length (mm)",
+         "crack stops (us)", "loop (s)", "memory (MB)", "ranks"),
+        ([r["setup"].upper(), f"{r['dx_mm']:g}", f"{r['m']:g}", f"{r['delta_mm']:g}",
+          _f(r["horizons_through"], ".0f"), _f(r["atoms"], ".0f"), _f(r["bonds"], ".3g"),
+          _f(r["steps"], ".0f"), _f(r["first_bond_us"], ".1f"), _f(r["band_us"], ".1f"),
+          _f(r["initial_deg"], ".1f"), _f(r["fit_deg"], ".1f"), faces(r),
+          f"{_f(r['chord_deg'], '.1f')} / {_f(r['chord_face_deg'], '.1f')}",
+          _f(r["length_end_mm"], ".0f"), r["crack_stops"], _f(r["loop_s"], ".0f"),
+          _f(r["memory_MB"], ".0f"), f"{r['nprocs']:g}"]
+         for r in sorted(rows, key=lambda r: (-r["dx_mm"], r["setup"]))))
     return out if command is None else f"Made by `{command}`.\n\n" + out
 
 
@@ -166,18 +157,9 @@ def against_2d(rows):
 
 
 def summary(rows):
-    """REPORT.md's lines under the 3D table: against_2d() filled into fixed templates"""
-    pairs, refine = against_2d(rows)
-    lines = [f"delta = {d3['delta_mm']:g} mm ({d3['horizons_through']:.0f} horizons through, "
-             f"{d3['atoms']:.0f} atoms, {d3['loop_s']:.0f} s on {d3['nprocs']:g} ranks, "
-             f"{d3['memory_MB']:.0f} MB): fit angle mid-plane {_f(d3['fit_deg'], '.1f')}°, faces "
-             f"{_f(d3['fit_face_lo_deg'], '.1f')} / {_f(d3['fit_face_hi_deg'], '.1f')}°, first bond "
-             f"{d3['first_bond_us']:.1f} µs, crack {d3['crack_stops']} µs"
-             + (f"; 2D of the same grid {d2['fit_deg']:.1f}° (3D {diff:+.1f}°)" if diff is not None else "")
-             + "." for d3, d2, diff in pairs]
-    if refine is not None:
-        lines.append(f"Refining delta moves the mid-plane fit angle by {refine:+.1f}°.")
-    return " ".join(lines) if lines else "No 3D run."
+    """REPORT.md's line under the 3D table (the table has each run's angles beside the 2D ones)"""
+    refine = against_2d(rows)[1]
+    return [] if refine is None else [f"Refining delta moves the mid-plane fit angle by {refine:+.1f}°."]
 
 
 # ---------------------------------------------------------------------------- report
@@ -204,14 +186,14 @@ def jobs():
 
 def section(specs, results, figdir, notes):
     """The 3D plate's section of REPORT.md (tools/reproduce --full)."""
-    return jobmod.rows_section(
-        REPORT_TITLE, specs, results,
-        f"Not run by default ({len(jobs())} runs, about 1.4 h on one core): `tools/reproduce "
-        "--full` runs them; the last measured table is in examples/kalthoff-winkler/README.md, "
-        "'3D plate resolved through its thickness'.",
-        f"The 9 mm plate struck by the projectile, Gaussian kernel, m = {M:g}, beside the 2D "
-        "plate of the same grid; see examples/kalthoff-winkler/README.md.",
-        table, summary)
+    return jobmod.section(
+        REPORT_TITLE, f"The 9 mm plate struck by the projectile, Gaussian kernel, m = {M:g}, beside "
+        "the 2D plate of the same grid; see examples/kalthoff-winkler/README.md.",
+        specs, results, table, summary,
+        not_run=f"Not run by default ({len(jobs())} runs, about 1.4 h on one core): "
+        "`tools/reproduce --full` runs them; the last measured table is in "
+        "examples/kalthoff-winkler/README.md, '3D plate resolved through its thickness'.")
+
 
 def read_rows(path=CSV):
     return csvfile.read_csv(path)[1]
@@ -241,7 +223,7 @@ def main(argv=None):
         cmd = "tools/python -m bbpd.benchmarks.kalthoff_winkler_3d " + " ".join(argv or sys.argv[1:])
         csvfile.write_csv(a.csv, rows, comments=[f"made by: {cmd}",
                                                  f"timing: LAMMPS loop time, {cpu()}, shared"])
-    print(summary(rows))
+    print(table(rows), *summary(rows), sep="\n")
     return 0
 
 

@@ -1,26 +1,18 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Kalthoff-Winkler on the field's standard deck, beside the paper's loading.
 
-Most published simulations of the experiment (phase field, peridynamics, XFEM) run the deck of
-Borden et al. (2012): the impact velocity 16.5 m/s held on the struck edge, E = 190 GPa,
-rho = 8000 kg/m^3, G_c = 2.213e4 J/m^2 (and nu = 0.3, which a bond-based model cannot take: in
-plane strain its Poisson ratio is 1/4). The paper's loading holds 32 m/s with rho = 7800 and
-G_c = 6.9e4. Both decks run examples/kalthoff-winkler/in.kalthoff_winkler (prescribed velocity
-on the struck layer, to 100 us) for the three kernels at 1 and 0.5 mm; the angles are those of
-the loading study (bbpd.benchmarks.kalthoff_winkler_study: initial, fit and chord). The decks
-'paper-lps' and 'standard-lps' run the same loadings on the state-based solid with the kernel
-as influence function (pair_style bbpd/lps/KERNEL, family lps of the input) at nu = 0.3, the
-standard deck's own: what Poisson's ratio does to the angle.
+Most published simulations of the experiment run the deck of Borden et al. (2012): 16.5 m/s
+held on the struck edge, rho = 8000 kg/m^3, G_c = 2.213e4 J/m^2 (and nu = 0.3, which a
+bond-based model cannot take); the paper holds 32 m/s with rho = 7800 and G_c = 6.9e4. DECKS
+runs both on in.kalthoff_winkler for the three kernels at DX_VALUES, and both loadings on the
+state-based solid (bbpd/lps/KERNEL) at nu = 0.3: what Poisson's ratio does to the angle. The
+angles are the loading study's.
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.kalthoff_winkler_deck --work /tmp/kw-deck \
-      --csv examples/kalthoff-winkler/results/standard_deck.csv
+Commands: examples/kalthoff-winkler/README.md, "The standard deck".
 """
 
 import argparse
-import json
 import sys
-import time
 from pathlib import Path
 
 from bbpd import csvfile
@@ -31,7 +23,7 @@ from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.provenance import cpu
 from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
-from bbpd.runner import run_lammps
+from bbpd.runner import run_noted
 from bbpd.markdown import cell as _f
 from bbpd.markdown import made_by, table as md_table
 
@@ -73,14 +65,8 @@ def case_vars(deck, kernel, dx):
 
 def run_case(workdir, deck, kernel, dx, nprocs=1, reuse=False):
     """Run one deck in workdir (unless reuse and it finished) and measure it: a CSV row."""
-    workdir = Path(workdir)
-    done = workdir / "case.json"
-    if not (reuse and done.is_file()):
-        start = time.perf_counter()
-        run_lammps(str(kw.EXAMPLE), workdir, nprocs=nprocs, vars=case_vars(deck, kernel, dx))
-        done.write_text(json.dumps({"deck": deck, "kernel": kernel, "dx": dx, "nprocs": nprocs,
-                                    "wall_s": time.perf_counter() - start}))
-    case = json.loads(done.read_text())
+    case = run_noted(kw.EXAMPLE, workdir, case_vars(deck, kernel, dx),
+                     {"deck": deck, "kernel": kernel, "dx": dx}, nprocs, reuse)
     r = projectile.analyse(workdir)
     r["nprocs"] = case["nprocs"]
     out = projectile.row(r)
@@ -155,22 +141,10 @@ def comparison(rows):
 
 
 def summary(rows):
-    """REPORT.md's lines under the decks' table: comparison() filled into fixed templates"""
-    c = comparison(rows)
-    lines = [f"Standard deck at {c['fine']:g} mm, angle (change from the paper's loading): "
-             + "; ".join(f"{d} {k} {a:.1f}° ({ch:+.1f}°)" for (d, k), (a, ch) in c["deck"].items()) + "."]
-    if c["grid"]:
-        lines.append(f"Standard deck's fit angle from {c['coarse']:g} to {c['fine']:g} mm: "
-                     + ", ".join(f"{k} {ch:+.1f}°" for k, ch in c["grid"].items()) + ".")
-    for what, deck, base in CHANGES:
-        if deck in c["changes"]:
-            dx, got = c["changes"][deck]
-            lines.append(f"Fit angle, {what}, at {dx:g} mm (change from deck {base}): "
-                         + ", ".join(f"{k} {a:.1f}° ({ch:+.1f}°)" for k, (a, ch) in got.items()) + ".")
-    lines.append(f"Within {study.ANGLE_TARGET_DEG:.0f} ± {study.ANGLE_TOL_DEG:.0f}° with cracks that "
-                 "cross the plate: " + ("; ".join(f"{d} {k} {dx:g} mm ({', '.join(defs)})"
-                                                for d, k, dx, defs in c["hits"]) or "none") + ".")
-    return " ".join(lines)
+    """REPORT.md's line under the decks' table: comparison()'s runs at the experiment's angle"""
+    hits = "; ".join(f"{d} {k} {dx:g} mm ({', '.join(defs)})" for d, k, dx, defs in comparison(rows)["hits"])
+    return [f"Within {study.ANGLE_TARGET_DEG:.0f} ± {study.ANGLE_TOL_DEG:.0f}° with cracks that cross "
+            f"the plate: {hits or 'none'}."]
 
 
 # ---------------------------------------------------------------------------- report
@@ -199,14 +173,14 @@ def jobs(nprocs=1):
 
 def section(specs, results, figdir, notes):
     """The standard deck's section of REPORT.md (tools/reproduce --full)."""
-    return jobmod.rows_section(
-        REPORT_TITLE, specs, results,
-        f"Not run by default ({len(jobs())} runs): `tools/reproduce --full` runs them; the last "
-        "measured table is in examples/kalthoff-winkler/README.md, 'The standard deck'.",
-        "; ".join(f"{d}: {DECKS[d][0]}" for d in DECKS) + ". Prescribed velocity on the struck "
-        "layer, to 100 us, the loading study's angles; see examples/kalthoff-winkler/README.md, "
-        "'The standard deck'.",
-        table, summary)
+    return jobmod.section(
+        REPORT_TITLE, "; ".join(f"{d}: {DECKS[d][0]}" for d in DECKS) + ". Prescribed velocity "
+        "on the struck layer, to 100 us, the loading study's angles; see "
+        "examples/kalthoff-winkler/README.md, 'The standard deck'.",
+        specs, results, table, summary,
+        not_run=f"Not run by default ({len(jobs())} runs): `tools/reproduce --full` runs them; "
+        "the last measured table is in examples/kalthoff-winkler/README.md, 'The standard deck'.")
+
 
 def read_rows(path=CSV):
     """(comment lines, rows) of a CSV main() wrote"""
@@ -239,7 +213,7 @@ def main(argv=None):
     if a.csv:
         csvfile.write_csv(a.csv, rows, comments=[*earlier, made,
                                                  f"timing: LAMMPS loop CPU time, {cpu()}"])
-    print(summary(rows))
+    print(table(rows), *summary(rows), sep="\n")
     return 0
 
 

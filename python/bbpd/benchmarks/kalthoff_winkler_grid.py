@@ -2,23 +2,13 @@
 """Kalthoff-Winkler on perturbed and rotated grids: how far the square grid's preferred
 directions move the crack angle (examples/kalthoff-winkler/README.md, "The grid's pull").
 
-Runs examples/kalthoff-winkler/in.kalthoff_winkler with `-var grid square | perturbed |
-rotated` (GRIDS), under the paper's prescribed loading and with the projectile, with the
-paper's G_c, to 100 us, and measures each run with the loading study's definitions
-(kalthoff_winkler_study.analyse; the projectile's contact measures from
-kalthoff_winkler_projectile.analyse).  The square grid is mirror-symmetric about the mid-line,
-so its two cracks are mirror images; off the square grid they are not (a rotated grid's
-mirror image is the grid rotated the other way), so every crack is measured on its own:
+Runs in.kalthoff_winkler on the GRIDS (`-var grid square | perturbed | rotated`) under the
+paper's prescribed loading and with the projectile, and measures each crack on its own with
+the loading study's angles (off the square grid the two cracks are no mirror images). The
+pull, per kernel, loading, grid spacing and angle: the square grid's angle minus the mean
+over every off-grid crack, with its standard error.
 
-angles        initial, fit and chord (the study's; fit and chord at 70 us) of each crack,
-              None for a crack shorter than 15 mm at 70 us
-pull          per kernel, loading, grid spacing and angle definition: the square grid's angle
-              minus the mean over the cracks of every perturbed and rotated grid, with the
-              standard deviation of those cracks and the standard error of their mean
-
-Command line (from the repository root; finished runs are cached in --work):
-  tools/python -m bbpd.benchmarks.kalthoff_winkler_grid --work /tmp/kw-grid \\
-      --csv examples/kalthoff-winkler/results/grid_pull.csv
+Commands: examples/kalthoff-winkler/README.md.
 """
 
 import argparse
@@ -33,9 +23,10 @@ from bbpd import provenance, readers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
 from bbpd.benchmarks import kalthoff_winkler_study as study
-from bbpd.csvfile import read_csv, write_csv
+from bbpd.csvfile import comment, read_csv, write_csv
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as _f
+from bbpd.markdown import table as md_table
 
 CSV = kw.EXAMPLE.parent / "results" / "grid_pull.csv"
 COMMAND = ("tools/python -m bbpd.benchmarks.kalthoff_winkler_grid --work /tmp/kw-grid "
@@ -214,18 +205,16 @@ def _pair(r, d):
 def markdown(rows, comments=()):
     """The README's tables (one row per run, lower / upper crack; the pulls);
     comments: the CSV's '#' lines (what made it, on which machine)."""
-    head = ["loading", "kernel", "dx (mm)", "grid", "first bond (us)", "damage band (us)",
-            "initial lo / hi (deg)", "fit lo / hi (deg)", "chord lo / hi (deg)",
-            "crack length at end (mm)", "crack stops (us)", "loop CPU (s)"]
-    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-    for r in rows:
-        lines.append("| " + " | ".join([
-            r["loading"], r["kernel"], f"{float(r['dx_mm']):g}", r["grid"],
-            _f(r["first_bond_us"], ".1f"), _f(r["band_us"], ".1f"), _pair(r, "initial"),
-            _pair(r, "fit"), _pair(r, "chord"), _f(r["length_end_mm"], ".0f"),
-            r["crack_stops"], _f(r["loop_cpu_s"], ".0f")]) + " |")
-    text = "\n".join(lines)
-    made, cpu = made_by(comments), machine_of(comments)
+    text = md_table(
+        ["loading", "kernel", "dx (mm)", "grid", "first bond (us)", "damage band (us)",
+         "initial lo / hi (deg)", "fit lo / hi (deg)", "chord lo / hi (deg)",
+         "crack length at end (mm)", "crack stops (us)", "loop CPU (s)"],
+        ([r["loading"], r["kernel"], f"{float(r['dx_mm']):g}", r["grid"],
+          _f(r["first_bond_us"], ".1f"), _f(r["band_us"], ".1f"), _pair(r, "initial"),
+          _pair(r, "fit"), _pair(r, "chord"), _f(r["length_end_mm"], ".0f"), r["crack_stops"],
+          _f(r["loop_cpu_s"], ".0f")] for r in rows))
+    made = comment(comments, "made by")
+    cpu = (comment(comments, "machine") or "an unnamed CPU").split(",")[0]
     if made:
         text += (f"\n\nFrom `examples/kalthoff-winkler/results/grid_pull.csv` (made by: {made}). "
                  f"Loop CPU: LAMMPS's loop time x its CPU use, one rank, on {cpu} shared with "
@@ -290,29 +279,20 @@ REPORT_TITLE = "Kalthoff-Winkler: the grid's pull (perturbed and rotated grids)"
 
 def section(specs, results, figdir, notes):
     """The grid-pull section of report/REPORT.md (tools/reproduce --full)."""
-    if not specs:
-        return {"title": REPORT_TITLE,
-                "setup": f"Not run by default ({len(jobs())} runs): `tools/reproduce --full` "
-                         "runs them; the last measured table is in "
-                         "examples/kalthoff-winkler/README.md, 'The grid's pull'.",
-                "table": "", "text": "", "figures": []}
-    rows = collect(specs, results)
-    bad = jobmod.finished(specs, results)[1]
-    p = pull(rows)
-    big = max(p.values(), key=lambda q: abs(q["pull"])) if p else None
-    text = [f"{sum(significant(q) for q in p.values())} of {len(p)} pulls exceed twice their "
-            f"standard error; the largest is {big['pull']:+.1f} deg."] if big else []
-    if bad:
-        text.append(jobmod.not_measured(bad))
-    return {"title": REPORT_TITLE,
-            "setup": "The Kalthoff-Winkler plate (paper's G_c, to 100 us) on the square grid, on "
-                     "a perturbed grid (points moved by up to 0.2 dx, three seeds) and on grids "
-                     "rotated by 22.5 and 30 deg (-var grid), under the paper's prescribed "
-                     "loading and with the projectile. Angles of the lower / upper crack as in "
-                     "the loading study; see examples/kalthoff-winkler/README.md, 'The grid's "
-                     "pull'.",
-            "table": markdown(rows).split("\n\n- ")[0] if rows else "",
-            "text": " ".join(text), "figures": []}
+    def text(_):
+        p = pull(collect(specs, results))
+        big = max(p.values(), key=lambda q: abs(q["pull"])) if p else None
+        return [f"{sum(significant(q) for q in p.values())} of {len(p)} pulls exceed twice their "
+                f"standard error; the largest is {big['pull']:+.1f} deg."] if big else []
+    return jobmod.section(
+        REPORT_TITLE, "The Kalthoff-Winkler plate (paper's G_c, to 100 us) on the square grid, on a "
+        "perturbed grid (points moved by up to 0.2 dx, three seeds) and on grids rotated by 22.5 "
+        "and 30 deg (-var grid), under the paper's prescribed loading and with the projectile. "
+        "Angles of the lower / upper crack as in the loading study; see "
+        "examples/kalthoff-winkler/README.md, 'The grid's pull'.", specs, results,
+        lambda _: markdown(collect(specs, results)).split("\n\n- ")[0], text,
+        not_run=f"Not run by default ({len(jobs())} runs): `tools/reproduce --full` runs them; "
+        "the last measured table is in examples/kalthoff-winkler/README.md, 'The grid's pull'.")
 
 
 # ---------------------------------------------------------------------------- files
@@ -327,23 +307,7 @@ def write(rows, path, command=COMMAND, workers=1):
 
 
 def read_rows(path=CSV):
-    comments, rows = read_csv(path)
-    return comments, rows
-
-
-def machine_of(comments):
-    """The CPU named in the CSV's 'machine:' line."""
-    for c in comments:
-        if c.startswith("machine:"):
-            return c[len("machine:"):].split(",")[0].strip()
-    return "an unnamed CPU"
-
-
-def made_by(comments):
-    for c in comments:
-        if c.startswith("made by:"):
-            return c[len("made by:"):].strip()
-    return None
+    return read_csv(path)
 
 
 def main(argv=None):

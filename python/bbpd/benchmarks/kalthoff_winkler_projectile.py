@@ -4,26 +4,12 @@
 Runs examples/kalthoff-winkler/in.kalthoff_winkler with `-var loading projectile` (an elastic
 steel body of type 2 hits the plate at v0 and pushes it through contact) and with the paper's
 `prescribed` loading, for several fracture energies Gc, and measures each run with the
-study's definitions (kalthoff_winkler_study.analyse: first bond, damage band, the initial, fit
-and chord angles, crack length, far-edge crack) and, for the projectile, from projectile.dat:
+study's definitions (kalthoff_winkler_study.analyse) and, for the projectile, from
+projectile.dat: the momentum drift, the interface speed over INTERFACE_WINDOW_US against the 1D
+two-bar estimate, the contact force's drop and the contact's opening against 2 Lp / c
+(examples/kalthoff-winkler/README.md, "Projectile and toughness", defines each).
 
-momentum      largest |P_x(t) - P_x(0)| / P_x(0) of projectile + plate over the run, P = sum
-              of density x volume x velocity (no external force acts: conserved to round-off)
-interface     mean x velocity of the two faces in contact (the plate's first column between
-              the notch lines and the projectile's front column), averaged over
-              INTERFACE_WINDOW, against the 1D two-bar impedance estimate
-              v0 Z_p / (Z_p + Z_plate) = v0 r / (r + 1), r = AREA_RATIO
-contact drop  first time the contact force falls below half its mean over INTERFACE_WINDOW
-contact open  first time after that at which the contact force on the projectile is zero
-              (|F| < OPEN_FRACTION x its largest value: round-off of the projectile's own bond
-              forces) and stays zero for OPEN_MIN_US (shorter gaps: the faces chatter), against 2 Lp / c of the projectile: with equal lengths and wave speeds
-              the two 1D bars separate exactly then (the relief from the projectile's rear and
-              the tension from the plate's far edge arrive together)
-
-Command line (from the repository root; the runs are cached in --work):
-  tools/python -m bbpd.benchmarks.kalthoff_winkler_projectile --work /tmp/kw-proj \\
-      --dx 2e-3 --csv examples/kalthoff-winkler/projectile.csv
-then `tools/python -m bbpd.claims --write` puts the table into the README.
+Commands: examples/kalthoff-winkler/README.md.
 """
 
 import argparse
@@ -31,7 +17,6 @@ import csv
 import json
 import math
 import re
-import time
 from pathlib import Path
 
 import numpy as np
@@ -39,8 +24,10 @@ import numpy as np
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as study
-from bbpd.runner import run_lammps
+from bbpd.runner import run_noted
 from bbpd import plots
+from bbpd.markdown import cell
+from bbpd.markdown import table as md_table
 
 # ---------------------------------------------------------------------------- physics
 
@@ -161,21 +148,13 @@ def run_case(workdir, kernel, dx, loading, gc, nprocs=1, tend=TEND, lp=None, reu
              dim=2):
     """Run one case in workdir (unless reuse and it has finished) and measure it; dim = 3
     runs in.kalthoff_winkler_3d."""
-    workdir = Path(workdir)
-    done = workdir / "case.json"
-    if not (reuse and done.is_file()):
-        variables = {"kernel": kernel, "dx": repr(float(dx)), "tend": repr(float(tend)),
-                     "loading": loading, "Gc": repr(float(gc))}
-        if lp is not None:
-            variables["Lp"] = repr(float(lp))
-        start = time.perf_counter()
-        run_lammps(str(kw.EXAMPLE if dim == 2 else EXAMPLE_3D), workdir, nprocs=nprocs,
-                   vars=variables)
-        wall = time.perf_counter() - start
-        done.write_text(json.dumps({"kernel": kernel, "dx": dx, "loading": loading, "Gc": gc,
-                                    "wall_s": wall, "nprocs": nprocs}))
+    variables = {"kernel": kernel, "dx": repr(float(dx)), "tend": repr(float(tend)),
+                 "loading": loading, "Gc": repr(float(gc))}
+    if lp is not None:
+        variables["Lp"] = repr(float(lp))
+    case = run_noted(kw.EXAMPLE if dim == 2 else EXAMPLE_3D, workdir, variables,
+                     {"kernel": kernel, "dx": dx, "loading": loading, "Gc": gc}, nprocs, reuse)
     res = analyse(workdir)
-    case = json.loads(done.read_text())
     res["wall_s"], res["nprocs"] = case["wall_s"], case["nprocs"]
     return res
 
@@ -208,29 +187,6 @@ def plot_contact(workdir, path):
     return path
 
 
-def plot_paths(workdirs, labels, path, title):
-    """Crack-tip paths of several runs with the 70-degree lines (kalthoff_winkler's frame)."""
-    with plots.figure(path, figsize=(3.8, 6.0)) as (fig, ax):
-        rs = [kw.analyse(w) for w in workdirs]
-        g = rs[0]
-        ax.plot([0, g["Lx"] * 1e3, g["Lx"] * 1e3, 0, 0], [0, 0, g["Ly"] * 1e3, g["Ly"] * 1e3, 0],
-                color="black", linewidth=0.8)
-        for r, name in zip(rs, labels):
-            tr = r["trajectory"]
-            line = None
-            for side, y0 in (("lo", r["ylo"]), ("hi", r["yhi"])):
-                L = np.array(tr["L_" + side])
-                p = np.vstack([[r["a"], y0], np.array(tr[side])[L > 0]]) * 1e3
-                ax.plot([0, r["a"] * 1e3], [y0 * 1e3] * 2, color="grey", linewidth=2)
-                line = ax.plot(p[:, 0], p[:, 1], "-", linewidth=1.1,
-                               color=None if line is None else line[0].get_color(),
-                               label=name if side == "lo" else None)
-        kw.draw_plate_frame(ax, g)
-        ax.legend(fontsize=6, loc="center left")
-        ax.set_title(title, fontsize=8)
-    return path
-
-
 # ---------------------------------------------------------------------------- table
 
 COLUMNS = ("setup", "loading", "kernel", "dx_mm", "Gc", "first_bond_us", "band_us", "initial_deg",
@@ -241,8 +197,7 @@ COLUMNS = ("setup", "loading", "kernel", "dx_mm", "Gc", "first_bond_us", "band_u
 
 def row(r):
     """One CSV row of a result (numbers as measured; None as empty)."""
-    stops = ("edge %.0f" % r["t_edge_us"] if r.get("t_edge_us") is not None else
-             "arrest %.0f" % r["t_arrest_us"] if r.get("t_arrest_us") is not None else "running")
+    stops = study.stops(r).split(" (")[0]
     return {"setup": r["setup"], "loading": r["loading"], "kernel": r["kernel"],
             "dx_mm": r["dx"] * 1e3,
             "Gc": r["Gc"], "first_bond_us": r["t_init_us"], "band_us": r["t_band_us"],
@@ -286,23 +241,17 @@ def at_target(r):
 
 
 def markdown(rows):
-    def f(v, spec):
-        v = _num(v)
-        return "-" if v is None else format(v, spec)
-    head = ("| setup | loading | kernel | dx (mm) | Gc (J/m2) | first bond (us) | damage band (us) | "
-            "initial (deg) | fit (deg) | chord (deg) | crack length at end (mm) | crack stops (us) | "
-            "far-edge crack (us) | interface speed (m/s) | contact force drop (us) | "
-            "contact opens (us) | momentum drift | loop CPU (s) | ranks | 70 ± 2° and crosses |")
-    lines = [head, "|" + "---|" * 20]
-    for r in rows:
-        lines.append("| " + " | ".join([
-            r["setup"].upper(), r["loading"], r["kernel"], f"{float(r['dx_mm']):g}", f"{float(r['Gc']):g}",
-            f(r["first_bond_us"], ".1f"), f(r["band_us"], ".1f"), f(r["initial_deg"], ".1f"),
-            f(r["fit_deg"], ".1f"), f(r["chord_deg"], ".1f"), f(r["length_end_mm"], ".0f"),
-            r["crack_stops"], f(r["far_edge_us"], ".0f"), f(r["v_interface"], ".2f"),
-            f(r["t_drop_us"], ".1f"), f(r["t_open_us"], ".1f"), f(r["momentum_drift"], ".1e"),
-            f(r["loop_cpu_s"], ".0f"), r["nprocs"], ", ".join(at_target(r)) or "-"]) + " |")
-    return "\n".join(lines)
+    return md_table(
+        ("setup", "loading", "kernel", "dx (mm)", "Gc (J/m2)", "first bond (us)", "damage band (us)",
+         "initial (deg)", "fit (deg)", "chord (deg)", "crack length at end (mm)", "crack stops (us)",
+         "far-edge crack (us)", "interface speed (m/s)", "contact force drop (us)",
+         "contact opens (us)", "momentum drift", "loop CPU (s)", "ranks", "70 ± 2° and crosses"),
+        ([r["setup"].upper(), r["loading"], r["kernel"], f"{float(r['dx_mm']):g}", f"{float(r['Gc']):g}",
+          cell(r["first_bond_us"], ".1f"), cell(r["band_us"], ".1f"), cell(r["initial_deg"], ".1f"),
+          cell(r["fit_deg"], ".1f"), cell(r["chord_deg"], ".1f"), cell(r["length_end_mm"], ".0f"),
+          r["crack_stops"], cell(r["far_edge_us"], ".0f"), cell(r["v_interface"], ".2f"),
+          cell(r["t_drop_us"], ".1f"), cell(r["t_open_us"], ".1f"), cell(r["momentum_drift"], ".1e"),
+          cell(r["loop_cpu_s"], ".0f"), r["nprocs"], ", ".join(at_target(r)) or "-"] for r in rows))
 
 
 # ---------------------------------------------------------------------------- report
@@ -356,28 +305,20 @@ def report_text(rows):
 
 def section(specs, results, figdir, notes):
     """The projectile's section of report/REPORT.md (bbpd.report.document.write_report)."""
-    done, bad = jobmod.finished(specs, results)
-    rows = [results[s.job.label] for s in done]
-    text = report_text(rows)
-    if bad:
-        text.append(jobmod.not_measured(bad))
-    names = []
-    for r in rows:
-        try:
-            name = f"kw_projectile_contact_{r['kernel']}_dx{r['dx_mm']:g}mm.png"
+    def figures(rows):
+        names = [f"kw_projectile_contact_{r['kernel']}_dx{r['dx_mm']:g}mm.png" for r in rows]
+        for r, name in zip(rows, names):
             plot_contact(r["workdir"], Path(figdir) / name)
-            names.append(name)
-        except Exception as exc:  # the report must still be written
-            notes.append(f"projectile figure not made: {type(exc).__name__}: {exc}")
-    table = markdown([{k: ("" if v is None else str(v)) for k, v in r.items()} for r in rows])
-    return {"title": REPORT_TITLE,
-            "setup": "The paper's plate (plane strain, m = 5, G_c = 6.9e4 J/m2) struck at 32 m/s "
-                     "by an elastic steel projectile 100 mm long of type 2 atoms, pushing through "
-                     "contact (no bonds between the bodies), its E and rho scaled by the "
-                     f"experiment's area ratio {AREA_RATIO:.3f}; to {TEND * 1e6:.0f} us. Angles "
-                     "as in the loading study (initial; fit and chord at 70 us). See "
-                     "examples/kalthoff-winkler/README.md, 'Projectile and toughness'.",
-            "table": table if rows else "", "text": " ".join(text), "figures": names}
+        return names
+    return jobmod.section(
+        REPORT_TITLE, "The paper's plate (plane strain, m = 5, G_c = 6.9e4 J/m2) struck at 32 m/s "
+        "by an elastic steel projectile 100 mm long of type 2 atoms, pushing through contact (no "
+        f"bonds between the bodies), its E and rho scaled by the experiment's area ratio "
+        f"{AREA_RATIO:.3f}; to {TEND * 1e6:.0f} us. Angles as in the loading study (initial; fit "
+        "and chord at 70 us). See examples/kalthoff-winkler/README.md, 'Projectile and toughness'.",
+        specs, results,
+        lambda rows: markdown([{k: ("" if v is None else str(v)) for k, v in r.items()} for r in rows]),
+        report_text, figures, notes)
 
 
 def main(argv=None):
@@ -435,8 +376,9 @@ def main(argv=None):
                             dirs.append(wd)
                             names.append(f"{loading}, Gc {gc:g}")
                 if len(dirs) > 1:
-                    plot_paths(dirs, names, figs / f"projectile_paths_{tag}.png",
-                               f"crack-tip paths, {kernel}, dx = {dx * 1e3:g} mm")
+                    kw.plot_paths([(n, kw.analyse(d), "-", None) for n, d in zip(names, dirs)],
+                                  figs / f"projectile_paths_{tag}.png",
+                                  f"crack-tip paths, {kernel}, dx = {dx * 1e3:g} mm")
 
 
 if __name__ == "__main__":

@@ -2,28 +2,12 @@
 """Kalthoff-Winkler loading study: which loading and which angle measure reproduce the experiment.
 
 The paper's setup (32 m/s held on a delta-thick layer) gives cracks at about 61 deg and a first
-broken bond at ~12 us, against the experiment's ~70 deg and the paper's 20-21.7 us.  This study
-runs examples/kalthoff-winkler/in.kalthoff_winkler under several loadings (CASES), for the
-three kernels at dx = 1 mm and the Gaussian at 0.5 mm, to 100 us, and measures each run with
-the definitions below (examples/kalthoff-winkler/README.md, "Loading study").
+broken bond at ~12 us, against the experiment's ~70 deg and the paper's 20-21.7 us. This study
+runs examples/kalthoff-winkler/in.kalthoff_winkler under the loadings of CASES, for the three
+kernels at dx = 1 mm and the Gaussian at 0.5 mm, to 100 us; the measures (initial, fit and
+chord angles, crack stops, speeds, far-edge crack) are defined in
+examples/kalthoff-winkler/README.md, "Loading study".
 
-angles        all from the notch direction (+x) towards the outer side, evaluated on the
-              damage snapshot at T_EVAL_US (the paper's Fig. 14) and at the end of the run:
-  initial     principal axis of the crack atoms 3-15 mm from the notch tip (the direction in
-              which the crack leaves the tip, past the tip's own horizon), on the first
-              snapshot in which the crack is 15 mm long (the end snapshot if it never is)
-  fit         principal axis of the crack atoms 10-50 mm from the tip (kalthoff_winkler.py)
-  chord       direction of the line from the notch tip to the crack tip (the crack atom
-              farthest from the notch tip): what a protractor on a photograph measures
-initiation    first broken bond within delta of a tip, and the damage band (kalthoff_winkler.py)
-speed         mean over crack lengths 10-50 mm, and the largest speed over any window of
-              SPEED_WINDOW_US, both against the Rayleigh speed C_R
-edge          first snapshot at which a crack tip is within delta of the plate boundary
-far edge      first new damage at x > Lx - delta farther than delta + dx from the notch
-              cracks (when), and its distance from the mid-line |y - Ly/2| then (where)
-symmetry      tip mismatch and mirror damage difference (kalthoff_winkler.py)
-
-Command line (from the repository root; the runs are cached in --work):
   tools/python -m bbpd.benchmarks.kalthoff_winkler_study --work /tmp/kw-study --figures DIR
   ... --reuse                              re-analyse the finished runs, run nothing
 """
@@ -33,7 +17,6 @@ import json
 import math
 import re
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
@@ -44,7 +27,7 @@ from bbpd import jobs as jobmod
 from bbpd import readers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.kernels import COLORS
-from bbpd.runner import run_lammps
+from bbpd.runner import run_noted
 from bbpd import markdown
 from bbpd.markdown import cell as f
 from bbpd import plots
@@ -104,15 +87,10 @@ def case_vars(case, kernel, dx, tend=TEND):
 
 def run_case(workdir, kernel, dx, case, nprocs=1, tend=TEND):
     """Run one loading case in workdir and measure it (the job of the study and the report)."""
-    workdir = Path(workdir)
-    start = time.perf_counter()
-    run_lammps(str(kw.EXAMPLE), workdir, nprocs=nprocs, vars=case_vars(case, kernel, dx, tend))
-    wall = time.perf_counter() - start
-    # what --reuse needs to re-analyse this folder without running it again
-    (workdir / "case.json").write_text(json.dumps({"case": case, "kernel": kernel, "dx": dx,
-                                                   "wall_s": wall, "nprocs": nprocs}))
+    note = run_noted(kw.EXAMPLE, workdir, case_vars(case, kernel, dx, tend),
+                     {"case": case, "kernel": kernel, "dx": dx}, nprocs)
     res = analyse(workdir)
-    res.update(case=case, wall_s=wall)
+    res.update(case=case, wall_s=note["wall_s"])
     return res
 
 
@@ -189,16 +167,12 @@ def analyse(workdir):
     # the initial angle on the first snapshot in which the crack reaches past INITIAL_RANGE
     # (later damage, e.g. the far-edge crack joining the path, cannot change it)
     tr = res["trajectory"]
-    res["initial_deg"], res["t_initial_us"] = None, None
     initial, when = {}, {}
-    for side, yn, sign in (("lo", g["ylo"], -1.0), ("hi", g["yhi"], 1.0)):
-        L = np.array(tr["L_" + side])
-        past = np.nonzero(L >= INITIAL_RANGE[1])[0]
+    for side in ("lo", "hi"):
+        past = np.nonzero(np.array(tr["L_" + side]) >= INITIAL_RANGE[1])[0]
         k = int(past[0]) if len(past) else len(snaps) - 1
         s = snaps[k][1]
-        cr = kw.notch_cracks(s["f_ref[1]"], s["f_ref[2]"], s["c_dmg"], g)
-        initial[side] = kw.crack_angle(s["f_ref[1]"], s["f_ref[2]"], cr[side], (g["a"], yn),
-                                       sign, fit_range=INITIAL_RANGE)
+        initial[side] = angles_of(s["f_ref[1]"], s["f_ref[2]"], s["c_dmg"], g)[side]["initial"]
         when[side] = times[k]
     res["initial_deg"] = mean_or_none(list(initial.values()))
     res["initial_side_deg"] = initial      # each crack's own: they differ off the square grid
@@ -271,10 +245,8 @@ def in_init_window(t):
 
 
 def hits(results):
-    """The runs that give the experiment's angle (70 +- 2 deg, by which definitions) or the
-    paper's initiation window (by which reading), and those that give both:
-    {'angle': [(case, kernel, dx, definitions)], 'initiation': [(case, kernel, dx, readings)],
-    'both': [(case, kernel, dx)]}"""
+    """{'angle': [(case, kernel, dx, definitions)] of the runs at 70 +- 2 deg, 'initiation':
+    [(case, kernel, dx, readings)] in the paper's window, 'both': [(case, kernel, dx)]}"""
     out = {"angle": [], "initiation": [], "both": []}
     for (case, k, dx), r in sorted(results.items(), key=_order):
         defs = [d for d in ANGLE_DEFS if reaches_angle(r, d)]
@@ -347,68 +319,44 @@ CSV = kw.ROOT / "examples" / "kalthoff-winkler" / "results" / "study.csv"
 
 
 def write_csv(path, rows, command):
-    """the table's cells (table_rows) as a CSV, the command on its 'made by' line"""
     csvfile.write_table(path, [dict(zip(TABLE_HEADER, r)) for r in rows], TABLE_HEADER,
                         [f"made by: {command}"], text=TABLE_HEADER)
 
 
 def read_csv(path=CSV):
-    """the rows of write_csv as lists of cells, and its provenance lines"""
     rows = csvfile.read_table(path, text=TABLE_HEADER)
     return [[r[c] for c in TABLE_HEADER] for r in rows], csvfile.provenance(path)
 
 
 def readme_table(path=CSV):
-    """the README's table: the CSV's commands, then its rows"""
     rows, made = read_csv(path)
     return markdown.made_by([ln.partition(": ")[2] for ln in made]) + "\n\n" + md_table(rows)
 
 
 def cases_table():
-    rows = []
-    for name, (desc, v) in CASES.items():
-        rows.append([name, desc, f"{v.get('v0', 32.0):g}",
-                     f"{v.get('tramp', 0.0) * 1e6:g}",
-                     f"{v['thold'] * 1e6:.1f}" if "thold" in v else "held",
-                     "dx" if v.get("layer") == "dx" else "delta = 5 dx"])
+    rows = [[name, desc, f"{v.get('v0', 32.0):g}", f"{v.get('tramp', 0.0) * 1e6:g}",
+             f"{v['thold'] * 1e6:.1f}" if "thold" in v else "held",
+             "dx" if v.get("layer") == "dx" else "delta = 5 dx"] for name, (desc, v) in CASES.items()]
     return md_table(rows, ["case", "loading", "v0 (m/s)", "ramp (us)", "released at (us)",
                            "layer"])
 
 
 def plot_paths_case(results, case, path):
     """Crack-tip paths of one loading for every kernel/resolution, with the 70-degree line."""
-    runs = [(k, dx, r) for (c, k, dx), r in sorted(results.items(), key=_order) if c == case]
-    with plots.figure(path, figsize=(3.8, 6.0)) as (fig, ax):
-        g = runs[0][2]
-        ax.plot([0, g["Lx"] * 1e3, g["Lx"] * 1e3, 0, 0], [0, 0, g["Ly"] * 1e3, g["Ly"] * 1e3, 0],
-                color="black", linewidth=0.8)
-        for yn in (g["ylo"], g["yhi"]):
-            ax.plot([0, g["a"] * 1e3], [yn * 1e3] * 2, color="grey", linewidth=2)
-        for k, dx, r in runs:
-            tr = r["trajectory"]
-            style = "-" if dx >= 1e-3 - 1e-12 else ":"
-            for side, y0 in (("lo", r["ylo"]), ("hi", r["yhi"])):
-                L = np.array(tr["L_" + side])
-                p = np.vstack([[r["a"], y0], np.array(tr[side])[L > 0]]) * 1e3
-                ax.plot(p[:, 0], p[:, 1], style, color=COLORS[k], linewidth=1.2,
-                        label=(f"{k} {dx * 1e3:g} mm ({f(r.get('fit_t70_deg'), '.1f')} deg)"
-                               if side == "lo" else None))
-        kw.draw_plate_frame(ax, g)
-        ax.legend(fontsize=6, loc="center left")
-        ax.set_title(f"{CASES[case][0]}, to {g['nsteps'] * g['dt'] * 1e6:.0f} us", fontsize=7)
-    return path
+    runs = [(f"{k} {dx * 1e3:g} mm ({f(r.get('fit_t70_deg'), '.1f')} deg)", r,
+             "-" if dx >= 1e-3 - 1e-12 else ":", COLORS[k])
+            for (c, k, dx), r in sorted(results.items(), key=_order) if c == case]
+    g = runs[0][1]
+    return kw.plot_paths(runs, path, f"{CASES[case][0]}, to {g['nsteps'] * g['dt'] * 1e6:.0f} us",
+                         fontsize=6)
 
 
 def plot_damage_cases(results, kernel, dx, path):
     """Damage at the end of the run for every loading of one kernel and resolution."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     runs = [(c, r) for (c, k, d), r in sorted(results.items(), key=_order)
             if k == kernel and abs(d - dx) < 1e-12]
-    fig, axes = plt.subplots(1, len(runs), figsize=(2.0 * len(runs) + 0.8, 4.2), squeeze=False)
-    try:
-        sc = None
+    with plots.figure(path, 1, len(runs), figsize=(2.0 * len(runs) + 0.8, 4.2), squeeze=False,
+                      dpi=130) as (fig, axes):
         for ax, (c, r) in zip(axes[0], runs):
             m = r["damage_map"]
             sc = ax.scatter(np.array(m["x"]) * 1e3, np.array(m["y"]) * 1e3, c=m["phi"],
@@ -420,9 +368,6 @@ def plot_damage_cases(results, kernel, dx, path):
         fig.colorbar(sc, ax=list(axes[0]), label="damage", shrink=0.8)
         fig.suptitle(f"{kernel}, dx = {dx * 1e3:g} mm, t = "
                      f"{runs[0][1]['nsteps'] * runs[0][1]['dt'] * 1e6:.0f} us", fontsize=9)
-        fig.savefig(path, dpi=130, bbox_inches="tight")
-    finally:
-        plt.close(fig)
     return path
 
 
@@ -459,47 +404,28 @@ def jobs(nprocs=1):
 
 def collect(specs, results):
     """{(case, kernel, dx): result} of the finished runs among specs."""
-    out = {}
-    for s in specs:
-        r = results.get(s.job.label)
-        if r is not None and "error" not in r:
-            out[(s.job.kwargs["args"]["case"], s.kernel, s.dx)] = r
-    return out
+    return {(s.job.kwargs["args"]["case"], s.kernel, s.dx): results[s.job.label]
+            for s in jobmod.finished(specs, results)[0]}
 
 
 def section(specs, results, figdir, notes):
     """The study's section of report/REPORT.md (bbpd.report.document.write_report)."""
-    title = "Kalthoff-Winkler loading study (what reproduces 70 deg and 20-22 us)"
-    if not specs:
-        return {"title": title,
-                "setup": "Not run by default (32 runs, about 1 h of single-core run time): "
-                "`tools/reproduce --full` runs it; the last measured table is in "
-                "examples/kalthoff-winkler/README.md, 'Loading study'.",
-                "table": "", "text": "", "figures": []}
     done = collect(specs, results)
-    failed = [s.job.label for s in specs if s.job.label not in
-              {f"Kalthoff-Winkler study {c} {k} dx = {d * 1e3:g} mm" for c, k, d in done}]
-    names = []
-    try:
-        names = figures(done, figdir) if done else []
-    except Exception as exc:  # the report must still be written
-        notes.append(f"study figures not made: {type(exc).__name__}: {exc}")
-    text = conclusion(done) if done else []
-    if failed:
-        text.append(jobmod.not_measured(failed))
-    return {"title": title,
-            "setup": cases_table() + "\n\nEvery run to 100 us. Angles from the notch direction "
-                     "towards the outer side at 70 us unless 'at end' (100 us): initial = "
-                     "principal axis of the crack atoms 3-15 mm from the tip, fit = 10-50 mm, "
-                     "chord = notch tip to crack tip. Projectile contact time t_c = 2 L / c_bar "
-                     f"= {T_CONTACT * 1e6:.1f} us (L = 50 mm). Rayleigh speed c_R = {C_R:.0f} m/s. "
-                     "See examples/kalthoff-winkler/README.md, 'Loading study'.",
-            "table": md_table(table_rows(done)) if done else "", "text": " ".join(text),
-            "figures": names}
+    return jobmod.section(
+        "Kalthoff-Winkler loading study (what reproduces 70 deg and 20-22 us)",
+        cases_table() + "\n\nEvery run to 100 us; angles at 70 us unless 'at end' (100 us), "
+        f"projectile contact time t_c = 2 L / c_bar = {T_CONTACT * 1e6:.1f} us (L = 50 mm), "
+        f"Rayleigh speed c_R = {C_R:.0f} m/s; the measures are defined in "
+        "examples/kalthoff-winkler/README.md, 'Loading study'.",
+        specs, results, lambda rows: md_table(table_rows(done)), lambda rows: conclusion(done),
+        lambda rows: figures(done, figdir), notes,
+        not_run="Not run by default (32 runs, about 1 h of single-core run time): "
+        "`tools/reproduce --full` runs it; the last measured table is in "
+        "examples/kalthoff-winkler/README.md, 'Loading study'.")
 
 
 def main_study(work, figdir, workers=1, log=print, reuse_only=False, csv=None, command=""):
-    """Run (or reuse) the study's runs in work and write study.md, study.json, figures and, given
+    """Run (or reuse) the study's runs in work and write study.md, figures and, given
     csv, the table's CSV. reuse_only: re-analyse the finished run folders in work (with this
     code), run nothing."""
     specs = sorted(jobs(), key=lambda s: s.job.estimate_s)   # the 1 mm runs first
@@ -519,20 +445,10 @@ def main_study(work, figdir, workers=1, log=print, reuse_only=False, csv=None, c
     figures(done, figdir)
     text = md_table(table_rows(done)) + "\n\n" + "\n".join(f"- {s}" for s in conclusion(done))
     (Path(work) / "study.md").write_text(cases_table() + "\n\n" + text + "\n")
-    summary = {f"{c} {k} {d * 1e3:g}": {key: r.get(key) for key in SUMMARY_KEYS}
-               for (c, k, d), r in done.items()}
-    (Path(work) / "study.json").write_text(json.dumps(summary, indent=1))
     if csv:
         write_csv(csv, table_rows(done), command)
     log(text)
     return done
-
-
-SUMMARY_KEYS = ("t_init_us", "t_band_us", "initial_deg", "t_initial_us", "fit_t70_deg",
-                "chord_t70_deg", "fit_end_deg", "chord_end_deg", "length_t70_mm", "length_end_mm",
-                "t_edge_us", "t_arrest_us",
-                "speed", "speed_peak", "speed_over_cR", "speed_peak_over_cR", "far_edge_own_us",
-                "far_edge_y_mm", "far_damage_other", "symmetry_tip_mm", "symmetry_phi", "wall_s")
 
 
 def main(argv=None):

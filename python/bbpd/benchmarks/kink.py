@@ -13,16 +13,10 @@ kink angle   bbpd.crack_path.kink_angles of the last snapshot of final.dump at t
              within dx of that distance, in the crack-tip frame; theta < 0 for K_II > 0)
 extension    the grown crack's reach from the tip when the run stopped (fix halt at 5 delta)
 
-Command line (from the repository root); the committed results came from the first two:
-  tools/python -m bbpd.benchmarks.kink --work /tmp/kink
-  tools/python -m bbpd.benchmarks.kink --work /tmp/kink-fine --fine-only --add-missing \
-      --nprocs 2 --workers 1                  (the fine-grid cases the CSV lacks, added to it)
-  tools/python -m bbpd.benchmarks.kink --from-csv   (the figure only)
-then `tools/python -m bbpd.claims --write` puts the table into the README.
+Commands: examples/kink-mixed-mode/README.md.
 """
 
 import argparse
-import csv
 import json
 import math
 import re
@@ -31,8 +25,9 @@ import time
 from pathlib import Path
 
 import numpy as np
+from matplotlib.lines import Line2D
 
-from bbpd import crack_path, kink, readers
+from bbpd import crack_path, csvfile, kink, plots, readers
 from bbpd import jobs as jobmod
 from bbpd.jobs import Job, run_jobs
 from bbpd.kernels import COLORS, KERNELS
@@ -180,7 +175,7 @@ def verdict(rows, dist="2d", dx=COARSE[0], cases=None):
         d = np.array([r[key] - r[c] for r in mixed])
         out["rms"][c] = rms(d)
         out["bias"][c] = float(d.mean())
-        out["se"][c] = float(d.std(ddof=1) / math.sqrt(len(d)))
+        out["se"][c] = float(d.std(ddof=1) / math.sqrt(len(d))) if len(d) > 1 else math.nan
         for k in KERNELS:
             out["rms_kernel"][k, c] = rms([r[key] - r[c] for r in mixed if r["kernel"] == k])
         for a in ALPHAS_DEG:
@@ -239,34 +234,20 @@ def row_of(res):
 
 def write_csv(rows, path, command):
     path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, "w", newline="") as fh:
-        fh.write(f"# {command}\n# CPU: {cpu()}; nprocs MPI ranks per run (empty: "
-                 "one), on a shared machine (wall_s); angles in degrees (theta < 0 for K_II > 0), "
-                 "extension in horizons\n")
-        w = csv.writer(fh)
-        w.writerow(COLUMNS)
-        for r in rows:
-            w.writerow([("" if r.get(c) is None else
-                         (f"{r[c]:.6g}" if isinstance(r[c], float) else r[c])) for c in COLUMNS])
+    csvfile.write_csv(path, [{c: r.get(c) for c in COLUMNS} for r in rows], [
+        command, f"CPU: {cpu()}; nprocs MPI ranks per run (empty: one), on a shared machine "
+        "(wall_s); angles in degrees (theta < 0 for K_II > 0), extension in horizons"])
 
 
 def read_rows(path):
-    """Rows of a CSV written by write_csv, with numbers as floats and dx in m."""
-    with open(path) as fh:
-        raw = list(csv.DictReader(line for line in fh if not line.startswith("#")))
-    rows = []
-    for r in raw:
-        row = {}
-        for k, v in r.items():
-            if k == "kernel":
-                row[k] = v
-            elif k == "halted":
-                row[k] = v == "True"
-            else:    # rounded so that no -0.0 reaches the tables
-                row[k] = None if v == "" else round(float(v), 9) + 0.0
-        row["dx"] = row["dx_mm"] * 1e-3
-        row["delta"] = row["m"] * row["dx"]
-        rows.append(row)
+    """Rows of a CSV written by write_csv, numbers as floats (rounded, so that no -0.0 reaches
+    the tables), dx in m."""
+    rows = csvfile.read_csv(path)[1]
+    for r in rows:
+        r.update({k: round(v, 9) + 0.0 for k, v in r.items() if isinstance(v, float)},
+                 halted=r["halted"] == "True")
+        r["dx"] = r["dx_mm"] * 1e-3
+        r["delta"] = r["m"] * r["dx"]
     return rows
 
 
@@ -276,34 +257,24 @@ def wall_cell(r):
     return f"{r['wall_s']:.0f}" + (f" ({ranks} ranks)" if ranks > 1 else "")
 
 
-def fmt(v, spec=".1f"):
-    return cell(v, spec)
-
-
 def table(rows):
-    head = ("| kernel | dx (mm) | m | crack to rows (deg) | psi (deg) | K at 1st break / K_c | "
-            "angle at 2 delta | angle at 4 delta | hoop stress | hoop strain | max G (HPU) | "
-            "extension (delta) | ramp (transits per K_c) | wall (s) |")
-    lines = [head, "|" + "---|" * head.count(" | ") + "---|"]
-    for r in sorted(rows, key=lambda r: (-r["dx"], r["ncross"], KERNELS.index(r["kernel"]),
-                                         r["alpha"], -r["psi"])):
-        lines.append("| " + " | ".join([
-            r["kernel"], f"{r['dx'] * 1e3:g}", f"{round(r['delta'] / r['dx'])}", f"{r['alpha']:g}",
-            f"{r['psi']:g}", fmt(r["K_init_over_Kc"], ".2f"), fmt(r["angle_2d"]), fmt(r["angle_4d"]),
-            f"{r['hoop_stress']:.1f}", f"{r['hoop_strain']:.1f}", f"{r['energy']:.1f}",
-            f"{r['extension_over_delta']:.1f}", f"{r['ncross']:g}", wall_cell(r)]) + " |")
-    return "\n".join(lines)
+    head = ("kernel", "dx (mm)", "m", "crack to rows (deg)", "psi (deg)", "K at 1st break / K_c",
+            "angle at 2 delta", "angle at 4 delta", "hoop stress", "hoop strain", "max G (HPU)",
+            "extension (delta)", "ramp (transits per K_c)", "wall (s)")
+    return md_table(head, ([
+        r["kernel"], f"{r['dx'] * 1e3:g}", f"{round(r['delta'] / r['dx'])}", f"{r['alpha']:g}",
+        f"{r['psi']:g}", cell(r["K_init_over_Kc"], ".2f"), cell(r["angle_2d"], ".1f"),
+        cell(r["angle_4d"], ".1f"), f"{r['hoop_stress']:.1f}", f"{r['hoop_strain']:.1f}",
+        f"{r['energy']:.1f}", f"{r['extension_over_delta']:.1f}", f"{r['ncross']:g}", wall_cell(r)]
+        for r in sorted(rows, key=lambda r: (-r["dx"], r["ncross"], KERNELS.index(r["kernel"]),
+                                             r["alpha"], -r["psi"]))))
 
 
 def plot(rows, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     psi = np.linspace(0.0, 90.0, 91)
     theory = {c: [kink.criteria_angles(0.0 if p == 90 else math.cos(math.radians(p)),
                                        math.sin(math.radians(p)))[c] for p in psi] for c in CRITERIA}
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2), sharey=True)
-    try:
+    with plots.figure(path, 1, 2, figsize=(10, 4.2), sharey=True, dpi=130) as (fig, axes):
         for ax, dist in zip(axes, ("2d", "4d")):
             for g in (-45.0, -90.0):     # a grid diagonal and column seen from a 0-deg crack
                 ax.axhline(g, color="grey", lw=0.8, alpha=0.5)
@@ -322,7 +293,6 @@ def plot(rows, path):
             ax.set_title(f"kink angle at {dist[0]} horizons from the tip", fontsize=10)
             ax.grid(alpha=0.3)
         axes[0].set_ylabel("kink angle theta (deg)")
-        from matplotlib.lines import Line2D
         handles = [Line2D([], [], color=COLORS[k], marker="o", ls="", label=k) for k in KERNELS]
         handles += [Line2D([], [], color="grey", marker=mk, ls="", mfc=f, label=lab)
                     for mk, f, lab in (("o", "grey", "crack 0 deg, dx 1 mm"),
@@ -333,10 +303,6 @@ def plot(rows, path):
                               label="grid directions (crack 0 deg)"))
         axes[0].legend(fontsize=7, loc="lower left")
         axes[1].legend(handles=handles, fontsize=7, loc="lower left")
-        fig.tight_layout()
-        fig.savefig(path, dpi=130)
-    finally:
-        plt.close(fig)
 
 
 # --------------------------------------------------------------------------- report
@@ -363,47 +329,27 @@ def locked(rows):
 
 
 def verdict_table(rows):
-    """The README's verdict as a table: per grid and distance from the tip (verdict()), the RMS
-    deviation from each criterion with the mean deviation and its standard error, the nearest
-    criterion overall and per kernel, the criteria within two standard errors, the grid's pull
-    and the kernels' spread (mean and largest)."""
+    """verdict() per grid and distance from the tip as a table: the README's verdict, and
+    REPORT.md's over the runs the report made."""
     out = []
-    for dx in (COARSE[0], FINE[0]):
+    for dx in sorted({r["dx"] for r in rows if r["ncross"] == NCROSS}, reverse=True):
         for dist in ("2d", "4d"):
             v = verdict(rows, dist, dx=dx)
             if v["n"] < 2:
                 continue
-            admitted = [CRITERION_NAMES[c] for c in CRITERIA if abs(v["bias"][c]) <= 2 * v["se"][c]]
             out.append([f"{dx * 1e3:g}", dist[0], v["n"],
                         *(f"{v['rms'][c]:.1f} ({v['bias'][c]:+.1f} ± {v['se'][c]:.1f})"
                           for c in CRITERIA),
-                        CRITERION_NAMES[v["best"]], ", ".join(admitted) or "none",
+                        CRITERION_NAMES[v["best"]],
+                        ", ".join(CRITERION_NAMES[c] for c in admitted(v)) or "none",
                         "; ".join(f"{k} {CRITERION_NAMES[c]}" for k, c in v["best_kernel"].items()),
-                        f"{v['pull_mean']:.1f} ({v['pull_max']:.1f})",
-                        f"{v['kernel_spread_mean']:.1f} ({v['kernel_spread_max']:.1f})"])
+                        f"{cell(v['pull_mean'], '.1f')} ({cell(v['pull_max'], '.1f')})",
+                        f"{cell(v['kernel_spread_mean'], '.1f')} "
+                        f"({cell(v['kernel_spread_max'], '.1f')})"])
     head = ("dx (mm)", "horizons from the tip", "mixed-mode runs",
             *(f"{CRITERION_NAMES[c]}: RMS (mean ± s.e.), deg" for c in CRITERIA), "nearest",
             "within 2 s.e.", "nearest per kernel", "crack 0 -> 22.5 deg to the rows: change, "
             "mean (max), deg", "kernels' spread at one case, mean (max), deg")
-    return md_table(head, out)
-
-
-def deviation_table(rows):
-    """REPORT.md's table under the runs: per grid and distance from the tip, the RMS deviation
-    of the mixed-mode angles from each criterion and the nearest criterion"""
-    main = [r for r in rows if r["ncross"] == NCROSS]
-    out = []
-    for grid in sorted({r["dx"] for r in main}, reverse=True):
-        on = [r for r in main if r["dx"] == grid]
-        for dist in ("2d", "4d"):
-            mixed = [r for r in on if r["psi"] > 0 and r[f"angle_{dist}"] is not None]
-            if mixed:
-                dev = {c: rms([r[f"angle_{dist}"] - r[c] for r in mixed]) for c in CRITERIA}
-                out.append([f"{grid * 1e3:g}", dist[0], len(mixed),
-                            *(f"{dev[c]:.1f}" for c in CRITERIA),
-                            CRITERION_NAMES[min(CRITERIA, key=dev.get)]])
-    head = ("dx (mm)", "horizons from the tip", "mixed-mode runs",
-            *(f"RMS from {CRITERION_NAMES[c]} (deg)" for c in CRITERIA), "nearest")
     return md_table(head, out)
 
 
@@ -426,22 +372,12 @@ def summary_text(rows):
 
 def section(specs, results, figdir, notes):
     """The section of REPORT.md (bbpd.report.document.write_report) from the report's kink runs."""
-    done, bad = jobmod.finished(specs, results)
-    rows = [row_of(results[s.job.label]) for s in done]
-    text = summary_text(rows) if rows else []
-    if bad:
-        text.append(jobmod.not_measured(bad))
-    names = []
-    if rows:
-        path = Path(figdir) / "kink_angle.png"
-        try:
-            plot(rows, path)
-            names = [path.name]
-        except Exception as exc:  # the report must still be written
-            notes.append(f"kink figure not made: {type(exc).__name__}: {exc}")
-    tables = table(rows) + "\n\n" + deviation_table(rows) if rows else ""
-    return {"title": REPORT_TITLE, "setup": REPORT_SETUP, "table": tables,
-            "text": " ".join(text), "figures": names}
+    def figure(rows):
+        plot(rows, Path(figdir) / "kink_angle.png")
+        return ["kink_angle.png"]
+    return jobmod.section(REPORT_TITLE, REPORT_SETUP, specs, results,
+                          lambda rows: table(rows) + "\n\n" + verdict_table(rows), summary_text,
+                          figure, notes)
 
 
 def case_key(r):

@@ -4,27 +4,12 @@
 A pure-K problem has no length scale, so the angle at which the crack of
 examples/kink-mixed-mode/in.kink leaves the tip is a property of the model at a given m =
 delta/dx and kernel; the disk's size R/delta only has to be large enough for the Williams
-field to hold over the tip's neighbourhood. This sweep runs the Gaussian kernel under pure
-Mode II (psi = 90 deg, crack along the rows) at delta = 5 mm for
+field to hold over the tip's neighbourhood. The sweep runs CASES at delta = 5 mm, measured as
+bbpd.benchmarks.kink measures; --kernel, --psi and --alpha run them for another kernel, mode mix
+and crack direction. The time step is DT_PER_M * m * dx / c_d, the kink test's rule: the stable
+step of a bond family scales with the horizon, not with dx.
 
-  m = 5, 10, 15, 20 at R/delta = 10 (R = 50 mm, the kink test's disk), and
-  m = 5, 10 at R/delta = 20 (R = 100 mm),
-
-measured as bbpd.benchmarks.kink measures (angle at 2 and 4 horizons from the tip); --psi and
---alpha run the same cases at another mode mix and crack direction (the kink test's
-MIXES_DEG and ALPHAS_DEG), each (kernel, psi, alpha) a sequence of its own. The time
-step is DT_PER_M * m * dx / c_d, the kink test's rule (0.8 at m = 5, 1.6 at m = 10): the
-stable step of a bond family scales with the horizon, not with dx.
-
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.kink_convergence --work /tmp/kink-conv --nprocs 2 \
-      --csv examples/kink-mixed-mode/results/kink_convergence.csv
-  # another kernel's cases, added to the same CSV:
-  tools/python -m bbpd.benchmarks.kink_convergence --work /tmp/kink-conv --kernel constant \
-      --cases 10:10 15:10 --append --csv examples/kink-mixed-mode/results/kink_convergence.csv
-  # another mix and crack direction:
-  tools/python -m bbpd.benchmarks.kink_convergence --work /tmp/kink-conv --psi 45 --alpha 22.5 \
-      --cases 10:20 --nprocs 2 --append --csv examples/kink-mixed-mode/results/kink_convergence.csv
+Commands: examples/kink-mixed-mode/README.md.
 """
 
 import argparse
@@ -52,7 +37,6 @@ CASES = ((5, 10), (10, 10), (5, 20), (15, 10), (10, 20), (20, 10))
 COLUMNS = ("kernel", "psi", "alpha", "m", "R_over_delta", "dx_mm", "atoms", "steps",
            "K_init_over_Kc", "extension_over_delta", "angle_2d", "angle_4d", "hoop_stress",
            "hoop_strain", "energy", "loop_s", "nprocs", "cpu")
-TIMING = "timing: "    # the CSV's comment line naming the CPU of rows without a cpu column
 
 
 def case_vars(m, r_over_delta, kernel=KERNEL, psi=PSI, alpha=ALPHA):
@@ -77,14 +61,8 @@ def run_case(workdir, m, r_over_delta, nprocs=1, reuse=False, kernel=KERNEL, psi
                    vars=case_vars(m, r_over_delta, kernel, psi, alpha),
                    timeout=4 * 3600)
     r = kinkbench.analyse(wd)
-    row = {"kernel": r["kernel"], "psi": r["psi"], "alpha": r["alpha"], "m": float(m),
-           "R_over_delta": float(r_over_delta), "dx_mm": r["dx"] * 1e3, "atoms": r["atoms"],
-           "steps": r["steps"], "K_init_over_Kc": r["K_init_over_Kc"],
-           "extension_over_delta": r["extension_over_delta"], "angle_2d": r["angle_2d"],
-           "angle_4d": r["angle_4d"], "hoop_stress": r["hoop_stress"],
-           "hoop_strain": r["hoop_strain"], "energy": r["energy"], "loop_s": r["loop_s"],
-           "nprocs": r["nprocs"], "cpu": cpu()}
-    return row
+    return dict({c: r.get(c) for c in COLUMNS}, m=float(m), R_over_delta=float(r_over_delta),
+                dx_mm=r["dx"] * 1e3, cpu=cpu())
 
 
 def _angle(r, dist):
@@ -135,31 +113,32 @@ def _signed(v):
     return "+0.0" if float(format(v, ".1f")) == 0.0 else format(v, "+.1f")
 
 
+def _yes(flag):
+    return "yes" if flag else "no"
+
+
+def _names(criteria, empty="none"):
+    return ", ".join(NAMES[c] for c in criteria) or empty
+
+
 def sequences_table(rows):
     """kink_limit.sequences as a table: per kernel, mode mix, distance and disk the angles over
     m, the criterion the finest lies nearest (offset ± its error bar), the last step in m and
     whether it settled (within SETTLED_DEG) or moved by more than the two runs' error bars"""
-    lines = ["| kernel | psi | alpha | at | R/delta | m | angle (deg) | nearest at the finest m: offset "
-             "± bar (deg) | last step (deg) | settled (<= 1 deg) | step beyond both bars |",
-             "|" + "---|" * 11]
-    for s in sequences(rows):
-        near = NAMES.get(s["nearest"], "all three agree")
-        lines.append(f"| {s['kernel']} | {s['psi']:g} | {s['alpha']:g} | {s['dist']} | {s['rd']:g} | "
-                     + ", ".join(f"{m:g}" for m in s["ms"]) + " | "
-                     + ", ".join(_f(a) for a in s["angles"])
-                     + f" | {near}: {_signed(s['offset'])} ± {s['bar']:.1f} | {_signed(s['step'])} | "
-                     f"{'yes' if s['settled'] else 'no'} | {'yes' if s['beyond_bars'] else 'no'} |")
-    return "\n".join(lines)
+    return md_table(
+        ("kernel", "psi", "alpha", "at", "R/delta", "m", "angle (deg)", "nearest at the finest m: "
+         "offset ± bar (deg)", "last step (deg)", "settled (<= 1 deg)", "step beyond both bars"),
+        ([s["kernel"], f"{s['psi']:g}", f"{s['alpha']:g}", s["dist"], f"{s['rd']:g}",
+          ", ".join(f"{m:g}" for m in s["ms"]), ", ".join(_f(a) for a in s["angles"]),
+          f"{NAMES.get(s['nearest'], 'all three agree')}: {_signed(s['offset'])} ± {s['bar']:.1f}",
+          _signed(s["step"]), _yes(s["settled"]), _yes(s["beyond_bars"])] for s in sequences(rows)))
 
 
 def disk_table(rows):
     """kink_limit.disk_moves as a table: the angle's change when the disk doubles at one m"""
-    lines = ["| kernel | psi | alpha | at | m | R/delta 10 -> 20 (deg) |", "|" + "---|" * 6]
-    lines += [f"| {d['kernel']} | {d['psi']:g} | {d['alpha']:g} | {d['dist']} | {d['m']:g} | "
-              f"{_signed(d['move'])} |" for d in disk_moves(rows)]
-    return "\n".join(lines)
-
-
+    return md_table(("kernel", "psi", "alpha", "at", "m", "R/delta 10 -> 20 (deg)"),
+                    ([d["kernel"], f"{d['psi']:g}", f"{d['alpha']:g}", d["dist"], f"{d['m']:g}",
+                      _signed(d["move"])] for d in disk_moves(rows)))
 
 
 def _mix_list(mixes):
@@ -170,60 +149,59 @@ def sweeps_table(rows):
     """kink_limit.sweep_stats as a table: per whole mixed-mode sweep and distance the RMS (mean
     ± its standard error) from each criterion, the criteria the two-standard-error test admits,
     those it excludes by less than one angle's error bar, and the grid's pull"""
-    lines = ["| kernel | m | R/delta | at | runs | " + " | ".join(f"{n}: RMS (mean ± s.e.), deg" for n in NAMES.values())
-             + " | admitted | "
-             "excluded by less than the bar | grid's pull: mean (max), deg |", "|" + "---|" * 11]
-    for s in sweep_stats(rows):
-        lines.append(f"| {s['kernel']} | {s['m']:g} | {s['rd']:g} | {s['dist']} | {s['n']} | " + " | ".join(
-            f"{s['rms'][c]:.1f} ({s['bias'][c]:+.1f} ± {s['se'][c]:.1f})" for c in NAMES)
-            + f" | {', '.join(NAMES[c] for c in s['admitted']) or 'none'} | "
-            f"{', '.join(NAMES[c] for c in s['unresolved']) or '-'} | {s['pull_mean']:.1f} ({s['pull_max']:.1f}) |")
-    return "\n".join(lines)
+    return md_table(
+        ("kernel", "m", "R/delta", "at", "runs", *(f"{n}: RMS (mean ± s.e.), deg" for n in NAMES.values()),
+         "admitted", "excluded by less than the bar", "grid's pull: mean (max), deg"),
+        ([s["kernel"], f"{s['m']:g}", f"{s['rd']:g}", s["dist"], s["n"],
+          *(f"{s['rms'][c]:.1f} ({s['bias'][c]:+.1f} ± {s['se'][c]:.1f})" for c in NAMES),
+          _names(s["admitted"]), _names(s["unresolved"], "-"),
+          f"{s['pull_mean']:.1f} ({s['pull_max']:.1f})"] for s in sweep_stats(rows)))
+
+
+def _verdict(t):
+    between = (" (between " + " and ".join(NAMES[c] for c in t["between"]) + ")"
+               if t["between"] and t["state"] == "none fits" else "")
+    return t["state"] + (f" {NAMES[t['limit']]}" if t["limit"] else "") + between
 
 
 def limits_table(rows):
     """kink_limit.limits as a table: per kernel, disk and distance the whole sweeps over m, the
     nearest criterion and each criterion's RMS at each m, the grid's pull, the verdict on the
     limit and the last step of the sweep's mean (paired by mix, ± its standard error)"""
-    lines = ["| kernel | R/delta | at | m | nearest by RMS | " + " | ".join(f"RMS from {n}, deg" for n in NAMES.values())
-             + " | grid's pull, deg "
-             "| verdict | last step of the mean, deg |", "|" + "---|" * 11]
+    out = []
     for t in limits(rows):
         v = [t["v"][m] for m in t["ms"]]
-        verdict = t["state"] + (f" {NAMES[t['limit']]}" if t["limit"] else "") + (
-            " (between " + " and ".join(NAMES[c] for c in t["between"]) + ")" if t["between"]
-            and t["state"] == "none fits" else "")
-        lines.append(f"| {t['kernel']} | {t['rd']:g} | {t['dist']} | " + ", ".join(f"{m:g}" for m in t["ms"])
-                     + " | " + ", ".join(NAMES[x["best"]] for x in v) + " | "
-                     + " | ".join(", ".join(f"{x['rms'][c]:.1f}" for x in v) for c in NAMES) + " | "
-                     + ", ".join(f"{x['pull_mean']:.1f}" for x in v)
-                     + f" | {verdict} | {t['step'][0]:+.1f} ± {t['step'][1]:.1f} |")
-    return "\n".join(lines)
+        out.append([t["kernel"], f"{t['rd']:g}", t["dist"], ", ".join(f"{m:g}" for m in t["ms"]),
+                    ", ".join(NAMES[x["best"]] for x in v),
+                    *(", ".join(f"{x['rms'][c]:.1f}" for x in v) for c in NAMES),
+                    ", ".join(f"{x['pull_mean']:.1f}" for x in v), _verdict(t),
+                    f"{t['step'][0]:+.1f} ± {t['step'][1]:.1f}"])
+    return md_table(("kernel", "R/delta", "at", "m", "nearest by RMS",
+                     *(f"RMS from {n}, deg" for n in NAMES.values()), "grid's pull, deg", "verdict",
+                     "last step of the mean, deg"), out)
 
 
 def kernels_table(rows):
     """kink_limit.kernel_spread as a table: the kernels at one m over the mixes all of them ran"""
-    lines = ["| m | R/delta | at | mixes (psi/alpha) | nearest per kernel | kernels' spread: mean, max "
-             "(at mix), deg | within both bars | criterion nearest for every kernel |", "|" + "---|" * 8]
-    for k in kernel_spread(rows):
-        lines.append(f"| {k['m']:g} | {k['rd']:g} | {k['dist']} | {_mix_list(k['mixes'])} | "
-                     + "; ".join(f"{kern} " + " and ".join(NAMES[c] for c in k["nearest"][kern])
-                                 for kern in k["kernels"])
-                     + f" | {k['spread_mean']:.1f}, {k['spread_max']:.1f} ({_mix_list([k['widest']])}) | "
-                     f"{'yes' if k['within_bars'] else 'no'} (± {k['bar']:.1f}) | "
-                     f"{', '.join(NAMES[c] for c in k['common']) or 'none'} |")
-    return "\n".join(lines)
+    return md_table(
+        ("m", "R/delta", "at", "mixes (psi/alpha)", "nearest per kernel", "kernels' spread: mean, "
+         "max (at mix), deg", "within both bars", "criterion nearest for every kernel"),
+        ([f"{k['m']:g}", f"{k['rd']:g}", k["dist"], _mix_list(k["mixes"]),
+          "; ".join(f"{kern} " + " and ".join(NAMES[c] for c in k["nearest"][kern])
+                    for kern in k["kernels"]),
+          f"{k['spread_mean']:.1f}, {k['spread_max']:.1f} ({_mix_list([k['widest']])})",
+          f"{_yes(k['within_bars'])} (± {k['bar']:.1f})", _names(k["common"])]
+         for k in kernel_spread(rows)))
 
 
 def coverage_table(rows):
     """kink_limit.coverage as a table: what of the planned sweep has run, and its loop times"""
-    lines = ["| kernel | m | mixes run | left (psi/alpha) | loop (s), of the runs on | machine |",
-             "|" + "---|" * 6]
-    for (kernel, m), c in coverage(rows).items():
-        loops = f"{min(c['loops']):.0f}-{max(c['loops']):.0f}, {len(c['loops'])}" if c["loops"] else "-"
-        lines.append(f"| {kernel} | {m:g} | {len(c['done'])} of {len(c['done']) + len(c['left'])} | "
-                     f"{_mix_list(c['left']) or '-'} | {loops} | {c['machine'] or '-'} |")
-    return "\n".join(lines)
+    return md_table(
+        ("kernel", "m", "mixes run", "left (psi/alpha)", "loop (s), of the runs on", "machine"),
+        ([kernel, f"{m:g}", f"{len(c['done'])} of {len(c['done']) + len(c['left'])}",
+          _mix_list(c["left"]) or "-",
+          f"{min(c['loops']):.0f}-{max(c['loops']):.0f}, {len(c['loops'])}" if c["loops"] else "-",
+          c["machine"] or "-"] for (kernel, m), c in coverage(rows).items()))
 
 
 def loop_times(rows):
@@ -233,14 +211,6 @@ def loop_times(rows):
         psi, alpha = mix_of(r)
         return f"{r['kernel']} psi = {psi:g}, alpha = {alpha:g}, m = {r['m']:g}, R/delta = {r['R_over_delta']:g}"
     return csvfile.loop_times_note(sorted(rows, key=_order), "cpu", case)
-
-
-def with_cpu(rows, comments):
-    """rows with their cpu: a CSV from before the cpu column names its one CPU on its timing
-    line ('timing: LAMMPS loop time, CPU, shared machine')"""
-    line = next((c[len(TIMING):] for c in comments if c.startswith(TIMING)), "")
-    cpu = line.split("loop time, ", 1)[-1].removesuffix(", shared machine") if line else "unknown"
-    return [dict(r, cpu=r.get("cpu") or cpu) for r in rows]
 
 
 FIGURE = kinkbench.FOLDER / "kink_convergence.png"
@@ -277,16 +247,6 @@ def figure(rows, path=FIGURE):
             ax_row[1].legend(fontsize=6.5, loc="best")
 
 
-def summary(rows):
-    """REPORT.md's line under the table: each sequence's finest angle, its nearest criterion and
-    its last step"""
-    out = [f"{s['kernel']} psi {s['psi']:g} alpha {s['alpha']:g}, {s['dist']}, R/delta {s['rd']:g}: "
-           f"{_f(s['angles'][-1])} deg at m = {s['ms'][-1]:g} (nearest: "
-           f"{NAMES.get(s['nearest'], 'criteria agree')}), last step {s['step']:+.1f} deg "
-           f"({'settled' if s['settled'] else 'not settled'})." for s in sequences(rows)]
-    return " ".join(out) if out else "No sequence in m yet: it needs two values of m at one R/delta."
-
-
 def limit_line(found):
     """the committed limit as REPORT.md's template fills it"""
     if found is None:
@@ -320,19 +280,17 @@ def section(specs, results, figdir, notes):
     that the committed whole sweeps name (they take days, so no report run remakes them)."""
     committed = (f"The committed whole mixed-mode sweeps ({CSV.relative_to(kinkbench.ROOT)}): "
                  + limit_line(limit(read_rows())))
-    return jobmod.rows_section(
-        REPORT_TITLE, specs, results,
-        f"Not run by default ({len(jobs())} runs, about an hour): `tools/reproduce --full` runs "
-        "them; the last measured table is in examples/kink-mixed-mode/README.md, 'Convergence "
-        f"in m and in the disk's size'. {committed}",
-        f"Gaussian kernel, pure Mode II, crack along the rows, delta = {DELTA * 1e3:g} mm; see "
-        f"examples/kink-mixed-mode/README.md. {committed}",
-        table, summary)
+    return jobmod.section(
+        REPORT_TITLE, f"Gaussian kernel, pure Mode II, crack along the rows, delta = "
+        f"{DELTA * 1e3:g} mm; see examples/kink-mixed-mode/README.md. {committed}", specs, results,
+        lambda rows: table(rows) + "\n\n" + sequences_table(rows),
+        not_run=f"Not run by default ({len(jobs())} runs, about an hour): `tools/reproduce --full` "
+        "runs them; the last measured table is in examples/kink-mixed-mode/README.md, "
+        f"'Convergence in m and in the disk's size'. {committed}")
 
 
 def read_rows(path=CSV):
-    comments, rows = csvfile.read_csv(path)
-    return with_cpu(rows, comments)
+    return csvfile.read_csv(path)[1]
 
 
 def main(argv=None):
@@ -357,8 +315,6 @@ def main(argv=None):
     cases = CASES if not a.cases else [tuple(float(v) for v in c.split(":")) for c in a.cases]
     cmd = "tools/python -m bbpd.benchmarks.kink_convergence " + " ".join(argv or sys.argv[1:])
     earlier, rows, made = csvfile.continue_csv(a.csv if a.append else None, cmd)
-    if rows:
-        rows = read_rows(a.csv)    # with the CPU of rows from before the cpu column
     for m, rd in cases:
         start = time.perf_counter()
         r = run_case(a.work, m, rd, a.nprocs, a.reuse, a.kernel, a.psi, a.alpha)
@@ -367,9 +323,9 @@ def main(argv=None):
               f"{time.perf_counter() - start:.0f} s", flush=True)
         rows.append(r)
         if a.csv:    # after every run: a stopped sweep keeps what it measured
-            csvfile.write_csv(a.csv, [{c: r.get(c) for c in COLUMNS} for r in rows], comments=[
-                *earlier, made, f"{TIMING}LAMMPS loop time (s); the CPU of each run in column cpu"])
-    print(summary(rows))
+            csvfile.write_csv(a.csv, rows, [*earlier, made, "timing: LAMMPS loop time (s); the "
+                                            "CPU of each run in column cpu"], columns=COLUMNS)
+    print(sequences_table(rows))
     return 0
 
 

@@ -3,22 +3,13 @@
 the kink angle that the quasi-static kink test (examples/kink-mixed-mode) gives for that mix,
 next to the angle the Kalthoff-Winkler run produces.
 
-Runs examples/kalthoff-winkler/in.kalthoff_winkler (the paper's loading: 32 m/s held on the
-impacted strip) up to `tend` with two `compute bbpd/jintegral`, one at each notch tip (crack
-direction +x, annulus rin-rout inside the plate, clear of the impacted layer and the other
-notch), written every step to j.dat. Measured:
+Runs examples/kalthoff-winkler/in.kalthoff_winkler (the paper's loading) up to `tend` with a
+`compute bbpd/jintegral` at each notch tip (j.dat): K_I(t), K_II(t) of the lower notch, the
+first broken bond (kalthoff_winkler.analyse), the mix psi = arctan(K_II/K_I) just before it,
+and for that psi the criteria's angles (bbpd.kink) and the kink test's measured angles,
+interpolated in psi over the committed coarse-grid Gaussian results (results/kink.csv).
 
-K history     K_I(t), K_II(t) of the lower notch (its upper face, on the impacted strip, slides
-              forward: K_II > 0 and the crack turns to the outer side, theta < 0 in bbpd.kink's
-              convention); the upper notch mirrors it (K_II < 0)
-initiation    the first bond broken at a tip (bbpd.benchmarks.kalthoff_winkler.analyse)
-mix           psi = arctan(K_II/K_I) at the last step before initiation
-prediction    the criteria's angles for that psi (bbpd.kink) and the kink test's measured angle
-              at 2 and 4 horizons, interpolated in psi over the committed coarse-grid Gaussian
-              results (examples/kink-mixed-mode/results/kink.csv, crack along the rows)
-
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.kink_kalthoff_winkler --dx 2e-3 --work /tmp/kw-kink
+Commands: examples/kink-mixed-mode/README.md.
 """
 
 import argparse

@@ -33,8 +33,7 @@ def mix_of(r):
 
 
 AGREE_DEG = 0.05     # criteria closer than the table's last digit name no nearest one (pure Mode I)
-NAMES = {"hoop_stress": "max. hoop stress", "hoop_strain": "max. hoop strain",
-         "energy": "max. energy release rate"}
+NAMES = kinkbench.CRITERION_NAMES
 
 
 def _group_key(g):
@@ -263,38 +262,6 @@ def _rms_from_criteria(sel, key, m):
     """{'m': m, 'rms': {criterion: RMS of (angle `key` - criterion) over the rows sel}}: what
     _nearest reads"""
     return {"m": m, "rms": {c: kinkbench.rms([r[key] - r[c] for r in sel]) for c in NAMES}}
-
-
-def partial_sweeps(rows):
-    """Where the finest m has run only part of the mixed-mode sweep that a coarser m ran whole
-    (same kernel and R/delta): those mixes followed across every m that ran them all, at each
-    distance: {'kernel', 'rd', 'finest', 'mixes', 'dist', 'per_m': {m: {'rms': {criterion: RMS}}},
-    'nearest': {m: criteria within the grid's resolution of the smallest RMS}}. A part of the
-    sweep names no limit: it says which way these mixes move."""
-    whole = _whole_sweeps(rows)
-    out = []
-    for kernel, rd in sorted({(r["kernel"], r["R_over_delta"]) for r in rows},
-                             key=lambda g: (g[0] != KERNEL, g)):
-        finest = max(r["m"] for r in rows if (r["kernel"], r["R_over_delta"]) == (kernel, rd))
-        mixes = _mixes_at(rows, kernel, finest, rd)
-        if (not mixes or (kernel, finest, rd) in whole
-                or not any((k, r_) == (kernel, rd) for k, _, r_ in whole)):
-            continue    # complete, or no coarser m ran the whole sweep to hold it against
-        ms = sorted(m for m in {r["m"] for r in rows if (r["kernel"], r["R_over_delta"]) == (kernel, rd)}
-                    if mixes <= _mixes_at(rows, kernel, m, rd))
-        for dist in HORIZONS:
-            key = f"angle_{dist}"
-            per_m = {}
-            for m in ms:
-                sel = [r for r in rows if (r["kernel"], r["m"], r["R_over_delta"]) == (kernel, m, rd)
-                       and mix_of(r) in mixes and r[key] is not None]
-                if len(sel) != len(mixes):
-                    break       # a run that measured no angle this far out: no RMS over the set
-                per_m[m] = _rms_from_criteria(sel, key, m)
-            if len(per_m) >= 2:
-                out.append(dict(kernel=kernel, rd=rd, finest=finest, mixes=mixes, dist=dist,
-                                per_m=per_m, nearest={m: _nearest(v, dist) for m, v in per_m.items()}))
-    return out
 
 
 # a comparison over the mode mix needs more than one mix: pure Mode II alone is in sequences()

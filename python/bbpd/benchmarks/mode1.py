@@ -2,23 +2,10 @@
 """Stationary Mode-I semi-infinite crack (Bouaraquia & Mabssout 2026, sec. 4.2.1).
 
 Runs examples/mode1-semi-infinite/in.mode1 (compute bbpd/dsif every step) and compares
-K_I(t) with Freund's solution (eq. 42) for t <= 3 t_c with the errors of eqs. 44-45, in two
-conventions:
-
-paper       nu = 0.3 in eq. 42, in C_d (plane-strain formula: C_d = 5944 m/s, so that
-            t_c = H/C_d = 3.36e-4 s = t_d, the paper's rise time) and in mu, kappa of
-            eq. 39-40.  The pair style is plane stress (the paper's 2D formulation).
-consistent  the constants of the BBPD model itself: plane stress nu = 1/3, whose in-plane
-            equations are plane strain with nu' = nu/(1+nu) = 1/4 and C_d = sqrt(E/(rho
-            (1-nu^2))) = 5434 m/s; plane strain nu = 1/4, C_d = sqrt(1.2 E/rho) = 5612 m/s.
-            Eq. 42 is evaluated with (nu', C_d), eq. 39-40 with nu.
-
-In plane stress 2 mu/(kappa+1) = E/4 whatever nu is, so the two conventions give the same
-K_PD there; they differ only in the analytic curve (amplitude factor and arrival time).
-
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.mode1 --table2 --table3 \
-      --work /tmp/mode1 --figures examples/mode1-semi-infinite
+K_I(t) with Freund's solution (eq. 42) for t <= 3 t_c with the errors of eqs. 44-45, in the two
+conventions of examples/mode1-semi-infinite/README.md: the paper's (nu = 0.3, C_d = 5944 m/s)
+and the BBPD model's own constants ('consistent': plane stress nu = 1/3, i.e. eq. 42 with
+nu' = 1/4 and C_d = 5434 m/s). The README has the commands.
 """
 
 import argparse
@@ -30,12 +17,12 @@ import numpy as np
 
 from bbpd import freund, metrics, readers
 from bbpd.csvfile import write_csv
+from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 from bbpd.provenance import machine
-from bbpd.plots import plot_k_histories
+from bbpd.plots import plot_k
 from bbpd.runner import run_lammps
 
-ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "mode1-semi-infinite" / "in.mode1"
 
 # paper sec. 4.2.1
@@ -144,28 +131,15 @@ def _row(res):
             f"{res['wall_time']:6.1f} s ({res['nprocs']} rank, dt {res['dt']:.3g})")
 
 
-def table2(work, dxs=(0.1, 0.05, 0.025), nprocs=1, model="plane/stress"):
+def paper_table(work, cases, nprocs=1, model="plane/stress"):
+    """Run cases {key: (kernel, dx, the paper's (peak, L2))} and print ours beside the paper's
+    (Table 2: the Gaussian by dx; Table 3: the kernels at one dx); returns {key: result}."""
+    print("case | paper's numbers: peak L2 | ours, paper convention: peak L2 | ours, "
+          "consistent: peak L2 | K_I from J, consistent: peak L2 | wall time")
     rows = {}
-    print("Table 2 (Gaussian, m = 5): dx | paper's numbers: peak L2 | ours, paper convention: "
-          "peak L2 | ours, consistent: peak L2 | K_I from J, consistent: peak L2 | wall time")
-    for dx in dxs:
-        res = run(Path(work) / f"gaussian_{dx}", "gaussian", dx, model, nprocs=nprocs)
-        rows[dx] = res
-        ref = PAPER_TABLE2.get(dx, (float("nan"), float("nan")))
-        print(f"{dx:6.3f} | {ref[0]:6.2f} {ref[1]:6.2f} | {_row(res)}")
-    return rows
-
-
-def table3(work, dx=0.05, nprocs=1, model="plane/stress"):
-    rows = {}
-    print(f"Table 3 (dx = {dx}, m = 5): kernel | paper's numbers: peak L2 | ours, paper "
-          "convention: peak L2 | ours, consistent: peak L2 | K_I from J, consistent: peak L2 | "
-          "wall time")
-    for kernel in KERNELS:
-        res = run(Path(work) / f"{kernel}_{dx}", kernel, dx, model, nprocs=nprocs)
-        rows[kernel] = res
-        ref = PAPER_TABLE3[kernel]
-        print(f"{kernel:10s} | {ref[0]:6.2f} {ref[1]:6.2f} | {_row(res)}")
+    for key, (kernel, dx, ref) in cases.items():
+        rows[key] = run(Path(work) / f"{kernel}_{dx}", kernel, dx, model, nprocs=nprocs)
+        print(f"{key} | {ref[0]:6.2f} {ref[1]:6.2f} | {_row(rows[key])}")
     return rows
 
 
@@ -208,15 +182,14 @@ def figures(rows2, rows3, folder):
     exact, t_c = reference("consistent")
     exact_p, _ = reference("paper")
     tt = np.linspace(0.0, 3.0 * t_c, 400)
+    refs = [("eq. 42, BBPD constants", tt, exact(tt) / norm, "--", "black"),
+            ("eq. 42, nu = 0.3 (paper)", tt, exact_p(tt) / norm, "-.", "grey")]
     for name, rows, label in (("fig9_resolutions.png", rows2, lambda k: f"dx = {k} m"),
                               ("fig10_kernels.png", rows3, lambda k: k)):
-        if not rows:
-            continue
-        series = {label(k): (r["t"], r["k_consistent"] / norm) for k, r in rows.items()}
-        series["eq. 42, nu = 0.3 (paper)"] = (tt, exact_p(tt) / norm)
-        plot_k_histories(folder / name, series,
-                         analytic=("eq. 42, BBPD constants", tt, exact(tt) / norm),
-                         ylabel="K_I / (sigma0 sqrt(H))", window_end=3.0 * t_c)
+        if rows:
+            plot_k(folder / name, [(label(k), r["t"], r["k_consistent"] / norm, None)
+                                   for k, r in rows.items()], refs, (0.0, 3.0 * t_c),
+                   name.split(".")[0], "t (s)", "K_I / (sigma0 sqrt(H))")
 
 
 def main(argv=None):
@@ -233,8 +206,11 @@ def main(argv=None):
                          "from examples/mode1-semi-infinite/results/tips.csv)")
     ap.add_argument("--figures", help="folder for Fig. 9 and Fig. 10 PNGs")
     args = ap.parse_args(argv)
-    rows2 = table2(args.work, args.dx, args.nprocs, args.model) if args.table2 else {}
-    rows3 = table3(args.work, 0.05, args.nprocs, args.model) if args.table3 else {}
+    nan = (float("nan"), float("nan"))
+    rows2 = paper_table(args.work, {dx: ("gaussian", dx, PAPER_TABLE2.get(dx, nan))
+                                    for dx in args.dx}, args.nprocs, args.model) if args.table2 else {}
+    rows3 = paper_table(args.work, {k: (k, 0.05, PAPER_TABLE3[k]) for k in KERNELS},
+                        args.nprocs, args.model) if args.table3 else {}
     if args.tips or args.tips_csv:
         out = tip_study(args.work, nprocs=args.nprocs)
         if args.tips_csv:

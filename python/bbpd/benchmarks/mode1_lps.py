@@ -1,18 +1,13 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The stationary Mode-I crack with Poisson's ratio free: the LPS styles at nu = 0.3.
 
-Bond-based peridynamics fixes Poisson's ratio (1/3 in plane stress, 1/4 in plane strain), so
-the paper's Mode-I convention (nu = 0.3 in Freund's eq. 42 and in C_d) cannot be run
-consistently with it. The state-based styles bbpd/lps/KERNEL take nu in pair_coeff: in plane
-strain at nu = 0.3 the paper's convention and the model's are one and the same. This runs
-examples/mode1-semi-infinite/in.mode1 with family lps for the three kernels (the kernel as
-influence function), m = 5 as the paper's, and gives K_I by displacement extrapolation and by
-the J-integral against eq. 42, with the bond-based plane-stress runs of results/mode1.csv
-(consistent convention) beside them.
+Bond-based peridynamics fixes Poisson's ratio, so the paper's Mode-I convention (nu = 0.3) cannot
+be run consistently with it; bbpd/lps/KERNEL takes nu in pair_coeff, and in plane strain at nu =
+0.3 the paper's convention and the model's are one. This runs in.mode1 with family lps for the
+three kernels at m = 5, K_I by extrapolation and by the J-integral against eq. 42, beside the
+bond-based runs of results/mode1.csv (consistent convention).
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.mode1_lps --work /tmp/mode1-lps \
-      --csv examples/mode1-semi-infinite/results/mode1_lps.csv
+Commands: examples/mode1-semi-infinite/README.md.
 """
 
 import argparse
@@ -23,6 +18,7 @@ from bbpd import csvfile
 from bbpd.benchmarks import mode1
 from bbpd.provenance import cpu
 from bbpd.kernels import KERNELS
+from bbpd.markdown import table as md_table
 
 ROOT = Path(__file__).resolve().parents[3]
 CSV = ROOT / "examples" / "mode1-semi-infinite" / "results" / "mode1_lps.csv"
@@ -56,17 +52,18 @@ def _bond(bond_rows, kernel, dx):
 
 
 def table(rows, bond_rows, command=None):
-    head = ("| kernel | dx (m) | LPS nu = 0.3, plane strain: DSIF peak / L2 (%) | J-integral peak / "
-            "L2 (%) | bond-based plane stress (nu = 1/3), consistent: DSIF peak / L2 (%) | "
-            "J-integral peak / L2 (%) | LPS loop (s) |")
-    lines = ([f"Made by `{command}`.", ""] if command else []) + [head, "|" + "---|" * 7]
-    for r in sorted(rows, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx_m"])):
+    def bond(r):
         b = _bond(bond_rows, r["kernel"], r["dx_m"])
-        bond = (f"{b['consistent_peak']:.2f} / {b['consistent_l2']:.2f} | {b['j_peak']:.2f} / "
-                f"{b['j_l2']:.2f} | " if b else "- | - | ")
-        lines.append(f"| {r['kernel']} | {r['dx_m']:g} | {r['peak_pct']:.2f} / {r['l2_pct']:.2f} | "
-                     f"{r['j_peak_pct']:.2f} / {r['j_l2_pct']:.2f} | {bond}{r['loop_s']:.1f} |")
-    return "\n".join(lines)
+        return ([f"{b['consistent_peak']:.2f} / {b['consistent_l2']:.2f}",
+                 f"{b['j_peak']:.2f} / {b['j_l2']:.2f}"] if b else ["-", "-"])
+    out = md_table(
+        ("kernel", "dx (m)", "LPS nu = 0.3, plane strain: DSIF peak / L2 (%)",
+         "J-integral peak / L2 (%)", "bond-based plane stress (nu = 1/3), consistent: DSIF peak / "
+         "L2 (%)", "J-integral peak / L2 (%)", "LPS loop (s)"),
+        ([r["kernel"], f"{r['dx_m']:g}", f"{r['peak_pct']:.2f} / {r['l2_pct']:.2f}",
+          f"{r['j_peak_pct']:.2f} / {r['j_l2_pct']:.2f}", *bond(r), f"{r['loop_s']:.1f}"]
+         for r in sorted(rows, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx_m"]))))
+    return f"Made by `{command}`.\n\n" + out if command else out
 
 
 def main(argv=None):

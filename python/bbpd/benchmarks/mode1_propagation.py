@@ -1,41 +1,22 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Mode-I crack growth under a stress wave, against Freund's equation of motion.
 
-Runs examples/mode1-propagation/in.mode1-propagation (the plate, notch and ramp load of the
-stationary Mode-I benchmark, mode1.py, with fracture on) and compares with
-bbpd.crack_motion (plane stress, the model's constants: nu = 1/3, i.e. eq. 42 with
-nu' = 1/4 and C_d = sqrt(E/(rho (1 - nu^2)))):
-
-t_i     against the root of K_I(t_i) = K_Ic = sqrt(E G_c) of eq. 42, two measures:
-        first bond  the first broken bond within 1 m of the tip (the damage sum there rises);
-        tip moved   the first dump in which the tracked tip has moved (by one grid spacing).
-        Errors relative to t_i - t_c (the loading time of the tip).
-J/G_c   J of compute bbpd/jintegral at the initial tip at each measured t_i, over G_c
-        (energy balance at initiation).
-l(t)    l = a + the extension of compute bbpd/crack/tip (grown from (a, 0), threshold 0.3,
-        link = the horizon; tip.dat); bbpd.crack_tip finds the tip in the damage dumps by
-        the same definition (the largest difference is reported, in grid spacings); L2 error of the extension l - a over
-        [t_i, 3 t_c] relative to the theory's, for the K_I = K_Ic (toughness) and the
-        G = G_c (energy) forms of the equation of motion.
-width   largest |y| of the crack atoms (damage >= 0.3, x >= a) at 3 t_c, in horizons: a
-        crack between two rows has 0.5 dx; a wider band is a process zone that spreads.
-v       least-squares slope of l(t) over +-SPEED_HALF_WINDOW t_c around SPEED_TIMES t_c.
-
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.mode1_propagation --dx 0.1 0.05 \
-      --work /tmp/mode1-propagation --csv examples/mode1-propagation/results/mode1_propagation.csv \
-      --figures examples/mode1-propagation
-(add 0.025 to --dx for the finest grid; --full); then `tools/python -m bbpd.claims --write`.
+Runs examples/mode1-propagation/in.mode1-propagation (the stationary Mode-I plate with fracture
+on) and compares with bbpd.crack_motion (plane stress, the model's constants): the initiation
+time t_i (first broken bond; first move of the tracked tip) against K_I(t_i) = K_Ic with J/G_c
+at each, the crack length l(t) of compute bbpd/crack/tip (checked against bbpd.crack_tip on the
+dumps) with its L2 error against the K_Ic and the energy forms of the equation of motion, the
+crack band's half-width at 3 t_c and the speed over +-SPEED_HALF_WINDOW t_c around SPEED_TIMES.
+examples/mode1-propagation/README.md defines each and has the commands.
 """
 
 import argparse
-import csv
 import sys
 from pathlib import Path
 
 import numpy as np
 
-from bbpd import crack_motion, crack_tip, csvfile, freund, readers
+from bbpd import crack_motion, crack_tip, csvfile, freund, plots, readers
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import mode1
 from bbpd.kernels import COLORS, KERNELS
@@ -63,7 +44,6 @@ CSV_COLUMNS = ("kernel", "dx", "Gc", "dt", "atoms", "loop_s", "ti_pd", "ti_theor
                "ext_energy_3tc", "l2_toughness_pct", "l2_energy_pct") + tuple(
     f"v_{s:g}tc_over_cR" for s in SPEED_TIMES) + ("cpu",)
 TEXT_COLUMNS = ("kernel", "cpu")
-TIMING = "# timing: "
 
 
 def problem(G_c=G_C, sigma0=SIGMA0):
@@ -171,18 +151,9 @@ def run(workdir, kernel="gaussian", dx=0.05, G_c=G_C, dt=None, nprocs=1, t_end=T
 
 def write_csv(path, rows, provenance):
     """The results CSV: the commands that made its rows (csvfile.provenance lines), then one
-    row per run; the loop time's CPU is a column, since appended rows may come from another
-    machine."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, "w", newline="") as f:
-        for line in provenance:
-            f.write(f"# {line}\n")
-        f.write(f"{TIMING}LAMMPS loop time, 1 rank, on the CPU of column cpu\n")
-        w = csv.writer(f)
-        w.writerow(CSV_COLUMNS)
-        for r in rows:
-            w.writerow([r[c] if c in TEXT_COLUMNS else f"{r[c]:.6g}" for c in CSV_COLUMNS])
+    row per run, the loop time's CPU in a column (appended rows may come from another machine)."""
+    csvfile.write_table(path, rows, CSV_COLUMNS, list(provenance) + [
+        "timing: LAMMPS loop time, 1 rank, on the CPU of column cpu"], text=TEXT_COLUMNS)
 
 
 def merge_rows(earlier, new):
@@ -196,38 +167,22 @@ def merge_rows(earlier, new):
 
 def write_histories(path, rows):
     """Tip histories of every run (for the figures): kernel, dx, t, l."""
-    with open(path, "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(("kernel", "dx", "t", "l"))
-        for r in rows:
-            for t, l in zip(r["t_tip"], r["l_pd"]):
-                w.writerow((r["kernel"], f"{r['dx']:g}", f"{t:.6g}", f"{l:.6g}"))
+    csvfile.write_table(path, [{"kernel": r["kernel"], "dx": r["dx"], "t": t, "l": l} for r in rows
+                               for t, l in zip(r["t_tip"], r["l_pd"])], ("kernel", "dx", "t", "l"),
+                        text=("kernel",))
 
 
 def read_histories(path):
     """{(kernel, dx): (t, l)} of write_histories' file"""
     hist = {}
-    for ln in Path(path).read_text().splitlines()[1:]:
-        if ln:
-            k, dx, t, l = ln.split(",")
-            hist.setdefault((k, float(dx)), []).append((float(t), float(l)))
+    for r in csvfile.read_table(path, text=("kernel",)):
+        hist.setdefault((r["kernel"], r["dx"]), []).append((r["t"], r["l"]))
     return {key: tuple(np.array(v).T) for key, v in hist.items()}
 
 
 def read_rows(path):
-    """The CSV written by write_csv as a list of dicts (kernel and cpu strings, the rest
-    floats); a CSV from before the cpu column names its one machine on the timing line."""
-    text = Path(path).read_text().splitlines()
-    timing = [ln[len(TIMING):] for ln in text if ln.startswith(TIMING)]
-    lines = [ln for ln in text if ln and not ln.startswith("#")]
-    names = next(csv.reader([lines[0]]))
-    out = []
-    for vals in csv.reader(lines[1:]):
-        row = {n: (v if n in TEXT_COLUMNS else float(v)) for n, v in zip(names, vals)}
-        if "cpu" not in row:
-            row["cpu"] = timing[0].split("1 rank, ", 1)[-1] if timing else "unknown CPU"
-        out.append(row)
-    return out
+    """The CSV written by write_csv as a list of dicts (kernel and cpu strings, the rest floats)"""
+    return csvfile.read_table(path, text=TEXT_COLUMNS)
 
 
 def cpu_markdown(rows):
@@ -284,77 +239,59 @@ def figures(histories_csv, results_csv, folder, prefix=""):
 def figures_of_rows(rows, folder, prefix=""):
     """l(t) and v(t) of every run (rows with kernel, dx, Gc, t_tip, l_pd) with the theory in
     both forms of the equation of motion, and the work-precision figure; returns the names."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     prob = problem(rows[0]["Gc"])
     t_c = prob.t_c
     tt = np.linspace(0.0, prob.t_end, 600)
     dxs = sorted({r["dx"] for r in rows}, reverse=True)
     styles = dict(zip(dxs, (":", "--", "-", "-.")))
-    fig_l, ax_l = plt.subplots(figsize=(7, 4.5))
-    fig_v, ax_v = plt.subplots(figsize=(7, 4.5))
-    for crit, col in (("toughness", "black"), ("energy", "grey")):
-        l_th, v_th = prob.tip_position(tt, crit)
-        label = "Freund, K = K_Ic" if crit == "toughness" else "Freund, G = G_c"
-        ax_l.plot(tt / t_c, l_th - A, color=col, lw=2.5, label=label)
-        ax_v.plot(tt / t_c, v_th / prob.c_r, color=col, lw=2.5, label=label)
-    for r in sorted(rows, key=lambda r: (r["kernel"], r["dx"])):
-        t, l = np.asarray(r["t_tip"], dtype=float), np.asarray(r["l_pd"], dtype=float)
-        kernel, dx = r["kernel"], r["dx"]
-        color = COLORS.get(kernel, None)
-        ax_l.plot(t / t_c, l - A, styles.get(dx, "-"), color=color, label=f"{kernel}, dx = {dx:g}")
-        tv = np.linspace(t_c, prob.t_end - SPEED_HALF_WINDOW * t_c, 60)
-        v = [speed_at(t, l, x, SPEED_HALF_WINDOW * t_c) for x in tv]
-        ax_v.plot(tv / t_c, np.array(v) / prob.c_r, styles.get(dx, "-"), color=color,
-                  label=f"{kernel}, dx = {dx:g}")
-    for ax, ylabel in ((ax_l, "crack extension l - a (m)"), (ax_v, "crack speed v / c_R")):
-        ax.axvline(prob.t_end / t_c, color="k", lw=0.8, ls=":")
-        ax.set_xlabel("t / t_c")
-        ax.set_ylabel(ylabel)
-        ax.set_xlim(1.0, 3.2)
-        ax.legend(fontsize=7, ncol=2)
-    ax_v.set_ylim(0.0, 1.05)
-    ax_v.set_title(f"v: slope of l(t) over +-{SPEED_HALF_WINDOW:g} t_c", fontsize=9)
-    folder = Path(folder)
     names = [prefix + n for n in FIGURE_NAMES]
-    fig_l.tight_layout()
-    fig_l.savefig(folder / names[0], dpi=110)
-    fig_v.tight_layout()
-    fig_v.savefig(folder / names[1], dpi=110)
-    plt.close(fig_l)
-    plt.close(fig_v)
-    work_precision_figure(rows, folder / names[2])
+    with (plots.figure(Path(folder) / names[0], figsize=(7, 4.5), dpi=110) as (_, ax_l),
+          plots.figure(Path(folder) / names[1], figsize=(7, 4.5), dpi=110) as (_, ax_v)):
+        for crit, col in (("toughness", "black"), ("energy", "grey")):
+            l_th, v_th = prob.tip_position(tt, crit)
+            label = "Freund, K = K_Ic" if crit == "toughness" else "Freund, G = G_c"
+            ax_l.plot(tt / t_c, l_th - A, color=col, lw=2.5, label=label)
+            ax_v.plot(tt / t_c, v_th / prob.c_r, color=col, lw=2.5, label=label)
+        for r in sorted(rows, key=lambda r: (r["kernel"], r["dx"])):
+            t, l = np.asarray(r["t_tip"], dtype=float), np.asarray(r["l_pd"], dtype=float)
+            style, color = styles.get(r["dx"], "-"), COLORS.get(r["kernel"])
+            label = f"{r['kernel']}, dx = {r['dx']:g}"
+            ax_l.plot(t / t_c, l - A, style, color=color, label=label)
+            tv = np.linspace(t_c, prob.t_end - SPEED_HALF_WINDOW * t_c, 60)
+            v = [speed_at(t, l, x, SPEED_HALF_WINDOW * t_c) for x in tv]
+            ax_v.plot(tv / t_c, np.array(v) / prob.c_r, style, color=color, label=label)
+        for ax, ylabel in ((ax_l, "crack extension l - a (m)"), (ax_v, "crack speed v / c_R")):
+            ax.axvline(prob.t_end / t_c, color="k", lw=0.8, ls=":")
+            ax.set_xlabel("t / t_c")
+            ax.set_ylabel(ylabel)
+            ax.set_xlim(1.0, 3.2)
+            ax.legend(fontsize=7, ncol=2)
+        ax_v.set_ylim(0.0, 1.05)
+        ax_v.set_title(f"v: slope of l(t) over +-{SPEED_HALF_WINDOW:g} t_c", fontsize=9)
+    work_precision_figure(rows, Path(folder) / names[2])
     return names
 
 
 def work_precision_figure(rows, path):
     """|t_i error| and the L2 error of l(t) (energy form) against the loop time, one line per
     kernel through its grids."""
-    import matplotlib.pyplot as plt
-
-    fig, axes = plt.subplots(1, 3, figsize=(11, 3.8))
     metrics = (("ti_err_pct", "|t_i error| (% of t_i - t_c), first bond"),
                ("l2_energy_pct", "L2 of l(t), energy form (%)"),
                ("l2_toughness_pct", "L2 of l(t), K_Ic form (%)"))
-    for ax, (col, label) in zip(axes, metrics):
-        for kernel in KERNELS:
-            rs = sorted((r for r in rows if r["kernel"] == kernel), key=lambda r: -r["dx"])
-            if not rs:
-                continue
-            x = [r["loop_s"] for r in rs]
-            y = [max(abs(r[col]), 1e-2) for r in rs]
-            ax.loglog(x, y, "o-", color=COLORS.get(kernel), label=kernel)
-            for r, xi, yi in zip(rs, x, y):
-                ax.annotate(f"{r['dx']:g}", (xi, yi), fontsize=7)
-        cpus = sorted({r.get("cpu", cpu()) for r in rows})
-        ax.set_xlabel("loop time (s), 1 rank\n" + "; ".join(cpus), fontsize=7)
-        ax.set_ylabel(label, fontsize=8)
-        ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    with plots.figure(path, 1, 3, figsize=(11, 3.8), dpi=110) as (_, axes):
+        for ax, (col, label) in zip(axes, metrics):
+            for kernel in KERNELS:
+                rs = sorted((r for r in rows if r["kernel"] == kernel), key=lambda r: -r["dx"])
+                x = [r["loop_s"] for r in rs]
+                y = [max(abs(r[col]), 1e-2) for r in rs]
+                if rs:
+                    ax.loglog(x, y, "o-", color=COLORS.get(kernel), label=kernel)
+                for r, xi, yi in zip(rs, x, y):
+                    ax.annotate(f"{r['dx']:g}", (xi, yi), fontsize=7)
+            cpus = sorted({r.get("cpu", cpu()) for r in rows})
+            ax.set_xlabel("loop time (s), 1 rank\n" + "; ".join(cpus), fontsize=7)
+            ax.set_ylabel(label, fontsize=8)
+            ax.legend(fontsize=7)
 
 
 # --------------------------------------------------------------------------- report
@@ -379,16 +316,9 @@ def summary_text(rows):
 
 def section(specs, results, figdir, notes):
     """The section of REPORT.md (bbpd.report.document.write_report) from the report's runs."""
-    rows, text = jobmod.finished_rows(specs, results, summary_text)
-    names = []
-    if rows:
-        try:
-            names = figures_of_rows(rows, figdir, prefix="mode1_propagation_")
-        except Exception as exc:  # the report must still be written
-            notes.append(f"mode1-propagation figures not made: {type(exc).__name__}: {exc}")
-    return {"title": REPORT_TITLE, "setup": REPORT_SETUP,
-            "table": table_markdown(rows) if rows else "", "text": " ".join(text),
-            "figures": names}
+    return jobmod.section(REPORT_TITLE, REPORT_SETUP, specs, results, table_markdown, summary_text,
+                          lambda rows: figures_of_rows(rows, figdir, prefix="mode1_propagation_"),
+                          notes)
 
 
 def main(argv=None):
@@ -416,14 +346,8 @@ def main(argv=None):
             res = run(Path(args.work) / f"{kernel}_{dx}", kernel, dx, args.Gc,
                       nprocs=args.nprocs, reuse=args.reuse)
             rows.append(res)
-            print(f"{kernel:10s} dx {dx:6.3f}: t_i {1e3 * res['ti_pd']:.4f} ms "
-                  f"(theory {1e3 * res['ti_theory']:.4f}, {res['ti_err_pct']:+.1f} %), "
-                  f"J/G_c {res['J_at_ti_over_Gc']:.3f}, tip moves at "
-                  f"{1e3 * res['ti_tip_pd']:.4f} ms ({res['ti_tip_err_pct']:+.1f} %, J/G_c "
-                  f"{res['J_at_ti_tip_over_Gc']:.3f}), tip check {res['tip_check_dx']:.2f} dx, extension {res['ext_pd_3tc']:.2f} m "
-                  f"(theory {res['ext_toughness_3tc']:.2f} / {res['ext_energy_3tc']:.2f}), "
-                  f"L2 {res['l2_toughness_pct']:.1f} / {res['l2_energy_pct']:.1f} %, "
-                  f"loop {res['loop_s']:.1f} s", flush=True)
+            print(f"{kernel} dx {dx:g}: t_i error {res['ti_err_pct']:+.1f} %, L2 of l(t) "
+                  f"{res['l2_toughness_pct']:.1f} / {res['l2_energy_pct']:.1f} %", flush=True)
     if args.csv:
         histories = Path(args.csv).with_name("tip_histories.csv")
         provenance, this = [], f"made by: {command}"

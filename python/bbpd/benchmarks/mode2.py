@@ -2,23 +2,12 @@
 """Mode-II central crack under uniform shear (Bouaraquia & Mabssout 2026, sec. 4.2.2).
 
 Runs examples/mode2-central-crack/in.mode2 (compute bbpd/dsif at both tips, every step) and
-compares K_II(t)/(tau sqrt(pi a)) with the early-time analytic reference of
-python/bbpd/freund.py (the paper's J-integral curve [22] is not available to us):
-
-  a semi-infinite crack whose faces are suddenly loaded by the shear 2 tau that the two
-  plane shear waves from the loaded edges carry across the crack plane when they meet there
-  at t_start = h/c_s (freund.mode2_step_dsif, or mode2_ramp_dsif for a ramp of rise td).
-
-It holds from t_start until the first wave that the semi-infinite problem does not have
-reaches the tip: the P wave diffracted at the other tip, t_start + 2a/c_d (freund.
-ModeIIWindow.t_end_ignoring_corners).  The cylindrical P waves from the corners of the loaded
-edges arrive earlier (7.45 us) but are weak: doubling the plate length (corners 92 mm away)
-changes K_II by < 0.3 % up to 10 us (README).  Model: plane strain, whose implied nu = 1/4 is
-the plate's nu, so E, nu, c_s and c_d of the reference are those of the BBPD model.
-
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.mode2 --kernels constant triangular \
-      gaussian --dx 1e-3 0.5e-3 --work /tmp/mode2 --figures examples/mode2-central-crack
+compares K_II(t)/(tau sqrt(pi a)) with the early-time analytic reference of bbpd.freund (a
+semi-infinite crack whose faces are suddenly loaded by 2 tau when the two plane shear waves
+meet at t_start = h/c_s), valid until the P wave diffracted at the other tip arrives
+(freund.ModeIIWindow). Plane strain: its implied nu = 1/4 is the plate's, so the reference has
+the BBPD model's constants. examples/mode2-central-crack/README.md derives the window and has
+the commands.
 """
 
 import argparse
@@ -29,11 +18,11 @@ import numpy as np
 import scipy.sparse as sparse
 
 from bbpd import freund, metrics, readers
+from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
-from bbpd.plots import plot_k_histories
+from bbpd.plots import plot_k
 from bbpd.runner import run_lammps
 
-ROOT = Path(__file__).resolve().parents[3]
 EXAMPLE = ROOT / "examples" / "mode2-central-crack" / "in.mode2"
 
 # paper sec. 4.2.2 (plate 104 x 40 mm, 2a = 24 mm)
@@ -237,13 +226,11 @@ def table(work, kernels=KERNELS, dxs=(1.0e-3, 0.5e-3), td=0.0, nprocs=1):
 def figure(rows, path, td=0.0):
     w = window()
     tt = np.linspace(0.0, T_END, 400)
-    series = {f"{k} dx = {dx * 1e3:g} mm": (r["t"] * 1e6, normalise(r["k_ii"]))
-              for (k, dx), r in rows.items()}
-    plot_k_histories(path, series,
-                     analytic=("semi-infinite crack, 2 tau", tt * 1e6,
-                               normalise(reference(td=td)(tt))),
-                     xlabel="t (us)", ylabel="K_II / (tau sqrt(pi a))",
-                     window_end=w.t_end_ignoring_corners * 1e6)
+    series = [(f"{k} dx = {dx * 1e3:g} mm", r["t"] * 1e6, normalise(r["k_ii"]), None)
+              for (k, dx), r in rows.items()]
+    plot_k(path, series, [("semi-infinite crack, 2 tau", tt * 1e6, normalise(reference(td=td)(tt)),
+                           "--", "black")], (0.0, w.t_end_ignoring_corners * 1e6), "Mode-II K_II(t)",
+           "t (us)", "K_II / (tau sqrt(pi a))")
 
 
 def main(argv=None):

@@ -3,36 +3,15 @@
 printed at setup against the largest time step that is stable in practice.
 
 predicted  Y = min_i sqrt(2 rho_i / sum_j C_v V_j c(xi_ij)/xi_ij): the velocity-Verlet limit the
-           pair style prints (Silling & Askari 2005; paper eq. 25 is Y/sqrt(2)). It is
-           sufficient: the linearised equations are rho u_i'' = sum_j b_ij e e^T (u_j - u_i),
-           b_ij = C_v V_j c/xi, and Gershgorin bounds omega_max^2 <= 2 max_i sum_j b_ij / rho,
-           while velocity Verlet is stable iff omega_max dt < 2.
-exact      2/omega_max of the periodic plate, from its lattice dynamics: every mode is a plane
-           wave u = U exp(i k.x) on the plate's k grid and
-             rho omega^2(k) U = sum_j b_j (1 - cos k.xi_j) e_j e_j^T U,
-           computed here with NumPy from the paper's formulas (python/bbpd/reference.py),
-           independently of the C++ code.
-measured   bisection on r = dt/Y: a periodic plate (no surfaces, so every atom has the full
-           family and the exact limit above applies) of N x N atoms, plane stress, Gc none,
-           released at rest positions with random velocities (uniform in [-1, 1] m/s per
-           component, strains ~1e-4: linear); the step is stable if the run completes STEPS
-           steps without an ERROR and the largest total energy of its second half stays below
-           GROWTH x the largest of its first half. (Not "below GROWTH x the initial energy":
-           near the limit the energy velocity Verlet reports for a mode with omega dt -> 2
-           oscillates with an amplitude ~ 1/(1 - (omega dt/2)^2) while staying bounded, which
-           would flag stable runs up to 1 % below the limit. At omega dt = 2 (1 + eps) the
-           amplification factor of velocity Verlet is ~ 1 + 2 sqrt(2 eps), so the energy of
-           an unstable mode grows ~ exp(5.7 n sqrt(eps)) in n steps: a factor 10 in 5,000
-           steps for eps = 7e-9, far below RTOL.) Runs whose energy passes HALT x the initial
-           one are stopped early (fix halt) as unstable.
-drift      a free (non-periodic) noisy plate at 0.5 Y for 20,000 steps, total energy sampled
-           every 10 steps: the least-squares linear trend over the run relative to the initial
-           energy (the secular drift), and the relative standard deviation (the bounded
-           fluctuation of the measured energy around velocity Verlet's conserved shadow energy).
-
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.stability --out DIR
-writes DIR/stability.json and DIR/stability.md (the table of doc/stability.md).
+           pair style prints (a Gershgorin bound, so sufficient).
+exact      2/omega_max of the periodic plate from its lattice dynamics, computed with NumPy from
+           the paper's formulas (bbpd.reference), independently of the C++ code.
+measured   bisection on r = dt/Y of a periodic noisy plate: a step is stable if the run completes
+           STEPS steps without an ERROR and the largest energy of its second half stays below
+           GROWTH x the largest of its first half (runs past HALT x the initial energy stop).
+drift      a free noisy plate at 0.5 Y for 20,000 steps: the energy's linear trend and its
+           fluctuation relative to the initial energy.
+doc/stability.md gives the reasons for each choice and the commands.
 """
 
 import argparse
@@ -47,6 +26,7 @@ import numpy as np
 from bbpd import readers
 from bbpd import reference as ref
 from bbpd.kernels import KERNELS
+from bbpd.markdown import table as md_table
 from bbpd.runner import LammpsError, run_lammps
 
 HORIZON_RATIOS = (1, 2, 3, 5, 10)    # m = delta/dx
@@ -78,43 +58,23 @@ def plate_side(m):
 
 # --------------------------------------------------------------------------- NumPy side
 
-def family_offsets(m, dx=DX):
-    """Lattice vectors xi (n x 3) of one family of the infinite square lattice, delta = m dx:
-    every |xi| < delta + dx/2, as the pair style builds them."""
-    reach = int(math.ceil(m + 0.5))
-    a = np.arange(-reach, reach + 1)
-    ij = np.array([(p, q) for p in a for q in a if (p, q) != (0, 0)], dtype=float)
-    xi = np.column_stack([ij * dx, np.zeros(len(ij))])
-    keep = np.linalg.norm(xi, axis=1) < (m + 0.5) * dx
-    return xi[keep]
-
-
-def bond_coefficients(kernel, m, youngs=YOUNGS, dx=DX, thickness=THICKNESS):
-    """b_j = c(xi_j) C_v V_j / xi_j over one interior family (plane stress)."""
-    delta = m * dx
-    xi = family_offsets(m, dx)
-    r = np.linalg.norm(xi, axis=1)
-    c0 = ref.micromodulus(kernel, "plane/stress", youngs, delta, thickness)
-    return xi, c0 * ref.kernel(kernel)(r / delta) * ref.partial_volume(r, delta, dx) \
-        * dx * dx * thickness / r
-
-
 def predicted_bound(kernel, m, youngs=YOUNGS, density=DENSITY, dx=DX):
-    """Y = sqrt(2 rho / sum_j b_j) of an atom with a full family (nan if sum_j b_j <= 0)."""
-    _, b = bond_coefficients(kernel, m, youngs, dx)
+    """Y = sqrt(2 rho / sum_j b_j), b_j = c(xi_j) C_v V_j / xi_j over the full family of an
+    interior atom (plane stress; nan if sum_j b_j <= 0)."""
+    delta = m * dx
+    r = np.linalg.norm(ref.grid_family(m, 2), axis=1) * dx    # the family the pair style builds
+    b = (ref.micromodulus(kernel, "plane/stress", youngs, delta, THICKNESS)
+         * ref.kernel(kernel)(r / delta) * ref.partial_volume(r, delta, dx) * dx * dx * THICKNESS / r)
     return math.sqrt(2.0 * density / b.sum()) if b.sum() > 0.0 else math.nan
 
 
 def exact_limit(kernel, m, side, youngs=YOUNGS, density=DENSITY, dx=DX):
-    """2/omega_max of a periodic side x side plate (lattice dynamics, see the module doc)."""
-    xi, b = bond_coefficients(kernel, m, youngs, dx)
-    e = xi[:, :2] / np.linalg.norm(xi[:, :2], axis=1)[:, None]
+    """2/omega_max of a periodic side x side plate: the largest eigenvalue of the lattice's
+    dynamic matrix (bbpd.reference.dynamic_matrix) over the plate's k grid."""
     k1 = 2.0 * math.pi * np.arange(side) / (side * dx)
-    kx, ky = [g.ravel() for g in np.meshgrid(k1, k1, indexing="ij")]
-    w = b[None, :] * (1.0 - np.cos(np.outer(kx, xi[:, 0]) + np.outer(ky, xi[:, 1])))
-    dxx, dyy, dxy = w @ (e[:, 0] ** 2), w @ (e[:, 1] ** 2), w @ (e[:, 0] * e[:, 1])
-    lam = 0.5 * (dxx + dyy) + np.sqrt(0.25 * (dxx - dyy) ** 2 + dxy ** 2)
-    return 2.0 / math.sqrt(lam.max() / density) if lam.max() > 0.0 else math.nan
+    lam = max(np.linalg.eigvalsh(ref.dynamic_matrix(kernel, "plane/stress", youngs, m, dx,
+                                                    (kx, ky, 0.0)))[-1] for kx in k1 for ky in k1)
+    return 2.0 / math.sqrt(lam / density) if lam > 0.0 else math.nan
 
 
 # --------------------------------------------------------------------------- LAMMPS side
@@ -295,26 +255,23 @@ def drift_table(workdir, log=print):
 
 # --------------------------------------------------------------------------- report
 
+def _map_row(r):
+    lead = [r["kernel"], r["m"], f"{r['side']} x {r['side']}"]
+    if r.get("degenerate"):
+        return lead + ["-"] * 4
+    y, mid = r["bound_printed"], 0.5 * (r["measured_lo"] + r["measured_hi"])
+    return lead + [f"{y:.4e}", f"{r['exact_limit'] / y:.4f}",
+                   f"{r['measured_lo'] / y:.4f}-{r['measured_hi'] / y:.4f}", f"{mid / r['exact_limit']:.4f}"]
+
+
 def markdown(rows, drifts):
-    lines = ["| kernel | m | N x N | Y printed (s) | exact 2/omega_max / Y | measured / Y |"
-             " measured / exact |",
-             "|---|---|---|---|---|---|---|"]
-    for r in rows:
-        if r.get("degenerate"):
-            lines.append(f"| {r['kernel']} | {r['m']} | {r['side']} x {r['side']} | "
-                         "- | - | - | - |")
-            continue
-        y = r["bound_printed"]
-        mid = 0.5 * (r["measured_lo"] + r["measured_hi"])
-        lines.append(f"| {r['kernel']} | {r['m']} | {r['side']} x {r['side']} | {y:.4e} | "
-                     f"{r['exact_limit'] / y:.4f} | {r['measured_lo'] / y:.4f}-"
-                     f"{r['measured_hi'] / y:.4f} | {mid / r['exact_limit']:.4f} |")
-    lines += ["", "| kernel | m | plate | steps | dt / Y | energy drift | energy fluctuation |",
-              "|---|---|---|---|---|---|---|"]
-    for d in drifts:
-        lines.append(f"| {d['kernel']} | {d['m']} | {d['side']} x {d['side']} free | "
-                     f"{d['steps']} | {d['ratio']} | {d['drift']:+.2e} | {d['fluctuation']:.2e} |")
-    return "\n".join(lines) + "\n"
+    return (md_table(["kernel", "m", "N x N", "Y printed (s)", "exact 2/omega_max / Y",
+                      "measured / Y", "measured / exact"], map(_map_row, rows)) + "\n\n"
+            + md_table(["kernel", "m", "plate", "steps", "dt / Y", "energy drift",
+                        "energy fluctuation"],
+                       ([d["kernel"], d["m"], f"{d['side']} x {d['side']} free", d["steps"],
+                         d["ratio"], f"{d['drift']:+.2e}", f"{d['fluctuation']:.2e}"] for d in drifts))
+            + "\n")
 
 
 def main(argv=None):

@@ -1,34 +1,15 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Steady crack growth in a pre-stretched strip between fixed grips: the model's kinetic law.
 
-Runs examples/strip-steady-crack/in.strip and measures, per run (plane stress, BBPD's
-nu = 1/3; energies per unit thickness, i.e. the compute's joules over the slab thickness h):
+Runs examples/strip-steady-crack/in.strip and measures per run (plane stress, BBPD's nu = 1/3;
+energies per unit thickness): U' (the model's stored energy per unit length, compute
+bbpd/energy at t = 0) and Delta' = U'/G_c; the end state (crossed, arrested, branched or
+unsteady); over the MIDDLE of the strip (a + 2 H to L - H) the steady speed v_ss/c_R, the
+energy the broken bonds take (Gamma) and the waves carry off behind and ahead (Phi), the
+closure (Gamma + Phi - U')/U' and the drift of the energy balance.
+examples/strip-steady-crack/README.md defines each.
 
-U'        the model's stored energy per unit length of the uniform strain, measured at t = 0
-          by compute bbpd/energy on a column of atoms one strip height wide in the middle
-          (STRIP-UPRIME); Delta' = U'/G_c beside the nominal Delta = W H / G_c of CCM.
-crossed   the tip reached the far end (x >= L - H/2) before tend along y = 0 (state
-          'crossed'); else 'arrested', or 'branched' if the tip left y = 0 by more than a
-          horizon (the crack branched or turned: no steady state to measure), or
-          'unsteady' if the bonds took more energy per unit area than U' (Gamma > U': damage
-          spread off the plane or ahead of the tip).
-v_ss      steady speed: least-squares slope of the tip position x(t) while the tip runs over
-          the MIDDLE (from a + 2 H to L - H; the crack reaches a steady speed after about two
-          strip heights), over the model's Rayleigh speed c_R (Rayleigh equation, nu = 1/3).
-Gamma     energy the broken bonds take per unit crack area, slope of the broken-bond energy
-          against the tip position over the same span, over G_c.
-Phi       energy the crack leaves as waves per unit crack area, Phi_behind + Phi_ahead:
-          behind  slope against the tip position of the elastic + kinetic energy of the atoms
-                  more than H behind the tip plus what the damped seed zone absorbed (the
-                  waves sent back), over the same span;
-          ahead   slope of what the damped far zone absorbed (waves faster than the crack).
-closure   (Gamma + Phi - U')/U': zero at steady state (the grips do no work, and the strip
-          ahead of the near-tip field loses U' per unit length).
-balance   drift of compute bbpd/energy's balance over the run, over the broken-bond energy.
-
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.strip --kernels gaussian --Delta 1.5 2 3 \
-      --work /tmp/strip --csv examples/strip-steady-crack/results/strip.csv
+Commands: examples/strip-steady-crack/README.md.
 """
 
 import argparse
@@ -44,7 +25,7 @@ from bbpd import csvfile, freund, reference
 from bbpd import jobs as jobmod
 from bbpd.provenance import cpu
 from bbpd.kernels import COLORS
-from bbpd.plots import plt
+from bbpd import plots
 from bbpd.runner import LammpsError, run_or_reuse
 from bbpd.markdown import cell as f
 from bbpd.markdown import made_by
@@ -76,7 +57,6 @@ CSV_COLUMNS = ("kernel", "m", "H_over_delta", "dx", "Delta", "Delta_model", "cro
                "Phi_ahead_over_Gc", "closure_pct", "balance_pct", "atoms", "steps", "loop_s",
                "timing", "left_plane_over_H")
 TEXT_COLUMNS = ("kernel", "state", "timing")
-TIMING = "# timing: "
 
 
 def wave_speeds():
@@ -177,15 +157,8 @@ def write_csv(path, rows, command, earlier=()):
 
 def read_rows(path):
     """The CSV of write_csv as dicts (kernel, state and timing strings, crossed a bool, the rest
-    floats); a CSV from before the timing column names its one machine on the timing line."""
-    rows = csvfile.read_table(path, text=TEXT_COLUMNS, flags=("crossed",))
-    timing = [ln[len(TIMING):] for ln in Path(path).read_text().splitlines() if ln.startswith(TIMING)]
-    for r in rows:
-        if "timing" not in r:
-            r["timing"] = timing[0].split("loop time, ", 1)[-1] if timing else "unknown"
-        # a CSV from before the column: where its branched cracks left the plane is not known
-        r.setdefault("left_plane_over_H", float("nan"))
-    return rows
+    floats)"""
+    return csvfile.read_table(path, text=TEXT_COLUMNS, flags=("crossed",))
 
 
 def timing_markdown(rows):
@@ -444,48 +417,44 @@ def jobs(full=False):
 
 def section(specs, results, figdir, notes):
     """The strip's section of report/REPORT.md."""
-    rows, text = jobmod.finished_rows(specs, results, lambda rows: [closure_line(rows)])
-    return {"title": REPORT_TITLE,
-            "setup": "Soda-lime glass (E = 72 GPa, G_c = 3.8 J/m2), plane stress, delta = 1 mm, "
-                     "strip 8 H long with a seed crack H long, pre-stretched between fixed grips "
-                     "to U' = Delta G_c; steady speed, bond and wave energies over the middle of "
-                     "the strip. See examples/strip-steady-crack/README.md.",
-            "table": table_markdown(rows) + "\n\n" + law_table(rows) if rows else "",
-            "text": "\n".join(t for t in text if t), "figures": []}
+    return jobmod.section(
+        REPORT_TITLE, "Soda-lime glass (E = 72 GPa, G_c = 3.8 J/m2), plane stress, delta = 1 mm, "
+        "strip 8 H long with a seed crack H long, pre-stretched between fixed grips to U' = Delta "
+        "G_c; steady speed, bond and wave energies over the middle of the strip. See "
+        "examples/strip-steady-crack/README.md.", specs, results,
+        lambda rows: table_markdown(rows) + "\n\n" + law_table(rows), lambda rows: [closure_line(rows)])
 
 
 def figure(rows, path, H_over_delta=SWEEP_H_OVER_DELTA):
     """v_ss/c_R against Delta' (the model's U'/G_c) and Gamma/G_c against v_ss/c_R, one line
     per kernel and m at H/delta; runs that arrested drawn at 0, branched ones left out."""
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
-    styles = {3.0: ":", 4.0: "-", 5.0: "--", 6.0: "-.", 8.0: (0, (1, 3))}
-    for k in sorted({r["kernel"] for r in rows}):
-        for m in sorted({r["m"] for r in rows if r["kernel"] == k}):
-            sel = sorted((r for r in rows if r["kernel"] == k and r["m"] == m and
-                          r["H_over_delta"] == H_over_delta and r["state"] in ("crossed", "arrested")),
-                         key=lambda r: r["Delta_model"])
-            if len(sel) < 2:
-                continue
-            ls = styles.get(m, "-")
-            a1.plot([r["Delta_model"] for r in sel], [r["v_ss_over_cR"] for r in sel], ls=ls,
-                    marker="o", color=COLORS[k], label=f"{k}, m = {m:g}")
-            run = [r for r in sel if r["crossed"]]
-            a2.plot([r["v_ss_over_cR"] for r in run], [r["Gamma_over_Gc"] for r in run], ls=ls,
-                    marker="o", color=COLORS[k], label=f"{k}, m = {m:g}")
-    a1.axvline(1.0, color="0.6", lw=0.8)
-    a1.set_xlabel("Delta' = U'/G_c (model)")
-    a1.set_ylabel("v_ss / c_R")
-    a1.set_title(f"steady speed (H = {H_over_delta:g} delta; 0: arrested)")
-    a2.axhline(1.0, color="0.6", lw=0.8)
-    a2.set_xlabel("v_ss / c_R")
-    a2.set_ylabel("Gamma / G_c")
-    a2.set_title("energy the broken bonds take")
-    for a in (a1, a2):
-        a.grid(alpha=0.3)
-        a.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    with plots.figure(path, 1, 2, figsize=(10, 4), dpi=110) as (fig, (a1, a2)):
+        styles = {3.0: ":", 4.0: "-", 5.0: "--", 6.0: "-.", 8.0: (0, (1, 3))}
+        for k in sorted({r["kernel"] for r in rows}):
+            for m in sorted({r["m"] for r in rows if r["kernel"] == k}):
+                sel = sorted((r for r in rows if r["kernel"] == k and r["m"] == m
+                              and r["H_over_delta"] == H_over_delta
+                              and r["state"] in ("crossed", "arrested")),
+                             key=lambda r: r["Delta_model"])
+                if len(sel) < 2:
+                    continue
+                ls = styles.get(m, "-")
+                a1.plot([r["Delta_model"] for r in sel], [r["v_ss_over_cR"] for r in sel], ls=ls,
+                        marker="o", color=COLORS[k], label=f"{k}, m = {m:g}")
+                run = [r for r in sel if r["crossed"]]
+                a2.plot([r["v_ss_over_cR"] for r in run], [r["Gamma_over_Gc"] for r in run], ls=ls,
+                        marker="o", color=COLORS[k], label=f"{k}, m = {m:g}")
+        a1.axvline(1.0, color="0.6", lw=0.8)
+        a1.set_xlabel("Delta' = U'/G_c (model)")
+        a1.set_ylabel("v_ss / c_R")
+        a1.set_title(f"steady speed (H = {H_over_delta:g} delta; 0: arrested)")
+        a2.axhline(1.0, color="0.6", lw=0.8)
+        a2.set_xlabel("v_ss / c_R")
+        a2.set_ylabel("Gamma / G_c")
+        a2.set_title("energy the broken bonds take")
+        for a in (a1, a2):
+            a.grid(alpha=0.3)
+            a.legend(fontsize=7)
 
 
 def work_precision_markdown(rows, Delta=2.0, m=M):

@@ -1,23 +1,16 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Closure: the strip's kinetic law predicts the Mode-I crack of examples/mode1-propagation.
 
-The strip (bbpd.benchmarks.strip) measures G_run(v), the energy release rate a crack of the
-model needs to run steadily at speed v: U' at the steady speed v_ss, in the model's own
-units G_run/G_c against v/c_R (they depend on the kernel and m, not on the material or the
-scale). Fed into Freund's equation of motion (bbpd.crack_motion, criterion 'kinetic':
-g(v) K*^2/E' = G_run(v)) for the Mode-I plate, it gives l(t) without a fitted parameter; the
-L2 error against the PD tip histories of examples/mode1-propagation
-(results/tip_histories.csv) is set beside the two constant-toughness forms (the errors of
-its results CSV, recomputed here the same way).
+The strip's G_run(v)/G_c against v/c_R (bbpd.benchmarks.strip: U' at the steady speed), fed into
+Freund's equation of motion (bbpd.crack_motion, criterion 'kinetic') for the Mode-I plate, gives
+l(t) without a fitted parameter; its L2 error against the PD tip histories of
+examples/mode1-propagation (results/tip_histories.csv) stands beside the two
+constant-toughness forms' (recomputed here the same way).
 
-Command line (from the repository root):
-  tools/python -m bbpd.benchmarks.strip_closure \
-      --strip examples/strip-steady-crack/results/strip.csv \
-      --csv examples/strip-steady-crack/results/closure.csv
+Commands: examples/strip-steady-crack/README.md.
 """
 
 import argparse
-import csv
 import sys
 from pathlib import Path
 
@@ -58,15 +51,6 @@ def taller_shift(rows, kernel, m=M_MODE1, H_over_delta=strip.SWEEP_H_OVER_DELTA,
         return v[0] if v else None
     lo, hi = speed(H_over_delta), speed(taller)
     return None if lo is None or hi is None else hi / lo
-
-
-def histories(path=HISTORIES):
-    """{(kernel, dx): (t, l)} of the PD tip histories"""
-    out = {}
-    with open(path) as f:
-        for r in csv.DictReader(f):
-            out.setdefault((r["kernel"], float(r["dx"])), []).append((float(r["t"]), float(r["l"])))
-    return {k: tuple(np.array(c) for c in zip(*v)) for k, v in out.items()}
 
 
 def compare(law, t, l_pd, problem=None):
@@ -122,7 +106,7 @@ def main(argv=None):
     p.add_argument("--histories", default=str(HISTORIES))
     p.add_argument("--csv")
     a = p.parse_args(argv)
-    rows = closure_rows(strip.read_rows(a.strip), histories(a.histories))
+    rows = closure_rows(strip.read_rows(a.strip), mp.read_histories(a.histories))
     for r in rows:
         print(f"{r['kernel']} dx {r['dx']:g}: L2 kinetic {r['l2_kinetic_pct']:.1f} %, toughness "
               f"{r['l2_toughness_pct']:.1f} %, energy {r['l2_energy_pct']:.1f} %; extension at 3 t_c "

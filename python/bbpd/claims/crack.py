@@ -20,15 +20,10 @@ PROPAGATION_CSV = ROOT / "examples" / "mode1-propagation" / "results" / "mode1_p
 PROJECTILE_CSV = ROOT / "examples" / "kalthoff-winkler" / "projectile.csv"
 STRIP_CSV = ROOT / "examples" / "strip-steady-crack" / "results" / "strip.csv"
 CLOSURE_CSV = ROOT / "examples" / "strip-steady-crack" / "results" / "closure.csv"
-MADE_BY = "# made by: "
 
 
 def _made_by(path):
-    """The command on the CSV's 'made by' line."""
-    for line in path.read_text().splitlines():
-        if line.startswith(MADE_BY):
-            return line[len(MADE_BY):]
-    return None
+    return csvfile.comment(path, "made by")
 
 
 def _commands(path):
@@ -58,8 +53,8 @@ STRIP = {
                                                               _made_by(CLOSURE_CSV)),
     "strip-law": lambda data: strip.law_table(strip.read_rows(STRIP_CSV))}
 BRANCHING = {
-    "branching": lambda data: branching.table(branching.read_rows(), branching.made_by(),
-                                              branching.cpu_of()),
+    "branching": lambda data: branching.table(
+        branching.read_rows(), _made_by(branching.RESULTS), csvfile.comment(branching.RESULTS, "timing")),
     "branching-cost": lambda data: branching.cost_table(branching.read_rows())}
 KW = {
     "kw-projectile": lambda data: projectile.markdown(projectile.read_csv(PROJECTILE_CSV)),

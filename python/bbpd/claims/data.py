@@ -5,7 +5,7 @@ import shutil
 from pathlib import Path
 
 from bbpd.jobs import ROOT
-from bbpd.csvfile import read_csv
+from bbpd.csvfile import comment, read_csv
 
 # benchmark (report/results/<benchmark>.csv) -> committed reference copy
 REFERENCES = {
@@ -46,10 +46,7 @@ class Data:
 
     def cpu(self, name):
         """The CPU model named in the file's 'machine:' line."""
-        for line in self.comments(name):
-            if line.startswith("machine:"):
-                return line.split(":", 1)[1].split(",")[0].strip()
-        return "an unnamed CPU"
+        return (comment(self.comments(name), "machine") or "an unnamed CPU").split(",")[0]
 
     def source(self, name):
         """'examples/.../x.csv (made by: ...)' for the notes under a table."""

@@ -216,7 +216,7 @@ def vs_bpm(data):
     for path in VS_BPM_FILES:
         rows = _rows(path)
         r0 = rows[0]
-        # the path of the bond-based rows (pmb); the state-based rows run the portable loop
+        # the path auto chose for the pmb runs (each model's run names its own in the CSV)
         paths = sorted({r["path"] for r in rows if r["variant"] == "ours" and r["model"] == "pmb"})
         where = (f"{r0['cpu']} (family {r0['family']} model {r0['cpu_model']}), "
                  f"pmb: {'/'.join(paths)}, {r0['date'][:10]}, load {_loads(rows)}")

@@ -14,11 +14,6 @@ def span(values, spec=".1f", unit=""):
     return (lo if lo == hi else f"{lo}{DASH}{hi}") + unit
 
 
-def name(kernel):
-    """A kernel as the prose writes it."""
-    return {"gaussian": "Gaussian"}.get(kernel, kernel)
-
-
 def sci(v):
     """6e-06 -> 6e-6"""
     mant, exp = f"{v:.0e}".split("e")
@@ -31,5 +26,3 @@ def by_kernel(rows):
 
 def mm(dx):
     return f"{dx * 1e3:g}"
-
-

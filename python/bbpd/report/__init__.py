@@ -3,28 +3,15 @@
 
   tools/reproduce [--full] [--out DIR] [--jobs N]
 
-Every benchmark run is a job of bbpd.jobs: single-rank LAMMPS runs, N at a time (default: all
-cores), each cached under OUT/runs by its arguments, its input script, the Python that
-analyses it and the plugin binary, so a second call reuses finished runs and reruns exactly
-those whose inputs changed.  A failed run is listed as FAILED with its error; the others go on.
-
-The report holds, per benchmark, our numbers beside the paper's with each run's wall time,
-lines under each table that fill the numbers into fixed templates, the figures
-(PNG) and the LAMMPS build, plugin version and machine that produced them.
-
-Definitions follow the examples' READMEs (examples/*/README.md); the benchmark modules in
-bbpd.benchmarks run and analyse each case.
-
-Modules: runs (which runs, as bbpd.jobs jobs), tables (results -> rows and CSV), prose (the
-lines under the tables), figures, sections (one per benchmark), provenance (LAMMPS, plugin, git, machine),
-then work_precision (built on these), and on top document (REPORT.md), results (the
-numbers as CSV, for bbpd.claims) and make (reproduce: the runs, then the document); __main__ is
-the command.
+Every run is a job of bbpd.jobs, cached under OUT/runs by its arguments, input script, analysis
+code and plugin binary: a second call reuses finished runs and reruns exactly those whose inputs
+changed; a failed run is listed as FAILED and the others go on. The report holds per benchmark
+our numbers beside the paper's, lines with the numbers filled into fixed templates, the figures
+and the builds and machine that made them. Its modules' layers: doc/architecture.rst.
 """
 # The names callers use as bbpd.report.X, among them "bbpd.report:run_job" and
-# "bbpd.report:dispersion_run" (part of every run's cache key). document, make and
-# work_precision are not among them: they import the blocks (import them as
-# bbpd.report.document, bbpd.report.make and bbpd.report.work_precision).
+# "bbpd.report:dispersion_run" (part of every run's cache key); document, make and
+# work_precision are imported as modules.
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import KERNELS
 

@@ -13,15 +13,9 @@ def main(argv=None):
     ap = argparse.ArgumentParser(prog="tools/reproduce",
                                  description=report.__doc__.split("\n")[0])
     ap.add_argument("--full", action="store_true",
-                    help="finer grids as well: Mode II 0.25 mm, Kalthoff-Winkler 0.5 mm, and "
-                         "for the work-precision diagrams Mode I 0.0125 m and dispersion m = 20 "
-                         "(about 12 more minutes on 2 cores), the Kalthoff-Winkler "
-                         "loading study (32 runs, about 1 h of single-core run time), "
-                         "Kalthoff-Winkler Gaussian at 0.25 mm (one run of about 20 min) "
-                         "and the Mode-I propagation at 0.025 m, and the whole kink sweep "
-                         "of examples/kink-mixed-mode (49 runs; its 18 fine-grid runs take "
-                         "about 2 h of single-core run time), and the crack-branching sweep "
-                         "of examples/crack-branching (12 runs, about 10 min)")
+                    help="the finer grids, the work-precision runs, the Kalthoff-Winkler studies "
+                         "and the whole kink and crack-branching sweeps as well (hours of "
+                         "single-core run time: report.runs.benchmark_specs lists them)")
     ap.add_argument("--finer", action="store_true",
                     help="the finer grids of the benchmarks' tables alone (Mode II 0.25 mm, "
                          "Kalthoff-Winkler Gaussian 0.5 mm: 4 runs more than the default), "

@@ -11,7 +11,7 @@ from bbpd.benchmarks import dispersion as disp
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import mode1, mode2
 from bbpd.kernels import COLORS, KERNELS
-from bbpd import plots
+from bbpd.plots import plot_k
 
 from .runs import MODE1_TABLE3_DX
 
@@ -19,34 +19,14 @@ RESOLUTION_COLORS = ("tab:purple", "tab:red", "tab:green", "tab:blue", "tab:brow
 
 
 def _figure(make, path, notes):
-    """Make one figure; a failure is noted in the report instead of stopping it."""
+    """[the name of the figure make() draws at path], or [] with a note in the report: a failure
+    does not stop it."""
     try:
         make()
-        return Path(path).name
+        return [Path(path).name]
     except Exception as exc:  # the report must still be written
         notes.append(f"figure {Path(path).name} not made: {type(exc).__name__}: {exc}")
-        return None
-
-
-def plot_k(path, series, refs, window, title, xlabel, ylabel):
-    """K(t) figure: measured series (solid, colour), references (black/grey, dashed), and the
-    validity window of the comparison (dotted lines).
-    series: [(label, t, K, colour)]; refs: [(label, t, K, linestyle, colour)];
-    window: (start, end) in the units of t."""
-    with plots.figure(path, figsize=(7.0, 4.4)) as (fig, ax):
-        for label, t, k, color in series:
-            ax.plot(t, k, "-", color=color, linewidth=1.4, label=label)
-        for label, t, k, style, color in refs:
-            ax.plot(t, k, linestyle=style, color=color, linewidth=1.6, label=label)
-        for n, x in enumerate(x for x in window if x > 0):
-            ax.axvline(x, color="grey", linestyle=":", linewidth=1.0,
-                       label="window of the comparison" if n == 0 else None)
-        ax.set_xlabel(xlabel)
-        ax.set_ylabel(ylabel)
-        ax.set_title(title, fontsize=10)
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8, loc="upper left")
-    return path
+        return []
 
 
 def dispersion_figures(runs, paper, cv, figdir, notes):
@@ -74,18 +54,16 @@ def mode1_figures(rows2_ok, rows3_ok, figdir, notes):
         series = [(f"dx = {dx:g} m (consistent L2 {r['consistent']['l2']:.2f} %)", r["t"] * 1e3,
                    r["k_consistent"] / norm, RESOLUTION_COLORS[n % len(RESOLUTION_COLORS)])
                   for n, (dx, r) in enumerate(sorted(rows2_ok.items(), reverse=True))]
-        name = _figure(lambda: plot_k(path, series, refs, window, "Fig. 9: Mode-I K_I(t), "
-                                      "Gaussian kernel, m = 5, three grids", "t (ms)", ylabel),
-                       path, notes)
-        figs += [name] if name else []
+        figs += _figure(lambda: plot_k(path, series, refs, window, "Fig. 9: Mode-I K_I(t), "
+                                       "Gaussian kernel, m = 5, three grids", "t (ms)", ylabel),
+                        path, notes)
     if rows3_ok:
         path = figdir / "fig10_kernels.png"
         series = [(f"{k} (consistent L2 {r['consistent']['l2']:.2f} %)", r["t"] * 1e3,
                    r["k_consistent"] / norm, COLORS[k]) for k, r in rows3_ok.items()]
-        name = _figure(lambda: plot_k(path, series, refs, window, "Fig. 10: Mode-I K_I(t), "
-                                      f"dx = {MODE1_TABLE3_DX:g} m, m = 5, three kernels",
-                                      "t (ms)", ylabel), path, notes)
-        figs += [name] if name else []
+        figs += _figure(lambda: plot_k(path, series, refs, window, "Fig. 10: Mode-I K_I(t), "
+                                       f"dx = {MODE1_TABLE3_DX:g} m, m = 5, three kernels",
+                                       "t (ms)", ylabel), path, notes)
     return figs
 
 
@@ -100,23 +78,21 @@ def mode2_figures(ok, figdir, notes):
         series = [(f"{k} (L2 {r['l2']:.1f} %)", r["t"] * 1e6, mode2.normalise(r["k_ii"]),
                    COLORS[k]) for (k, d), r in ok.items() if d == dx]
         path = figdir / f"fig12_kernels_dx{dx * 1e3:g}mm.png"
-        name = _figure(lambda: plot_k(path, series, refs,
-                                      (win.t_start * 1e6, win.t_end_ignoring_corners * 1e6),
-                                      f"Fig. 12: Mode-II K_II(t), dx = {dx * 1e3:g} mm, m = 5, "
-                                      "three kernels", "t (us)",
-                                      r"$K_{II}/(\tau\sqrt{\pi a})$"), path, notes)
-        figs += [name] if name else []
+        figs += _figure(lambda: plot_k(path, series, refs,
+                                       (win.t_start * 1e6, win.t_end_ignoring_corners * 1e6),
+                                       f"Fig. 12: Mode-II K_II(t), dx = {dx * 1e3:g} mm, m = 5, "
+                                       "three kernels", "t (us)",
+                                       r"$K_{II}/(\tau\sqrt{\pi a})$"), path, notes)
         jseries = [(f"{k} from J (peak {r['jintegral']['peak']:.1f} %)", r["t"] * 1e6,
                     mode2.normalise(r["k_ii_j"]), COLORS[k])
                    for (k, d), r in ok.items() if d == dx and "k_ii_j" in r]
         if jseries:
             jpath = figdir / f"fig12_jintegral_dx{dx * 1e3:g}mm.png"
-            name = _figure(lambda: plot_k(jpath, jseries, refs,
-                                          (win.t_start * 1e6, win.t_end_ignoring_corners * 1e6),
-                                          f"Mode-II K_II(t) from the J-integral, dx = "
-                                          f"{dx * 1e3:g} mm, three kernels", "t (us)",
-                                          r"$K_{II}/(\tau\sqrt{\pi a})$"), jpath, notes)
-            figs += [name] if name else []
+            figs += _figure(lambda: plot_k(jpath, jseries, refs,
+                                           (win.t_start * 1e6, win.t_end_ignoring_corners * 1e6),
+                                           f"Mode-II K_II(t) from the J-integral, dx = "
+                                           f"{dx * 1e3:g} mm, three kernels", "t (us)",
+                                           r"$K_{II}/(\tau\sqrt{\pi a})$"), jpath, notes)
     return figs
 
 
@@ -134,8 +110,7 @@ def kw_growth_figures(ok, figdir, notes):
         frames = [(f"t = {t:.1f} us", p) for t, p in r["snapshots"]]
         title = (f"Kalthoff-Winkler, {k}, dx = {dx * 1e3:g} mm: damage from 0 (blue) to 1 "
                  "(red), LAMMPS dump image")
-        name = _figure(lambda: snapshots.draw_strip(frames, path, title), path, notes)
-        figs += [name] if name else []
+        figs += _figure(lambda: snapshots.draw_strip(frames, path, title), path, notes)
     return figs
 
 
@@ -146,19 +121,13 @@ def kw_figures(ok, figdir, notes):
     figs = kw_growth_figures(ok, figdir, notes)
     for (k, dx), r in sorted(ok.items(), key=lambda x: (-x[0][1], KERNELS.index(x[0][0]))):
         path = figdir / f"damage_{k}_dx{dx * 1e3:g}mm.png"
-        name = _figure(lambda: kw.plot_damage_map(r, path), path, notes)
-        if name:
-            figs.append(name)
+        figs += _figure(lambda: kw.plot_damage_map(r, path), path, notes)
     for dx in sorted({dx for _, dx in ok}, reverse=True):
         same = [ok[(k, dx)] for k in KERNELS if (k, dx) in ok]
         if len(same) > 1:
             path = figdir / f"paths_dx{dx * 1e3:g}mm.png"
-            name = _figure(lambda: kw.plot_paths(same, path), path, notes)
-            if name:
-                figs.append(name)
+            figs += _figure(lambda: kw.plot_runs(same, path), path, notes)
     if len(gauss) > 1:
         path = figdir / "paths_gaussian_convergence.png"
-        name = _figure(lambda: kw.plot_paths([r for _, r in gauss], path), path, notes)
-        if name:
-            figs.append(name)
+        figs += _figure(lambda: kw.plot_runs([r for _, r in gauss], path), path, notes)
     return figs

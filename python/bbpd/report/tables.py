@@ -87,9 +87,8 @@ def dispersion_csv(runs, figdir):
 
 
 def dispersion_table(specs, results, runs, table):
-    """(header, rows, numbers): numbers holds per kernel the measured c/v at DISP_KDX
-    ('phase'), the smallest measured v_g/v ('min_vg') and the deviation from what LAMMPS
-    integrates ('dev')."""
+    """(header, rows, numbers): numbers holds per kernel the smallest measured v_g/v ('min_vg')
+    and the deviation from what LAMMPS integrates ('dev')."""
     info = next(iter(runs.values()))["info"] if runs else None
     v = math.sqrt(info["E"] / info["rho"]) if info else 1.0
 
@@ -97,7 +96,7 @@ def dispersion_table(specs, results, runs, table):
               "eq. 31 + C_v + dt (what LAMMPS integrates)", "paper: eq. 31 as printed",
               "continuous eq. 29", "max dev. from eq. 31 + C_v + dt", "from eq. 31 as printed + dt",
               "min v_g/v: measured / paper's eq. 31", "run time (s)"]
-    rows, meas_phase, min_vg, dev = [], {}, {}, {}
+    rows, min_vg, dev = [], {}, {}
     for s in specs:
         k = s.kernel
         if k not in runs:
@@ -106,7 +105,7 @@ def dispersion_table(specs, results, runs, table):
         r = runs[k]
         meas, ana = r["measured"], r["analytic"][k]
         phase = meas["omega"] / meas["k"] / v
-        meas_phase[k] = [float(np.interp(x, meas["k_dx"], phase)) for x in DISP_KDX]
+        meas_phase = [float(np.interp(x, meas["k_dx"], phase)) for x in DISP_KDX]
         lammps = [float(np.interp(x, ana["k_dx"], ana["phase_discrete_dt"])) for x in DISP_KDX]
         energetic = ((meas["power"] >= disp.MIN_POWER) & (meas["k_dx"] >= disp.KDX_RANGE[0])
                      & (meas["k_dx"] <= disp.KDX_RANGE[1]))
@@ -114,14 +113,14 @@ def dispersion_table(specs, results, runs, table):
         min_vg[k] = float(vg[energetic].min()) if energetic.any() else None
         dev[k] = r["errors"]["discrete_dt"]["max"]
         t = table[k]
-        rows.append([k, " / ".join(f"{p:.3f}" for p in meas_phase[k]),
+        rows.append([k, " / ".join(f"{p:.3f}" for p in meas_phase),
                      " / ".join(f"{p:.3f}" for p in lammps),
                      " / ".join(f"{t['discrete']['phase'][f'{x:g}']:.3f}" for x in DISP_KDX),
                      " / ".join(f"{t['continuous']['phase'][f'{x:g}']:.3f}" for x in DISP_KDX),
                      f"{dev[k]:.1e}", f"{r['errors']['paper_eq31_dt']['max']:.1e}",
                      f"{f(min_vg[k], '.3f')} / {t['discrete']['group_min']:.3f}",
                      f(run_time(r), ".1f")])
-    return header, rows, {"phase": meas_phase, "min_vg": min_vg, "dev": dev}
+    return header, rows, {"min_vg": min_vg, "dev": dev}
 
 
 # --------------------------------------------------------------------------- Mode I

@@ -26,7 +26,6 @@ report does not make already, and the timing repeats; section() turns the result
 report/csv/work_precision.csv, report/work_precision_<benchmark>.png and a report section.
 """
 
-import csv
 import importlib
 import math
 import shutil
@@ -37,11 +36,13 @@ import numpy as np
 
 from bbpd.benchmarks import dispersion
 from bbpd.benchmarks.kalthoff_winkler import EXPERIMENT_ANGLE_DEG
+from bbpd import csvfile
+from bbpd import jobs as jobmod
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import KERNELS
 from .figures import _figure
 from bbpd.provenance import machine
-from .runs import ESTIMATE_S, bench_inputs, build_of_run, make_spec
+from .runs import ESTIMATE_S, bench_inputs, build_of_run, label_of
 from .tables import failed, md_table
 from .work_precision_figure import METHOD_LABEL, plot
 
@@ -187,37 +188,25 @@ def extra_specs(specs, the_plan):
             out.append(have[key])
         runs.append(have[key])
 
-    est = ESTIMATE_S
-    # the same files as the report's own runs of each benchmark (report.bench_inputs)
-    m1_in, m2_in, kw_in = (bench_inputs(b) for b in ("mode1", "mode2", "kw"))
-
-    def renamed(spec, bench):
-        return Spec(bench, spec.kernel, spec.dx, spec.job)
-
+    # (benchmark, its name in bbpd.report.runs, target, resolutions, estimates, default estimate)
+    benches = (("mode1", "mode1", "bbpd.benchmarks.mode1:run", the_plan.mode1_dx,
+                MODE1_ESTIMATE_S, 60.0),
+               ("mode2", "mode2", "bbpd.benchmarks.mode2:run", the_plan.mode2_dx, {}, 60.0),
+               ("kalthoff_winkler", "kw", "bbpd.benchmarks.kalthoff_winkler:run",
+                the_plan.kw_dx, KW_ESTIMATE_S, 600.0))
     for k in the_plan.kernels:
         for m in the_plan.dispersion_m:
             dx = DISPERSION_DELTA / m
-            label = f"dispersion {k} m = {m:g}"
-            want("dispersion", k, dx, lambda: Spec(
-                "wp-dispersion", k, dx,
-                Job(label=label, func="bbpd.report:run_job",
-                    kwargs={"target": "bbpd.report.work_precision:dispersion_run",
-                            "args": {"kernel": k, "m": m}, "label": label},
-                    inputs=tuple(str(p) for p in bench_inputs("dispersion")),
-                    estimate_s=DISPERSION_ESTIMATE_S.get(m, 60.0))))
-        for dx in the_plan.mode1_dx:
-            want("mode1", k, dx, lambda: renamed(make_spec(
-                "mode1", k, dx, "bbpd.benchmarks.mode1:run", {"kernel": k, "dx": dx, "nprocs": 1},
-                m1_in, est.get(("mode1", dx), MODE1_ESTIMATE_S.get(dx, 60.0))), "wp-mode1"))
-        for dx in the_plan.mode2_dx:
-            want("mode2", k, dx, lambda: renamed(make_spec(
-                "mode2", k, dx, "bbpd.benchmarks.mode2:run", {"kernel": k, "dx": dx, "nprocs": 1},
-                m2_in, est.get(("mode2", dx), 60.0)), "wp-mode2"))
-        for dx in the_plan.kw_dx:
-            want("kalthoff_winkler", k, dx, lambda: renamed(make_spec(
-                "kw", k, dx, "bbpd.benchmarks.kalthoff_winkler:run",
-                {"kernel": k, "dx": dx, "nprocs": 1}, kw_in,
-                est.get(("kw", dx), KW_ESTIMATE_S.get(dx, 600.0))), "wp-kw"))
+            want("dispersion", k, dx, lambda: jobmod.report_spec(
+                "wp-dispersion", k, dx, f"dispersion {k} m = {m:g}",
+                "bbpd.report.work_precision:dispersion_run", {"kernel": k, "m": m},
+                bench_inputs("dispersion"), DISPERSION_ESTIMATE_S.get(m, 60.0)))
+        for bench, name, target, dxs, estimates, default in benches:
+            for dx in dxs:    # the same inputs as the report's own runs of the benchmark
+                args = {"kernel": k, "dx": dx, "nprocs": 1}
+                want(bench, k, dx, lambda: jobmod.report_spec(
+                    "wp-" + name, k, dx, label_of(name, k, dx, args), target, args,
+                    bench_inputs(name), ESTIMATE_S.get((name, dx), estimates.get(dx, default))))
     if the_plan.repeats > 1:
         out += [_timing_spec(s, the_plan.repeats - 1) for s in runs
                 if s.job.estimate_s < REPEAT_BELOW_S]
@@ -305,23 +294,12 @@ def write_csv(path, table):
     """table: rows() dicts -> CSV with CSV_COLUMNS (resolution: dx in m)."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    with path.open("w", newline="") as fh:
-        w = csv.writer(fh)
-        w.writerow(CSV_COLUMNS)
-        for r in table:
-            w.writerow([r["benchmark"], r["kernel"], r["method"], f"{r['resolution']:.10g}",
-                        r["error_metric"], f"{r['error']:.6g}", f"{r['wall_s']:.4g}"])
+    csvfile.write_csv(path, table, columns=CSV_COLUMNS)
     return path
 
 
 def read_csv(path):
-    with Path(path).open(newline="") as fh:
-        out = []
-        for r in csv.DictReader(fh):
-            for key in ("resolution", "error", "wall_s"):
-                r[key] = float(r[key])
-            out.append(r)
-        return out
+    return csvfile.read_csv(path)[1]
 
 
 # --------------------------------------------------------------------------- cost of a target
@@ -430,9 +408,8 @@ def section(specs, results, figdir, notes):
         if not any(r["benchmark"] == bench for r in table):
             continue
         path = figdir / f"work_precision_{bench}.png"
-        name = _figure(lambda: plot(path, table, bench, TITLES[bench],
-                                    lambda dx: _fmt_dx(bench, dx)), path, notes)
-        figs += [name] if name else []
+        figs += _figure(lambda: plot(path, table, bench, TITLES[bench],
+                                     lambda dx: _fmt_dx(bench, dx)), path, notes)
     reach = reach_table(table)
     text = ["The cost of reaching each target error:\n\n" + reach] if reach else []
     counts = sorted(set(samples.values()))

@@ -1,0 +1,308 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* -*- c++ -*- ----------------------------------------------------------
+   BBPD: the rows of the LPS families with a deviatoric history (VES, EPS: bbpd_ves.h,
+   bbpd_eps.h) in lanes, with no LAMMPS dependency: the norm pass (EPS) and the force pass of
+   bbpd_lps_history_row.h with bond k in lane k % LANES, as the LPS rows of bbpd_lps_lanes.h,
+   so that the AVX2 and AVX-512 kernels give the portable loop's bits. A bond end's history is
+   read from, and with COMMIT (ROLL) written back to, hist + BOND_HISTORY * slot[k] in every
+   path: each bond end has a slot of its own, so the lanes never write the same place. As in
+   the scalar row, a bond without weighted volume at both ends has no force and keeps its
+   history.
+------------------------------------------------------------------------- */
+
+#ifndef BBPD_LPS_HISTORY_LANES_H
+#define BBPD_LPS_HISTORY_LANES_H
+
+#include "bbpd_lps_history_row.h"
+#include "bbpd_lps_lanes.h"
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+namespace BBPD {
+namespace LPS {
+
+  // what a history row reads of atom i: the LPS row's numbers and F::BULK_FACTOR K
+  struct HistoryCoefficients : RowCoefficients {
+    double bulk_term;
+  };
+
+  // the influence function 1 / |xi0| over any width (influence, bbpd_lps.h)
+  template <class V> inline V influence_v(V xi0)
+  {
+    return vselect(vabs(xi0) < V(PMB::NEAR_ZERO), V(1.0 / PMB::NEAR_ZERO), V(1.0) / xi0);
+  }
+
+  // the force state of a bond end whose partner has a weighted volume (history_force_state)
+  template <class F, bool COMMIT, class V>
+  inline V history_force_v(const F &fam, const typename F::Plan &plan, const HistoryCoefficients &c,
+                           V wv, V xi0, V e, V tom_j, V inv_m_j, V &h0, V &h1, V &energy)
+  {
+    const V ed = e - V(c.theta_third_i) * xi0;
+    const V dil = V(c.bulk_term) * wv * (V(c.theta_over_m_i) + tom_j) * xi0;
+    return dil + fam.template deviatoric_v<COMMIT>(plan, wv, influence_v(xi0), xi0, ed,
+                                                   V(c.inv_m_i) + inv_m_j, h0, h1, energy);
+  }
+
+  /* the portable norm pass: the sum of the row's norm terms (ROLL: the first evaluation of a
+     step, which rolls each bond end's history) */
+  template <class F, bool ROLL, class Idx, class Values>
+  inline double history_norm_portable(const double *xx, int i, const Idx *bj, const Values &vals,
+                                      int n, const AtomState *states, double theta_third_i,
+                                      const F &fam, const int *slot, double *hist)
+  {
+    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
+    double lane[LANES] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    for (int k = 0; k < n; k++) {
+      const int j = partner_index(bj, i, k);
+      const double xi0 = vals.xi0_at(k, j), wv = vals.coef_at(k, j);
+      const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
+      const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const double ed = deviatoric_extension(elongation(r, xi0), xi0, theta_third_i);
+      double *h = hist + F::BOND_HISTORY * slot[k];
+      lane[k % LANES] += fam.template norm_term_v<ROLL>(wv, influence(xi0), ed,
+                                                        states[i].inv_m + states[j].inv_m, h[0], h[1]);
+    }
+    return lane_total(lane);
+  }
+
+  /* the portable force pass (force_row_portable of bbpd_lps_lanes.h with the family's force
+     state; energy lanes: the family's energy terms) */
+  template <class F, int EV, int CHECK, int COMMIT, class Idx, class Values, class S0>
+  inline bool history_force_portable(const double *xx, int i, const Idx *bj, const Values &vals,
+                                     int n, const AtomState *states, const F &fam,
+                                     const typename F::Plan &plan, const HistoryCoefficients &c,
+                                     const int *slot, double *hist, S0 s0_of, double *snew,
+                                     ForceLanes &out)
+  {
+    const bool has_m = c.inv_m_i > 0.0;
+    auto bond = [&](int k, int j, double r, double xi0, double wv, double e, double &energy) {
+      double t = 0.0;
+      if (has_m && states[j].inv_m > 0.0) {
+        double *h = hist + F::BOND_HISTORY * slot[k];
+        t = history_force_v<F, COMMIT != 0>(fam, plan, c, wv, xi0, e, states[j].theta_over_m,
+                                            states[j].inv_m, h[0], h[1], energy);
+      }
+      return r > 0.0 ? t / r : 0.0;
+    };
+    return force_pass_portable<EV, CHECK>(xx, i, bj, vals, n, bond, s0_of, c.margin, snew, out);
+  }
+
+#ifdef BBPD_AVX512
+  // slots k..k+7 of the row times BOND_HISTORY (lanes off in m: 0)
+  template <class F> inline __m256i history_index(const int *slot, __mmask8 m, int k)
+  {
+    return _mm256_mullo_epi32(_mm256_maskz_loadu_epi32(m, slot + k), _mm256_set1_epi32(F::BOND_HISTORY));
+  }
+
+  /* the norm pass, 8 lanes */
+  template <class F, bool ROLL, class Idx, class Values>
+  inline double history_norm_avx512(const double *xx, int i, const Idx *bj, const Values &vals,
+                                    int n, const AtomState *states, double theta_third_i,
+                                    const F &fam, const int *slot, double *hist)
+  {
+    const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
+                  zi = _mm512_set1_pd(xx[3 * i + 2]), zero = _mm512_setzero_pd(),
+                  inv_m_i = _mm512_set1_pd(states[i].inv_m);
+    __m512d acc = zero;
+    for (int k = 0; k < n; k += LANES) {
+      const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
+      const __m256i j1 = load_partners(bj, m, i, k);
+      const BondLanes b = bond_lanes<Elongation>(xx, xi, yi, zi, j1, m, vals, k);
+      __m512d tom, inv_m;
+      load_states(states, j1, m, tom, inv_m);
+      const __m256i hi = history_index<F>(slot, m, k);
+      Vec8 h0 = _mm512_mask_i32gather_pd(zero, m, hi, hist, 8);
+      Vec8 h1 = _mm512_mask_i32gather_pd(zero, m, hi, hist + 1, 8);
+      const Vec8 ed = Vec8(b.elong) - Vec8(theta_third_i) * Vec8(b.xi0);
+      const Vec8 term = fam.template norm_term_v<ROLL>(Vec8(b.coef), influence_v(Vec8(b.xi0)), ed,
+                                                       Vec8(inv_m_i) + Vec8(inv_m), h0, h1);
+      if (ROLL) _mm512_mask_i32scatter_pd(hist, m, hi, h0.v, 8);
+      acc = _mm512_mask_add_pd(acc, m, acc, term.v);
+    }
+    alignas(64) double lane[LANES];
+    _mm512_store_pd(lane, acc);
+    return lane_total(lane);
+  }
+
+  /* the force pass, 8 lanes (one s00 and alpha) */
+  template <class F, int EV, int CHECK, int COMMIT, class Idx, class Values>
+  inline bool history_force_avx512(const double *xx, int i, const Idx *bj, const Values &vals,
+                                   int n, const AtomState *states, const F &fam,
+                                   const typename F::Plan &plan, const HistoryCoefficients &c,
+                                   const int *slot, double *hist, const double *smin_all,
+                                   double *snew, ForceLanes &out)
+  {
+    const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
+                  zi = _mm512_set1_pd(xx[3 * i + 2]), zero = _mm512_setzero_pd();
+    const __mmask8 row_ok = c.inv_m_i > 0.0 ? (__mmask8) 0xFF : (__mmask8) 0;
+    ForceSums8<EV, CHECK> sums;
+    for (int k = 0; k < n; k += LANES) {
+      const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
+      const __m256i j1 = load_partners(bj, m, i, k);
+      const BondLanes b = bond_lanes<Elongation>(xx, xi, yi, zi, j1, m, vals, k);
+      __m512d tom, inv_m;
+      load_states(states, j1, m, tom, inv_m);
+      // bonds with a weighted volume at both ends: force, energy, history
+      const __mmask8 ok = m & row_ok & _mm512_cmp_pd_mask(inv_m, zero, _CMP_GT_OQ);
+      const __m256i hi = history_index<F>(slot, ok, k);
+      Vec8 h0 = _mm512_mask_i32gather_pd(zero, ok, hi, hist, 8);
+      Vec8 h1 = _mm512_mask_i32gather_pd(zero, ok, hi, hist + 1, 8);
+      Vec8 energy(0.0);
+      const Vec8 t = history_force_v<F, COMMIT != 0>(fam, plan, c, Vec8(b.coef), Vec8(b.xi0),
+                                                     Vec8(b.elong), Vec8(tom), Vec8(inv_m), h0, h1, energy);
+      if (COMMIT) {
+        _mm512_mask_i32scatter_pd(hist, ok, hi, h0.v, 8);
+        _mm512_mask_i32scatter_pd(hist + 1, ok, hi, h1.v, 8);
+      }
+      const __m512d t_ok = _mm512_maskz_mov_pd(ok, t.v);
+      const __m512d fpl = vselect(Vec8(b.r) > Vec8(zero), Vec8(t_ok) / Vec8(b.r), Vec8(zero)).v;
+      sums.add(m, b, fpl, _mm512_maskz_mov_pd(ok, energy.v));
+      sums.check(m, b, j1, c, smin_all);
+    }
+    return sums.store(out, snew);
+  }
+#define lps_history_norm_simd BBPD::LPS::history_norm_avx512
+#define lps_history_force_simd BBPD::LPS::history_force_avx512
+#endif
+
+#ifdef BBPD_AVX2
+  /* The history kernels in 4-wide groups as for_each_group4 hands them out (lanes 0-3, 4-7 of
+     the 8-wide accumulators), each group's history gathered and written lane by lane. */
+  struct HistoryGroup4 {
+    __m256d m, dx, dy, dz, xi0, wv, tom, inv_m;
+    __m128i j1;
+  };
+  template <class Idx, class Values>
+  inline HistoryGroup4 history_group4(const double *xx, const Idx *bj, int i, int n, int k, bool full,
+                                      __m256d xi, __m256d yi, __m256d zi, const Values &vals,
+                                      const AtomState *states)
+  {
+    HistoryGroup4 g;
+    if (full) {
+      const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
+                        partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
+      __m256d x, y, z;
+      load_positions(xx, j, x, y, z);
+      g.dx = _mm256_sub_pd(x, xi);
+      g.dy = _mm256_sub_pd(y, yi);
+      g.dz = _mm256_sub_pd(z, zi);
+      load_values_full(vals, bj, i, k, g.xi0, g.wv);
+      load_states4(states, j, g.tom, g.inv_m);
+      g.m = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+      g.j1 = _mm_loadu_si128(reinterpret_cast<const __m128i *>(j));
+    } else {
+      const TailGroup4 t(xx, bj, i, n, k, xi, yi, zi);
+      g.m = t.m;
+      g.dx = t.dx;
+      g.dy = t.dy;
+      g.dz = t.dz;
+      g.j1 = t.j1;
+      load_values(vals, t.m, t.m32, k, t.j1, g.xi0, g.wv);
+      gather_states4(states, t.j1, t.m, g.tom, g.inv_m);
+    }
+    return g;
+  }
+  // the history of the lanes in 'lanes' (bits) of bonds k..k+3, and writing it back
+  template <class F> inline void read_history4(const int *slot, double *hist, int k, int lanes,
+                                               __m256d &h0, __m256d &h1)
+  {
+    alignas(32) double a[4] = {0.0, 0.0, 0.0, 0.0}, b[4] = {0.0, 0.0, 0.0, 0.0};
+    for (int l = 0; l < 4; l++)
+      if (lanes & (1 << l)) {
+        const double *h = hist + F::BOND_HISTORY * slot[k + l];
+        a[l] = h[0];
+        b[l] = h[1];
+      }
+    h0 = _mm256_load_pd(a);
+    h1 = _mm256_load_pd(b);
+  }
+  template <class F> inline void write_history4(const int *slot, double *hist, int k, int lanes,
+                                                __m256d h0, __m256d h1)
+  {
+    alignas(32) double a[4], b[4];
+    _mm256_store_pd(a, h0);
+    _mm256_store_pd(b, h1);
+    for (int l = 0; l < 4; l++)
+      if (lanes & (1 << l)) {
+        double *h = hist + F::BOND_HISTORY * slot[k + l];
+        h[0] = a[l];
+        h[1] = b[l];
+      }
+  }
+
+  template <class F, bool ROLL, class Idx, class Values>
+  inline double history_norm_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                                  const AtomState *states, double theta_third_i, const F &fam,
+                                  const int *slot, double *hist)
+  {
+    const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
+                  zi = _mm256_set1_pd(xx[3 * i + 2]);
+    const Vec4 inv_m_i(states[i].inv_m), third(theta_third_i);
+    __m256d acc[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()};
+    auto group = [&](auto half, int k, bool full) BBPD_GROUPS_INLINE {
+      const HistoryGroup4 g = history_group4(xx, bj, i, n, k, full, xi, yi, zi, vals, states);
+      const int lanes = _mm256_movemask_pd(g.m);
+      __m256d a, b;
+      read_history4<F>(slot, hist, k, lanes, a, b);
+      Vec4 h0(a), h1(b);
+      const Vec4 e = Elongation::elongation(Vec4(lengths4(g.dx, g.dy, g.dz)), Vec4(g.xi0));
+      const Vec4 ed = e - third * Vec4(g.xi0);
+      const Vec4 term = fam.template norm_term_v<ROLL>(Vec4(g.wv), influence_v(Vec4(g.xi0)), ed,
+                                                       inv_m_i + Vec4(g.inv_m), h0, h1);
+      if (ROLL) write_history4<F>(slot, hist, k, lanes, h0.v, h1.v);
+      constexpr int H = decltype(half)::value;
+      acc[H] = lps_add<true>(acc[H], term.v, g.m);
+    };
+    for_each_group4(n, [&](auto half, int k) { group(half, k, true); },
+                    [&](auto half, int k) { group(half, k, false); });
+    alignas(32) double lane[LANES];
+    _mm256_store_pd(lane, acc[0]);
+    _mm256_store_pd(lane + 4, acc[1]);
+    return lane_total(lane);
+  }
+
+  template <class F, int EV, int CHECK, int COMMIT, class Idx, class Values>
+  inline bool history_force_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                                 const AtomState *states, const F &fam,
+                                 const typename F::Plan &plan, const HistoryCoefficients &c,
+                                 const int *slot, double *hist, const double *smin_all,
+                                 double *snew, ForceLanes &out)
+  {
+    const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
+                  zi = _mm256_set1_pd(xx[3 * i + 2]), zero = _mm256_setzero_pd();
+    const bool has_m = c.inv_m_i > 0.0;
+    ForceSums4x2<EV, CHECK> sums;
+    auto group = [&](auto half, int k, bool full) BBPD_GROUPS_INLINE {
+      const HistoryGroup4 g = history_group4(xx, bj, i, n, k, full, xi, yi, zi, vals, states);
+      const __m256d ok = has_m ? _mm256_and_pd(g.m, _mm256_cmp_pd(g.inv_m, zero, _CMP_GT_OQ)) : zero;
+      const int lanes = _mm256_movemask_pd(ok);
+      __m256d a, b;
+      read_history4<F>(slot, hist, k, lanes, a, b);
+      Vec4 h0(a), h1(b), energy(0.0);
+      const __m256d r = lengths4(g.dx, g.dy, g.dz);
+      const __m256d e = Elongation::elongation(Vec4(r), Vec4(g.xi0)).v;
+      const Vec4 t = history_force_v<F, COMMIT != 0>(fam, plan, c, Vec4(g.wv), Vec4(g.xi0), Vec4(e),
+                                                     Vec4(g.tom), Vec4(g.inv_m), h0, h1, energy);
+      if (COMMIT) write_history4<F>(slot, hist, k, lanes, h0.v, h1.v);
+      const __m256d t_ok = _mm256_and_pd(ok, t.v);
+      const __m256d fpl = vselect(Vec4(r) > Vec4(zero), Vec4(t_ok) / Vec4(r), Vec4(zero)).v;
+      constexpr int H = decltype(half)::value;
+      sums.template add<H, true>(g.m, g.dx, g.dy, g.dz, fpl, _mm256_and_pd(ok, energy.v));
+      const __m256d smin_j =
+          CHECK ? _mm256_mask_i32gather_pd(_mm256_set1_pd(c.smin_i), smin_all, g.j1, g.m, 8) : zero;
+      sums.template check<true>(g.m, e, g.xi0, smin_j, c);
+    };
+    for_each_group4(n, [&](auto half, int k) { group(half, k, true); },
+                    [&](auto half, int k) { group(half, k, false); });
+    return sums.store(out, snew);
+  }
+#define lps_history_norm_simd BBPD::LPS::history_norm_avx2
+#define lps_history_force_simd BBPD::LPS::history_force_avx2
+#endif
+
+}    // namespace LPS
+}    // namespace BBPD
+
+#endif

@@ -1,0 +1,455 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* -*- c++ -*- ----------------------------------------------------------
+   BBPD: the two passes of a row of the linear peridynamic solid (bbpd_lps.h) in lanes, with no
+   LAMMPS dependency (tests/unit/test_lps_lanes.cpp runs them on plain arrays):
+     the dilatation pass: the sum of w V xi0 e over the bonds of atom i;
+     the force pass: the force density of the LPS force states of its bonds, the sums of its
+       energy and virial, and with CHECK its smallest stretch and whether a bond is past (or
+       within 'margin' of) its Silling-Askari critical stretch.
+   As in the bond-based rows (bbpd_row.h), bond k goes to lane k % LANES and the lanes are summed
+   in one fixed order (lane_total), the bond's terms are written once over the value type V
+   (double, Vec4, Vec8: bbpd_simd.h) and the AVX2 and AVX-512 kernels do the portable loop's
+   operations in its order, so all paths give the same bits. The current bond length is
+   computed in each pass (a square root per bond end is cheaper than 8 bytes written and read
+   again per bond end).
+------------------------------------------------------------------------- */
+
+#ifndef BBPD_LPS_LANES_H
+#define BBPD_LPS_LANES_H
+
+#include "bbpd_bond_model.h"
+#include "bbpd_lps.h"
+#include "bbpd_pmb_rules.h"
+#include "bbpd_row.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+namespace BBPD {
+namespace LPS {
+
+  using StretchRule = SillingAskariRule<false>;    // peri/lps: smin not clamped
+
+  // what a row's force pass reads of atom i and of the breaking rule
+  struct RowCoefficients {
+    double dilatational, deviatoric;    // of i's type (Moduli)
+    double theta_over_m_i, inv_m_i;     // i's state
+    double theta_third_i;               // theta_i / d
+    double s00, alpha, smin_i;          // the Silling-Askari rule (one s00 and alpha)
+    double margin;                      // periodic box: a stretch this close to s0 is re-checked
+  };
+
+  // the elongation of peri/lps over any width: round-off elongations are zero
+  struct Elongation {
+    template <class V> static V elongation(V r, V xi0)
+    {
+      const V e = r - xi0;
+      return vselect(vabs(e) < V(PMB::NEAR_ZERO), V(0.0), e);
+    }
+  };
+
+  // a bond's term of the dilatation sum (dilatation_term)
+  template <class V> inline V dilatation_term_v(V wv, V xi0, V e) { return wv * xi0 * e; }
+
+  /* the force per current length of a bond (force_state / r), with partner state (tom_j,
+     inv_m_j): zero unless the partner has a weighted volume (atom i's is checked per row) */
+  template <class V>
+  inline V force_per_length(const RowCoefficients &c, V wv, V xi0, V e, V r, V tom_j, V inv_m_j)
+  {
+    const V t = V(c.dilatational) * wv * (V(c.theta_over_m_i) + tom_j) * xi0 +
+        V(c.deviatoric) * wv * (V(c.inv_m_i) + inv_m_j) * e;
+    const V t_both = vselect(inv_m_j > V(0.0), t, V(0.0));
+    return vselect(r > V(0.0), t_both / r, V(0.0));
+  }
+
+  // the row's energy lane term: w V ed^2 (deviatoric_energy_of multiplies the sum)
+  template <class V> inline V energy_term(const RowCoefficients &c, V wv, V xi0, V e)
+  {
+    const V ed = e - V(c.theta_third_i) * xi0;
+    return wv * (ed * ed);
+  }
+
+  // the lanes of a force pass: force density, and the energy (eng) and virial (vir: the sums of
+  // (t / |y|) d_a d_b, xx yy zz xy xz yz) before their factors
+  struct ForceLanes {
+    double fx[LANES], fy[LANES], fz[LANES];
+    RowTally tally;
+  };
+
+  /* the portable dilatation pass: the sum of the row's dilatation terms */
+  template <class Idx, class Values>
+  inline double dilatation_sum_portable(const double *xx, int i, const Idx *bj, const Values &vals,
+                                        int n)
+  {
+    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
+    double lane[LANES] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    for (int k = 0; k < n; k++) {
+      const int j = partner_index(bj, i, k);
+      const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
+      const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const double xi0 = vals.xi0_at(k, j);
+      lane[k % LANES] += dilatation_term_v(vals.coef_at(k, j), xi0, Elongation::elongation(r, xi0));
+    }
+    return lane_total(lane);
+  }
+
+  /* the portable force pass over the n bonds of atom i, the force state of a family:
+     bond(k, j, r, xi0, wv, e, energy) gives the force per current length of bond k (partner j,
+     current and reference length, w V, elongation) and sets its energy term (left 0: none);
+     with CHECK the critical stretch of the bond to j is s0_of(j), the smallest stretch goes to
+     *snew and the return value says whether a bond is past s0 or within 'margin' of it */
+  template <int EV, int CHECK, class Idx, class Values, class Bond, class S0>
+  inline bool force_pass_portable(const double *xx, int i, const Idx *bj, const Values &vals,
+                                  int n, Bond bond, S0 s0_of, double margin, double *snew,
+                                  ForceLanes &out)
+  {
+    const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
+    for (int l = 0; l < LANES; l++) {
+      out.fx[l] = out.fy[l] = out.fz[l] = out.tally.eng[l] = 0.0;
+      for (auto &v : out.tally.vir) v[l] = 0.0;
+    }
+    double smin = std::numeric_limits<double>::max();
+    bool past = false;
+    for (int k = 0; k < n; k++) {
+      const int l = k % LANES;
+      const int j = partner_index(bj, i, k);
+      const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
+      const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const double xi0 = vals.xi0_at(k, j), wv = vals.coef_at(k, j);
+      const double e = Elongation::elongation(r, xi0);
+      double energy = 0.0;
+      const double fpl = bond(k, j, r, xi0, wv, e, energy);
+      out.fx[l] += fpl * dx;
+      out.fy[l] += fpl * dy;
+      out.fz[l] += fpl * dz;
+      if (EV) {
+        out.tally.eng[l] += energy;
+        const double d[3] = {dx, dy, dz};
+        const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
+        for (int v = 0; v < 6; v++) out.tally.vir[v][l] += fpl * d[pa[v]] * d[pb[v]];
+      }
+      if (CHECK) {
+        const double s = StretchRule::stretch(e, xi0);
+        smin = std::min(smin, s);
+        past |= StretchRule::past_critical(s, s0_of(j), margin);
+      }
+    }
+    if (CHECK) *snew = smin;
+    return past;
+  }
+
+  /* the portable force pass of the LPS (partner states 'states'), as force_pass_portable */
+  template <int EV, int CHECK, class Idx, class Values, class S0>
+  inline bool force_row_portable(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                                 const AtomState *states, const RowCoefficients &c, S0 s0_of,
+                                 double *snew, ForceLanes &out)
+  {
+    const bool has_m = c.inv_m_i > 0.0;
+    auto bond = [&](int, int j, double r, double xi0, double wv, double e, double &energy) {
+      if (EV) energy = energy_term(c, wv, xi0, e);
+      return has_m ? force_per_length(c, wv, xi0, e, r, states[j].theta_over_m, states[j].inv_m) : 0.0;
+    };
+    return force_pass_portable<EV, CHECK>(xx, i, bj, vals, n, bond, s0_of, c.margin, snew, out);
+  }
+
+#ifdef BBPD_SIMD
+  // theta / m and 1 / m of 4 partners j (16-byte loads, unpacked; always inlined, as
+  // load_positions: each path's file has its own copy)
+  BBPD_GROUPS_INLINE inline void load_states4(const AtomState *states, const int *j, __m256d &tom, __m256d &inv_m)
+  {
+    auto pair = [&](int a, int b) {
+      return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(&states[a].theta_over_m)),
+                                  _mm_loadu_pd(&states[b].theta_over_m), 1);
+    };
+    const __m256d a02 = pair(j[0], j[2]), a13 = pair(j[1], j[3]);
+    tom = _mm256_unpacklo_pd(a02, a13);
+    inv_m = _mm256_unpackhi_pd(a02, a13);
+  }
+#endif
+
+#ifdef BBPD_AVX512
+  // a vector of partner states: theta / m and 1 / m of partners j1 (lanes off in m: zero); a full
+  // vector by 16-byte loads (as bond_lanes reads positions: cheaper than two gathers)
+  inline void load_states(const AtomState *states, __m256i j1, __mmask8 m, __m512d &tom, __m512d &inv_m)
+  {
+    if (m == 0xFF) {
+      alignas(32) int j[LANES];
+      _mm256_store_si256(reinterpret_cast<__m256i *>(j), j1);
+      __m256d t[2], v[2];
+      load_states4(states, j, t[0], v[0]);
+      load_states4(states, j + 4, t[1], v[1]);
+      tom = _mm512_insertf64x4(_mm512_castpd256_pd512(t[0]), t[1], 1);
+      inv_m = _mm512_insertf64x4(_mm512_castpd256_pd512(v[0]), v[1], 1);
+      return;
+    }
+    const double *s = &states[0].theta_over_m;
+    const __m256i j2 = _mm256_slli_epi32(j1, 1);
+    tom = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, j2, s, 8);
+    inv_m = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, j2, s + 1, 8);
+  }
+
+  /* the dilatation pass, 8 lanes (dilatation_sum_portable's operations) */
+  template <class Idx, class Values>
+  inline double dilatation_sum_avx512(const double *xx, int i, const Idx *bj, const Values &vals,
+                                      int n)
+  {
+    const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
+                  zi = _mm512_set1_pd(xx[3 * i + 2]);
+    __m512d acc = _mm512_setzero_pd();
+    for (int k = 0; k < n; k += LANES) {
+      const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
+      const BondLanes b = bond_lanes<Elongation>(xx, xi, yi, zi, load_partners(bj, m, i, k), m, vals, k);
+      acc = _mm512_mask_add_pd(acc, m, acc, dilatation_term_v(Vec8(b.coef), Vec8(b.xi0), Vec8(b.elong)).v);
+    }
+    alignas(64) double lane[LANES];
+    _mm512_store_pd(lane, acc);
+    return lane_total(lane);
+  }
+
+  /* the sums of a force pass in 8 lanes and, with CHECK, its breaking test: the LPS rows and
+     the history rows (bbpd_lps_history_lanes.h) add their bonds' forces here */
+  template <int EV, int CHECK> struct ForceSums8 {
+    __m512d fx = _mm512_setzero_pd(), fy = _mm512_setzero_pd(), fz = _mm512_setzero_pd();
+    __m512d eng = _mm512_setzero_pd();
+    __m512d vir[6] = {_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd(),
+                      _mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()};
+    __m512d vmin = _mm512_set1_pd(std::numeric_limits<double>::max());
+    __mmask8 past = 0;
+    // the bonds of lanes m (b) with force per length fpl and energy terms 'energy'
+    void add(__mmask8 m, const BondLanes &b, __m512d fpl, __m512d energy)
+    {
+      fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fpl, b.dx));
+      fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fpl, b.dy));
+      fz = _mm512_mask_add_pd(fz, m, fz, _mm512_mul_pd(fpl, b.dz));
+      if (EV) {
+        eng = _mm512_mask_add_pd(eng, m, eng, energy);
+        const __m512d d[3] = {b.dx, b.dy, b.dz};
+        const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
+        for (int v = 0; v < 6; v++)
+          vir[v] = _mm512_mask_add_pd(vir[v], m, vir[v],
+                                      _mm512_mul_pd(_mm512_mul_pd(fpl, d[pa[v]]), d[pb[v]]));
+      }
+    }
+    // their stretches against the critical stretches with partners j1 (smallest stretches smin)
+    void check(__mmask8 m, const BondLanes &b, __m256i j1, const RowCoefficients &c, const double *smin)
+    {
+      if (!CHECK) return;
+      const __m512d smin_i = _mm512_set1_pd(c.smin_i);
+      const Vec8 s = StretchRule::stretch(Vec8(b.elong), Vec8(_mm512_mask_mov_pd(_mm512_set1_pd(1.0), m, b.xi0)));
+      vmin = _mm512_mask_min_pd(vmin, m, s.v, vmin);
+      const Vec8 s0 = StretchRule::critical_stretch(Vec8(c.s00), Vec8(c.alpha), Vec8(smin_i),
+                                                    Vec8(_mm512_mask_i32gather_pd(smin_i, m, j1, smin, 8)));
+      past |= m & StretchRule::past_critical(s, s0, Vec8(c.margin));
+    }
+    // the lanes into out, the smallest stretch into snew; whether a bond is past breaking
+    bool store(ForceLanes &out, double *snew) const
+    {
+      _mm512_storeu_pd(out.fx, fx);
+      _mm512_storeu_pd(out.fy, fy);
+      _mm512_storeu_pd(out.fz, fz);
+      if (EV) {
+        _mm512_storeu_pd(out.tally.eng, eng);
+        for (int v = 0; v < 6; v++) _mm512_storeu_pd(out.tally.vir[v], vir[v]);
+      }
+      if (CHECK) *snew = _mm512_reduce_min_pd(vmin);
+      return past != 0;
+    }
+  };
+
+  /* the force pass, 8 lanes (force_row_portable's operations; one s00 and alpha) */
+  template <int EV, int CHECK, class Idx, class Values>
+  inline bool force_row_avx512(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                               const AtomState *states, const RowCoefficients &c,
+                               const double *smin_all, double *snew, ForceLanes &out)
+  {
+    const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
+                  zi = _mm512_set1_pd(xx[3 * i + 2]), zero = _mm512_setzero_pd();
+    const bool has_m = c.inv_m_i > 0.0;
+    ForceSums8<EV, CHECK> sums;
+    for (int k = 0; k < n; k += LANES) {
+      const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
+      const __m256i j1 = load_partners(bj, m, i, k);
+      const BondLanes b = bond_lanes<Elongation>(xx, xi, yi, zi, j1, m, vals, k);
+      __m512d tom, inv_m;
+      load_states(states, j1, m, tom, inv_m);
+      const __m512d fpl = has_m
+          ? force_per_length(c, Vec8(b.coef), Vec8(b.xi0), Vec8(b.elong), Vec8(b.r), Vec8(tom), Vec8(inv_m)).v
+          : zero;
+      sums.add(m, b, fpl, energy_term(c, Vec8(b.coef), Vec8(b.xi0), Vec8(b.elong)).v);
+      sums.check(m, b, j1, c, smin_all);
+    }
+    return sums.store(out, snew);
+  }
+#define lps_dilatation_simd BBPD::LPS::dilatation_sum_avx512
+#define lps_force_simd BBPD::LPS::force_row_avx512
+#endif
+
+#ifdef BBPD_AVX2
+  // the same, masked (lanes off in m: zero), gathered
+  inline void gather_states4(const AtomState *states, __m128i j1, __m256d m, __m256d &tom,
+                             __m256d &inv_m)
+  {
+    const double *s = &states[0].theta_over_m;
+    const __m128i j2 = _mm_slli_epi32(j1, 1);
+    tom = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), s, j2, m, 8);
+    inv_m = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), s + 1, j2, m, 8);
+  }
+
+  // acc + v in the lanes of m, or everywhere if not MASKED
+  template <bool MASKED> inline __m256d lps_add(__m256d acc, __m256d v, __m256d m)
+  {
+    return MASKED ? _mm256_blendv_pd(acc, _mm256_add_pd(acc, v), m) : _mm256_add_pd(acc, v);
+  }
+  inline __m256d lengths4(__m256d dx, __m256d dy, __m256d dz)
+  {
+    return _mm256_sqrt_pd(
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz)));
+  }
+
+  /* the dilatation pass in two 4-wide halves (lanes 0-3, 4-7), as the AVX-512 kernel */
+  template <class Idx, class Values>
+  inline double dilatation_sum_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n)
+  {
+    const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
+                  zi = _mm256_set1_pd(xx[3 * i + 2]), all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+    __m256d acc[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()};
+    auto add = [&](auto half, auto masked, __m256d m, __m256d dx, __m256d dy, __m256d dz,
+                   __m256d xi0, __m256d wv) BBPD_GROUPS_INLINE {
+      const __m256d e = Elongation::elongation(Vec4(lengths4(dx, dy, dz)), Vec4(xi0)).v;
+      const __m256d t = dilatation_term_v(Vec4(wv), Vec4(xi0), Vec4(e)).v;
+      constexpr int H = decltype(half)::value;
+      acc[H] = lps_add<decltype(masked)::value>(acc[H], t, m);
+    };
+    auto full = [&](auto half, int k) {
+      const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
+                        partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
+      __m256d x, y, z, xi0, wv;
+      load_positions(xx, j, x, y, z);
+      load_values_full(vals, bj, i, k, xi0, wv);
+      add(half, std::false_type(), all, _mm256_sub_pd(x, xi), _mm256_sub_pd(y, yi), _mm256_sub_pd(z, zi), xi0, wv);
+    };
+    auto tail = [&](auto half, int k) {
+      const TailGroup4 g(xx, bj, i, n, k, xi, yi, zi);
+      __m256d xi0, wv;
+      load_values(vals, g.m, g.m32, k, g.j1, xi0, wv);
+      add(half, std::true_type(), g.m, g.dx, g.dy, g.dz, xi0, wv);
+    };
+    for_each_group4(n, full, tail);
+    alignas(32) double lane[LANES];
+    _mm256_store_pd(lane, acc[0]);
+    _mm256_store_pd(lane + 4, acc[1]);
+    return lane_total(lane);
+  }
+
+  /* the sums of a force pass in two 4-wide halves (lanes 0-3, 4-7) and, with CHECK, its
+     breaking test: ForceSums8 of 4 lanes at a time (the same bits) */
+  template <int EV, int CHECK> struct ForceSums4x2 {
+    __m256d fx[2], fy[2], fz[2], eng[2], vir[6][2];
+    __m256d vmin = _mm256_set1_pd(std::numeric_limits<double>::max()), past = _mm256_setzero_pd();
+    ForceSums4x2()
+    {
+      for (int h = 0; h < 2; h++) {
+        fx[h] = fy[h] = fz[h] = eng[h] = _mm256_setzero_pd();
+        for (auto &v : vir) v[h] = _mm256_setzero_pd();
+      }
+    }
+    // bonds of the lanes m (every lane if not MASKED) into half H
+    template <int H, bool MASKED>
+    void add(__m256d m, __m256d dx, __m256d dy, __m256d dz, __m256d fpl, __m256d energy)
+    {
+      fx[H] = lps_add<MASKED>(fx[H], _mm256_mul_pd(fpl, dx), m);
+      fy[H] = lps_add<MASKED>(fy[H], _mm256_mul_pd(fpl, dy), m);
+      fz[H] = lps_add<MASKED>(fz[H], _mm256_mul_pd(fpl, dz), m);
+      if (EV) {
+        eng[H] = lps_add<MASKED>(eng[H], energy, m);
+        const __m256d d[3] = {dx, dy, dz};
+        const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
+        for (int v = 0; v < 6; v++)
+          vir[v][H] = lps_add<MASKED>(vir[v][H], _mm256_mul_pd(_mm256_mul_pd(fpl, d[pa[v]]), d[pb[v]]), m);
+      }
+    }
+    // the breaking test of their elongations e (reference lengths xi0, partners' smin_j)
+    template <bool MASKED>
+    void check(__m256d m, __m256d e, __m256d xi0, __m256d smin_j, const RowCoefficients &c)
+    {
+      if (!CHECK) return;
+      const Vec4 s = StretchRule::stretch(Vec4(e), Vec4(MASKED ? _mm256_blendv_pd(_mm256_set1_pd(1.0), xi0, m) : xi0));
+      vmin = MASKED ? _mm256_blendv_pd(vmin, _mm256_min_pd(s.v, vmin), m) : _mm256_min_pd(s.v, vmin);
+      const Vec4 s0 = StretchRule::critical_stretch(Vec4(c.s00), Vec4(c.alpha), Vec4(c.smin_i), Vec4(smin_j));
+      past = _mm256_or_pd(past, _mm256_and_pd(m, StretchRule::past_critical(s, s0, Vec4(c.margin)).v));
+    }
+    bool store(ForceLanes &out, double *snew) const
+    {
+      for (int h = 0; h < 2; h++) {
+        _mm256_storeu_pd(out.fx + 4 * h, fx[h]);
+        _mm256_storeu_pd(out.fy + 4 * h, fy[h]);
+        _mm256_storeu_pd(out.fz + 4 * h, fz[h]);
+        if (EV) {
+          _mm256_storeu_pd(out.tally.eng + 4 * h, eng[h]);
+          for (int v = 0; v < 6; v++) _mm256_storeu_pd(out.tally.vir[v] + 4 * h, vir[v][h]);
+        }
+      }
+      if (CHECK) {
+        const __m128d m2 = _mm_min_pd(_mm256_castpd256_pd128(vmin), _mm256_extractf128_pd(vmin, 1));
+        *snew = std::min(_mm_cvtsd_f64(m2), _mm_cvtsd_f64(_mm_unpackhi_pd(m2, m2)));
+      }
+      return _mm256_movemask_pd(past) != 0;
+    }
+  };
+
+  /* the force pass in two 4-wide halves, as the AVX-512 kernel */
+  template <int EV, int CHECK, class Idx, class Values>
+  inline bool force_row_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                             const AtomState *states, const RowCoefficients &c,
+                             const double *smin_all, double *snew, ForceLanes &out)
+  {
+    const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
+                  zi = _mm256_set1_pd(xx[3 * i + 2]), all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1)),
+                  zero = _mm256_setzero_pd();
+    const bool has_m = c.inv_m_i > 0.0;
+    ForceSums4x2<EV, CHECK> sums;
+    auto add = [&](auto half, auto masked_c, __m256d m, __m256d dx, __m256d dy, __m256d dz,
+                   __m256d xi0, __m256d wv, __m256d tom, __m256d inv_m, __m256d smin_j) BBPD_GROUPS_INLINE {
+      constexpr int H = decltype(half)::value;
+      constexpr bool MASKED = decltype(masked_c)::value;
+      const __m256d r = lengths4(dx, dy, dz);
+      const __m256d e = Elongation::elongation(Vec4(r), Vec4(xi0)).v;
+      const __m256d fpl = has_m
+          ? force_per_length(c, Vec4(wv), Vec4(xi0), Vec4(e), Vec4(r), Vec4(tom), Vec4(inv_m)).v
+          : zero;
+      sums.template add<H, MASKED>(m, dx, dy, dz, fpl, energy_term(c, Vec4(wv), Vec4(xi0), Vec4(e)).v);
+      sums.template check<MASKED>(m, e, xi0, smin_j, c);
+    };
+    auto full = [&](auto half, int k) {
+      const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
+                        partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
+      __m256d x, y, z, xi0, wv, tom, inv_m;
+      load_positions(xx, j, x, y, z);
+      load_values_full(vals, bj, i, k, xi0, wv);
+      load_states4(states, j, tom, inv_m);
+      const __m256d smin_j = CHECK ? _mm256_setr_pd(smin_all[j[0]], smin_all[j[1]], smin_all[j[2]], smin_all[j[3]])
+                                   : zero;
+      add(half, std::false_type(), all, _mm256_sub_pd(x, xi), _mm256_sub_pd(y, yi), _mm256_sub_pd(z, zi),
+          xi0, wv, tom, inv_m, smin_j);
+    };
+    auto tail = [&](auto half, int k) {
+      const TailGroup4 g(xx, bj, i, n, k, xi, yi, zi);
+      __m256d xi0, wv, tom, inv_m;
+      load_values(vals, g.m, g.m32, k, g.j1, xi0, wv);
+      gather_states4(states, g.j1, g.m, tom, inv_m);
+      const __m256d smin_j = CHECK ? _mm256_mask_i32gather_pd(_mm256_set1_pd(c.smin_i), smin_all, g.j1, g.m, 8) : zero;
+      add(half, std::true_type(), g.m, g.dx, g.dy, g.dz, xi0, wv, tom, inv_m, smin_j);
+    };
+    for_each_group4(n, full, tail);
+    return sums.store(out, snew);
+  }
+#define lps_dilatation_simd BBPD::LPS::dilatation_sum_avx2
+#define lps_force_simd BBPD::LPS::force_row_avx2
+#endif
+
+}    // namespace LPS
+}    // namespace BBPD
+
+#endif

@@ -1,0 +1,322 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* bbpd_lps_lanes.h: the two passes of an LPS row in lanes, on plain arrays (peri/lps's lattice,
+   122 partners, randomly displaced, random partner states). The portable lanes agree with the
+   single-accumulator loop of bbpd_lps_row.h to round-off (another summation order); the SIMD
+   kernel of this build's CPU (compiled with -march=native) gives the portable lanes' bits for
+   rows of every length mod 8, with and without tallies and the breaking check, with index and
+   offset partners, and with an atom that has no weighted volume. */
+
+#include "bbpd_lps_lanes.h"
+#include "bbpd_lps_row.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
+
+namespace LPS = BBPD::LPS;
+namespace PMB = BBPD::PMB;
+
+namespace {
+
+constexpr double LC = 0.5e-3;
+constexpr double DELTA = 1.5001e-3;
+constexpr double VOLUME = LC * LC * LC;
+constexpr double K = 14.9e9, G = 9.3e9;
+// displacements up to this share of the lattice constant: stretches of about 1e-2
+constexpr double JIGGLE = 0.01;
+// portable lanes against one accumulator: the same terms summed in another order
+constexpr double ROUND_OFF = 1e-13;
+
+struct Scene {
+  std::vector<double> x;    // atom 0, then its partners, 3 per atom
+  std::vector<int> partner;
+  std::vector<BBPD::PartnerOffset> offset;
+  std::vector<double> xi0, wv, smin;
+  std::vector<LPS::AtomState> states;
+  int n() const { return static_cast<int>(partner.size()); }
+};
+
+Scene scene(int nbonds, unsigned seed)
+{
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Scene s;
+  s.x = {0.0, 0.0, 0.0};
+  for (int a = -3; a <= 3; a++)
+    for (int b = -3; b <= 3; b++)
+      for (int c = -3; c <= 3; c++) {
+        const double p[3] = {a * LC, b * LC, c * LC};
+        const double xi0 = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        if (xi0 == 0.0 || !PMB::in_family(xi0 * xi0, DELTA) || s.n() == nbonds) continue;
+        for (double v : p) s.x.push_back(v + JIGGLE * LC * u(gen));
+        s.offset.push_back(static_cast<BBPD::PartnerOffset>(s.n() + 1));
+        s.partner.push_back(s.n() + 1);
+        s.xi0.push_back(xi0);
+        s.wv.push_back(LPS::weighted_partner_volume(xi0, DELTA, LC, VOLUME));
+      }
+  // padding the SIMD loads of offsets may read past the row (as the bond storage pads)
+  for (int l = 0; l < BBPD::LANES; l++) s.offset.push_back(0);
+  const int natoms = s.n() + 1;
+  for (int j = 0; j < natoms; j++) {
+    // some partners without weighted volume (zero state), the rest with m near the lattice's
+    const double m = (j % 7 == 3) ? 0.0 : 5e-15 * (1.0 + 0.1 * u(gen));
+    s.states.push_back(LPS::atom_state(1e-3 * u(gen), m));
+    s.smin.push_back(1e-3 * u(gen));
+  }
+  return s;
+}
+
+LPS::RowCoefficients coefficients(const Scene &s, double margin = 0.0)
+{
+  const LPS::Moduli mod = LPS::moduli(K, G);
+  return {mod.dilatational, mod.deviatoric, s.states[0].theta_over_m, s.states[0].inv_m,
+          LPS::third(0.7e-3), 0.012, 0.25, s.smin[0], margin};
+}
+
+bool same_bits(const double *a, const double *b, int n)
+{
+  return std::memcmp(a, b, sizeof(double) * n) == 0;
+}
+
+// the force lanes, and with EV the tallies (filled only then)
+bool same_lanes(const LPS::ForceLanes &a, const LPS::ForceLanes &b, bool ev)
+{
+  const int L = BBPD::LANES;
+  bool same = same_bits(a.fx, b.fx, L) && same_bits(a.fy, b.fy, L) && same_bits(a.fz, b.fz, L);
+  if (!ev) return same;
+  same = same && same_bits(a.tally.eng, b.tally.eng, L);
+  for (int v = 0; v < 6; v++) same = same && same_bits(a.tally.vir[v], b.tally.vir[v], L);
+  return same;
+}
+
+template <int EV, int CHECK, class Idx>
+bool portable(const Scene &s, const Idx *bj, const LPS::RowCoefficients &c, double *snew,
+              LPS::ForceLanes &out)
+{
+  const BBPD::PerBondValues vals{s.xi0.data(), s.wv.data()};
+  auto s0_of = [&](int j) {
+    return LPS::StretchRule::critical_stretch(c.s00, c.alpha, c.smin_i, s.smin[j]);
+  };
+  return LPS::force_row_portable<EV, CHECK>(s.x.data(), 0, bj, vals, s.n(), s.states.data(), c,
+                                            s0_of, snew, out);
+}
+
+}    // namespace
+
+TEST(LpsLanes, PortableLanesAgreeWithOneAccumulator)
+{
+  const Scene s = scene(122, 1);
+  ASSERT_EQ(s.n(), 122);
+  const LPS::RowCoefficients c = coefficients(s);
+  LPS::ForceLanes lanes;
+  double snew = 0.0;
+  portable<1, 0>(s, s.partner.data(), c, &snew, lanes);
+  double f[3];
+  BBPD::lane_sum(lanes.fx, lanes.fy, lanes.fz, f);
+
+  const LPS::Moduli mod = LPS::moduli(K, G);
+  const BBPD::PerBondValues vals{s.xi0.data(), s.wv.data()};
+  LPS::RowSums ref;
+  auto never = [](int, double, double) { return false; };
+  LPS::row_sums<true, false, false>(s.x.data(), 0, s.partner.data(), vals, s.n(), nullptr,
+                                     s.states.data(), mod, c.theta_third_i, never, ref);
+  const double fscale = std::fabs(ref.f[0]) + std::fabs(ref.f[1]) + std::fabs(ref.f[2]);
+  ASSERT_GT(fscale, 0.0);
+  for (int a = 0; a < 3; a++) EXPECT_NEAR(f[a], ref.f[a], ROUND_OFF * fscale);
+  EXPECT_NEAR(BBPD::lane_total(lanes.tally.eng), ref.wv_ed2, ROUND_OFF * ref.wv_ed2);
+  for (int v = 0; v < 6; v++)
+    EXPECT_NEAR(BBPD::lane_total(lanes.tally.vir[v]), ref.fdd[v],
+                ROUND_OFF * (std::fabs(ref.fdd[0]) + std::fabs(ref.fdd[1]) + std::fabs(ref.fdd[2])));
+
+  // the dilatation sum: the same terms as bbpd_lps.h's
+  double sum = 0.0;
+  for (int k = 0; k < s.n(); k++) {
+    const double *xj = &s.x[3 * s.partner[k]];
+    const double r = std::sqrt(xj[0] * xj[0] + xj[1] * xj[1] + xj[2] * xj[2]);
+    sum += LPS::dilatation_term(s.wv[k], s.xi0[k], LPS::elongation(r, s.xi0[k]));
+  }
+  EXPECT_NEAR(LPS::dilatation_sum_portable(s.x.data(), 0, s.partner.data(), vals, s.n()), sum,
+              ROUND_OFF * std::fabs(sum));
+}
+
+TEST(LpsLanes, CheckFindsTheSmallestStretchAndTheBondsPastBreaking)
+{
+  const Scene s = scene(122, 2);
+  double smallest = 1e300;
+  for (int k = 0; k < s.n(); k++) {
+    const double *xj = &s.x[3 * s.partner[k]];
+    const double r = std::sqrt(xj[0] * xj[0] + xj[1] * xj[1] + xj[2] * xj[2]);
+    smallest = std::min(smallest, LPS::elongation(r, s.xi0[k]) / s.xi0[k]);
+  }
+  LPS::ForceLanes lanes;
+  double snew = 0.0;
+  // s00 far above every stretch: nothing past; then s00 below the largest: past
+  LPS::RowCoefficients c = coefficients(s);
+  EXPECT_FALSE((portable<0, 1>(s, s.partner.data(), c, &snew, lanes)));
+  EXPECT_EQ(snew, smallest);
+  c.s00 = -1.0;
+  EXPECT_TRUE((portable<0, 1>(s, s.partner.data(), c, &snew, lanes)));
+}
+
+#ifdef BBPD_SIMD
+// every row length mod 8 (full vectors and every tail), index and offset partners, each switch
+template <int EV, int CHECK> void expect_simd_bits(double margin)
+{
+  for (int n : {0, 1, 3, 4, 5, 7, 8, 9, 12, 13, 16, 31, 64, 121, 122}) {
+    const Scene s = scene(n, 100 + n);
+    for (bool no_m : {false, true}) {
+      Scene t = s;
+      if (no_m) t.states[0] = LPS::atom_state(0.0, 0.0);
+      const LPS::RowCoefficients c = coefficients(t, margin);
+      const BBPD::PerBondValues vals{t.xi0.data(), t.wv.data()};
+      LPS::ForceLanes a, b, o;
+      double sa = 0.0, sb = 0.0, so = 0.0;
+      const bool pa = portable<EV, CHECK>(t, t.partner.data(), c, &sa, a);
+      const bool pb = lps_force_simd<EV, CHECK>(t.x.data(), 0, t.partner.data(), vals, n,
+                                                t.states.data(), c, t.smin.data(), &sb, b);
+      const bool po = lps_force_simd<EV, CHECK>(t.x.data(), 0, t.offset.data(), vals, n,
+                                                t.states.data(), c, t.smin.data(), &so, o);
+      EXPECT_TRUE(same_lanes(a, b, EV)) << "n = " << n;
+      EXPECT_TRUE(same_lanes(a, o, EV)) << "n = " << n << " (offsets)";
+      if (CHECK) {
+        EXPECT_EQ(pa, pb) << "n = " << n;
+        EXPECT_EQ(pa, po) << "n = " << n;
+        EXPECT_EQ(sa, sb) << "n = " << n;
+        EXPECT_EQ(sa, so) << "n = " << n;
+      }
+      const double d = LPS::dilatation_sum_portable(t.x.data(), 0, t.partner.data(), vals, n);
+      EXPECT_EQ(d, lps_dilatation_simd(t.x.data(), 0, t.partner.data(), vals, n)) << "n = " << n;
+      EXPECT_EQ(d, lps_dilatation_simd(t.x.data(), 0, t.offset.data(), vals, n)) << "n = " << n;
+    }
+  }
+}
+
+TEST(LpsLanes, SimdKernelGivesThePortableBits)
+{
+  expect_simd_bits<0, 0>(0.0);
+  expect_simd_bits<1, 0>(0.0);
+  expect_simd_bits<0, 1>(0.0);
+  expect_simd_bits<1, 1>(1e-12);
+}
+
+TEST(LpsLanes, SimdCheckSeesTheMargin)
+{
+  // a critical stretch just above the largest stretch: past only with a margin that reaches it
+  const Scene s = scene(122, 3);
+  LPS::RowCoefficients c = coefficients(s);
+  const BBPD::PerBondValues vals{s.xi0.data(), s.wv.data()};
+  LPS::ForceLanes lanes;
+  double snew = 0.0;
+  double largest = -1e300;
+  for (int k = 0; k < s.n(); k++) {
+    const double *xj = &s.x[3 * s.partner[k]];
+    const double r = std::sqrt(xj[0] * xj[0] + xj[1] * xj[1] + xj[2] * xj[2]);
+    const double st = LPS::elongation(r, s.xi0[k]) / s.xi0[k];
+    const double s0 = LPS::StretchRule::critical_stretch(0.0, c.alpha, c.smin_i, s.smin[k + 1]);
+    largest = std::max(largest, st - s0);    // s00 at which bond k is at its critical stretch
+  }
+  c.s00 = largest + 1e-6;
+  EXPECT_FALSE((lps_force_simd<0, 1>(s.x.data(), 0, s.partner.data(), vals, s.n(), s.states.data(),
+                                     c, s.smin.data(), &snew, lanes)));
+  c.margin = 2e-6;
+  EXPECT_TRUE((lps_force_simd<0, 1>(s.x.data(), 0, s.partner.data(), vals, s.n(), s.states.data(),
+                                    c, s.smin.data(), &snew, lanes)));
+}
+#endif
+
+// ---------------------------------------------------------------- the families with history
+
+#include "bbpd_eps.h"
+#include "bbpd_lps_history_lanes.h"
+#include "bbpd_ves.h"
+
+namespace {
+
+namespace VES = BBPD::VES;
+namespace EPS = BBPD::EPS;
+
+// a bond end's history: random, in slots of their own in a shuffled order
+std::vector<double> history(int n, unsigned seed)
+{
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> u(-1e-6, 1e-6);
+  std::vector<double> h(2 * (n + 3));
+  for (double &v : h) v = u(gen);
+  return h;
+}
+std::vector<int> slots(int n)
+{
+  std::vector<int> s(n);
+  for (int k = 0; k < n; k++) s[k] = (k * 7 + 2) % (n + 3);    // distinct: 7 is prime to n + 3 here
+  return s;
+}
+
+LPS::HistoryCoefficients history_coefficients(const Scene &s, double margin)
+{
+  return {coefficients(s, margin), 3.0 * K};
+}
+
+}    // namespace
+
+#ifdef BBPD_SIMD
+template <class F, int EV, int CHECK> void expect_history_bits(const F &fam, const typename F::Plan &plan)
+{
+  for (int n : {0, 1, 3, 4, 5, 7, 8, 9, 13, 16, 31, 121, 122}) {
+    if ((n + 3) % 7 == 0) continue;    // slots would repeat
+    for (bool no_m : {false, true}) {
+      Scene t = scene(n, 200 + n);
+      if (no_m) t.states[0] = LPS::atom_state(0.0, 0.0);
+      const LPS::HistoryCoefficients c = history_coefficients(t, 1e-12);
+      const BBPD::PerBondValues vals{t.xi0.data(), t.wv.data()};
+      const std::vector<int> slot = slots(n);
+      std::vector<double> ha = history(n, n), hb = ha;
+      auto s0_of = [&](int j) {
+        return LPS::StretchRule::critical_stretch(c.s00, c.alpha, c.smin_i, t.smin[j]);
+      };
+      LPS::ForceLanes a, b;
+      double sa = 0.0, sb = 0.0;
+      const bool pa = LPS::history_force_portable<F, EV, CHECK, CHECK>(
+          t.x.data(), 0, t.partner.data(), vals, n, t.states.data(), fam, plan, c, slot.data(),
+          ha.data(), s0_of, &sa, a);
+      const bool pb = lps_history_force_simd<F, EV, CHECK, CHECK>(
+          t.x.data(), 0, t.offset.data(), vals, n, t.states.data(), fam, plan, c, slot.data(),
+          hb.data(), t.smin.data(), &sb, b);
+      EXPECT_TRUE(same_lanes(a, b, EV)) << "n = " << n;
+      EXPECT_TRUE(same_bits(ha.data(), hb.data(), static_cast<int>(ha.size()))) << "n = " << n;
+      if (CHECK) {
+        EXPECT_EQ(pa, pb) << "n = " << n;
+        EXPECT_EQ(sa, sb) << "n = " << n;
+      }
+    }
+  }
+}
+
+TEST(LpsLanes, HistoryKernelsGiveThePortableBits)
+{
+  const VES::Family ves{VES::coeffs(G, 0.5, 1e-5, 1e-7)};
+  expect_history_bits<VES::Family, 0, 0>(ves, {});
+  expect_history_bits<VES::Family, 1, 1>(ves, {});
+  const EPS::Family eps{{G, EPS::pointwise_yield_value(1e8, DELTA), 5e-15}};
+  for (const EPS::Family::Plan plan : {EPS::Family::Plan{false, 1.0, 0.0}, EPS::Family::Plan{true, 0.7, 1e-3}}) {
+    expect_history_bits<EPS::Family, 0, 0>(eps, plan);
+    expect_history_bits<EPS::Family, 1, 1>(eps, plan);
+  }
+  // the norm pass, rolling the history
+  for (int n : {1, 5, 8, 13, 122}) {
+    const Scene t = scene(n, 300 + n);
+    const BBPD::PerBondValues vals{t.xi0.data(), t.wv.data()};
+    const std::vector<int> slot = slots(n);
+    std::vector<double> ha = history(n, n), hb = ha;
+    const double na = LPS::history_norm_portable<EPS::Family, true>(
+        t.x.data(), 0, t.partner.data(), vals, n, t.states.data(), 1e-4, eps, slot.data(), ha.data());
+    const double nb = lps_history_norm_simd<EPS::Family, true>(
+        t.x.data(), 0, t.partner.data(), vals, n, t.states.data(), 1e-4, eps, slot.data(), hb.data());
+    EXPECT_EQ(na, nb) << "n = " << n;
+    EXPECT_GT(na, 0.0);
+    EXPECT_TRUE(same_bits(ha.data(), hb.data(), static_cast<int>(ha.size()))) << "n = " << n;
+  }
+}
+#endif
