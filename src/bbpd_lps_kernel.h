@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
    BBPD: the constants of the kernel-weighted linear peridynamic solid of pair styles
-   bbpd/lps/constant, bbpd/lps/triangular, bbpd/lps/gaussian (pair_bbpd_lps_kernel.h), with
+   bbpd/lps/constant, bbpd/lps/triangular, bbpd/lps/gaussian (pair_bbpd_lps.h), with
    no LAMMPS dependency: the influence function (the kernel shape W of bbpd_kernel.h), the
    moduli K (kappa' in 2D) and G of the LPS force state from E and nu per model, the
    continuum weighted volume, and the critical stretch from G_c.

@@ -28,7 +28,6 @@
 #include "pair_bbpd.h"
 #include "pair_bbpd_alpha.h"
 #include "pair_bbpd_lps.h"
-#include "pair_bbpd_lps_kernel.h"
 #include "pair_bbpd_pmb.h"
 #include "utils.h"
 #include "version.h"
@@ -72,9 +71,11 @@ Fix *history_creator(LAMMPS *lmp, int narg, char **arg)
 {
   return new FixBBPDHistory(lmp, narg, arg);
 }
+// the LPS with the kernel as influence function and the kernel's calibration of its
+// coefficients (PairBBPDLPS::Coefficients::KERNEL), not a class of its own
 template <class K> Pair *lps_kernel_pair_creator(LAMMPS *lmp)
 {
-  return new PairBBPDLPSKernel(lmp, BBPD::kernel_info<K>());
+  return new PairBBPDLPS(lmp, BBPD::kernel_info<K>());
 }
 Fix *lps_state_creator(LAMMPS *lmp, int narg, char **arg)
 {

@@ -14,12 +14,17 @@
 using namespace LAMMPS_NS;
 
 FixBBPDAtomState::FixBBPDAtomState(LAMMPS *lmp, int narg, char **arg, const char *created_by,
-                                   int width_, int saved_) :
+                                   int width_, int saved_, Layout layout_) :
     Fix(lmp, narg, arg),
-    width(width_), values(nullptr), saved(saved_), nmax_values(0)
+    width(width_), values(nullptr), columns(nullptr), layout(layout_), saved(saved_),
+    nmax_values(0)
 {
   if (narg != 3)
     error->all(FLERR, "Fix {} takes no arguments (it is created by {})", style, created_by);
+  if (layout == Layout::COLUMNS) {
+    columns = new double *[width];
+    for (int c = 0; c < width; c++) columns[c] = nullptr;
+  }
   restart_peratom = 1;
   create_attribute = 1;
   maxexchange = width;
@@ -34,6 +39,9 @@ FixBBPDAtomState::~FixBBPDAtomState()
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(values);
+  if (columns)
+    for (int c = 0; c < width; c++) memory->destroy(columns[c]);
+  delete[] columns;
 }
 
 double FixBBPDAtomState::memory_usage()
@@ -43,13 +51,19 @@ double FixBBPDAtomState::memory_usage()
 
 void FixBBPDAtomState::grow_arrays(int nmax)
 {
-  memory->grow(values, nmax, width, "bbpd:atom_state");
+  if (layout == Layout::ROWS)
+    memory->grow(values, nmax, width, "bbpd:atom_state");
+  else
+    for (int c = 0; c < width; c++) memory->grow(columns[c], nmax, "bbpd:atom_state");
   nmax_values = nmax;
 }
 
 void FixBBPDAtomState::set_width(int w)
 {
   if (w == width) return;
+  if (layout == Layout::COLUMNS)
+    error->one(FLERR, "Fix {} keeps {} values per atom, not {} (a restart file of another "
+               "version?)", style, width, w);
   double **wider = nullptr;
   memory->create(wider, nmax_values, w, "bbpd:atom_state");
   const int keep = std::min(w, width);
@@ -63,23 +77,23 @@ void FixBBPDAtomState::set_width(int w)
 
 void FixBBPDAtomState::copy_arrays(int i, int j, int)
 {
-  for (int c = 0; c < width; c++) values[j][c] = values[i][c];
+  for (int c = 0; c < width; c++) value(j, c) = value(i, c);
 }
 
 void FixBBPDAtomState::set_arrays(int i)
 {
-  for (int c = 0; c < width; c++) values[i][c] = 0.0;
+  for (int c = 0; c < width; c++) value(i, c) = 0.0;
 }
 
 int FixBBPDAtomState::pack_exchange(int i, double *buf)
 {
-  for (int c = 0; c < width; c++) buf[c] = values[i][c];
+  for (int c = 0; c < width; c++) buf[c] = value(i, c);
   return width;
 }
 
 int FixBBPDAtomState::unpack_exchange(int nlocal, double *buf)
 {
-  for (int c = 0; c < width; c++) values[nlocal][c] = buf[c];
+  for (int c = 0; c < width; c++) value(nlocal, c) = buf[c];
   return width;
 }
 
@@ -87,7 +101,7 @@ int FixBBPDAtomState::pack_restart(int i, double *buf)
 {
   const int n = saved_width();
   buf[0] = 1 + n;
-  for (int c = 0; c < n; c++) buf[1 + c] = values[i][c];
+  for (int c = 0; c < n; c++) buf[1 + c] = value(i, c);
   return 1 + n;
 }
 
@@ -100,5 +114,5 @@ void FixBBPDAtomState::unpack_restart(int nlocal, int nth)
   if (saved == ALL) set_width(n);                          // as wide as it was written
   set_arrays(nlocal);
   m++;
-  for (int c = 0; c < n && c < width; c++) values[nlocal][c] = extra[nlocal][m++];
+  for (int c = 0; c < n && c < width; c++) value(nlocal, c) = extra[nlocal][m++];
 }

@@ -3,7 +3,8 @@
    BBPD plugin: the per-atom state of pair style bbpd/lps (pair_bbpd_lps.h).
 
    Created by the pair style (ID BBPD_LPS); not meant for input scripts.
-   Persistent per-atom data, carried through atom migration and restart files:
+   Persistent per-atom data, carried through atom migration and restart files (the three
+   columns of FixBBPDAtomState, kept as per-atom arrays: the dilatations are extract("theta")):
      weighted_volume[i]   m_i of bbpd_lps.h, summed once over the bonds of the atom at the
                           first force evaluation after its family was built (as peri/lps
                           fixes wvolume when it builds the families) and kept while bonds break
@@ -18,32 +19,24 @@
 #ifndef LMP_FIX_BBPD_LPS_H
 #define LMP_FIX_BBPD_LPS_H
 
-#include "fix.h"
+#include "fix_bbpd_atom_state.h"
 
 namespace LAMMPS_NS {
 
-class FixBBPDLPS : public Fix {
+class FixBBPDLPS : public FixBBPDAtomState {
  public:
   FixBBPDLPS(class LAMMPS *, int, char **);
-  ~FixBBPDLPS() override;
   int setmask() override { return 0; }
 
-  double memory_usage() override;
-  void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
-  void set_arrays(int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
   void write_restart(FILE *) override;
   void restart(char *) override;
-  int pack_restart(int, double *) override;
-  void unpack_restart(int, int) override;
-  int size_restart(int) override { return 1 + VALUES; }
-  int maxsize_restart() override { return 1 + VALUES; }
 
   static constexpr int VALUES = 3;    // per atom: weighted volume, dilatation, lost bonds
   int ready;                          // the weighted volumes have been summed
-  double *weighted_volume, *dilatation, *lost;
+  // the columns, [i] (they follow the arrays as these grow)
+  double *&weighted_volume = columns[0];
+  double *&dilatation = columns[1];
+  double *&lost = columns[2];
 };
 
 }    // namespace LAMMPS_NS

@@ -3,7 +3,8 @@
    BBPD plugin: pair style bbpd/lps, the linear peridynamic solid of LAMMPS's peri/lps
    (pair_bbpd_lps.h): its coefficients, the dilatation pass and its ghost exchange, the
    bond loop of the LPS force state with the Silling-Askari breaking of peri/lps, and
-   peri/lps's short-range forces (pair_bbpd_pmb.cpp).
+   peri/lps's short-range forces (pair_bbpd_pmb.cpp). The kernel styles bbpd/lps/KERNEL are
+   this class with Coefficients::KERNEL: their coefficients are in pair_bbpd_lps_kernel.cpp.
 ------------------------------------------------------------------------- */
 
 #include "pair_bbpd_lps.h"
@@ -40,8 +41,11 @@ namespace LPS = BBPD::LPS;
 static constexpr const char *LPS_FIX_ID = "BBPD_LPS";
 static constexpr const char *HISTORY_FIX_ID = "BBPD_HISTORY";
 // peri/lps tallies half of atom i's deviatoric energy density at i (its ev_tally(i, i, ...,
-// 0.5 * evdwl)): bbpd/lps does the same, to give its energies; the kernel styles tally all of it
+// 0.5 * evdwl)): bbpd/lps does the same, to give its energies
 static constexpr double PERI_LPS_DEVIATORIC_SHARE = 0.5;
+// the kernel styles: atom i tallies its whole strain energy density W_i, so that pe/atom is
+// the energy density of the LPS
+static constexpr double WHOLE_DEVIATORIC_ENERGY = 1.0;
 // forward communication: theta / m and 1 / m of every ghost atom
 static constexpr int LPS_FORWARD_VALUES = 2;
 
@@ -62,15 +66,22 @@ static const char *peri_style_of(PairBBPDLPS::Family f)
 }
 
 PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, Family f) :
-    PairBBPDLPS(lmp, BBPD::kernel_info<BBPD::ConstantKernel>(), style_of(f))
+    PairBBPDLPS(lmp, f, Coefficients::PERI, BBPD::kernel_info<BBPD::ConstantKernel>(), style_of(f))
 {
-  family = f;
 }
 
-PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, BBPD::KernelInfo k, const char *style_name) :
-    PairBBPD(lmp, k, style_name, PERI_PMB_RULES), lattice_constant(0.0), bulk(nullptr), shear(nullptr),
-    dimension(LPS::DILATATION_FACTOR), deviatoric_share(PERI_LPS_DEVIATORIC_SHARE), lps_state(nullptr), nmax_lps(0), atom_states(nullptr),
-    family(Family::LPS), relax_share(nullptr),
+PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, BBPD::KernelInfo k) :
+    PairBBPDLPS(lmp, Family::LPS, Coefficients::KERNEL, k, std::string("bbpd/lps/") + k.name)
+{
+}
+
+PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, Family f, Coefficients c, BBPD::KernelInfo k,
+                         const std::string &style_name) :
+    PairBBPD(lmp, k, style_name.c_str(), PERI_PMB_RULES), lattice_constant(0.0), bulk(nullptr), shear(nullptr),
+    dimension(LPS::DILATATION_FACTOR),
+    deviatoric_share(c == Coefficients::KERNEL ? WHOLE_DEVIATORIC_ENERGY : PERI_LPS_DEVIATORIC_SHARE),
+    lps_state(nullptr), nmax_lps(0), atom_states(nullptr),
+    family(f), coefficients(c), relax_share(nullptr),
     relax_time(nullptr), yield_stress(nullptr), history(nullptr), nmax_slot(0), bond_slot(nullptr)
 {
   comm_forward = LPS_FORWARD_VALUES;
@@ -109,6 +120,7 @@ void PairBBPDLPS::allocate_moduli()
 /* pair_style bbpd/lps 3d [keywords of bbpd/pmb]: peri/lps is the 3D solid */
 void PairBBPDLPS::settings(int narg, char **arg)
 {
+  if (coefficients == Coefficients::KERNEL) return kernel_settings(narg, arg);
   const int imodel = (narg > 0 && strcmp(arg[0], "model") == 0) ? 1 : 0;
   if (imodel < narg && strcmp(arg[imodel], "3d") != 0)
     error->all(FLERR, "Pair style {}: model '{}' is not available: {} is the 3D "
@@ -174,6 +186,7 @@ void PairBBPDLPS::set_family_coeffs(int i, int j, char **arg)
 
 void PairBBPDLPS::coeff(int narg, char **arg)
 {
+  if (coefficients == Coefficients::KERNEL) return kernel_coeff(narg, arg);
   if (!allocated) allocate();
   allocate_moduli();
   if (narg != 7 + family_args())
@@ -263,7 +276,11 @@ void PairBBPDLPS::init_rules()
       static_cast<FixBBPDAlpha *>(own_fix(SillingAskariState::FIX_ID, "bbpd/alpha")), atom,
       bonds->families_built());
   lattice_constant = peri_lattice_constant();
-  law.weighting = BBPD::LpsWeighting{{lattice_constant}};    // omega V_j ramp in the bond storage
+  // omega V_j ramp in the bond storage; the kernel styles: omega = W(|xi| / delta)
+  if (coefficients == Coefficients::KERNEL)
+    law.weighting = BBPD::LpsKernelWeighting{{lattice_constant}};
+  else
+    law.weighting = BBPD::LpsWeighting{{lattice_constant}};
   dimension = LPS::lps_dimension(model);    // 3 for bbpd/lps (model 3d)
   lps_state = static_cast<FixBBPDLPS *>(own_fix(LPS_FIX_ID, "bbpd/lps"));
   if (family == Family::LPS) return;
@@ -298,12 +315,14 @@ double PairBBPDLPS::short_range_stiffness(int itype, int jtype) const
 /* the stable time step estimate: the bond as a PMB bond of the same bulk modulus */
 double PairBBPDLPS::bond_stiffness(int i, int k) const
 {
+  if (coefficients == Coefficients::KERNEL) return kernel_bond_stiffness(i, k);
   const int j = bonds->partner_of(i, k);
   return micromodulus[atom->type[i]][atom->type[j]] * bonds->coef_of(i, k, bonds->xi0_of(i, k));
 }
 
 std::string PairBBPDLPS::report_type_pair(int i, int j) const
 {
+  if (coefficients == Coefficients::KERNEL) return kernel_report_type_pair(i, j);
   const std::string own = family == Family::VES
       ? fmt::format("  lambda = {:.6g}  tau = {:.6g}", relax_share[i][j], relax_time[i][j])
       : family == Family::EPS ? fmt::format("  yield stress = {:.8g}", yield_stress[i][j]) : "";
@@ -314,6 +333,7 @@ std::string PairBBPDLPS::report_type_pair(int i, int j) const
 
 std::string PairBBPDLPS::report_rules() const
 {
+  if (coefficients == Coefficients::KERNEL) return kernel_report_rules();
   const char *own = family == Family::VES
       ? "  peri/ves history: per bond end the deviatoric extension and back extension of the "
         "last step (relaxation over the time step, exp(-dt/tau))\n"
@@ -531,12 +551,15 @@ template void PairBBPDLPS::eval_lps<1>();
 
 double PairBBPDLPS::youngs_modulus(int itype) const
 {
+  if (coefficients == Coefficients::KERNEL) return youngs[itype][itype];
   const double K = bulk[itype][itype], G = shear[itype][itype];
   return 9.0 * K * G / (3.0 * K + G);
 }
 
 double PairBBPDLPS::poisson_ratio(int itype) const
 {
+  if (coefficients == Coefficients::KERNEL)
+    return youngs[itype][itype] / (2.0 * shear[itype][itype]) - 1.0;    // G = E / (2 (1 + nu))
   const double K = bulk[itype][itype], G = shear[itype][itype];
   return (3.0 * K - 2.0 * G) / (2.0 * (3.0 * K + G));
 }

@@ -19,6 +19,18 @@
    bbpd/ves 3d' (peri/ves, bbpd_ves.h) and 'bbpd/eps 3d' (peri/eps, bbpd_eps.h). The family is
    a value handed to the row (pair_bbpd_lps_history.cpp, bbpd_lps_history_row.h); its history
    lives per bond end and per atom in fix bbpd/history (fix_bbpd_history.h).
+
+   Where the coefficients come from is another value, chosen at construction (bbpdplugin.cpp):
+   Coefficients::PERI, the numbers of peri/* above, or Coefficients::KERNEL, pair styles
+   bbpd/lps/constant, bbpd/lps/triangular, bbpd/lps/gaussian (pair_bbpd_lps_kernel.cpp): the
+   kernel shape W(|xi| / delta) of bbpd_kernel.h as influence function and the engineering
+   constants of the bond-based styles (bbpd_lps_kernel.h),
+     pair_style bbpd/lps/KERNEL MODEL [thickness h] [keywords of bbpd/lps]
+     pair_coeff I J E nu Gc|none delta
+   MODEL is 3d, plane/strain or plane/stress (the 2D LPS of Le, Chan & Schwartz 2014); atom i
+   tallies its whole deviatoric energy; a bond breaks past the s0 derived from G_c
+   (Silling-Askari alpha 0), 'none' never. The bond storage, dilatation pass, ghost exchange,
+   force loop, short-range forces, fix bbpd/lps state and restart are the same.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_BBPD_LPS_H
@@ -35,10 +47,15 @@ class PairBBPDLPS : public PairBBPD {
  public:
   // the force state: peri/lps's, or one with a deviatoric history (peri/ves, peri/eps)
   enum class Family { LPS, VES, EPS };
-  // peri/pmb's rules; the rows run on the path of the bond loops (bbpd_lps_lanes.h)
+  // where the coefficients come from: peri/*'s numbers (K G delta s00 alpha, the 3D solid,
+  // influence function 1/|xi|) or the kernel calibration (E nu Gc delta, bbpd_lps_kernel.h)
+  enum class Coefficients { PERI, KERNEL };
+  // every style of the class has peri/pmb's rules; the rows run on the path of the bond loops
+  // (bbpd_lps_lanes.h)
+  // bbpd/lps, bbpd/ves, bbpd/eps: a family with peri/*'s numbers
   PairBBPDLPS(class LAMMPS *, Family = Family::LPS);
-  // the kernel-weighted styles (pair_bbpd_lps_kernel.h) share the state, loops and restart
-  PairBBPDLPS(class LAMMPS *, BBPD::KernelInfo, const char *style);
+  // bbpd/lps/KERNEL: the LPS with the kernel as influence function and its calibration
+  PairBBPDLPS(class LAMMPS *, BBPD::KernelInfo);
   ~PairBBPDLPS() override;
 
   void settings(int, char **) override;
@@ -54,7 +71,8 @@ class PairBBPDLPS : public PairBBPD {
   // bbpd/eps: the plastic multiplier lambda of local atom i (compute bbpd/plasticity/atom)
   double plastic_multiplier(int i) const;
 
-  // E and nu of the 3D solid of K and G (the crack computes' constants)
+  // the crack computes' constants: E and nu of the 3D solid of K and G, or (KERNEL) those of
+  // pair_coeff (in 2D kappa' is not the 3D bulk modulus)
   double youngs_modulus(int itype) const override;
   double poisson_ratio(int itype) const override;
 
@@ -67,6 +85,7 @@ class PairBBPDLPS : public PairBBPD {
   class FixBBPDLPS *lps_state;      // weighted volumes and the last step's dilatations
   int nmax_lps;
   Family family;
+  const Coefficients coefficients;
   double **relax_share, **relax_time;    // VES: lambda and tau per type pair
   double **yield_stress;                 // EPS: the yield stress per type pair
   class FixBBPDHistory *history;         // VES, EPS: the history of bonds and atoms
@@ -85,7 +104,17 @@ class PairBBPDLPS : public PairBBPD {
   std::string report_type_pair(int i, int j) const override;
   std::string report_rules() const override;
 
+  // the common constructor: the family, where its coefficients come from, the kernel, the name
+  PairBBPDLPS(class LAMMPS *, Family, Coefficients, BBPD::KernelInfo, const std::string &style);
+
   void allocate_moduli();
+  // Coefficients::KERNEL (pair_bbpd_lps_kernel.cpp): the models, pair_coeff E nu Gc delta, the
+  // stable time step's bond, the report
+  void kernel_settings(int, char **);
+  void kernel_coeff(int, char **);
+  double kernel_bond_stiffness(int i, int k) const;
+  std::string kernel_report_type_pair(int i, int j) const;
+  std::string kernel_report_rules() const;
   BBPD::LPS::Moduli moduli_of_type(int itype) const
   {
     return BBPD::LPS::moduli(bulk[itype][itype], shear[itype][itype], dimension);

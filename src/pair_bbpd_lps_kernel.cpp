@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
-   BBPD plugin: pair styles bbpd/lps/KERNEL (pair_bbpd_lps_kernel.h): the model and the
-   coefficients E nu Gc delta, turned into the LPS moduli and critical stretch of
-   bbpd_lps_kernel.h; the rest is bbpd/lps.
+   BBPD plugin: pair styles bbpd/lps/KERNEL, PairBBPDLPS with Coefficients::KERNEL
+   (pair_bbpd_lps.h): the model and the coefficients E nu Gc delta, turned into the LPS moduli
+   and critical stretch of bbpd_lps_kernel.h, the stable time step's bond and the report; the
+   rest is bbpd/lps (pair_bbpd_lps.cpp).
 ------------------------------------------------------------------------- */
 
-#include "pair_bbpd_lps_kernel.h"
+#include "pair_bbpd_lps.h"
 
 #include "bbpd_lps_kernel.h"
 
@@ -20,18 +21,8 @@
 using namespace LAMMPS_NS;
 namespace LPS = BBPD::LPS;
 
-// atom i tallies its whole strain energy density W_i (bbpd/lps: peri/lps's half of the
-// deviatoric part), so that pe/atom is the energy density of the LPS
-static constexpr double WHOLE_DEVIATORIC_ENERGY = 1.0;
-
-PairBBPDLPSKernel::PairBBPDLPSKernel(LAMMPS *lmp, BBPD::KernelInfo k) :
-    PairBBPDLPS(lmp, k, (std::string("bbpd/lps/") + k.name).c_str())
-{
-  deviatoric_share = WHOLE_DEVIATORIC_ENERGY;
-}
-
 /* pair_style bbpd/lps/KERNEL MODEL [thickness h] [keywords]: the models of the LPS */
-void PairBBPDLPSKernel::settings(int narg, char **arg)
+void PairBBPDLPS::kernel_settings(int narg, char **arg)
 {
   PairBBPD::settings(narg, arg);    // model, thickness and keywords of bbpd/pmb
   forbid_contact();
@@ -44,7 +35,7 @@ void PairBBPDLPSKernel::settings(int narg, char **arg)
    pair_coeff I J E nu Gc|none delta (SI, as the bond-based styles)
 ------------------------------------------------------------------------- */
 
-void PairBBPDLPSKernel::coeff(int narg, char **arg)
+void PairBBPDLPS::kernel_coeff(int narg, char **arg)
 {
   if (!allocated) allocate();
   allocate_moduli();
@@ -92,23 +83,16 @@ void PairBBPDLPSKernel::coeff(int narg, char **arg)
   if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
 }
 
-void PairBBPDLPSKernel::init_rules()
-{
-  PairBBPDLPS::init_rules();
-  // omega = W(|xi| / delta) in the bond storage
-  law.weighting = BBPD::LpsKernelWeighting{{lattice_constant}};
-}
-
 /* the stable time step estimate: the bond as the bond-based bond of the same E and kernel,
    c0 W V ramp / |xi| (the stored coefficient is W V ramp) */
-double PairBBPDLPSKernel::bond_stiffness(int i, int k) const
+double PairBBPDLPS::kernel_bond_stiffness(int i, int k) const
 {
   const int j = bonds->partner_of(i, k);
   const double xi0 = bonds->xi0_of(i, k);
   return micromodulus[atom->type[i]][atom->type[j]] * bonds->coef_of(i, k, xi0) / xi0;
 }
 
-std::string PairBBPDLPSKernel::report_type_pair(int i, int j) const
+std::string PairBBPDLPS::kernel_report_type_pair(int i, int j) const
 {
   // E and Gc first, as the bond-based styles print them (scripts read the line)
   return fmt::format("  types {} {}: E = {:.8g}  Gc = {:.6g}  nu = {:.6g}  LPS: K = {:.8g}  "
@@ -118,7 +102,7 @@ std::string PairBBPDLPSKernel::report_type_pair(int i, int j) const
                      bulk[i][j], shear[i][j], horizon[i][j], critical_stretch[i][j]);
 }
 
-std::string PairBBPDLPSKernel::report_rules() const
+std::string PairBBPDLPS::kernel_report_rules() const
 {
   return peri_rules_report(lattice_constant) +
       fmt::format("  LPS state: influence function the {} kernel W(|xi|/delta), dilatation "

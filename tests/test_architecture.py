@@ -241,11 +241,11 @@ def test_a_style_question_is_found():
 # the pair classes' bases, from their declarations ('class Name : public Base {', also 'final'
 # and several bases); LAMMPS's Pair is the root
 CLASS_DECL = re.compile(r"\bclass\s+(\w+)\s*(?:final\s*)?:\s*([^{;]+)\{")
-# at most two levels below PairBBPD (so three below LAMMPS's Pair: bbpd/lps/KERNEL over bbpd/lps):
-# what the styles share is held (the Silling-Askari state) or called (the Silling-Askari loop,
-# peri/pmb's pieces), not inherited (doc/architecture.rst, "The class picture"). Two below Pair
-# would need the kernel LPS styles folded into PairBBPDLPS.
-MAX_LEVELS_BELOW_PAIR_BBPD = 2
+# at most two levels below LAMMPS's Pair (PairBBPD and one thin style class): what the styles
+# share is held (the Silling-Askari state) or called (the Silling-Askari loop, peri/pmb's
+# pieces), not inherited, and a style's variants are values it holds (the LPS family, where its
+# coefficients come from), not subclasses (doc/architecture.rst, "The class picture")
+MAX_LEVELS_BELOW_PAIR = 2
 
 
 def pair_class_bases(texts):
@@ -257,48 +257,86 @@ def pair_class_bases(texts):
     return bases
 
 
-def levels_below_pair_bbpd(bases):
-    """{class: the classes between Pair and it on its longest path} for the classes whose
-    bases lead to Pair (PairBBPD: 0, a class derived from it: 1, ...)"""
+def levels_below_pair(bases):
+    """{class: its levels below Pair on its longest path} for the classes whose bases lead to
+    Pair (a class derived from Pair: 1, a class derived from that: 2, ...)"""
     def levels(name, seen=()):
         assert name not in seen, f"circular bases at {name}"
         paths = []
         for b in bases.get(name, []):
             up = 0 if b == "Pair" else levels(b, seen + (name,)) if b in bases else None
             if up is not None:
-                paths.append(up + (b != "Pair"))
+                paths.append(up + 1)
         return max(paths, default=None)
     return {name: n for name in bases if (n := levels(name)) is not None}
 
 
 def too_deep(texts):
-    return sorted(n for n, lv in levels_below_pair_bbpd(pair_class_bases(texts)).items()
-                  if lv > MAX_LEVELS_BELOW_PAIR_BBPD)
+    return sorted(n for n, lv in levels_below_pair(pair_class_bases(texts)).items()
+                  if lv > MAX_LEVELS_BELOW_PAIR)
 
 
-def test_no_pair_class_sits_more_than_two_levels_below_pair_bbpd():
+def test_no_pair_class_sits_more_than_two_levels_below_pair():
     texts = [p.read_text() for p in sorted(SRC.glob("pair_*.h"))]
-    levels = levels_below_pair_bbpd(pair_class_bases(texts))
+    levels = levels_below_pair(pair_class_bases(texts))
     # the parser sees every style class of the plugin
-    assert {"PairBBPD", "PairBBPDAlpha", "PairBBPDPMB", "PairBBPDLPS",
-            "PairBBPDLPSKernel"} <= set(levels), levels
-    assert levels["PairBBPD"] == 0
+    assert {"PairBBPD", "PairBBPDAlpha", "PairBBPDPMB", "PairBBPDLPS"} <= set(levels), levels
+    assert levels["PairBBPD"] == 1
     assert too_deep(texts) == [], levels
 
 
 def test_a_deep_pair_class_is_found():
-    """negative controls: a class three levels below PairBBPD, and the chain as it was"""
+    """negative controls: a class three levels below Pair, the chain of one class per feature,
+    and the kernel LPS styles as a class below PairBBPDLPS"""
     three = ("class PairA : public PairBBPD {\n};\nclass PairB final : public PairA {\n};\n"
              "class PairC : public PairB, public Other {\n};\n")
     base = "class PairBBPD : public Pair {\n};\n"
-    assert levels_below_pair_bbpd(pair_class_bases([base, three])) == {
-        "PairBBPD": 0, "PairA": 1, "PairB": 2, "PairC": 3}
-    assert too_deep([base, three]) == ["PairC"]
-    before = base + ("class PairBBPDAlpha : public PairBBPD {\n};\n"
-                     "class PairBBPDPMB : public PairBBPDAlpha {\n};\n"
-                     "class PairBBPDLPS : public PairBBPDPMB {\n};\n"
-                     "class PairBBPDLPSKernel : public PairBBPDLPS {\n};\n")
-    assert too_deep([before]) == ["PairBBPDLPS", "PairBBPDLPSKernel"]
+    assert levels_below_pair(pair_class_bases([base, three])) == {
+        "PairBBPD": 1, "PairA": 2, "PairB": 3, "PairC": 4}
+    assert too_deep([base, three]) == ["PairB", "PairC"]
+    chain = base + ("class PairBBPDAlpha : public PairBBPD {\n};\n"
+                    "class PairBBPDPMB : public PairBBPDAlpha {\n};\n"
+                    "class PairBBPDLPS : public PairBBPDPMB {\n};\n"
+                    "class PairBBPDLPSKernel : public PairBBPDLPS {\n};\n")
+    assert too_deep([chain]) == ["PairBBPDLPS", "PairBBPDLPSKernel", "PairBBPDPMB"]
+    kernel_subclass = base + ("class PairBBPDLPS : public PairBBPD {\n};\n"
+                              "class PairBBPDLPSKernel : public PairBBPDLPS {\n};\n")
+    assert too_deep([kernel_subclass]) == ["PairBBPDLPSKernel"]
+
+
+# the per-atom state of the internal fixes is grown, migrated and written to restart files in
+# one place, FixBBPDAtomState (fix_bbpd_atom_state.h); the bond storage keeps its own
+STATE_BASE = "FixBBPDAtomState"
+OWN_PER_ATOM_RESTART = {"FixBBPDAtomState", "FixBBPDBonds"}
+
+
+def per_atom_restart_classes(texts):
+    """the classes declared in the header texts that write per-atom restart data themselves
+    (declare pack_restart)"""
+    found = set()
+    for text in texts:
+        code = without_comments(text)
+        decls = list(re.finditer(r"\bclass\s+(\w+)\s*(?:final\s*)?:[^{;]+\{", code))
+        for k, m in enumerate(decls):
+            body = code[m.end():decls[k + 1].start() if k + 1 < len(decls) else len(code)]
+            if re.search(r"\bpack_restart\s*\(", body):
+                found.add(m.group(1))
+    return found
+
+
+def test_fixes_with_per_atom_state_share_one_base():
+    texts = [p.read_text() for p in sorted(SRC.glob("fix_*.h"))]
+    assert per_atom_restart_classes(texts) == OWN_PER_ATOM_RESTART
+    bases = pair_class_bases(texts)
+    for fix in ("FixBBPDAlpha", "FixBBPDHistory", "FixBBPDWork", "FixBBPDLPS"):
+        assert bases[fix] == [STATE_BASE], (fix, bases.get(fix))
+
+
+def test_a_fix_with_its_own_per_atom_restart_is_found():
+    """negative control: fix bbpd/lps as it was, its three arrays packed by itself"""
+    before = ("class FixBBPDLPS : public Fix {\n public:\n  void grow_arrays(int) override;\n"
+              "  int pack_restart(int, double *) override;\n  double *dilatation;\n};\n")
+    assert per_atom_restart_classes([before]) == {"FixBBPDLPS"}
 
 
 def row_loops_outside_the_driver(files):

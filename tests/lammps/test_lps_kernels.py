@@ -1,5 +1,5 @@
 """Pair styles bbpd/lps/constant, bbpd/lps/triangular, bbpd/lps/gaussian (the kernel-weighted
-linear peridynamic solid, pair_bbpd_lps_kernel.h).
+linear peridynamic solid: PairBBPDLPS with its kernel coefficients, pair_bbpd_lps.h).
 
 Energy: a block at m = delta / dx = 5 deformed by u = eps . (x - x_c), uniform dilatation
 (eps = e I) and pure shear (eps_12 = eps_21 = e); the per-atom energy density (compute
