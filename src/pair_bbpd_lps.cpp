@@ -463,6 +463,10 @@ double PairBBPDLPS::time_path(BBPD::SimdPath p, int first, int last)
   const auto t0 = std::chrono::steady_clock::now();
   for (int i = first; i < last; i++) {
     sum += dilatation_of(i);
+    if (family != Family::LPS) {    // the family's own force rows (their history gathers)
+      sum += history_row_probe(i, states.data(), cache);
+      continue;
+    }
     const int n = bonds->nbond[i];
     BBPD::LPS::ForceLanes lanes;
     double snew;

@@ -41,6 +41,8 @@
 #include "pair_bbpd.h"
 #include "pair_bbpd_silling_askari_state.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class PairBBPDLPS : public PairBBPD {
@@ -132,7 +134,12 @@ class PairBBPDLPS : public PairBBPD {
   template <int EVFLAG, class F> void eval_history();
   template <int EVFLAG, class F> struct HistoryRow;
   template <class F> F family_of(int i) const;
-  int history_width() const;    // doubles per atom in fix bbpd/history
+  int history_width() const;
+  // the force row of local atom i of a family with history on the current path, with
+  // stand-in states and a scratch history, nothing kept (time_path's probe); a force of it
+  double history_row_probe(int i, const BBPD::LPS::AtomState *states, BBPD::CoefCache *cache);
+  std::vector<double> probe_history;    // the probe's scratch history and slots
+  std::vector<int> probe_slot;    // doubles per atom in fix bbpd/history
   double dilatation_of(int i);
   double time_path(BBPD::SimdPath p, int first, int last) override;
   template <int EVFLAG> void eval_lps();

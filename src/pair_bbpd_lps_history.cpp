@@ -26,6 +26,8 @@
 #include "memory.h"
 #include "update.h"
 
+#include <type_traits>
+
 using namespace LAMMPS_NS;
 namespace LPS = BBPD::LPS;
 
@@ -42,6 +44,44 @@ template <> BBPD::EPS::Family PairBBPDLPS::family_of<BBPD::EPS::Family>(int i) c
   const int t = atom->type[i];
   return {{shear[t][t], BBPD::EPS::pointwise_yield_value(yield_stress[t][t], horizon[t][t]),
            lps_state->weighted_volume[i]}};
+}
+
+double PairBBPDLPS::history_row_probe(int i, const LPS::AtomState *states, BBPD::CoefCache *cache)
+{
+  const int n = bonds->nbond[i];
+  if ((int) probe_slot.size() < n) {
+    probe_slot.resize(n);
+    for (int k = 0; k < n; k++) probe_slot[k] = k;
+    probe_history.assign(2 * (size_t) n, 0.0);    // BOND_HISTORY doubles of VES and EPS
+  }
+  const int t = atom->type[i];
+  const LPS::Moduli mod = moduli_of_type(t);
+  const LPS::HistoryCoefficients c{{mod.dilatational, mod.deviatoric, 0.0, 1.0, 0.0, 0.0, 0.0,
+                                    0.0, 0.0}, 0.0};
+  const double *xx = atom->x[0];
+  LPS::ForceLanes lanes;
+  double snew;
+  auto probe = [&](const auto &fam) {
+    using F = std::decay_t<decltype(fam)>;
+    static_assert(F::BOND_HISTORY == 2, "the probe's scratch history holds 2 doubles per bond end");
+    const typename F::Plan plan{};
+    bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
+      return BBPD::on_path(simd_path, [&](auto path) {
+        return decltype(path)::template lps_history_force<F, 0, 0, 0>(
+            xx, i, bj, vals, n, states, fam, plan, c, probe_slot.data(), probe_history.data(),
+            nullptr, &snew, lanes);
+      }, [&] {
+        return LPS::history_force_portable<F, 0, 0, 0>(
+            xx, i, bj, vals, n, states, fam, plan, c, probe_slot.data(), probe_history.data(),
+            [](int) { return 0.0; }, &snew, lanes);
+      });
+    });
+  };
+  if (family == Family::VES)
+    probe(BBPD::VES::Family{BBPD::VES::coeffs(shear[t][t], relax_share[t][t], relax_time[t][t], update->dt)});
+  else
+    probe(BBPD::EPS::Family{{shear[t][t], 1.0, 1.0}});
+  return lanes.fx[0];
 }
 
 int PairBBPDLPS::history_width() const
