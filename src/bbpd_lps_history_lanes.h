@@ -169,41 +169,8 @@ namespace LPS {
 
 #ifdef BBPD_AVX2
   /* The history kernels in 4-wide groups as for_each_group4 hands them out (lanes 0-3, 4-7 of
-     the 8-wide accumulators), each group's history gathered and written lane by lane. */
-  struct HistoryGroup4 {
-    __m256d m, dx, dy, dz, xi0, wv, tom, inv_m;
-    __m128i j1;
-  };
-  template <class Idx, class Values>
-  BBPD_GROUPS_INLINE inline HistoryGroup4 history_group4(const double *xx, const Idx *bj, int i, int n, int k, bool full,
-                                      __m256d xi, __m256d yi, __m256d zi, const Values &vals,
-                                      const AtomState *states)
-  {
-    HistoryGroup4 g;
-    if (full) {
-      const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
-                        partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
-      __m256d x, y, z;
-      load_positions(xx, j, x, y, z);
-      g.dx = _mm256_sub_pd(x, xi);
-      g.dy = _mm256_sub_pd(y, yi);
-      g.dz = _mm256_sub_pd(z, zi);
-      load_values_full(vals, bj, i, k, g.xi0, g.wv);
-      load_states4(states, j, g.tom, g.inv_m);
-      g.m = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-      g.j1 = _mm_loadu_si128(reinterpret_cast<const __m128i *>(j));
-    } else {
-      const TailGroup4 t(xx, bj, i, n, k, xi, yi, zi);
-      g.m = t.m;
-      g.dx = t.dx;
-      g.dy = t.dy;
-      g.dz = t.dz;
-      g.j1 = t.j1;
-      load_values(vals, t.m, t.m32, k, t.j1, g.xi0, g.wv);
-      gather_states4(states, t.j1, t.m, g.tom, g.inv_m);
-    }
-    return g;
-  }
+     the 8-wide accumulators; group4 of bbpd_lps_lanes.h), each group's history gathered and
+     written lane by lane. */
   // the history of the lanes in 'lanes' (bits) of bonds k..k+3, and writing it back
   template <class F> BBPD_GROUPS_INLINE inline void read_history4(const int *slot, double *hist, int k, int lanes,
                                                __m256d &h0, __m256d &h1)
@@ -242,7 +209,7 @@ namespace LPS {
     const Vec4 inv_m_i(states[i].inv_m), third(theta_third_i);
     __m256d acc[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()};
     auto group = [&](auto half, int k, bool full) BBPD_GROUPS_INLINE {
-      const HistoryGroup4 g = history_group4(xx, bj, i, n, k, full, xi, yi, zi, vals, states);
+      const Group4 g = group4(xx, bj, i, n, k, full, xi, yi, zi, vals, states);
       const int lanes = _mm256_movemask_pd(g.m);
       __m256d a, b;
       read_history4<F>(slot, hist, k, lanes, a, b);
@@ -275,7 +242,7 @@ namespace LPS {
     const bool has_m = c.inv_m_i > 0.0;
     ForceSums4x2<EV, CHECK> sums;
     auto group = [&](auto half, int k, bool full) BBPD_GROUPS_INLINE {
-      const HistoryGroup4 g = history_group4(xx, bj, i, n, k, full, xi, yi, zi, vals, states);
+      const Group4 g = group4(xx, bj, i, n, k, full, xi, yi, zi, vals, states);
       const __m256d ok = has_m ? _mm256_and_pd(g.m, _mm256_cmp_pd(g.inv_m, zero, _CMP_GT_OQ)) : zero;
       const int lanes = _mm256_movemask_pd(ok);
       __m256d a, b;

@@ -309,6 +309,43 @@ namespace LPS {
         _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz)));
   }
 
+  /* bonds k..k+3 of atom i as for_each_group4 hands them out: a full group (plain loads) or the
+     masked tail (gathers); their lanes m, partners, differences, values and partner states */
+  struct Group4 {
+    __m256d m, dx, dy, dz, xi0, wv, tom, inv_m;
+    __m128i j1;
+  };
+  template <class Idx, class Values>
+  BBPD_GROUPS_INLINE inline Group4 group4(const double *xx, const Idx *bj, int i, int n, int k, bool full,
+                                      __m256d xi, __m256d yi, __m256d zi, const Values &vals,
+                                      const AtomState *states)
+  {
+    Group4 g;
+    if (full) {
+      const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
+                        partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
+      __m256d x, y, z;
+      load_positions(xx, j, x, y, z);
+      g.dx = _mm256_sub_pd(x, xi);
+      g.dy = _mm256_sub_pd(y, yi);
+      g.dz = _mm256_sub_pd(z, zi);
+      load_values_full(vals, bj, i, k, g.xi0, g.wv);
+      load_states4(states, j, g.tom, g.inv_m);
+      g.m = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+      g.j1 = _mm_loadu_si128(reinterpret_cast<const __m128i *>(j));
+    } else {
+      const TailGroup4 t(xx, bj, i, n, k, xi, yi, zi);
+      g.m = t.m;
+      g.dx = t.dx;
+      g.dy = t.dy;
+      g.dz = t.dz;
+      g.j1 = t.j1;
+      load_values(vals, t.m, t.m32, k, t.j1, g.xi0, g.wv);
+      gather_states4(states, t.j1, t.m, g.tom, g.inv_m);
+    }
+    return g;
+  }
+
   /* the dilatation pass in two 4-wide halves (lanes 0-3, 4-7), as the AVX-512 kernel */
   template <class Idx, class Values>
   inline double dilatation_sum_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n)
@@ -407,7 +444,7 @@ namespace LPS {
                              const double *smin_all, double *snew, ForceLanes &out)
   {
     const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
-                  zi = _mm256_set1_pd(xx[3 * i + 2]), all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1)),
+                  zi = _mm256_set1_pd(xx[3 * i + 2]),
                   zero = _mm256_setzero_pd();
     const bool has_m = c.inv_m_i > 0.0;
     ForceSums4x2<EV, CHECK> sums;
@@ -423,27 +460,14 @@ namespace LPS {
       sums.template add<H, MASKED>(m, dx, dy, dz, fpl, energy_term(c, Vec4(wv), Vec4(xi0), Vec4(e)).v);
       sums.template check<MASKED>(m, e, xi0, smin_j, c);
     };
-    auto full = [&](auto half, int k) BBPD_GROUPS_INLINE {
-      const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
-                        partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
-      __m256d x, y, z, xi0, wv, tom, inv_m;
-      load_positions(xx, j, x, y, z);
-      load_values_full(vals, bj, i, k, xi0, wv);
-      load_states4(states, j, tom, inv_m);
-      const __m256d smin_j = CHECK ? _mm256_setr_pd(smin_all[j[0]], smin_all[j[1]], smin_all[j[2]], smin_all[j[3]])
-                                   : zero;
-      add(half, std::false_type(), all, _mm256_sub_pd(x, xi), _mm256_sub_pd(y, yi), _mm256_sub_pd(z, zi),
-          xi0, wv, tom, inv_m, smin_j);
+    auto group = [&](auto half, auto masked, int k) BBPD_GROUPS_INLINE {
+      const Group4 g = group4(xx, bj, i, n, k, !decltype(masked)::value, xi, yi, zi, vals, states);
+      const __m256d smin_j =
+          CHECK ? _mm256_mask_i32gather_pd(_mm256_set1_pd(c.smin_i), smin_all, g.j1, g.m, 8) : zero;
+      add(half, masked, g.m, g.dx, g.dy, g.dz, g.xi0, g.wv, g.tom, g.inv_m, smin_j);
     };
-    auto tail = [&](auto half, int k) BBPD_GROUPS_INLINE {
-      const TailGroup4 g(xx, bj, i, n, k, xi, yi, zi);
-      __m256d xi0, wv, tom, inv_m;
-      load_values(vals, g.m, g.m32, k, g.j1, xi0, wv);
-      gather_states4(states, g.j1, g.m, tom, inv_m);
-      const __m256d smin_j = CHECK ? _mm256_mask_i32gather_pd(_mm256_set1_pd(c.smin_i), smin_all, g.j1, g.m, 8) : zero;
-      add(half, std::true_type(), g.m, g.dx, g.dy, g.dz, xi0, wv, tom, inv_m, smin_j);
-    };
-    for_each_group4(n, full, tail);
+    for_each_group4(n, [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, std::false_type(), k); },
+                    [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, std::true_type(), k); });
     return sums.store(out, snew);
   }
 #define lps_dilatation_simd BBPD::LPS::dilatation_sum_avx2
