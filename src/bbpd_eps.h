@@ -50,9 +50,9 @@ namespace EPS {
 
   // the coefficients of atom i's type and its weighted volume
   struct Coeffs {
-    double shear;    // G
-    double psi0;     // pointwise yield value
-    double m;        // weighted volume m_i
+    double deviatoric;    // 15 G of the force state (Moduli::deviatoric, bbpd_lps.h)
+    double psi0;          // pointwise yield value
+    double m;             // weighted volume m_i
   };
 
   /* the family as the history row uses it (bbpd_lps_history_row.h) */
@@ -61,8 +61,6 @@ namespace EPS {
     static constexpr int ATOM_HISTORY = 2;    // lambda, |td| of the last evaluation
     static constexpr int LAMBDA = 0, NORM = 1;
     static constexpr bool NEEDS_NORM = true;
-    static constexpr double SHEAR_FACTOR = 15.0;    // 15 G of the deviatoric force state
-    static constexpr double BULK_FACTOR = 3.0;      // 3K of the dilatational one
     struct Plan {
       bool plastic;
       double scale;    // sqrt(2 psi0) / |td| when plastic
@@ -82,7 +80,7 @@ namespace EPS {
     template <bool ROLL, class V> V norm_term_v(V wv, V omega, V ed, V inv_sum, V &h0, V &h1) const
     {
       if (ROLL) h0 = h1;
-      const V s = V(SHEAR_FACTOR * c.shear) * inv_sum * (ed - h0);
+      const V s = V(c.deviatoric) * inv_sum * (ed - h0);
       return (s * omega) * (s * wv);
     }
     // elastic or plastic from the norm of the row
@@ -91,7 +89,7 @@ namespace EPS {
       const double fsurf = 0.5 * (norm * norm) - c.psi0;
       if (!(fsurf > 0.0)) return {false, 1.0, 0.0};
       const double root = std::sqrt(2.0 * c.psi0);
-      return {true, root / norm, (norm / root - 1.0) * c.m / (SHEAR_FACTOR * c.shear)};
+      return {true, root / norm, (norm / root - 1.0) * c.m / c.deviatoric};
     }
     /* the deviatoric force state of a bond end with w V (the td V_j ramp term of t_ij); COMMIT
        writes the new edp into h[1]; energy: w V (ed - edp)^2 */
@@ -107,7 +105,7 @@ namespace EPS {
                    V &energy) const
     {
       const V d = ed - h0;
-      const V k = V(SHEAR_FACTOR * c.shear) * inv_sum * d;
+      const V k = V(c.deviatoric) * inv_sum * d;
       energy = wv * (d * d);
       if (!p.plastic) {
         if (COMMIT) h1 = V(0.0);

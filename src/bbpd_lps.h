@@ -106,6 +106,12 @@ namespace LPS {
             DILATATION_FACTOR};
   }
 
+  // the dilatational coefficient d K of the force state split as the families with history
+  // write it, t = d K w V (theta_i / m_i + theta_j / m_j) xi0 + d (d + 2) G w V (1 / m_i +
+  // 1 / m_j) ed with ed = e - theta_i xi0 / d (3K and 15 G in 3D: peri/ves, peri/eps; the
+  // -(d + 2) G of the dilatational coefficient above is carried by ed)
+  inline double split_dilatational(const Moduli &m) { return m.dimension * m.bulk; }
+
   // the per-atom values a bond reads at each end: theta / m and 1 / m (0 without weighted volume)
   struct AtomState {
     double theta_over_m, inv_m;

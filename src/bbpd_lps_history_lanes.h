@@ -23,7 +23,7 @@
 namespace BBPD {
 namespace LPS {
 
-  // what a history row reads of atom i: the LPS row's numbers and F::BULK_FACTOR K
+  // what a history row reads of atom i: the LPS row's numbers and d K (split_dilatational)
   struct HistoryCoefficients : RowCoefficients {
     double bulk_term;
   };

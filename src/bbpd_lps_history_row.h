@@ -8,8 +8,6 @@
 
    A family F provides
      F::BOND_HISTORY, F::ATOM_HISTORY   doubles of history per bond end and per atom
-     F::BULK_FACTOR                     the dilatational coefficient of the force state is
-                                        BULK_FACTOR K (3K for peri/ves and peri/eps)
      F::NEEDS_NORM, F::Plan             what the family decides once per row before its bonds
                                         (EPS: elastic or plastic from the norm of the trial
                                         state, norm_term() per bond, plan(norm)); else Plan is
@@ -21,8 +19,10 @@
                                         advances h; energy: its term of atom i's deviatoric
                                         energy before the factor 15 G / (2 m_i)
    so the force state of bond i-j is
-     t_ij = BULK_FACTOR K wV (theta_i / m_i + theta_j / m_j) xi0 + deviatoric(...),
-   ed = e - theta_i xi0 / 3; zero unless both ends have a weighted volume (as bbpd_lps.h).
+     t_ij = d K wV (theta_i / m_i + theta_j / m_j) xi0 + deviatoric(...),
+   d K the split dilatational coefficient (split_dilatational, bbpd_lps.h: 3K for peri/ves and
+   peri/eps), ed = e - theta_i xi0 / d; zero unless both ends have a weighted volume (as
+   bbpd_lps.h).
    Bond k of the row (its k-th intact bond) keeps its history at hist + B slot[k].
 ------------------------------------------------------------------------- */
 
@@ -38,7 +38,7 @@ namespace LPS {
 
   // the force state of one bond end of a family with history (see above)
   template <class F, bool COMMIT>
-  inline double history_force_state(double bulk, const F &fam, const typename F::Plan &plan,
+  inline double history_force_state(double dilatational, const F &fam, const typename F::Plan &plan,
                                     double wv, double xi0, double e, double theta_third_i,
                                     const AtomState &a, const AtomState &b, double *h,
                                     double &energy)
@@ -46,7 +46,7 @@ namespace LPS {
     energy = 0.0;
     if (!(a.inv_m > 0.0 && b.inv_m > 0.0)) return 0.0;
     const double ed = deviatoric_extension(e, xi0, theta_third_i);
-    return F::BULK_FACTOR * bulk * wv * (a.theta_over_m + b.theta_over_m) * xi0 +
+    return dilatational * wv * (a.theta_over_m + b.theta_over_m) * xi0 +
         fam.template deviatoric<COMMIT>(plan, wv, influence(xi0), xi0, ed, a.inv_m + b.inv_m, h,
                                         energy);
   }
@@ -79,7 +79,7 @@ namespace LPS {
   template <class F, bool EV, bool CHECK, bool CACHED, bool COMMIT, class Idx, class Values,
             class Check>
   inline bool history_row_sums(const double *xx, int i, const Idx *bj, const Values &vals, int n,
-                               const double *r_row, const AtomState *states, double bulk,
+                               const double *r_row, const AtomState *states, double dilatational,
                                const F &fam, const typename F::Plan &plan, double theta_third_i,
                                const int *slot, double *hist, Check check, RowSums &out)
   {
@@ -96,7 +96,7 @@ namespace LPS {
       const double e = elongation(r, xi0);
       double energy;
       const double t =
-          history_force_state<F, COMMIT>(bulk, fam, plan, wv, xi0, e, theta_third_i, si, states[j],
+          history_force_state<F, COMMIT>(dilatational, fam, plan, wv, xi0, e, theta_third_i, si, states[j],
                                          hist + F::BOND_HISTORY * slot[k], energy);
       const double fpl = r > 0.0 ? t / r : 0.0;
       ax += fpl * dx;

@@ -10,7 +10,9 @@
    partner j, w V = omega V_j ramp):
      t_ij = 3K w V (theta_i / m_i + theta_j / m_j) xi0
           + 15 G w V (1 / m_i + 1 / m_j) ((1 - lambda) ed + lambda (ed - edb))
-   ed = e - theta_i xi0 / 3 is the deviatoric extension (atom i's dilatation only), edb the
+   (in d dimensions d K and d (d + 2) G, split_dilatational and Moduli::deviatoric of
+   bbpd_lps.h: the kernel styles bbpd/ves/KERNEL in plane strain and plane stress)
+   ed = e - theta_i xi0 / d is the deviatoric extension (atom i's dilatation only), edb the
    back extension of the bond end, a dashpot of relaxation time tau in series with a spring:
    per step dt, from the last step's ed_n and edb_n,
      edb = ed_n (1 - decay) + edb_n decay + beta (ed - ed_n),
@@ -31,16 +33,16 @@ namespace VES {
 
   // the coefficients of atom i's type for a time step dt
   struct Coeffs {
-    double shear;     // G
-    double lambda;    // relaxing share of G
+    double deviatoric;    // d (d + 2) G of the force state (Moduli::deviatoric, bbpd_lps.h)
+    double lambda;        // relaxing share of G
     double decay;     // exp(-dt / tau)
     double beta;      // 1 - (tau / dt) (1 - decay)
   };
-  inline Coeffs coeffs(double shear, double lambda, double tau, double dt)
+  inline Coeffs coeffs(double deviatoric, double lambda, double tau, double dt)
   {
     const double c1 = tau / dt;    // peri/ves's names
     const double decay = std::exp(-1.0 / c1);
-    return {shear, lambda, decay, 1.0 - c1 * (1.0 - decay)};
+    return {deviatoric, lambda, decay, 1.0 - c1 * (1.0 - decay)};
   }
 
   // the back extension of this step from the bond end's history (ed_n, edb_n) and ed, over any
@@ -55,10 +57,6 @@ namespace VES {
     static constexpr int BOND_HISTORY = 2;    // ed and edb of the last evaluation
     static constexpr int ATOM_HISTORY = 0;
     static constexpr bool NEEDS_NORM = false;
-    // the deviatoric modulus of the force state, 15 G (Silling et al. 2007, eq. 95)
-    static constexpr double SHEAR_FACTOR = 15.0;
-    // peri/ves's dilatational coefficient is 3K (peri/lps: 3K - 5G): ed carries the -5G
-    static constexpr double BULK_FACTOR = 3.0;
     struct Plan {};    // nothing over the row
 
     Coeffs c;
@@ -84,7 +82,7 @@ namespace VES {
         h0 = ed;
         h1 = edb;
       }
-      const V k = V(SHEAR_FACTOR * c.shear) * wv * inv_sum;
+      const V k = V(c.deviatoric) * wv * inv_sum;
       const V eb = ed - edb;
       energy = wv * (V(1.0 - c.lambda) * (ed * ed) + V(c.lambda) * (eb * eb));
       return V(1.0 - c.lambda) * k * ed + V(c.lambda) * k * eb;

@@ -77,6 +77,10 @@ template <class K> Pair *lps_kernel_pair_creator(LAMMPS *lmp)
 {
   return new PairBBPDLPS(lmp, BBPD::kernel_info<K>());
 }
+template <class K> Pair *ves_kernel_pair_creator(LAMMPS *lmp)
+{
+  return new PairBBPDLPS(lmp, BBPD::kernel_info<K>(), PairBBPDLPS::Family::VES);
+}
 Fix *lps_state_creator(LAMMPS *lmp, int narg, char **arg)
 {
   return new FixBBPDLPS(lmp, narg, arg);
@@ -213,6 +217,18 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "bbpd/lps/gaussian";
   plugin.info = "BBPD pair style, the linear peridynamic solid with the Gaussian influence function, v" BBPD_VERSION;
   plugin.creator.v1 = (lammpsplugin_factory1 *) &lps_kernel_pair_creator<BBPD::GaussianKernel>;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/ves/constant";
+  plugin.info = "BBPD pair style, the viscoelastic solid of peri/ves with the constant influence function, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &ves_kernel_pair_creator<BBPD::ConstantKernel>;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/ves/triangular";
+  plugin.info = "BBPD pair style, the viscoelastic solid of peri/ves with the triangular influence function, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &ves_kernel_pair_creator<BBPD::TriangularKernel>;
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = "bbpd/ves/gaussian";
+  plugin.info = "BBPD pair style, the viscoelastic solid of peri/ves with the Gaussian influence function, v" BBPD_VERSION;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &ves_kernel_pair_creator<BBPD::GaussianKernel>;
   (*register_plugin)(&plugin, lmp);
 
   plugin.style = "fix";

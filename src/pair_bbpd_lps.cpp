@@ -48,6 +48,8 @@ static constexpr double PERI_LPS_DEVIATORIC_SHARE = 0.5;
 static constexpr double WHOLE_DEVIATORIC_ENERGY = 1.0;
 // forward communication: theta / m and 1 / m of every ghost atom
 static constexpr int LPS_FORWARD_VALUES = 2;
+// pair_coeff I J K G delta s00 alpha: the arguments before a family's own
+static constexpr int PERI_COEFFS = 7;
 
 /* ---------------------------------------------------------------------- */
 
@@ -70,8 +72,8 @@ PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, Family f) :
 {
 }
 
-PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, BBPD::KernelInfo k) :
-    PairBBPDLPS(lmp, Family::LPS, Coefficients::KERNEL, k, std::string("bbpd/lps/") + k.name)
+PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, BBPD::KernelInfo k, Family f) :
+    PairBBPDLPS(lmp, f, Coefficients::KERNEL, k, std::string(style_of(f)) + "/" + k.name)
 {
 }
 
@@ -154,34 +156,42 @@ const char *PairBBPDLPS::family_coeffs() const
          "pair_coeff peri/lps)";
 }
 
-/* the family's numbers after alpha (arg[7] on) */
-void PairBBPDLPS::check_family_coeffs(char **arg)
+/* the family's own numbers (own[0] on: after alpha, or after delta for the kernel styles) */
+void PairBBPDLPS::check_family_coeffs(char **own)
 {
   if (family == Family::VES) {
-    const double lambda = utils::numeric(FLERR, arg[7], false, lmp);
-    const double tau = utils::numeric(FLERR, arg[8], false, lmp);
+    const double lambda = utils::numeric(FLERR, own[0], false, lmp);
+    const double tau = utils::numeric(FLERR, own[1], false, lmp);
     if (!(lambda >= 0.0 && lambda <= 1.0))
-      error->all(FLERR, "Pair coeff for bbpd/ves: lambda (the relaxing share of the shear "
-                 "modulus) must be in [0, 1], got {}", lambda);
+      error->all(FLERR, "Pair coeff for {}: lambda (the relaxing share of the shear "
+                 "modulus) must be in [0, 1], got {}", style, lambda);
     if (!(tau > 0.0) || !std::isfinite(tau))
-      error->all(FLERR, "Pair coeff for bbpd/ves: the relaxation time tau must be > 0 and "
-                 "finite, got {}", tau);
+      error->all(FLERR, "Pair coeff for {}: the relaxation time tau must be > 0 and "
+                 "finite, got {}", style, tau);
   } else if (family == Family::EPS) {
-    const double y = utils::numeric(FLERR, arg[7], false, lmp);
+    const double y = utils::numeric(FLERR, own[0], false, lmp);
     if (!(y > 0.0) || !std::isfinite(y))
-      error->all(FLERR, "Pair coeff for bbpd/eps: the yield stress must be > 0 and finite, "
-                 "got {}", y);
+      error->all(FLERR, "Pair coeff for {}: the yield stress must be > 0 and finite, "
+                 "got {}", style, y);
   }
 }
 
-void PairBBPDLPS::set_family_coeffs(int i, int j, char **arg)
+void PairBBPDLPS::set_family_coeffs(int i, int j, char **own)
 {
   if (family == Family::VES) {
-    relax_share[i][j] = relax_share[j][i] = utils::numeric(FLERR, arg[7], false, lmp);
-    relax_time[i][j] = relax_time[j][i] = utils::numeric(FLERR, arg[8], false, lmp);
+    relax_share[i][j] = relax_share[j][i] = utils::numeric(FLERR, own[0], false, lmp);
+    relax_time[i][j] = relax_time[j][i] = utils::numeric(FLERR, own[1], false, lmp);
   } else if (family == Family::EPS) {
-    yield_stress[i][j] = yield_stress[j][i] = utils::numeric(FLERR, arg[7], false, lmp);
+    yield_stress[i][j] = yield_stress[j][i] = utils::numeric(FLERR, own[0], false, lmp);
   }
+}
+
+/* the family's numbers in the report's type pair line */
+std::string PairBBPDLPS::family_report(int i, int j) const
+{
+  return family == Family::VES
+      ? fmt::format("  lambda = {:.6g}  tau = {:.6g}", relax_share[i][j], relax_time[i][j])
+      : family == Family::EPS ? fmt::format("  yield stress = {:.8g}", yield_stress[i][j]) : "";
 }
 
 void PairBBPDLPS::coeff(int narg, char **arg)
@@ -189,7 +199,7 @@ void PairBBPDLPS::coeff(int narg, char **arg)
   if (coefficients == Coefficients::KERNEL) return kernel_coeff(narg, arg);
   if (!allocated) allocate();
   allocate_moduli();
-  if (narg != 7 + family_args())
+  if (narg != PERI_COEFFS + family_args())
     error->all(FLERR, "Pair coeff for {}: expected {}, got {} arguments", style_of(family),
                family_coeffs(), narg);
   int ilo, ihi, jlo, jhi;
@@ -206,7 +216,7 @@ void PairBBPDLPS::coeff(int narg, char **arg)
   if (!(s00 > 0.0)) error->all(FLERR, "Pair coeff for {}: s00 must be > 0", style_of(family));
   if (!(a >= 0.0) || !std::isfinite(a))
     error->all(FLERR, "Pair coeff for {}: alpha must be >= 0", style_of(family));
-  check_family_coeffs(arg);
+  check_family_coeffs(arg + PERI_COEFFS);
 
   int count = 0;
   for (int i = ilo; i <= ihi; i++)
@@ -221,7 +231,7 @@ void PairBBPDLPS::coeff(int narg, char **arg)
       alpha[i][j] = a;
       bulk[i][j] = bulk[j][i] = K;
       shear[i][j] = shear[j][i] = G;
-      set_family_coeffs(i, j, arg);
+      set_family_coeffs(i, j, arg + PERI_COEFFS);
       setflag[i][j] = 1;
       count++;
     }
@@ -323,29 +333,35 @@ double PairBBPDLPS::bond_stiffness(int i, int k) const
 std::string PairBBPDLPS::report_type_pair(int i, int j) const
 {
   if (coefficients == Coefficients::KERNEL) return kernel_report_type_pair(i, j);
-  const std::string own = family == Family::VES
-      ? fmt::format("  lambda = {:.6g}  tau = {:.6g}", relax_share[i][j], relax_time[i][j])
-      : family == Family::EPS ? fmt::format("  yield stress = {:.8g}", yield_stress[i][j]) : "";
   return fmt::format("  types {} {}: {}: K = {:.8g}  G = {:.8g}  horizon = {:.6g}  "
                      "s00 = {:.8g}  alpha = {:.6g}{}\n", i, j, peri_style_of(family), bulk[i][j],
-                     shear[i][j], horizon[i][j], critical_stretch[i][j], alpha[i][j], own);
+                     shear[i][j], horizon[i][j], critical_stretch[i][j], alpha[i][j],
+                     family_report(i, j));
 }
 
 std::string PairBBPDLPS::report_rules() const
 {
   if (coefficients == Coefficients::KERNEL) return kernel_report_rules();
-  const char *own = family == Family::VES
-      ? "  peri/ves history: per bond end the deviatoric extension and back extension of the "
-        "last step (relaxation over the time step, exp(-dt/tau))\n"
-      : family == Family::EPS
-      ? "  peri/eps history: per bond end the plastic deviatoric extension, per atom lambda; "
-        "plastic steps return the deviatoric state to the yield surface\n"
-      : "";
   return peri_rules_report(lattice_constant) +
       fmt::format("  {} state: influence function 1/|xi|, weighted volume m fixed at the first "
                   "evaluation, dilatation theta every step (sent to the ghost atoms); stable time "
                   "step estimated as for a PMB bond of the same bulk modulus, c = 18 K / (pi "
-                  "delta^4)\n", peri_style_of(family)) + own;
+                  "delta^4)\n", peri_style_of(family)) + history_report();
+}
+
+/* the report's line on the family's history (none for the LPS) */
+std::string PairBBPDLPS::history_report() const
+{
+  const std::string name = coefficients == Coefficients::KERNEL ? style : peri_style_of(family);
+  if (family == Family::VES)
+    return fmt::format("  {} history: per bond end the deviatoric extension and back extension "
+                       "of the last step (relaxation over the time step, exp(-dt/tau))\n",
+                       name);
+  if (family == Family::EPS)
+    return fmt::format("  {} history: per bond end the plastic deviatoric extension, per atom "
+                       "lambda; plastic steps return the deviatoric state to the yield "
+                       "surface\n", name);
+  return "";
 }
 
 int PairBBPDLPS::pack_forward_comm(int n, int *list, double *buf, int, int *)

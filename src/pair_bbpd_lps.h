@@ -30,7 +30,9 @@
    MODEL is 3d, plane/strain or plane/stress (the 2D LPS of Le, Chan & Schwartz 2014); atom i
    tallies its whole deviatoric energy; a bond breaks past the s0 derived from G_c
    (Silling-Askari alpha 0), 'none' never. The bond storage, dilatation pass, ghost exchange,
-   force loop, short-range forces, fix bbpd/lps state and restart are the same.
+   force loop, short-range forces, fix bbpd/lps state and restart are the same. With
+   Family::VES the same coefficients give bbpd/ves/KERNEL ('pair_coeff I J E nu Gc delta lambda
+   tau'); the history row takes d K and d (d + 2) G from the model, so it runs in 2D as well.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_BBPD_LPS_H
@@ -38,6 +40,7 @@
 
 #include "bbpd_lps.h"
 #include "bbpd_silling_askari.h"
+#include "bbpd_ves.h"
 #include "pair_bbpd.h"
 #include "pair_bbpd_silling_askari_state.h"
 
@@ -56,8 +59,9 @@ class PairBBPDLPS : public PairBBPD {
   // (bbpd_lps_lanes.h)
   // bbpd/lps, bbpd/ves, bbpd/eps: a family with peri/*'s numbers
   PairBBPDLPS(class LAMMPS *, Family = Family::LPS);
-  // bbpd/lps/KERNEL: the LPS with the kernel as influence function and its calibration
-  PairBBPDLPS(class LAMMPS *, BBPD::KernelInfo);
+  // bbpd/lps/KERNEL, bbpd/ves/KERNEL: the family with the kernel as influence function and
+  // its calibration
+  PairBBPDLPS(class LAMMPS *, BBPD::KernelInfo, Family = Family::LPS);
   ~PairBBPDLPS() override;
 
   void settings(int, char **) override;
@@ -127,13 +131,16 @@ class PairBBPDLPS : public PairBBPD {
   BBPD::SillingAskariCoefficients breaking_rule() const;
   int family_args() const;
   const char *family_coeffs() const;
-  void check_family_coeffs(char **arg);
+  void check_family_coeffs(char **own);
   void check_history_solver() const;    // VES, EPS: no minimize, no fix bbpd/relax
-  void set_family_coeffs(int i, int j, char **arg);
+  void set_family_coeffs(int i, int j, char **own);
+  std::string family_report(int i, int j) const;
+  std::string history_report() const;
   void find_bond_slots();
   template <int EVFLAG, class F> void eval_history();
   template <int EVFLAG, class F> struct HistoryRow;
   template <class F> F family_of(int i) const;
+  BBPD::VES::Family ves_of_type(int itype) const;
   int history_width() const;
   // the force row of local atom i of a family with history on the current path, with
   // stand-in states and a scratch history, nothing kept (time_path's probe); a force of it

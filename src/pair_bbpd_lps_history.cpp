@@ -32,17 +32,23 @@ using namespace LAMMPS_NS;
 namespace LPS = BBPD::LPS;
 
 /* the family's coefficients for the row of local atom i (peri/ves and peri/eps take atom i's
-   type) */
+   type); the deviatoric modulus d (d + 2) G of its model (15 G in 3D) */
+BBPD::VES::Family PairBBPDLPS::ves_of_type(int t) const
+{
+  return {BBPD::VES::coeffs(moduli_of_type(t).deviatoric, relax_share[t][t], relax_time[t][t],
+                            update->dt)};
+}
+
 template <> BBPD::VES::Family PairBBPDLPS::family_of<BBPD::VES::Family>(int i) const
 {
-  const int t = atom->type[i];
-  return {BBPD::VES::coeffs(shear[t][t], relax_share[t][t], relax_time[t][t], update->dt)};
+  return ves_of_type(atom->type[i]);
 }
 
 template <> BBPD::EPS::Family PairBBPDLPS::family_of<BBPD::EPS::Family>(int i) const
 {
   const int t = atom->type[i];
-  return {{shear[t][t], BBPD::EPS::pointwise_yield_value(yield_stress[t][t], horizon[t][t]),
+  return {{moduli_of_type(t).deviatoric,
+           BBPD::EPS::pointwise_yield_value(yield_stress[t][t], horizon[t][t]),
            lps_state->weighted_volume[i]}};
 }
 
@@ -78,9 +84,9 @@ double PairBBPDLPS::history_row_probe(int i, const LPS::AtomState *states, BBPD:
     });
   };
   if (family == Family::VES)
-    probe(BBPD::VES::Family{BBPD::VES::coeffs(shear[t][t], relax_share[t][t], relax_time[t][t], update->dt)});
+    probe(ves_of_type(t));
   else
-    probe(BBPD::EPS::Family{{shear[t][t], 1.0, 1.0}});
+    probe(BBPD::EPS::Family{{mod.deviatoric, 1.0, 1.0}});
   return lanes.fx[0];
 }
 
@@ -199,7 +205,7 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
     const LPS::HistoryCoefficients c{{mod.dilatational, mod.deviatoric, si.theta_over_m, si.inv_m,
                                       theta_third_i, this->sa.s00_one, this->sa.alpha_one, smin_i,
                                       this->margin},
-                                     F::BULK_FACTOR * mod.bulk};
+                                     LPS::split_dilatational(mod)};
     constexpr int EV = EVFLAG != 0, CH = CHECK, CO = COMMIT;
     LPS::ForceLanes lanes;
     const bool past = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
@@ -253,7 +259,7 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
     const int kr = k - p.bonds->bond_start[i];
     double energy;
     const double t = LPS::history_force_state<F, false>(
-        mod.bulk, fam, plan, p.bonds->coef_of(i, k, xi0), xi0, e, theta_third_i, si,
+        LPS::split_dilatational(mod), fam, plan, p.bonds->coef_of(i, k, xi0), xi0, e, theta_third_i, si,
         p.atom_states[j], hist + F::BOND_HISTORY * slot[kr + nlost], energy);
     const double fpl = r > 0.0 ? t / r : 0.0;
     fb[0] += fpl * dx;

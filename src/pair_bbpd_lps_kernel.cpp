@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
-   BBPD plugin: pair styles bbpd/lps/KERNEL, PairBBPDLPS with Coefficients::KERNEL
+   BBPD plugin: pair styles bbpd/lps/KERNEL and bbpd/ves/KERNEL, PairBBPDLPS with
+   Coefficients::KERNEL
    (pair_bbpd_lps.h): the model and the coefficients E nu Gc delta, turned into the LPS moduli
    and critical stretch of bbpd_lps_kernel.h, the stable time step's bond and the report; the
    rest is bbpd/lps (pair_bbpd_lps.cpp).
@@ -21,6 +22,9 @@
 using namespace LAMMPS_NS;
 namespace LPS = BBPD::LPS;
 
+// pair_coeff I J E nu Gc delta: the arguments before a family's own (bbpd/ves/KERNEL: lambda tau)
+static constexpr int KERNEL_COEFFS = 6;
+
 /* pair_style bbpd/lps/KERNEL MODEL [thickness h] [keywords]: the models of the LPS */
 void PairBBPDLPS::kernel_settings(int narg, char **arg)
 {
@@ -32,17 +36,18 @@ void PairBBPDLPS::kernel_settings(int narg, char **arg)
 }
 
 /* ----------------------------------------------------------------------
-   pair_coeff I J E nu Gc|none delta (SI, as the bond-based styles)
+   pair_coeff I J E nu Gc|none delta (SI, as the bond-based styles) [lambda tau (VES)]
 ------------------------------------------------------------------------- */
 
 void PairBBPDLPS::kernel_coeff(int narg, char **arg)
 {
   if (!allocated) allocate();
   allocate_moduli();
-  if (narg != 6)
-    error->all(FLERR, "Pair coeff for {}: expected 'I J E nu Gc delta' (Young's modulus, "
-               "Poisson's ratio, fracture energy or 'none', horizon), got {} arguments",
-               style, narg);
+  if (narg != KERNEL_COEFFS + family_args())
+    error->all(FLERR, "Pair coeff for {}: expected 'I J E nu Gc delta{}' (Young's modulus, "
+               "Poisson's ratio, fracture energy or 'none', horizon{}), got {} arguments",
+               style, family == Family::VES ? " lambda tau" : "",
+               family == Family::VES ? ", relaxing share of G, relaxation time" : "", narg);
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
@@ -61,6 +66,7 @@ void PairBBPDLPS::kernel_coeff(int narg, char **arg)
     error->all(FLERR, "Pair coeff for {}: the fracture energy Gc must be > 0 (or 'none' for "
                "bonds that never break)", style);
   if (!(delta > 0.0)) error->all(FLERR, "Pair coeff for {}: the horizon delta must be > 0", style);
+  check_family_coeffs(arg + KERNEL_COEFFS);
 
   const LPS::Moduli mod = LPS::moduli_of(model, E, nu);
   int count = 0;
@@ -77,6 +83,7 @@ void PairBBPDLPS::kernel_coeff(int narg, char **arg)
       alpha[i][j] = 0.0;    // a fixed critical stretch
       bulk[i][j] = bulk[j][i] = mod.bulk;
       shear[i][j] = shear[j][i] = mod.shear;
+      set_family_coeffs(i, j, arg + KERNEL_COEFFS);
       setflag[i][j] = 1;
       count++;
     }
@@ -96,10 +103,11 @@ std::string PairBBPDLPS::kernel_report_type_pair(int i, int j) const
 {
   // E and Gc first, as the bond-based styles print them (scripts read the line)
   return fmt::format("  types {} {}: E = {:.8g}  Gc = {:.6g}  nu = {:.6g}  LPS: K = {:.8g}  "
-                     "G = {:.8g}  horizon = {:.6g}  critical_stretch s0 = {:.8g}\n", i, j,
+                     "G = {:.8g}  horizon = {:.6g}  critical_stretch s0 = {:.8g}{}\n", i, j,
                      youngs[i][j], fracture_energy[i][j],
                      youngs[i][j] / (2.0 * shear[i][j]) - 1.0,    // G = E / (2 (1 + nu))
-                     bulk[i][j], shear[i][j], horizon[i][j], critical_stretch[i][j]);
+                     bulk[i][j], shear[i][j], horizon[i][j], critical_stretch[i][j],
+                     family_report(i, j));
 }
 
 std::string PairBBPDLPS::kernel_report_rules() const
@@ -108,5 +116,5 @@ std::string PairBBPDLPS::kernel_report_rules() const
       fmt::format("  LPS state: influence function the {} kernel W(|xi|/delta), dilatation "
                   "factor d = {}, weighted volume m fixed at the first evaluation; stable time "
                   "step estimated as for the bond-based bond of the same E\n", kernel.name,
-                  dimension);
+                  dimension) + history_report();
 }

@@ -296,10 +296,10 @@ template <class F, int EV, int CHECK> void expect_history_bits(const F &fam, con
 
 TEST(LpsLanes, HistoryKernelsGiveThePortableBits)
 {
-  const VES::Family ves{VES::coeffs(G, 0.5, 1e-5, 1e-7)};
+  const VES::Family ves{VES::coeffs(15.0 * G, 0.5, 1e-5, 1e-7)};
   expect_history_bits<VES::Family, 0, 0>(ves, {});
   expect_history_bits<VES::Family, 1, 1>(ves, {});
-  const EPS::Family eps{{G, EPS::pointwise_yield_value(1e8, DELTA), 5e-15}};
+  const EPS::Family eps{{15.0 * G, EPS::pointwise_yield_value(1e8, DELTA), 5e-15}};
   for (const EPS::Family::Plan plan : {EPS::Family::Plan{false, 1.0, 0.0}, EPS::Family::Plan{true, 0.7, 1e-3}}) {
     expect_history_bits<EPS::Family, 0, 0>(eps, plan);
     expect_history_bits<EPS::Family, 1, 1>(eps, plan);

@@ -23,6 +23,7 @@ namespace LPS = BBPD::LPS;
 namespace {
 
 constexpr double G = 14.9e9;
+constexpr double DEVIATORIC = 15.0 * G;    // d (d + 2) G of the 3D force state (Moduli::deviatoric)
 constexpr double DT = 1.0e-7;
 constexpr double TAU = 20 * DT;
 constexpr double WV = 3.0e-7, INV_SUM = 2.0e10;    // a bond's w V and 1/m_i + 1/m_j
@@ -39,7 +40,7 @@ template <class Ed> double back_extension_after(const VES::Coeffs &c, int n, Ed 
 
 TEST(Ves, HeldExtensionRelaxesByDecayPerStep)
 {
-  const VES::Coeffs c = VES::coeffs(G, 0.5, TAU, DT);
+  const VES::Coeffs c = VES::coeffs(DEVIATORIC, 0.5, TAU, DT);
   EXPECT_DOUBLE_EQ(c.decay, std::exp(-DT / TAU));
   const double e = 1.0e-6;
   // ed jumps to e at step 1 and is held: e - edb shrinks by decay every further step
@@ -57,7 +58,7 @@ TEST(Ves, HeldExtensionRelaxesByDecayPerStep)
 TEST(Ves, RampIsTheDashpotsClosedForm)
 {
   // ed = r t: the dashpot edb' = (ed - edb) / tau gives edb = r (t - tau (1 - exp(-t / tau)))
-  const VES::Coeffs c = VES::coeffs(G, 0.5, TAU, DT);
+  const VES::Coeffs c = VES::coeffs(DEVIATORIC, 0.5, TAU, DT);
   const double rate = 10.0;    // 1/s of extension
   for (int n : {1, 5, 20, 100, 400}) {
     const double t = n * DT;
@@ -74,7 +75,7 @@ TEST(Ves, ForceStateAndEnergyOfTheTwoSprings)
 {
   const double ed = 2.0e-6;
   for (double lambda : {0.0, 0.3, 1.0}) {
-    const VES::Family f{VES::coeffs(G, lambda, TAU, DT)};
+    const VES::Family f{VES::coeffs(DEVIATORIC, lambda, TAU, DT)};
     double h[2] = {1.0e-6, 0.5e-6}, energy = 0.0;
     const double td = f.deviatoric<true>({}, WV, 0.0, 0.0, ed, INV_SUM, h, energy);
     const double edb = VES::back_extension(f.c, ed, 1.0e-6, 0.5e-6);
@@ -106,7 +107,7 @@ TEST(Eps, PlasticRowReturnsToTheYieldSurface)
   const std::vector<double> ed = {3e-6, -1e-6, 2e-6, 0.5e-6, -2.5e-6};
   const double xi0 = 1.0e-3, omega = BBPD::LPS::influence(xi0), m = 4.0e-13;
   for (double yield : {1.0e6, 1.0e12}) {
-    const EPS::Family f{{G, EPS::pointwise_yield_value(yield, 1.5e-3), m}};
+    const EPS::Family f{{DEVIATORIC, EPS::pointwise_yield_value(yield, 1.5e-3), m}};
     std::vector<double> h(2 * ed.size(), 0.0);
     for (std::size_t k = 0; k < ed.size(); k++) h[2 * k + 1] = 1.0e-7 * k;    // last step's edp
     double sum = 0.0;
@@ -204,7 +205,7 @@ LPS::RowSums sums_of(const ShearedRow &row, const F &fam, const typename F::Plan
   LPS::RowSums s;
   LPS::history_row_sums<F, true, false, true, COMMIT>(
       row.x.data(), 0, row.partner.data(), Values{row.xi0.data(), row.wv.data()}, row.n(),
-      row.r.data(), row.states.data(), K, fam, plan, LPS::third(row.theta), row.slot.data(),
+      row.r.data(), row.states.data(), 3.0 * K, fam, plan, LPS::third(row.theta), row.slot.data(),
       hist.data(), no_check, s);
   return s;
 }
@@ -222,7 +223,7 @@ TEST(HistoryRow, VesSecondEvaluationRepeatsTheStepAndTheBodyStaysInBalance)
 {
   const ShearedRow row = sheared_row(1.0e-5);
   ASSERT_EQ(row.n(), 122);
-  const VES::Family f{VES::coeffs(G, 0.5, TAU, DT)};
+  const VES::Family f{VES::coeffs(DEVIATORIC, 0.5, TAU, DT)};
   std::vector<double> hist(2 * 2 * row.n() + 2, 0.0);
   LPS::RowSums first{};
   for (int step = 0; step < 30; step++) first = sums_of<VES::Family, true>(row, f, {}, hist);
@@ -236,7 +237,7 @@ TEST(HistoryRow, VesSecondEvaluationRepeatsTheStepAndTheBodyStaysInBalance)
     scale += 15.0 * G * row.wv[k] * 2.0 * row.states[0].inv_m * 1e-5 * row.xi0[k];
   for (int c = 0; c < 3; c++) EXPECT_LT(std::fabs(first.f[c]), 1e-12 * scale);
   // the back extension has relaxed towards ed: less deviatoric energy than lambda = 0 (elastic)
-  const VES::Family elastic{VES::coeffs(G, 0.0, TAU, DT)};
+  const VES::Family elastic{VES::coeffs(DEVIATORIC, 0.0, TAU, DT)};
   std::vector<double> h0(hist.size(), 0.0);
   const LPS::RowSums e = sums_of<VES::Family, true>(row, elastic, {}, h0);
   EXPECT_LT(first.wv_ed2, 0.75 * e.wv_ed2);
@@ -246,7 +247,7 @@ TEST(HistoryRow, EpsPlasticRowReturnsToTheYieldSurfaceAndRepeats)
 {
   const ShearedRow row = sheared_row(1.0e-3);
   const double m = 1.0 / row.states[0].inv_m;
-  const EPS::Family f{{G, EPS::pointwise_yield_value(1.0e7, DELTA), m}};
+  const EPS::Family f{{DEVIATORIC, EPS::pointwise_yield_value(1.0e7, DELTA), m}};
   std::vector<double> hist(2 * 2 * row.n() + 2, 0.0);
   const double norm = LPS::history_row_norm<EPS::Family, true, false>(
       row.x.data(), 0, row.partner.data(), Values{row.xi0.data(), row.wv.data()}, row.n(),
