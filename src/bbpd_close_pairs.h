@@ -11,6 +11,11 @@
    runs again only when an atom has moved that far (or the atoms changed indices). The
    candidates' order depends on the binning: the loops sum their forces in an order of
    their own (by tag or by offset), which depends on the pairs alone.
+
+   An atom whose candidates were all at least twice the largest displacement since the search
+   beyond their distance has none in range (the two ends of a pair moved at most that much
+   each): the loops skip it without reading a candidate (may_be_close), so a body at rest or
+   barely strained pays one pass over the displacements per step, not one over the pairs.
 ------------------------------------------------------------------------- */
 
 #ifndef BBPD_CLOSE_PAIRS_H
@@ -18,9 +23,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace BBPD {
+
+  // may_be_close's allowance for the round-off of the distances it compares (about 1e-16 of
+  // the search's reach each): a pair is skipped only if it is farther by this share of the reach
+  constexpr double CLOSE_PAIRS_ROUNDOFF = 1.0e-9;
 
 class ClosePairs {
  public:
@@ -29,18 +39,26 @@ class ClosePairs {
   std::vector<double> dist;
 
   // do the candidates still hold every pair in range? (the same atoms at the same nall
-  // positions xx, 3 per atom, none of which has moved half the skin since the search)
-  bool current(const double *xx, int nlocal, int nall) const
+  // positions xx, 3 per atom, none of which has moved half the skin since the search); keeps
+  // the largest displacement for may_be_close
+  bool current(const double *xx, int nlocal, int nall)
   {
     if (xhold.size() != 3 * (size_t) nall || first.size() != (size_t) nlocal + 1) return false;
+    double largest = 0.0;
     for (int i = 0; i < nall; i++) {
       const double dx = xx[3 * i] - xhold[3 * i], dy = xx[3 * i + 1] - xhold[3 * i + 1],
                    dz = xx[3 * i + 2] - xhold[3 * i + 2];
+      const double dsq = dx * dx + dy * dy + dz * dz;
       // under half the skin, with room for round-off
-      if (dx * dx + dy * dy + dz * dz > 0.2 * skin * skin) return false;
+      if (dsq > 0.2 * skin * skin) return false;
+      largest = std::max(largest, dsq);
     }
+    moved = std::sqrt(largest);
     return true;
   }
+
+  // can a candidate of local atom i be closer than its distance now? (false: none can)
+  bool may_be_close(int i) const { return nearest[i] < 2.0 * moved + roundoff; }
 
   /* search the candidates of local atoms 0..nlocal-1 among the nall atoms at xx: every j != i
      with |x_i - x_j| < distance(i, j) + skin, where distance(i, j) <= max_distance; false
@@ -55,6 +73,9 @@ class ClosePairs {
     first.assign(nlocal + 1, 0);
     pairs.clear();
     dist.clear();
+    nearest.assign(nlocal, std::numeric_limits<double>::infinity());
+    moved = 0.0;
+    roundoff = CLOSE_PAIRS_ROUNDOFF * reach;
     if (nall == 0) return true;
 
     // bins of at least the reach, coarser if the atoms are spread out (flying fragments)
@@ -69,6 +90,7 @@ class ClosePairs {
       if (!std::isfinite(hi[m] - lo[m])) {
         xhold.clear();
         first.assign(nlocal + 1, 0);
+        nearest.assign(nlocal, std::numeric_limits<double>::infinity());
         return false;
       }
     double b = reach;
@@ -109,9 +131,11 @@ class ClosePairs {
             const int j = atoms[a];
             if (j == i) continue;
             const double d = distance(i, j);
-            if (std::sqrt(rsq) >= d + skin) continue;
+            const double r = std::sqrt(rsq);
+            if (r >= d + skin) continue;
             pairs.push_back(j);
             dist.push_back(d);
+            nearest[i] = std::min(nearest[i], r - d);
           }
         }
     }
@@ -120,8 +144,11 @@ class ClosePairs {
   }
 
  private:
-  std::vector<double> xhold;    // positions at the search
+  std::vector<double> xhold;      // positions at the search
+  std::vector<double> nearest;    // per local atom: the least r - d of its candidates at the search
   double skin = 0.0;
+  double moved = 0.0;       // the largest displacement since the search (current)
+  double roundoff = 0.0;    // CLOSE_PAIRS_ROUNDOFF of the reach
 };
 
 }    // namespace BBPD

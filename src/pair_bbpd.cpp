@@ -594,6 +594,7 @@ void PairBBPD::compute_contact()
                      [dc](int, int) { return dc; });
   std::vector<std::pair<std::array<double, 4>, int>> close;
   for (int i = 0; i < atom->nlocal; i++) {
+    if (!close_pairs.may_be_close(i)) continue;
     close.clear();
     for (int m = close_pairs.first[i]; m < close_pairs.first[i + 1]; m++) {
       const int j = close_pairs.pairs[m];

@@ -102,6 +102,7 @@ void PairBBPD::compute_short_range(double lc)
 
   std::vector<std::pair<tagint, int>> close;
   for (int i = 0; i < nlocal; i++) {
+    if (!close_pairs.may_be_close(i)) continue;
     const double xi = xx[3 * i], yi = xx[3 * i + 1], zi = xx[3 * i + 2];
     close.clear();
     for (int m = first[i]; m < first[i + 1]; m++) {
