@@ -1,21 +1,9 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Wave dispersion of a 1D BBPD bar: analytic curves and dispersion measured from LAMMPS runs
-(Bouaraquia & Mabssout 2026, sec. 4.1, Figs. 4-6).
-
-measured   examples/dispersion-1d/in.dispersion (a periodic ring of atoms, model 1d, released
-           from a Gaussian displacement pulse) dumps u(x, t); bbpd-measure-dispersion (FFTW)
-           turns it into the ridge omega(k) of the 2-D power spectrum.
-analytic   bbpd-dispersion-curves (src/bbpd_dispersion.h) on the same k grid:
-             continuous        eq. 29
-             discrete/paper    eq. 31 as printed (w_j = W(j/m), j <= m)
-             discrete          eq. 31 with the partial-volume weights C_v of eq. 19, which is
-                               what pair bbpd integrates
-             ... + dt          the velocity-Verlet shift omega -> (2/dt) asin(dt omega/2)
-           The LAMMPS run must reproduce "discrete + dt".
-errors     max |omega_measured/omega_analytic - 1| over the k whose ridge carries energy
-           (power >= MIN_POWER of the strongest) in a k dx range.
-
-Commands: examples/dispersion-1d/README.md.
+"""Wave dispersion of a 1D BBPD bar (Bouaraquia & Mabssout 2026, sec. 4.1, Figs. 4-6): omega(k)
+measured from examples/dispersion-1d/in.dispersion (bbpd-measure-dispersion) against the
+analytic curves of bbpd-dispersion-curves (eq. 29, eq. 31 as printed, eq. 31 with C_v, each
+with and without the velocity-Verlet shift); examples/dispersion-1d/README.md defines the
+errors and has the commands.
 """
 
 import glob

@@ -1,13 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Kalthoff-Winkler in 3D, the 9 mm plate resolved through its thickness.
-
-examples/kalthoff-winkler/in.kalthoff_winkler_3d struck by the projectile (Gaussian kernel, the
-paper's G_c) at m = delta/dx = M so that the horizon fits at least MIN_HORIZONS_THROUGH times
-into the thickness, at RESOLUTIONS, on NPROCS ranks, to 100 us, beside the 2D plate of the same
-grid. Measured: the loading study's angles (study.angles_of) on the mid-plane and on both faces,
-the first broken bond and the damage band, atoms, bonds, steps, loop time and memory.
-
-Commands: examples/kalthoff-winkler/README.md, "3D plate resolved through its thickness".
+"""Kalthoff-Winkler in 3D, the 9 mm plate resolved through its thickness, beside the 2D plate
+of the same grid (examples/kalthoff-winkler/README.md, "3D plate resolved through its
+thickness", has the commands).
 """
 
 import re

@@ -1,14 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Kalthoff-Winkler on the field's standard deck, beside the paper's loading.
-
-Most published simulations of the experiment run the deck of Borden et al. (2012): 16.5 m/s
-held on the struck edge, rho = 8000 kg/m^3, G_c = 2.213e4 J/m^2 (and nu = 0.3, which a
-bond-based model cannot take); the paper holds 32 m/s with rho = 7800 and G_c = 6.9e4. DECKS
-runs both on in.kalthoff_winkler for the three kernels at DX_VALUES, and both loadings on the
-state-based solid (bbpd/lps/KERNEL) at nu = 0.3: what Poisson's ratio does to the angle. The
-angles are the loading study's.
-
-Commands: examples/kalthoff-winkler/README.md, "The standard deck".
+"""Kalthoff-Winkler on the field's standard deck (Borden et al. 2012) beside the paper's
+loading, bond-based and on bbpd/lps/KERNEL (DECKS), with the loading study's angles
+(examples/kalthoff-winkler/README.md, "The standard deck", has the commands).
 """
 
 import sys

@@ -1,14 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Kalthoff-Winkler on perturbed and rotated grids: how far the square grid's preferred
-directions move the crack angle (examples/kalthoff-winkler/README.md, "The grid's pull").
-
-Runs in.kalthoff_winkler on the GRIDS (`-var grid square | perturbed | rotated`) under the
-paper's prescribed loading and with the projectile, and measures each crack on its own with
-the loading study's angles (off the square grid the two cracks are no mirror images). The
-pull, per kernel, loading, grid spacing and angle: the square grid's angle minus the mean
-over every off-grid crack, with its standard error.
-
-Commands: examples/kalthoff-winkler/README.md.
+"""Kalthoff-Winkler on perturbed and rotated grids (GRIDS): how far the square grid's
+preferred directions pull the crack angle (examples/kalthoff-winkler/README.md, "The grid's
+pull", defines the pull and has the commands).
 """
 
 import math

@@ -1,15 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Kalthoff-Winkler with the experiment's projectile and the steel's published toughness values.
-
-Runs examples/kalthoff-winkler/in.kalthoff_winkler with `-var loading projectile` (an elastic
-steel body of type 2 hits the plate at v0 and pushes it through contact) and with the paper's
-`prescribed` loading, for several fracture energies Gc, and measures each run with the
-study's definitions (kalthoff_winkler_study.analyse) and, for the projectile, from
-projectile.dat: the momentum drift, the interface speed over INTERFACE_WINDOW_US against the 1D
-two-bar estimate, the contact force's drop and the contact's opening against 2 Lp / c
-(examples/kalthoff-winkler/README.md, "Projectile and toughness", defines each).
-
-Commands: examples/kalthoff-winkler/README.md.
+"""Kalthoff-Winkler struck by the experiment's projectile, for the steel's published
+toughness values (GC_VALUES): the loading study's angles and the contact measures of
+projectile.dat (examples/kalthoff-winkler/README.md, "Projectile and toughness", defines each
+and has the commands).
 """
 
 import csv
@@ -69,7 +62,7 @@ def read_projectile(path):
 
 
 def measure_contact(d, dt):
-    """The projectile measures of the module docstring from read_projectile's columns."""
+    """The contact measures (README, "Projectile and toughness") from read_projectile's columns."""
     t = d["step"] * dt * 1e6
     p0 = d["px"][0]
     out = {"momentum_drift": float(np.max(np.abs(d["px"] - p0)) / abs(p0)),

@@ -1,15 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Kalthoff-Winkler loading study: which loading and which angle measure reproduce the experiment.
-
-The paper's setup (32 m/s held on a delta-thick layer) gives cracks at about 61 deg and a first
-broken bond at ~12 us, against the experiment's ~70 deg and the paper's 20-21.7 us. This study
-runs examples/kalthoff-winkler/in.kalthoff_winkler under the loadings of CASES, for the three
-kernels at dx = 1 mm and the Gaussian at 0.5 mm, to 100 us; the measures (initial, fit and
-chord angles, crack stops, speeds, far-edge crack) are defined in
-examples/kalthoff-winkler/README.md, "Loading study".
-
-  tools/python -m bbpd.benchmarks.kalthoff_winkler_study --work /tmp/kw-study --figures DIR
-  ... --reuse                              re-analyse the finished runs, run nothing
+"""Kalthoff-Winkler loading study: which loading (CASES) and which angle measure reproduce the
+experiment's 70 deg and the paper's 20-22 us (examples/kalthoff-winkler/README.md, "Loading
+study", defines the measures and has the commands).
 """
 
 import json

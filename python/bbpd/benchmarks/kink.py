@@ -1,19 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Quasi-static kink test: the angle at which a straight crack under the
-mixed-mode Williams field kinks in BBPD, against the maximum hoop stress, maximum hoop strain
-and maximum energy release rate criteria (bbpd.kink).
-
-Runs examples/kink-mixed-mode/in.kink for every case and measures, from its outputs only:
-
-initiation   first output step (every 10 steps) at which the damage summed over the atoms
-             within delta of the tip rises above its value at t = 0 (the notch's own
-             damage): a bond near the tip broke; K_init = K(t) there, over K_c = sqrt(E' G_c)
-kink angle   bbpd.crack_path.kink_angles of the last snapshot of final.dump at the distances
-             2 delta and 4 delta from the tip (the centroid direction of the grown crack's atoms
-             within dx of that distance, in the crack-tip frame; theta < 0 for K_II > 0)
-extension    the grown crack's reach from the tip when the run stopped (fix halt at 5 delta)
-
-Commands: examples/kink-mixed-mode/README.md.
+"""Quasi-static kink test: the angle at which a straight crack under the mixed-mode Williams
+field kinks, against the maximum hoop stress, hoop strain and energy release rate criteria
+(bbpd.kink). examples/kink-mixed-mode/README.md defines the measures (initiation, kink angle at
+2 and 4 delta, extension) and has the commands.
 """
 
 import json
