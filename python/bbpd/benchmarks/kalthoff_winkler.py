@@ -1,14 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Kalthoff-Winkler impact benchmark (Bouaraquia & Mabssout 2026, sec. 4.2.3).
-
-Runs examples/kalthoff-winkler/in.kalthoff_winkler and measures, from its outputs only, the
-initiation (first broken bond within delta of a tip; the damage band: an atom ahead of the tip
-on the outer side reaching PHI_CRACK), the crack path (crack atoms, damage >= PHI_CRACK, linked
-to the notch flanks), its angle (principal axis over FIT_RANGE) and speed, the mirror symmetry
-of the two cracks and the damage far from both (the far-edge crack and any other):
-examples/kalthoff-winkler/README.md defines each.
-
-Commands: examples/kalthoff-winkler/README.md.
+"""Kalthoff-Winkler impact benchmark (Bouaraquia & Mabssout 2026, sec. 4.2.3): runs
+examples/kalthoff-winkler/in.kalthoff_winkler and measures from its outputs the initiation, the
+crack path, its angle and speed, the cracks' mirror symmetry and the damage far from them
+(examples/kalthoff-winkler/README.md defines each and has the commands).
 """
 
 import json
@@ -24,6 +18,7 @@ from bbpd.crack_path import clusters
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_noted
 from bbpd.markdown import cell as fmt
+from bbpd.markdown import table as md_table
 from bbpd import plots
 from bbpd.benchmarks import cli
 
@@ -328,22 +323,29 @@ def plot_runs(results, path):
 
 # --------------------------------------------------------------------------- table
 
-def table(results):
-    """Markdown table: kernel x resolution, with the paper's values beside ours."""
-    rows = ["| kernel | dx (mm) | atoms | steps | first bond (us) | damage band (us) | paper (us) | angle (deg) | exp. (deg) | speed (m/s) | tip mirror mismatch (mm) | "
-            "far-edge crack from (us) | other far damage (atoms) | wall (s) | ranks |",
-            "|" + "---|" * 15]
-    for r in sorted(results, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx"])):
-        natoms = len(r["damage_map"]["x"])
-        rows.append("| " + " | ".join([
-            r["kernel"], f"{r['dx'] * 1e3:g}", str(natoms), str(r["nsteps"]),
-            fmt(r["t_init_us"], ".1f"), fmt(r["t_band_us"], ".1f"),
-            f"{PAPER_INITIATION_US[r['kernel']]:.1f}", fmt(r["angle_deg"], ".1f"),
-            f"{EXPERIMENT_ANGLE_DEG:.0f}", fmt(r["speed"], ".0f"), f"{r['symmetry_tip_mm']:.2g}",
-            fmt(r["t_far_edge_us"], ".0f") if r["far_edge_crack"] else "none",
-            str(r["far_damage_other"]),
-            f"{r['wall_s']:.0f}", str(r["nprocs"])]) + " |")
-    return "\n".join(rows)
+def row(res):
+    """The CSV row of one run (examples/kalthoff-winkler/results/kalthoff_winkler.csv)."""
+    return {"kernel": res["kernel"], "dx_m": res["dx"], "atoms": len(res["damage_map"]["x"]),
+            "first_bond_us": res["t_init_us"], "damage_band_us": res["t_band_us"],
+            "angle_deg": res["angle_deg"], "speed_m_s": res["speed"],
+            "symmetry_tip_mm": res["symmetry_tip_mm"],
+            "far_edge_crack_us": res["t_far_edge_us"] if res["far_edge_crack"] else None,
+            "far_damage_other_atoms": res.get("far_damage_other"), "run_time_s": res["wall_s"]}
+
+
+def table(rows):
+    """Markdown table of row()s: kernel x resolution, the paper's values beside ours."""
+    header = ["kernel", "dx (mm)", "atoms", "first bond (us)", "damage band (us)", "paper (us)",
+              "angle (deg)", "exp. (deg)", "speed (m/s)", "tip mirror mismatch (mm)",
+              "far-edge crack from (us)", "other far damage (atoms)", "run time (s)"]
+    cells = [[r["kernel"], f"{r['dx_m'] * 1e3:g}", f"{r['atoms']:.0f}", fmt(r["first_bond_us"], ".1f"),
+              fmt(r["damage_band_us"], ".1f"), f"{PAPER_INITIATION_US[r['kernel']]:.1f}",
+              fmt(r["angle_deg"], ".1f"), f"{EXPERIMENT_ANGLE_DEG:.0f}", fmt(r["speed_m_s"], ".0f"),
+              fmt(r["symmetry_tip_mm"], ".1e"),
+              "none" if r["far_edge_crack_us"] is None else f"{r['far_edge_crack_us']:.0f}",
+              fmt(r["far_damage_other_atoms"], ".0f"), fmt(r["run_time_s"], ".1f")]
+             for r in sorted(rows, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx_m"]))]
+    return md_table(header, cells)
 
 
 def main(argv=None):
@@ -371,10 +373,9 @@ def main(argv=None):
         if len(same) > 1:
             plot_runs(same, figs / f"paths_{kernel}_convergence.png")
     # the table covers every finished run in --work, also those of earlier invocations
-    runs = sorted(work.glob("*/results.json"))
-    results = [json.loads(p.read_text()) for p in runs]
-    print(table(results))
-    (work / "table.md").write_text(table(results) + "\n")
+    rows = [row(json.loads(p.read_text())) for p in sorted(work.glob("*/results.json"))]
+    print(table(rows))
+    (work / "table.md").write_text(table(rows) + "\n")
 
 
 if __name__ == "__main__":
