@@ -10,12 +10,13 @@ from pathlib import Path
 
 import numpy as np
 
+from bbpd.benchmarks import dispersion
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import mode1, mode2
 from bbpd.csvfile import write_csv
 from bbpd.kernels import KERNELS
 
-from .tables import DISP_KDX, failed, run_time
+from .tables import failed, run_time
 
 FOLDER = "results"
 # Spec.bench of every run that belongs to a benchmark's file (the work-precision runs complete
@@ -30,7 +31,7 @@ def dispersion_row(res, kernel):
     meas = res["measured"]
     phase = np.asarray(meas["omega"], dtype=float) / np.asarray(meas["k"], dtype=float) / v
     kdx = np.asarray(meas["k_dx"], dtype=float)
-    row = {f"phase_kdx{x:g}": float(np.interp(x, kdx, phase)) for x in DISP_KDX}
+    row = {f"phase_kdx{x:g}": float(np.interp(x, kdx, phase)) for x in dispersion.TABLE_KDX}
     row["max_dev_discrete_dt"] = res["errors"]["discrete_dt"]["max"]
     return row
 

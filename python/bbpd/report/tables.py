@@ -2,7 +2,6 @@
 """The report's tables: the runs' results (as the job cache holds them) turned into rows of
 numbers beside the paper's, and the CSV files of the dispersion curves."""
 import json
-import math
 import re
 from pathlib import Path
 
@@ -10,10 +9,7 @@ import numpy as np
 
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import dispersion as disp
-from bbpd.markdown import cell as f
 from bbpd.markdown import table as md_table
-
-DISP_KDX = (1.0, 2.0, 2.5)
 
 
 # --------------------------------------------------------------------------- results, cells
@@ -93,40 +89,3 @@ def dispersion_csv(runs, figdir):
                    delimiter=",", header="k (1/m), k dx, omega (rad/s), relative power",
                    comments="# ")
     return table, paper, cv
-
-
-def dispersion_table(specs, results, runs, table):
-    """(header, rows, numbers): numbers holds per kernel the smallest measured v_g/v ('min_vg')
-    and the deviation from what LAMMPS integrates ('dev')."""
-    info = next(iter(runs.values()))["info"] if runs else None
-    v = math.sqrt(info["E"] / info["rho"]) if info else 1.0
-
-    header = ["kernel", "c/v measured at k dx = 1 / 2 / 2.5",
-              "eq. 31 + C_v + dt (what LAMMPS integrates)", "paper: eq. 31 as printed",
-              "continuous eq. 29", "max dev. from eq. 31 + C_v + dt", "from eq. 31 as printed + dt",
-              "min v_g/v: measured / paper's eq. 31", "run time (s)"]
-    rows, min_vg, dev = [], {}, {}
-    for s in specs:
-        k = s.kernel
-        if k not in runs:
-            rows.append(failed_row(results.get(s.job.label), len(header), [k]))
-            continue
-        r = runs[k]
-        meas, ana = r["measured"], r["analytic"][k]
-        phase = meas["omega"] / meas["k"] / v
-        meas_phase = [float(np.interp(x, meas["k_dx"], phase)) for x in DISP_KDX]
-        lammps = [float(np.interp(x, ana["k_dx"], ana["phase_discrete_dt"])) for x in DISP_KDX]
-        energetic = ((meas["power"] >= disp.MIN_POWER) & (meas["k_dx"] >= disp.KDX_RANGE[0])
-                     & (meas["k_dx"] <= disp.KDX_RANGE[1]))
-        vg = disp.measured_group_velocity(meas) / v
-        min_vg[k] = float(vg[energetic].min()) if energetic.any() else None
-        dev[k] = r["errors"]["discrete_dt"]["max"]
-        t = table[k]
-        rows.append([k, " / ".join(f"{p:.3f}" for p in meas_phase),
-                     " / ".join(f"{p:.3f}" for p in lammps),
-                     " / ".join(f"{t['discrete']['phase'][f'{x:g}']:.3f}" for x in DISP_KDX),
-                     " / ".join(f"{t['continuous']['phase'][f'{x:g}']:.3f}" for x in DISP_KDX),
-                     f"{dev[k]:.1e}", f"{r['errors']['paper_eq31_dt']['max']:.1e}",
-                     f"{f(min_vg[k], '.3f')} / {t['discrete']['group_min']:.3f}",
-                     f(run_time(r), ".1f")])
-    return header, rows, {"min_vg": min_vg, "dev": dev}
