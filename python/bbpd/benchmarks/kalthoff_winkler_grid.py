@@ -225,11 +225,11 @@ def _nearest(angle, predicted):
 def fine_angles(proj_rows, grid_rows):
     """(dx_mm, {definition: angles}) of the finest 2D runs with the paper's G_c, over every
     loading and grid (projectile.csv and grid_pull.csv, both cracks): what mix_verdict reads"""
-    fine = min(float(r["dx_mm"]) for r in proj_rows if r["setup"] == "2d")
+    fine = min(r["dx_mm"] for r in proj_rows if r["setup"] == "2d")
     ang = {}
     for d in MEASURED + ("chord",):
-        v = [projectile._num(r[f"{d}_deg"]) for r in proj_rows if r["setup"] == "2d"
-             and float(r["dx_mm"]) == fine and float(r["Gc"]) == 6.9e4]
+        v = [r[f"{d}_deg"] for r in proj_rows if r["setup"] == "2d" and r["dx_mm"] == fine
+             and r["Gc"] == 6.9e4]
         v += [r[f"{d}_{s}_deg"] for r in grid_rows for s in SIDES if float(r["dx_mm"]) == fine]
         ang[d] = [a for a in v if a is not None]
     return fine, ang

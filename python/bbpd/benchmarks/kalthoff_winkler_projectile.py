@@ -5,7 +5,6 @@ projectile.dat (examples/kalthoff-winkler/README.md, "Projectile and toughness",
 and has the commands).
 """
 
-import csv
 import json
 import math
 import re
@@ -13,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
+from bbpd import csvfile
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as study
@@ -205,20 +205,12 @@ def row(r):
 
 
 def write_csv(rows, path):
-    with open(path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=COLUMNS)
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: ("" if r[k] is None else r[k]) for k in COLUMNS})
+    csvfile.write_csv(path, rows, columns=COLUMNS)
 
 
 def read_csv(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
-
-
-def _num(v):
-    return None if v in ("", None) else float(v)
+    """The rows of write_csv: numbers as floats, empty cells None."""
+    return csvfile.read_csv(path)[1]
 
 
 def crosses_plate(r):
@@ -229,8 +221,8 @@ def crosses_plate(r):
 def at_target(r):
     """the angle definitions by which a run's crack lies within 70 +- 2 deg, if its cracks cross
     the plate (else none)"""
-    return [d for d in ("initial", "fit", "chord") if crosses_plate(r) and _num(r[f"{d}_deg"]) is not None
-            and abs(_num(r[f"{d}_deg"]) - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
+    return [d for d in ("initial", "fit", "chord") if crosses_plate(r) and r[f"{d}_deg"] is not None
+            and abs(r[f"{d}_deg"] - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
 
 
 def markdown(rows):
@@ -239,12 +231,13 @@ def markdown(rows):
          "initial (deg)", "fit (deg)", "chord (deg)", "crack length at end (mm)", "crack stops (us)",
          "far-edge crack (us)", "interface speed (m/s)", "contact force drop (us)",
          "contact opens (us)", "momentum drift", "loop CPU (s)", "ranks", "70 ± 2° and crosses"),
-        ([r["setup"].upper(), r["loading"], r["kernel"], f"{float(r['dx_mm']):g}", f"{float(r['Gc']):g}",
+        ([r["setup"].upper(), r["loading"], r["kernel"], f"{r['dx_mm']:g}", f"{r['Gc']:g}",
           cell(r["first_bond_us"], ".1f"), cell(r["band_us"], ".1f"), cell(r["initial_deg"], ".1f"),
           cell(r["fit_deg"], ".1f"), cell(r["chord_deg"], ".1f"), cell(r["length_end_mm"], ".0f"),
           r["crack_stops"], cell(r["far_edge_us"], ".0f"), cell(r["v_interface"], ".2f"),
           cell(r["t_drop_us"], ".1f"), cell(r["t_open_us"], ".1f"), cell(r["momentum_drift"], ".1e"),
-          cell(r["loop_cpu_s"], ".0f"), r["nprocs"], ", ".join(at_target(r)) or "-"] for r in rows))
+          cell(r["loop_cpu_s"], ".0f"), f"{r['nprocs']:g}", ", ".join(at_target(r)) or "-"]
+         for r in rows))
 
 
 # ---------------------------------------------------------------------------- report
@@ -307,7 +300,7 @@ def section(specs, results, figdir, notes):
         f"{AREA_RATIO:.3f}; to {TEND * 1e6:.0f} us. Angles as in the loading study (initial; fit "
         "and chord at 70 us). See examples/kalthoff-winkler/README.md, 'Projectile and toughness'.",
         specs, results,
-        lambda rows: markdown([{k: ("" if v is None else str(v)) for k, v in r.items()} for r in rows]),
+        markdown,
         report_text, figures, notes)
 
 
