@@ -63,7 +63,7 @@ def log_figures(text):
 
 
 def face_angles(workdir, g, t_us):
-    """study.angles_of on each face (damage_faces.dump) at the last snapshot at or before t_us"""
+    """kw.angles_of on each face (damage_faces.dump) at the last snapshot at or before t_us"""
     snaps = readers.dump_snapshots(Path(workdir) / "damage_faces.dump")
     times = [step * g["dt"] * 1e6 for step, _ in snaps]
     k = max([i for i, t in enumerate(times) if t <= t_us + 1e-6], default=len(snaps) - 1)
@@ -72,7 +72,7 @@ def face_angles(workdir, g, t_us):
     out = {}
     for name, layer in (("lo", z.min()), ("hi", z.max())):
         sel = np.abs(z - layer) < 0.25 * g["dx"]
-        out[name] = study.angles_of(s["f_ref[1]"][sel], s["f_ref[2]"][sel], s["c_dmg"][sel], g)
+        out[name] = kw.angles_of(s["f_ref[1]"][sel], s["f_ref[2]"][sel], s["c_dmg"][sel], g)
     return out
 
 
@@ -93,10 +93,10 @@ def measure(workdir, setup, dx, m):
     row.update(log_figures(log))
     if setup == "3d":
         g = {k: r[k] for k in ("dx", "delta", "a", "ylo", "yhi", "Lx", "Ly", "dt", "flank")}
-        faces = face_angles(workdir, g, study.T_EVAL_US)
-        row["fit_face_lo_deg"] = study.mean_or_none([faces["lo"][sd]["fit"] for sd in ("lo", "hi")])
-        row["fit_face_hi_deg"] = study.mean_or_none([faces["hi"][sd]["fit"] for sd in ("lo", "hi")])
-        row["chord_face_deg"] = study.mean_or_none([faces[f][sd]["chord"] for f in ("lo", "hi")
+        faces = face_angles(workdir, g, kw.T_EVAL_US)
+        row["fit_face_lo_deg"] = kw.mean_or_none([faces["lo"][sd]["fit"] for sd in ("lo", "hi")])
+        row["fit_face_hi_deg"] = kw.mean_or_none([faces["hi"][sd]["fit"] for sd in ("lo", "hi")])
+        row["chord_face_deg"] = kw.mean_or_none([faces[f][sd]["chord"] for f in ("lo", "hi")
                                                     for sd in ("lo", "hi")])
     return {c: row[c] for c in COLUMNS}
 

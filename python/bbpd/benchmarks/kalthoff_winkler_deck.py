@@ -113,7 +113,7 @@ def comparison(rows):
         return None
     out = dict(fine=fine, coarse=coarse, deck={}, grid={}, changes={}, hits=[])
     for k in KERNELS:
-        for d in study.ANGLE_DEFS:
+        for d in kw.ANGLE_DEFS:
             if (v := moved("paper", "standard", k, fine, d)) is not None:
                 out["deck"][d, k] = v
         a, b = by.get(("standard", k, coarse)), by.get(("standard", k, fine))
@@ -126,7 +126,7 @@ def comparison(rows):
                 out["changes"][deck] = (dx, got)
                 break
     for r in sorted(rows, key=_order):
-        defs = [d for d in study.ANGLE_DEFS if r[f"{d}_deg"] is not None
+        defs = [d for d in kw.ANGLE_DEFS if r[f"{d}_deg"] is not None
                 and abs(r[f"{d}_deg"] - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
         if defs and r["crack_stops"].startswith("edge"):
             out["hits"].append((r["deck"], r["kernel"], r["dx_mm"], defs))

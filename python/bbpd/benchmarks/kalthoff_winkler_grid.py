@@ -43,7 +43,7 @@ LOADINGS = ("prescribed", "projectile")
 CASES = ([(k, 2.0e-3, tuple(GRIDS)) for k in kw.KERNELS]
          + [("gaussian", 1.0e-3, ("square", "perturbed-1", "rotated-22.5", "rotated-30"))])
 TEND = projectile.TEND
-ANGLES = study.ANGLE_DEFS
+ANGLES = kw.ANGLE_DEFS
 SIDES = ("lo", "hi")
 
 
@@ -75,7 +75,7 @@ def side_angle(res, side, definition):
     """One crack's angle (the study's definitions), None if it is shorter than the initial
     range at 70 us (its direction is no path yet)."""
     a70 = res.get("angles_t70", {}).get(side)
-    if a70 is None or a70["length_mm"] < study.INITIAL_RANGE[1] * 1e3:
+    if a70 is None or a70["length_mm"] < kw.INITIAL_RANGE[1] * 1e3:
         return None
     if definition == "initial":
         return res["initial_side_deg"][side]
@@ -214,7 +214,7 @@ MIXES = (("the first broken bond", "", "t_mix_us", "psi"),
          ("the damage band", "_band", "t_band_mix_us", "psi_band"))
 CRITERIA = (("hoop strain", "hoop_strain"), ("hoop stress", "hoop_stress"),
             ("maximum energy release rate", "energy"))
-MEASURED = ("initial", "fit")    # the angles the verdict is read on (study.ANGLE_DEFS)
+MEASURED = ("initial", "fit")    # the angles the verdict is read on (kw.ANGLE_DEFS)
 AGREE_SE = 2.0    # a criterion agrees with a mean angle within this many standard errors
 
 

@@ -31,8 +31,8 @@ V0 = 32.0                                   # m/s, the experiment's impact veloc
 AREA_RATIO = math.pi * 0.025 ** 2 / (0.050 * 0.009)       # 4.363
 V_INTERFACE = V0 * AREA_RATIO / (AREA_RATIO + 1.0)         # 26.03 m/s (1D two-bar)
 # the projectile's waves: E and rho scaled alike keep the plate's speeds (plane strain, nu = 1/4)
-C_P = study.C_P                                           # 5407 m/s, plane wave
-C_STRIP = math.sqrt(study.E / (1.0 - study.NU ** 2) / study.RHO)   # 5097 m/s, plane-strain strip
+C_P = kw.C_P                                              # 5407 m/s, plane wave
+C_STRIP = math.sqrt(kw.E / (1.0 - kw.NU ** 2) / kw.RHO)   # 5097 m/s, plane-strain strip
 LP_DEFAULT = 0.100                                        # m, the input script's default
 
 # the interface speed is averaged from the end of the contact's rise to the return of the
@@ -112,7 +112,7 @@ def loop_cpu(text):
 def analyse(workdir):
     """The study's measures plus, for a projectile run, the contact measures."""
     workdir = Path(workdir)
-    res = study.analyse(workdir)
+    res = kw.analyse(workdir)
     log = (workdir / "log.lammps").read_text()
     proj = read_projectile_log(log)
     res["loading"] = "prescribed" if proj is None else "projectile"
