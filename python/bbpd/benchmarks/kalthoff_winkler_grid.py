@@ -89,22 +89,15 @@ COLUMNS = (("grid", "loading", "kernel", "dx_mm", "first_bond_us", "band_us")
 
 
 def row(res, grid):
-    """The CSV row of one run: both cracks' angles, initiation, length, how the crack stops."""
-    out = {"grid": grid, "loading": res["loading"], "kernel": res["kernel"],
-           "dx_mm": res["dx"] * 1e3, "first_bond_us": res["t_init_us"],
-           "band_us": res["t_band_us"]}
+    """The CSV row of one run: projectile.row's, with both cracks' angles and lengths."""
+    out = {c: v for c, v in projectile.row(res).items() if c in COLUMNS}
+    out["grid"] = grid
     for d in ANGLES:
         for side in SIDES:
             out[f"{d}_{side}_deg"] = side_angle(res, side, d)
     for side in SIDES:
         out[f"length_{side}_mm"] = res["angles_t70"][side]["length_mm"] if "angles_t70" in res else None
-    out["length_end_mm"] = res["length_end_mm"]
-    out["crack_stops"] = study.stops(res).split(" (")[0]
-    out["far_edge_us"] = res.get("far_edge_own_us")
-    out["v_interface"] = res.get("v_interface")
-    out["loop_cpu_s"] = res["loop_cpu_s"]
-    out["nprocs"] = res["nprocs"]
-    return out
+    return {c: out[c] for c in COLUMNS}
 
 
 def jobs(cases=CASES, loadings=LOADINGS, nprocs=1):
