@@ -154,9 +154,7 @@ def read_rows(path):
 def timing_markdown(rows):
     """'Loop times: ...': which ranks and CPU timed which runs (appended runs may come from
     another machine)."""
-    def case(r):
-        return f"{r['kernel']} m = {r['m']:g}, H/delta = {r['H_over_delta']:g}, Delta = {r['Delta']:g}"
-    return csvfile.loop_times_note(rows, "timing", case)
+    return csvfile.loop_times_note(rows, "timing", _case)
 
 
 def kinetic_law(rows, kernel, m=5.0, H_over_delta=SWEEP_H_OVER_DELTA):
