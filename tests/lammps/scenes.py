@@ -11,7 +11,9 @@ kw_run() runs examples/kalthoff-winkler's input; drawn_kw_cracks() draws straigh
 plate for the post-processing alone.
 cylinder_dropin() runs the glass cylinder of LAMMPS's examples/peri with a peri/* style and
 with its bbpd/* port and checks that their damage agrees.
+sibling() loads another test module of tests/lammps, whose plate or runner a test reuses.
 """
+import importlib.util
 import math
 from pathlib import Path
 
@@ -21,6 +23,15 @@ import pytest
 from bbpd import reference as ref
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.runner import run_lammps
+
+
+def sibling(name):
+    """The test module tests/lammps/NAME.py, loaded as bbpd_NAME."""
+    spec = importlib.util.spec_from_file_location(f"bbpd_{name}",
+                                                  Path(__file__).with_name(f"{name}.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 DROPIN_STEPS = (500, 1000)    # the steps whose damage is compared

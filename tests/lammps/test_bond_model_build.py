@@ -8,18 +8,13 @@ rest of the model is untouched); squeezed by 3 %, it keeps every bond with the d
 loses with the toy one as many bonds as the stretch broke (a bond at angle t to x has stretch
 about -0.03 cos^2 t).
 """
-import importlib.util
 import re
-from pathlib import Path
 
 import pytest
 
-from scenes import peri_preamble
+from scenes import peri_preamble, sibling
 
-_spec = importlib.util.spec_from_file_location("bbpd_test_simd_builds",
-                                               Path(__file__).with_name("test_simd_builds.py"))
-builds = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(builds)
+builds = sibling("test_simd_builds")
 
 TOY = ["-D", "BBPD_NATIVE=ON", "-D", "BBPD_TEST_BOND_MODEL=SymmetricStretchBond"]
 S0 = 0.01

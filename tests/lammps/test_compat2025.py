@@ -9,28 +9,20 @@ The checks are those of test_forces.py and test_mpi_restart.py, run with the com
 build selected through BBPD_LAMMPS_VERSION (tools/lmp reads it); every run's banner is checked,
 so the tests cannot silently fall back to the default build.
 """
-import importlib.util
-from pathlib import Path
 
 import pytest
 
 from bbpd import runner
 
+from scenes import sibling
+
 VERSION = "20250204"
 BANNER = "LAMMPS (4 Feb 2025"
 
 
-def load(name):
-    spec = importlib.util.spec_from_file_location(f"bbpd_compat_{name}",
-                                                  Path(__file__).with_name(f"{name}.py"))
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-forces = load("test_forces")
-mpi_restart = load("test_mpi_restart")
-images = load("test_images")
+forces = sibling("test_forces")
+mpi_restart = sibling("test_mpi_restart")
+images = sibling("test_images")
 
 
 @pytest.fixture
@@ -76,7 +68,7 @@ def test_compat_notch_across_periodic_boundary(compat, tmp_path):
     forces.test_notch_cuts_bonds_across_periodic_boundary(lmp, tmp_path)
 
 
-lps = load("test_lps_compat")
+lps = sibling("test_lps_compat")
 
 
 def test_compat_lps_forces_equal_peri_lps(compat, tmp_path):

@@ -8,16 +8,14 @@
   doc/fix_bbpd_notch.rst states;
 - compute bbpd/dsif options offset and tolerance, and how it resolves ties.
 """
-import importlib.util
 import re
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 from bbpd import reference as ref
 from bbpd.runner import LammpsError
-from scenes import peri_preamble
+from scenes import peri_preamble, sibling
 
 DX = 1.0e-3
 THICKNESS = 1.0e-3
@@ -212,16 +210,7 @@ def test_atom_on_the_notch_line_is_on_the_positive_side(lmp, tmp_path, direction
 
 # --------------------------------------------------------------------------- dsif options
 
-def load_test_dsif():
-    """test_dsif.py: its plate, exact crack-face field and runner."""
-    spec = importlib.util.spec_from_file_location("bbpd_test_dsif",
-                                                  Path(__file__).with_name("test_dsif.py"))
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-TD = load_test_dsif()
+TD = sibling("test_dsif")    # its plate, exact crack-face field and runner
 
 
 def run_k(lmp, body, args, nprocs=1):

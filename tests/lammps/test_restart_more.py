@@ -5,15 +5,12 @@ atom types with their own E, G_c and horizon (the scenes and helpers of test_mpi
 Each case: `run 2N` against `run N` + write_restart + read_restart (new process, 2 ranks) +
 `run N`; the pair style, its coefficients and the broken bonds come back from the file.
 """
-import importlib.util
-from pathlib import Path
 
 import pytest
 
-_spec = importlib.util.spec_from_file_location(
-    "bbpd_test_mpi_restart", Path(__file__).with_name("test_mpi_restart.py"))
-mr = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(mr)
+from scenes import sibling
+
+mr = sibling("test_mpi_restart")
 
 # two materials: the plate ahead of the notch tip (x > 21 mm) is type 2 (softer, weaker,
 # shorter horizon), so the crack grows through mixed and type-2 bonds

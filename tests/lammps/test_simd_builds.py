@@ -15,7 +15,6 @@ path: the test hook BBPD_SIMD_HIDE (a list of paths) makes the plugin treat the 
 as unsupported, as a CPU without them. A build with BBPD_NATIVE=ON (every file compiled with
 -march=native) gives the same bits too.
 """
-import importlib.util
 import os
 import re
 import subprocess
@@ -26,28 +25,17 @@ import pytest
 
 from bbpd import reference as ref
 
+from scenes import sibling
+
 ROOT = Path(__file__).resolve().parents[2]
 VERSION = os.environ.get("BBPD_LAMMPS_VERSION", "20260704")
 DEFAULT_BUILD = ROOT / "build" / f"lammps-{VERSION}"
 OBJECTS = DEFAULT_BUILD / "CMakeFiles" / "bbpdplugin.dir" / "src"
 PATH_FILES = {"avx2": "bbpd_row_avx2.cpp.o", "avx512": "bbpd_row_avx512.cpp.o"}
-
-_spec = importlib.util.spec_from_file_location("bbpd_test_storage",
-                                               Path(__file__).with_name("test_storage.py"))
-storage = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(storage)
-_spec = importlib.util.spec_from_file_location("bbpd_test_pmb_compat",
-                                               Path(__file__).with_name("test_pmb_compat.py"))
-pmb_compat = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(pmb_compat)
-_spec = importlib.util.spec_from_file_location("bbpd_test_lps_compat",
-                                               Path(__file__).with_name("test_lps_compat.py"))
-lps_compat = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(lps_compat)
-_spec = importlib.util.spec_from_file_location("bbpd_test_ves_eps_compat",
-                                               Path(__file__).with_name("test_ves_eps_compat.py"))
-ves_eps_compat = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(ves_eps_compat)
+storage = sibling("test_storage")
+pmb_compat = sibling("test_pmb_compat")
+lps_compat = sibling("test_lps_compat")
+ves_eps_compat = sibling("test_ves_eps_compat")
 
 
 def cache_value(key):
@@ -256,20 +244,23 @@ def test_path_files_define_no_symbol_another_file_defines(objects):
 
 # ---------------------------------------------------------------------- the same bits
 
-@pytest.mark.parametrize("path", [pytest.param("avx2", marks=needs_path("avx2")),
-                                  pytest.param("avx512", marks=needs_path("avx512")), "auto"])
+EVERY_PATH = [pytest.param("avx2", marks=needs_path("avx2")),
+              pytest.param("avx512", marks=needs_path("avx512")), "auto"]
+
+
+def assert_portable_bits(got, portable, path):
+    for scene, state in portable.items():
+        assert got[scene] == state, f"{scene}: simd {path} differs from simd portable"
+
+
+@pytest.mark.parametrize("path", EVERY_PATH)
 def test_every_path_gives_the_portable_bits(lmp, tmp_path, portable_states, path):
-    got = states(lmp, tmp_path, path)
-    for scene, state in portable_states.items():
-        assert got[scene] == state, f"{scene}: simd {path} differs from simd portable"
+    assert_portable_bits(states(lmp, tmp_path, path), portable_states, path)
 
 
-@pytest.mark.parametrize("path", [pytest.param("avx2", marks=needs_path("avx2")),
-                                  pytest.param("avx512", marks=needs_path("avx512")), "auto"])
+@pytest.mark.parametrize("path", EVERY_PATH)
 def test_state_based_rows_give_the_portable_bits(lmp, tmp_path, portable_state_based, path):
-    got = state_based_states(lmp, tmp_path, path)
-    for scene, state in portable_state_based.items():
-        assert got[scene] == state, f"{scene}: simd {path} differs from simd portable"
+    assert_portable_bits(state_based_states(lmp, tmp_path, path), portable_state_based, path)
 
 
 def test_periodic_lps_block_is_the_same_on_1_2_4_ranks(lmp, tmp_path):
@@ -351,10 +342,7 @@ def test_forced_path_the_cpu_lacks_is_an_error(lmp, monkeypatch, path, nprocs):
     assert "use simd auto or one of portable" in proc.error
 
 
-_spec = importlib.util.spec_from_file_location("bbpd_test_mpi_restart",
-                                               Path(__file__).with_name("test_mpi_restart.py"))
-mpi_restart = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(mpi_restart)
+mpi_restart = sibling("test_mpi_restart")
 
 
 @needs_path("avx2")

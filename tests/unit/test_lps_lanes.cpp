@@ -8,6 +8,7 @@
 
 #include "bbpd_lps_lanes.h"
 #include "bbpd_lps_row.h"
+#include "bbpd_test_family.h"
 
 #include <gtest/gtest.h>
 
@@ -18,14 +19,10 @@
 #include <vector>
 
 namespace LPS = BBPD::LPS;
-namespace PMB = BBPD::PMB;
+using namespace BBPD::test;    // the family: LC, DELTA, VOLUME, K, G, for_each_partner
 
 namespace {
 
-constexpr double LC = 0.5e-3;
-constexpr double DELTA = 1.5001e-3;
-constexpr double VOLUME = LC * LC * LC;
-constexpr double K = 14.9e9, G = 9.3e9;
 // displacements up to this share of the lattice constant: stretches of about 1e-2
 constexpr double JIGGLE = 0.01;
 // portable lanes against one accumulator: the same terms summed in another order
@@ -46,18 +43,14 @@ Scene scene(int nbonds, unsigned seed)
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   Scene s;
   s.x = {0.0, 0.0, 0.0};
-  for (int a = -3; a <= 3; a++)
-    for (int b = -3; b <= 3; b++)
-      for (int c = -3; c <= 3; c++) {
-        const double p[3] = {a * LC, b * LC, c * LC};
-        const double xi0 = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-        if (xi0 == 0.0 || !PMB::in_family(xi0 * xi0, DELTA) || s.n() == nbonds) continue;
-        for (double v : p) s.x.push_back(v + JIGGLE * LC * u(gen));
-        s.offset.push_back(static_cast<BBPD::PartnerOffset>(s.n() + 1));
-        s.partner.push_back(s.n() + 1);
-        s.xi0.push_back(xi0);
-        s.wv.push_back(LPS::weighted_partner_volume(xi0, DELTA, LC, VOLUME));
-      }
+  for_each_partner([&](const double *p, double xi0) {
+    if (s.n() == nbonds) return;
+    for (int i = 0; i < 3; i++) s.x.push_back(p[i] + JIGGLE * LC * u(gen));
+    s.offset.push_back(static_cast<BBPD::PartnerOffset>(s.n() + 1));
+    s.partner.push_back(s.n() + 1);
+    s.xi0.push_back(xi0);
+    s.wv.push_back(LPS::weighted_partner_volume(xi0, DELTA, LC, VOLUME));
+  });
   // padding the SIMD loads of offsets may read past the row (as the bond storage pads)
   for (int l = 0; l < BBPD::LANES; l++) s.offset.push_back(0);
   const int natoms = s.n() + 1;

@@ -5,10 +5,12 @@
    EPS returns a plastic row onto its yield surface and keeps or forgets the plastic extension
    as peri/eps does. */
 
+#include "bbpd_bond_values.h"
 #include "bbpd_eps.h"
 #include "bbpd_lps.h"
 #include "bbpd_lps_history_row.h"
 #include "bbpd_pmb_rules.h"
+#include "bbpd_test_family.h"
 #include "bbpd_ves.h"
 
 #include <gtest/gtest.h>
@@ -148,7 +150,10 @@ TEST(Eps, PlasticRowReturnsToTheYieldSurface)
    partners) in a uniform simple shear: every atom has the state of the body */
 namespace {
 
-constexpr double LC = 0.5e-3, DELTA = 1.5001e-3, VOLUME = LC * LC * LC, K = 14.9e9;
+using BBPD::test::DELTA;
+using BBPD::test::LC;
+using BBPD::test::VOLUME;
+constexpr double K = 14.9e9;
 
 struct ShearedRow {
   std::vector<double> x;    // 3 per atom, atom 0 at the origin
@@ -160,27 +165,16 @@ struct ShearedRow {
   int n() const { return static_cast<int>(partner.size()); }
 };
 
-struct Values {
-  const double *xi0, *wv;
-  double xi0_at(int k, int) const { return xi0[k]; }
-  double coef_at(int k, int) const { return wv[k]; }
-};
-
 ShearedRow sheared_row(double gamma)
 {
   ShearedRow row;
   row.x = {0.0, 0.0, 0.0};
-  for (int a = -3; a <= 3; a++)
-    for (int b = -3; b <= 3; b++)
-      for (int c = -3; c <= 3; c++) {
-        const double p[3] = {a * LC, b * LC, c * LC};
-        const double xi0 = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-        if (xi0 == 0.0 || !BBPD::PMB::in_family(xi0 * xi0, DELTA)) continue;
-        row.x.insert(row.x.end(), {p[0] + gamma * p[1], p[1], p[2]});
-        row.partner.push_back(row.n() + 1);
-        row.xi0.push_back(xi0);
-        row.wv.push_back(LPS::weighted_partner_volume(xi0, DELTA, LC, VOLUME));
-      }
+  BBPD::test::for_each_partner([&](const double *p, double xi0) {
+    row.x.insert(row.x.end(), {p[0] + gamma * p[1], p[1], p[2]});
+    row.partner.push_back(row.n() + 1);
+    row.xi0.push_back(xi0);
+    row.wv.push_back(LPS::weighted_partner_volume(xi0, DELTA, LC, VOLUME));
+  });
   double m = 0.0, sum = 0.0;
   for (int k = 0; k < row.n(); k++) {
     const double *y = &row.x[3 * row.partner[k]];
@@ -204,7 +198,7 @@ LPS::RowSums sums_of(const ShearedRow &row, const F &fam, const typename F::Plan
 {
   LPS::RowSums s;
   LPS::history_row_sums<F, true, false, true, COMMIT>(
-      row.x.data(), 0, row.partner.data(), Values{row.xi0.data(), row.wv.data()}, row.n(),
+      row.x.data(), 0, row.partner.data(), BBPD::PerBondValues{row.xi0.data(), row.wv.data()}, row.n(),
       row.r.data(), row.states.data(), 3.0 * K, fam, plan, LPS::third(row.theta), row.slot.data(),
       hist.data(), no_check, s);
   return s;
@@ -250,7 +244,7 @@ TEST(HistoryRow, EpsPlasticRowReturnsToTheYieldSurfaceAndRepeats)
   const EPS::Family f{{DEVIATORIC, EPS::pointwise_yield_value(1.0e7, DELTA), m}};
   std::vector<double> hist(2 * 2 * row.n() + 2, 0.0);
   const double norm = LPS::history_row_norm<EPS::Family, true, false>(
-      row.x.data(), 0, row.partner.data(), Values{row.xi0.data(), row.wv.data()}, row.n(),
+      row.x.data(), 0, row.partner.data(), BBPD::PerBondValues{row.xi0.data(), row.wv.data()}, row.n(),
       row.r.data(), row.states.data(), LPS::third(row.theta), f, row.slot.data(), hist.data());
   const EPS::Family::Plan plan = f.plan(norm);
   ASSERT_TRUE(plan.plastic);

@@ -1,16 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """How big a run fits: examples/big-run/in.big at a few block sizes on several MPI ranks, with
-the memory per atom and per bond and the cost per step.
-
-Each run goes under mpirun with /usr/bin/time around every rank, which writes the rank's peak
-resident set to its own file (on the shared stderr the ranks' characters interleave); their
-sum is the run's. From the log: the atoms and bonds, the pair style's line
-"memory of the bonds and the pair style" (their memory_usage), LAMMPS's "Per MPI rank memory
-allocation" (its own count) and the loop, pair and output (restart) times. The margin between
-two sizes, (RSS_2 - RSS_1) / (atoms_2 - atoms_1), is the memory one more atom costs, free of
-the fixed cost of the program and its libraries; the largest size that fits follows from it.
-
-Commands: examples/big-run/README.md.
+the memory per atom (peak RSS of every rank, /usr/bin/time) and per bond and the cost per step;
+examples/big-run/README.md describes the measures and has the commands.
 """
 
 import re

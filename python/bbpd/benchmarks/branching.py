@@ -1,15 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Crack branching in glass: where, when and how fast the crack of the branching plate splits,
-for each kernel, horizon ratio m, horizon delta and traction sigma.
-
-Runs examples/crack-branching/in.crack_branching (Ha & Bobaru 2010; Bobaru & Zhang 2015) and
-reads what compute bbpd/crack/tip with branches yes wrote (tip.dat, tips.dat) and the damage
-dumps: the initiation, the first split (point, path length, fork time), the speeds before the
-fork (over PRE_WINDOW), from initiation to it and at the end (over END_WINDOW) against the
-model's c_R, the largest speed (above c_R the path jumped: no crack growth), the branch angle
-and the mirror symmetry of the two branches; examples/crack-branching/README.md defines each.
-
-Commands: examples/crack-branching/README.md.
+"""Crack branching in glass: where, when and how fast the crack of
+examples/crack-branching/in.crack_branching splits, per kernel, m, delta and traction
+(examples/crack-branching/README.md defines each measure and has the commands).
 """
 
 import time

@@ -1,21 +1,9 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Wave dispersion of a 1D BBPD bar: analytic curves and dispersion measured from LAMMPS runs
-(Bouaraquia & Mabssout 2026, sec. 4.1, Figs. 4-6).
-
-measured   examples/dispersion-1d/in.dispersion (a periodic ring of atoms, model 1d, released
-           from a Gaussian displacement pulse) dumps u(x, t); bbpd-measure-dispersion (FFTW)
-           turns it into the ridge omega(k) of the 2-D power spectrum.
-analytic   bbpd-dispersion-curves (src/bbpd_dispersion.h) on the same k grid:
-             continuous        eq. 29
-             discrete/paper    eq. 31 as printed (w_j = W(j/m), j <= m)
-             discrete          eq. 31 with the partial-volume weights C_v of eq. 19, which is
-                               what pair bbpd integrates
-             ... + dt          the velocity-Verlet shift omega -> (2/dt) asin(dt omega/2)
-           The LAMMPS run must reproduce "discrete + dt".
-errors     max |omega_measured/omega_analytic - 1| over the k whose ridge carries energy
-           (power >= MIN_POWER of the strongest) in a k dx range.
-
-Commands: examples/dispersion-1d/README.md.
+"""Wave dispersion of a 1D BBPD bar (Bouaraquia & Mabssout 2026, sec. 4.1, Figs. 4-6): omega(k)
+measured from examples/dispersion-1d/in.dispersion (bbpd-measure-dispersion) against the
+analytic curves of bbpd-dispersion-curves (eq. 29, eq. 31 as printed, eq. 31 with C_v, each
+with and without the velocity-Verlet shift); examples/dispersion-1d/README.md defines the
+errors and has the commands.
 """
 
 import glob
@@ -32,6 +20,8 @@ from matplotlib.lines import Line2D
 
 from bbpd import plots, readers
 from bbpd.kernels import COLORS, KERNELS
+from bbpd.markdown import cell
+from bbpd.markdown import table as md_table
 from bbpd.readers import read_csv
 from bbpd.runner import run_lammps
 from bbpd.benchmarks import cli
@@ -328,28 +318,37 @@ def plot_figures(results, paper, cv, figdir, v=None):
     return paths
 
 
-# --------------------------------------------------------------------------- command line
+# --------------------------------------------------------------------------- table
 
-def summary(results, table):
-    lines = ["measured omega(k) vs analytic (max relative deviation over energetic k):",
-             f"{'kernel':<11} {'range':<12} {'disc+Cv+dt':>11} {'(to pi/dx)':>11} "
-             f"{'disc+Cv':>9} {'eq31+dt':>9} {'contin.':>9}  builds"]
-    for k, r in results.items():
-        e = r["errors"]
-        lines.append(f"{k:<11} {KDX_RANGE[0]:g}-{KDX_RANGE[1]:g}     "
-                     f"{e['discrete_dt']['max']:11.2e} {e['discrete_dt_full']['max']:11.2e} "
-                     f"{e['discrete_no_dt']['max']:9.2e} {e['paper_eq31_dt']['max']:9.2e} "
-                     f"{e['continuous']['max']:9.2e}  {r['info']['neighbor_builds']}")
-    lines.append("analytic phase velocity c/v (m = 5) at k dx = "
-                 + ", ".join(f"{x:g}" for x in TABLE_KDX) + "; k -> 0; where v_g < 0 (k dx):")
-    for k, row in table.items():
-        for label, d in row.items():
-            ph = " ".join(f"{d['phase'][f'{x:g}']:.4f}" for x in TABLE_KDX)
-            neg = " ".join(f"({a:.3f}, {b:.3f})" for a, b in d["group_negative"])
-            lines.append(f"  {k:<11} {label:<12} {ph}  k->0 {d['phase_k0']:.4f}  "
-                         f"min v_g {d['group_min']:.4f} at {d['group_min_kdx']:.3f}; v_g < 0 on "
-                         + (neg or "no k"))
-    return "\n".join(lines)
+def table(runs, analytic):
+    """The measured phase velocity beside the analytic relations at TABLE_KDX, the deviations
+    and the smallest group velocity of each kernel's run (runs: kernel -> measure()'s result;
+    analytic: analytic_table()'s table): (header, rows, numbers), numbers holding per kernel the
+    smallest measured v_g/v over the energetic k ('min_vg') and the deviation from what LAMMPS
+    integrates ('dev')."""
+    header = ["kernel", "c/v measured at k dx = " + " / ".join(f"{x:g}" for x in TABLE_KDX),
+              "eq. 31 + C_v + dt (what LAMMPS integrates)", "paper: eq. 31 as printed",
+              "continuous eq. 29", "max dev. from eq. 31 + C_v + dt", "from eq. 31 as printed + dt",
+              "min v_g/v: measured / paper's eq. 31", "run time (s)"]
+    rows, min_vg, dev = [], {}, {}
+    for k, r in runs.items():
+        v = math.sqrt(r["info"]["E"] / r["info"]["rho"])
+        meas, ana, t = r["measured"], r["analytic"][k], analytic[k]
+        phase = meas["omega"] / meas["k"] / v
+        energetic = ((meas["power"] >= MIN_POWER) & (meas["k_dx"] >= KDX_RANGE[0])
+                     & (meas["k_dx"] <= KDX_RANGE[1]))
+        vg = measured_group_velocity(meas) / v
+        min_vg[k] = float(vg[energetic].min()) if energetic.any() else None
+        dev[k] = r["errors"]["discrete_dt"]["max"]
+        rows.append([k, " / ".join(f"{np.interp(x, meas['k_dx'], phase):.3f}" for x in TABLE_KDX),
+                     " / ".join(f"{np.interp(x, ana['k_dx'], ana['phase_discrete_dt']):.3f}"
+                                for x in TABLE_KDX),
+                     " / ".join(f"{t['discrete']['phase'][f'{x:g}']:.3f}" for x in TABLE_KDX),
+                     " / ".join(f"{t['continuous']['phase'][f'{x:g}']:.3f}" for x in TABLE_KDX),
+                     f"{dev[k]:.1e}", f"{r['errors']['paper_eq31_dt']['max']:.1e}",
+                     f"{cell(min_vg[k], '.3f')} / {t['discrete']['group_min']:.3f}",
+                     cell(r.get("wall_time"), ".1f")])
+    return header, rows, {"min_vg": min_vg, "dev": dev}
 
 
 def main(argv=None):
@@ -365,13 +364,13 @@ def main(argv=None):
                 if getattr(args, k)}
     work = Path(args.work)
     results = measure(args.kernels, work, nprocs=args.nprocs, **lmp_vars)
-    table, paper, cv = analytic_table(work)
-    print(summary(results, table))
+    analytic, paper, cv = analytic_table(work)
+    print(md_table(*table(results, analytic)[:2]))
     paths = plot_figures(results, paper, cv, args.figures or work)
     for p in paths:
         print("wrote", p)
     out = {k: {"info": r["info"], "errors": r["errors"]} for k, r in results.items()}
-    out["analytic"] = table
+    out["analytic"] = analytic
     (work / "dispersion.json").write_text(json.dumps(out, indent=1))
     print("wrote", work / "dispersion.json")
 

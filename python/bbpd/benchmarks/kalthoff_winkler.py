@@ -1,14 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Kalthoff-Winkler impact benchmark (Bouaraquia & Mabssout 2026, sec. 4.2.3).
-
-Runs examples/kalthoff-winkler/in.kalthoff_winkler and measures, from its outputs only, the
-initiation (first broken bond within delta of a tip; the damage band: an atom ahead of the tip
-on the outer side reaching PHI_CRACK), the crack path (crack atoms, damage >= PHI_CRACK, linked
-to the notch flanks), its angle (principal axis over FIT_RANGE) and speed, the mirror symmetry
-of the two cracks and the damage far from both (the far-edge crack and any other):
-examples/kalthoff-winkler/README.md defines each.
-
-Commands: examples/kalthoff-winkler/README.md.
+"""Kalthoff-Winkler impact benchmark (Bouaraquia & Mabssout 2026, sec. 4.2.3): runs
+examples/kalthoff-winkler/in.kalthoff_winkler and measures from its outputs the initiation, the
+crack path, its angle and speed, the cracks' mirror symmetry and the damage far from them
+(examples/kalthoff-winkler/README.md defines each and has the commands).
 """
 
 import json
@@ -24,6 +18,7 @@ from bbpd.crack_path import clusters
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_noted
 from bbpd.markdown import cell as fmt
+from bbpd.markdown import table as md_table
 from bbpd import plots
 from bbpd.benchmarks import cli
 
@@ -41,6 +36,19 @@ LINK = 1.5            # neighbour links in the crack graph, in grid spacings (8-
 FIT_RANGE = (10.0e-3, 50.0e-3)   # crack length range for the angle and speed fits (m):
                                  # beyond the tip's horizon at dx <= 2 mm, before the edge
                                  # (a 70-degree crack meets y = 0 at a length of ~80 mm)
+# the loading study's measures (README, "Loading study")
+T_EVAL_US = 70.0                    # paper Fig. 14
+INITIAL_RANGE = (3.0e-3, 15.0e-3)   # m from the notch tip: past the tip's horizon (5 mm at 1 mm)
+SPEED_WINDOW_US = 5.0
+ANGLE_DEFS = ("initial", "fit", "chord")
+ARREST_GROWTH_DX, ARREST_US = 2.0, 10.0   # a crack that grows < 2 dx in the last 10 us stopped
+
+E, NU, RHO = 190.0e9, 0.25, 7800.0        # paper sec. 4.2.3 (kalthoff_winkler_steel.bbpd)
+MU = E / (2.0 * (1.0 + NU))
+C_S = math.sqrt(MU / RHO)                 # shear wave speed
+C_P = math.sqrt(3.0 * MU / RHO)           # plane-strain P wave, nu = 1/4 (lambda = mu)
+# Rayleigh speed for nu = 1/4: root of the Rayleigh equation, c_R / c_s = sqrt(2 - 2/sqrt(3))
+C_R = C_S * math.sqrt(2.0 - 2.0 / math.sqrt(3.0))
 
 
 # --------------------------------------------------------------------------- reading outputs
@@ -65,6 +73,9 @@ def read_log(path):
     info["flank"] = info["dx"]
     if m3 and deleted and int(deleted[1]) > 0:
         info["flank"] = 0.5 * float(m3[1]) + info["dx"]
+    m = re.search(r"^KW loading: v0 (\S+) tramp (\S+) thold (\S+) layer (\S+)", text, re.M)
+    if m:
+        info.update(v0=float(m[1]), tramp=float(m[2]), thold=float(m[3]), layer=float(m[4]))
     return info
 
 
@@ -175,8 +186,52 @@ def mirror_damage_difference(x, y, phi, dx, Ly):
     return float(max(abs(p - mirror[k]) for k, p in pairs)) if exact else None
 
 
+def chord_angle(tip, crack_tip, outer_sign):
+    """Angle (deg) of the line from the notch tip to the crack tip, from +x to the outer side."""
+    dx_, dy_ = crack_tip[0] - tip[0], outer_sign * (crack_tip[1] - tip[1])
+    if dx_ == 0.0 and dy_ == 0.0:
+        return None
+    return math.degrees(math.atan2(dy_, dx_))
+
+
+def angles_of(x, y, phi, g):
+    """The three angles (ANGLE_DEFS) and the crack tip of both cracks in one damage field."""
+    cr = notch_cracks(x, y, phi, g)
+    out = {}
+    for side, yn, sign in (("lo", g["ylo"], -1.0), ("hi", g["yhi"], 1.0)):
+        tip = (g["a"], yn)
+        ctip, length = tip_of(x, y, cr[side], tip, g["dx"])
+        out[side] = {
+            "initial": crack_angle(x, y, cr[side], tip, sign, fit_range=INITIAL_RANGE),
+            "fit": crack_angle(x, y, cr[side], tip, sign),
+            "chord": chord_angle(tip, ctip, sign) if length > 0 else None,
+            "tip": [float(ctip[0]), float(ctip[1])], "length_mm": length * 1e3}
+    return out
+
+
+def mean_or_none(vals):
+    vals = [v for v in vals if v is not None]
+    return float(np.mean(vals)) if vals else None
+
+
+def peak_speed(t_us, lengths, window_us=SPEED_WINDOW_US):
+    """Largest mean speed (m/s) of the crack tip over any window of window_us."""
+    t, L = np.asarray(t_us), np.asarray(lengths)
+    best = None
+    for i in range(len(t)):
+        j = np.searchsorted(t, t[i] + window_us - 1e-9)
+        if j >= len(t):
+            break
+        if L[i] <= 0.0:
+            continue
+        v = (L[j] - L[i]) / ((t[j] - t[i]) * 1e-6)
+        best = v if best is None else max(best, v)
+    return best
+
+
 def analyse(workdir):
-    """All measurements of one run directory (the files the input script writes)."""
+    """All measurements of one run directory (the files the input script writes): the
+    benchmark's and the loading study's (README, "Loading study")."""
     workdir = Path(workdir)
     g = read_log(workdir / "log.lammps")
     dt, dx, delta = g["dt"], g["dx"], g["delta"]
@@ -199,20 +254,33 @@ def analyse(workdir):
     res["first_break_at_tip"] = (res["t_first_break_us"] is not None and bool(inits)
                                  and abs(res["t_init_us"] - res["t_first_break_us"]) < 0.5 * dt * 1e6)
 
-    # crack-tip trajectories from the damage snapshots
+    # crack-tip trajectories from the damage snapshots, and the far-edge crack: new damage at
+    # x > Lx - delta (t_far_edge_us), and the first that lies farther than delta + dx from the
+    # notch cracks (far_edge_own_us: a notch crack that runs into the far edge is not one)
     traj = {"t_us": [], "lo": [], "hi": [], "L_lo": [], "L_hi": []}
     sym = 0.0
-    res["t_far_edge_us"] = None
+    res["t_far_edge_us"] = res["far_edge_own_us"] = res["far_edge_y_mm"] = None
     snaps = readers.dump_snapshots(workdir / "damage.dump")
     initial = {int(i): p for i, p in zip(snaps[0][1]["id"], snaps[0][1]["c_dmg"])}
     for step, s in snaps:
         x, y, phi = s["f_ref[1]"], s["f_ref[2]"], s["c_dmg"]
-        if res["t_far_edge_us"] is None:
-            grew = phi > np.array([initial.get(int(i), 0.0) for i in s["id"]]) + 1e-12
-            if (grew & (x > g["Lx"] - delta)).any():
-                res["t_far_edge_us"] = step * dt * 1e6
+        t = step * dt * 1e6
         cr = notch_cracks(x, y, phi, g)
-        traj["t_us"].append(step * dt * 1e6)
+        if res["far_edge_own_us"] is None:
+            grew = phi > np.array([initial.get(int(i), 0.0) for i in s["id"]]) + 1e-12
+            edge = np.nonzero(grew & (x > g["Lx"] - delta))[0]
+            if len(edge) and res["t_far_edge_us"] is None:
+                res["t_far_edge_us"] = t
+            path = cr["lo"] | cr["hi"]
+            if len(edge) and path.any():
+                dist = cKDTree(np.column_stack([x[path], y[path]])).query(
+                    np.column_stack([x[edge], y[edge]]))[0]
+                edge = edge[dist > delta + dx]
+            if len(edge):
+                res["far_edge_own_us"] = t
+                off = np.abs(y[edge] - 0.5 * g["Ly"]) * 1e3    # distance from the mid-line
+                res["far_edge_y_mm"] = [float(off.min()), float(off.max())]
+        traj["t_us"].append(t)
         for side in ("lo", "hi"):
             p, L = tip_of(x, y, cr[side], tips[side], dx)
             traj[side].append([float(p[0]), float(p[1])])
@@ -228,8 +296,8 @@ def analyse(workdir):
         res[f"length_{side}_mm"] = float(L[-1] * 1e3)
 
     # the end state: angle, mirror mismatch, damage far from the cracks
-    snaps = readers.dump_snapshots(workdir / "final.dump")
-    (_, s0), (_, s1) = snaps[0], snaps[-1]
+    final = readers.dump_snapshots(workdir / "final.dump")
+    (_, s0), (_, s1) = final[0], final[-1]
     x, y, phi = s1["f_ref[1]"], s1["f_ref[2]"], s1["c_dmg"]
     cr = notch_cracks(x, y, phi, g)
     for side, sign in (("lo", -1.0), ("hi", 1.0)):
@@ -240,11 +308,62 @@ def analyse(workdir):
     for key in ("angle_{}_deg", "speed_{}"):
         vals = [res[key.format(s)] for s in ("lo", "hi") if res[key.format(s)] is not None]
         res[key.replace("_{}", "")] = float(np.mean(vals)) if vals else None
-
     far_clusters = far_damage(x, y, phi, s0["c_dmg"], cr, g)
     res["far_damage"] = far_clusters
     res["far_damage_other"] = sum(c["atoms"] for c in far_clusters if not c["far_edge"])
     res["far_edge_crack"] = any(c["far_edge"] for c in far_clusters)
+    res.update(study_measures(snaps, traj, g))
+    for key in ("speed", "speed_peak"):
+        res[key + "_over_cR"] = None if res[key] is None else res[key] / C_R
+    return res
+
+
+def study_measures(snaps, traj, g):
+    """The loading study's measures of the damage snapshots and the tip trajectories: the
+    angles at T_EVAL_US and at the end, the initial angle, how the crack stops, its speeds."""
+    res = {}
+    times = [step * g["dt"] * 1e6 for step, _ in snaps]
+    # the snapshot at T_EVAL_US: the last one at or before it (snapshots are ~1 us apart)
+    k70 = max([i for i, t in enumerate(times) if t <= T_EVAL_US + 1e-6], default=None)
+    for name, k in (("t70", k70), ("end", len(snaps) - 1)):
+        if k is None:
+            continue
+        s = snaps[k][1]
+        ang = angles_of(s["f_ref[1]"], s["f_ref[2]"], s["c_dmg"], g)
+        res[f"angles_{name}"] = ang
+        res[f"t_{name}_us"] = times[k]
+        for d in ANGLE_DEFS:
+            res[f"{d}_{name}_deg"] = mean_or_none([ang[sd][d] for sd in ("lo", "hi")])
+        res[f"length_{name}_mm"] = mean_or_none([ang[sd]["length_mm"] for sd in ("lo", "hi")])
+
+    # the initial angle on the first snapshot in which the crack reaches past INITIAL_RANGE
+    # (later damage, e.g. the far-edge crack joining the path, cannot change it)
+    initial, when = {}, {}
+    for side in ("lo", "hi"):
+        past = np.nonzero(np.array(traj["L_" + side]) >= INITIAL_RANGE[1])[0]
+        k = int(past[0]) if len(past) else len(snaps) - 1
+        s = snaps[k][1]
+        initial[side] = angles_of(s["f_ref[1]"], s["f_ref[2]"], s["c_dmg"], g)[side]["initial"]
+        when[side] = times[k]
+    res["initial_deg"] = mean_or_none(list(initial.values()))
+    res["initial_side_deg"] = initial      # each crack's own: they differ off the square grid
+    res["t_initial_us"] = min(when.values())
+
+    # when a crack tip first comes within delta of the plate boundary
+    res["t_edge_us"] = None
+    for t, plo, phi_ in zip(traj["t_us"], traj["lo"], traj["hi"]):
+        if any(min(p[0], g["Lx"] - p[0], p[1], g["Ly"] - p[1]) < g["delta"] for p in (plo, phi_)):
+            res["t_edge_us"] = t
+            break
+    Ls = 0.5 * (np.array(traj["L_lo"]) + np.array(traj["L_hi"]))
+    # arrest: the crack grew by less than ARREST_GROWTH over the last ARREST_US of the run
+    t_all = np.array(traj["t_us"])
+    near_end = np.nonzero((Ls >= Ls[-1] - ARREST_GROWTH_DX * g["dx"]) & (Ls > 0))[0]
+    t_stop = float(t_all[near_end[0]]) if len(near_end) else float(t_all[-1])
+    res["t_arrest_us"] = (t_stop if res["t_edge_us"] is None and Ls[-1] > 0
+                          and t_all[-1] - t_stop >= ARREST_US else None)
+    res["length_end_mm"] = float(Ls[-1] * 1e3)
+    res["speed_peak"] = peak_speed(traj["t_us"], Ls)
     return res
 
 
@@ -328,22 +447,29 @@ def plot_runs(results, path):
 
 # --------------------------------------------------------------------------- table
 
-def table(results):
-    """Markdown table: kernel x resolution, with the paper's values beside ours."""
-    rows = ["| kernel | dx (mm) | atoms | steps | first bond (us) | damage band (us) | paper (us) | angle (deg) | exp. (deg) | speed (m/s) | tip mirror mismatch (mm) | "
-            "far-edge crack from (us) | other far damage (atoms) | wall (s) | ranks |",
-            "|" + "---|" * 15]
-    for r in sorted(results, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx"])):
-        natoms = len(r["damage_map"]["x"])
-        rows.append("| " + " | ".join([
-            r["kernel"], f"{r['dx'] * 1e3:g}", str(natoms), str(r["nsteps"]),
-            fmt(r["t_init_us"], ".1f"), fmt(r["t_band_us"], ".1f"),
-            f"{PAPER_INITIATION_US[r['kernel']]:.1f}", fmt(r["angle_deg"], ".1f"),
-            f"{EXPERIMENT_ANGLE_DEG:.0f}", fmt(r["speed"], ".0f"), f"{r['symmetry_tip_mm']:.2g}",
-            fmt(r["t_far_edge_us"], ".0f") if r["far_edge_crack"] else "none",
-            str(r["far_damage_other"]),
-            f"{r['wall_s']:.0f}", str(r["nprocs"])]) + " |")
-    return "\n".join(rows)
+def row(res):
+    """The CSV row of one run (examples/kalthoff-winkler/results/kalthoff_winkler.csv)."""
+    return {"kernel": res["kernel"], "dx_m": res["dx"], "atoms": len(res["damage_map"]["x"]),
+            "first_bond_us": res["t_init_us"], "damage_band_us": res["t_band_us"],
+            "angle_deg": res["angle_deg"], "speed_m_s": res["speed"],
+            "symmetry_tip_mm": res["symmetry_tip_mm"],
+            "far_edge_crack_us": res["t_far_edge_us"] if res["far_edge_crack"] else None,
+            "far_damage_other_atoms": res.get("far_damage_other"), "run_time_s": res["wall_s"]}
+
+
+def table(rows):
+    """Markdown table of row()s: kernel x resolution, the paper's values beside ours."""
+    header = ["kernel", "dx (mm)", "atoms", "first bond (us)", "damage band (us)", "paper (us)",
+              "angle (deg)", "exp. (deg)", "speed (m/s)", "tip mirror mismatch (mm)",
+              "far-edge crack from (us)", "other far damage (atoms)", "run time (s)"]
+    cells = [[r["kernel"], f"{r['dx_m'] * 1e3:g}", f"{r['atoms']:.0f}", fmt(r["first_bond_us"], ".1f"),
+              fmt(r["damage_band_us"], ".1f"), f"{PAPER_INITIATION_US[r['kernel']]:.1f}",
+              fmt(r["angle_deg"], ".1f"), f"{EXPERIMENT_ANGLE_DEG:.0f}", fmt(r["speed_m_s"], ".0f"),
+              fmt(r["symmetry_tip_mm"], ".1e"),
+              "none" if r["far_edge_crack_us"] is None else f"{r['far_edge_crack_us']:.0f}",
+              fmt(r["far_damage_other_atoms"], ".0f"), fmt(r["run_time_s"], ".1f")]
+             for r in sorted(rows, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx_m"]))]
+    return md_table(header, cells)
 
 
 def main(argv=None):
@@ -371,10 +497,9 @@ def main(argv=None):
         if len(same) > 1:
             plot_runs(same, figs / f"paths_{kernel}_convergence.png")
     # the table covers every finished run in --work, also those of earlier invocations
-    runs = sorted(work.glob("*/results.json"))
-    results = [json.loads(p.read_text()) for p in runs]
-    print(table(results))
-    (work / "table.md").write_text(table(results) + "\n")
+    rows = [row(json.loads(p.read_text())) for p in sorted(work.glob("*/results.json"))]
+    print(table(rows))
+    (work / "table.md").write_text(table(rows) + "\n")
 
 
 if __name__ == "__main__":

@@ -1,13 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Kalthoff-Winkler in 3D, the 9 mm plate resolved through its thickness.
-
-examples/kalthoff-winkler/in.kalthoff_winkler_3d struck by the projectile (Gaussian kernel, the
-paper's G_c) at m = delta/dx = M so that the horizon fits at least MIN_HORIZONS_THROUGH times
-into the thickness, at RESOLUTIONS, on NPROCS ranks, to 100 us, beside the 2D plate of the same
-grid. Measured: the loading study's angles (study.angles_of) on the mid-plane and on both faces,
-the first broken bond and the damage band, atoms, bonds, steps, loop time and memory.
-
-Commands: examples/kalthoff-winkler/README.md, "3D plate resolved through its thickness".
+"""Kalthoff-Winkler in 3D, the 9 mm plate resolved through its thickness, beside the 2D plate
+of the same grid (examples/kalthoff-winkler/README.md, "3D plate resolved through its
+thickness", has the commands).
 """
 
 import re
@@ -69,7 +63,7 @@ def log_figures(text):
 
 
 def face_angles(workdir, g, t_us):
-    """study.angles_of on each face (damage_faces.dump) at the last snapshot at or before t_us"""
+    """kw.angles_of on each face (damage_faces.dump) at the last snapshot at or before t_us"""
     snaps = readers.dump_snapshots(Path(workdir) / "damage_faces.dump")
     times = [step * g["dt"] * 1e6 for step, _ in snaps]
     k = max([i for i, t in enumerate(times) if t <= t_us + 1e-6], default=len(snaps) - 1)
@@ -78,7 +72,7 @@ def face_angles(workdir, g, t_us):
     out = {}
     for name, layer in (("lo", z.min()), ("hi", z.max())):
         sel = np.abs(z - layer) < 0.25 * g["dx"]
-        out[name] = study.angles_of(s["f_ref[1]"][sel], s["f_ref[2]"][sel], s["c_dmg"][sel], g)
+        out[name] = kw.angles_of(s["f_ref[1]"][sel], s["f_ref[2]"][sel], s["c_dmg"][sel], g)
     return out
 
 
@@ -99,10 +93,10 @@ def measure(workdir, setup, dx, m):
     row.update(log_figures(log))
     if setup == "3d":
         g = {k: r[k] for k in ("dx", "delta", "a", "ylo", "yhi", "Lx", "Ly", "dt", "flank")}
-        faces = face_angles(workdir, g, study.T_EVAL_US)
-        row["fit_face_lo_deg"] = study.mean_or_none([faces["lo"][sd]["fit"] for sd in ("lo", "hi")])
-        row["fit_face_hi_deg"] = study.mean_or_none([faces["hi"][sd]["fit"] for sd in ("lo", "hi")])
-        row["chord_face_deg"] = study.mean_or_none([faces[f][sd]["chord"] for f in ("lo", "hi")
+        faces = face_angles(workdir, g, kw.T_EVAL_US)
+        row["fit_face_lo_deg"] = kw.mean_or_none([faces["lo"][sd]["fit"] for sd in ("lo", "hi")])
+        row["fit_face_hi_deg"] = kw.mean_or_none([faces["hi"][sd]["fit"] for sd in ("lo", "hi")])
+        row["chord_face_deg"] = kw.mean_or_none([faces[f][sd]["chord"] for f in ("lo", "hi")
                                                     for sd in ("lo", "hi")])
     return {c: row[c] for c in COLUMNS}
 

@@ -1,14 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Kalthoff-Winkler on the field's standard deck, beside the paper's loading.
-
-Most published simulations of the experiment run the deck of Borden et al. (2012): 16.5 m/s
-held on the struck edge, rho = 8000 kg/m^3, G_c = 2.213e4 J/m^2 (and nu = 0.3, which a
-bond-based model cannot take); the paper holds 32 m/s with rho = 7800 and G_c = 6.9e4. DECKS
-runs both on in.kalthoff_winkler for the three kernels at DX_VALUES, and both loadings on the
-state-based solid (bbpd/lps/KERNEL) at nu = 0.3: what Poisson's ratio does to the angle. The
-angles are the loading study's.
-
-Commands: examples/kalthoff-winkler/README.md, "The standard deck".
+"""Kalthoff-Winkler on the field's standard deck (Borden et al. 2012) beside the paper's
+loading, bond-based and on bbpd/lps/KERNEL (DECKS), with the loading study's angles
+(examples/kalthoff-winkler/README.md, "The standard deck", has the commands).
 """
 
 import sys
@@ -120,7 +113,7 @@ def comparison(rows):
         return None
     out = dict(fine=fine, coarse=coarse, deck={}, grid={}, changes={}, hits=[])
     for k in KERNELS:
-        for d in study.ANGLE_DEFS:
+        for d in kw.ANGLE_DEFS:
             if (v := moved("paper", "standard", k, fine, d)) is not None:
                 out["deck"][d, k] = v
         a, b = by.get(("standard", k, coarse)), by.get(("standard", k, fine))
@@ -133,7 +126,7 @@ def comparison(rows):
                 out["changes"][deck] = (dx, got)
                 break
     for r in sorted(rows, key=_order):
-        defs = [d for d in study.ANGLE_DEFS if r[f"{d}_deg"] is not None
+        defs = [d for d in kw.ANGLE_DEFS if r[f"{d}_deg"] is not None
                 and abs(r[f"{d}_deg"] - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
         if defs and r["crack_stops"].startswith("edge"):
             out["hits"].append((r["deck"], r["kernel"], r["dx_mm"], defs))

@@ -1,14 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Kalthoff-Winkler on perturbed and rotated grids: how far the square grid's preferred
-directions move the crack angle (examples/kalthoff-winkler/README.md, "The grid's pull").
-
-Runs in.kalthoff_winkler on the GRIDS (`-var grid square | perturbed | rotated`) under the
-paper's prescribed loading and with the projectile, and measures each crack on its own with
-the loading study's angles (off the square grid the two cracks are no mirror images). The
-pull, per kernel, loading, grid spacing and angle: the square grid's angle minus the mean
-over every off-grid crack, with its standard error.
-
-Commands: examples/kalthoff-winkler/README.md.
+"""Kalthoff-Winkler on perturbed and rotated grids (GRIDS): how far the square grid's
+preferred directions pull the crack angle (examples/kalthoff-winkler/README.md, "The grid's
+pull", defines the pull and has the commands).
 """
 
 import math
@@ -50,7 +43,7 @@ LOADINGS = ("prescribed", "projectile")
 CASES = ([(k, 2.0e-3, tuple(GRIDS)) for k in kw.KERNELS]
          + [("gaussian", 1.0e-3, ("square", "perturbed-1", "rotated-22.5", "rotated-30"))])
 TEND = projectile.TEND
-ANGLES = study.ANGLE_DEFS
+ANGLES = kw.ANGLE_DEFS
 SIDES = ("lo", "hi")
 
 
@@ -82,7 +75,7 @@ def side_angle(res, side, definition):
     """One crack's angle (the study's definitions), None if it is shorter than the initial
     range at 70 us (its direction is no path yet)."""
     a70 = res.get("angles_t70", {}).get(side)
-    if a70 is None or a70["length_mm"] < study.INITIAL_RANGE[1] * 1e3:
+    if a70 is None or a70["length_mm"] < kw.INITIAL_RANGE[1] * 1e3:
         return None
     if definition == "initial":
         return res["initial_side_deg"][side]
@@ -96,22 +89,15 @@ COLUMNS = (("grid", "loading", "kernel", "dx_mm", "first_bond_us", "band_us")
 
 
 def row(res, grid):
-    """The CSV row of one run: both cracks' angles, initiation, length, how the crack stops."""
-    out = {"grid": grid, "loading": res["loading"], "kernel": res["kernel"],
-           "dx_mm": res["dx"] * 1e3, "first_bond_us": res["t_init_us"],
-           "band_us": res["t_band_us"]}
+    """The CSV row of one run: projectile.row's, with both cracks' angles and lengths."""
+    out = {c: v for c, v in projectile.row(res).items() if c in COLUMNS}
+    out["grid"] = grid
     for d in ANGLES:
         for side in SIDES:
             out[f"{d}_{side}_deg"] = side_angle(res, side, d)
     for side in SIDES:
         out[f"length_{side}_mm"] = res["angles_t70"][side]["length_mm"] if "angles_t70" in res else None
-    out["length_end_mm"] = res["length_end_mm"]
-    out["crack_stops"] = study.stops(res).split(" (")[0]
-    out["far_edge_us"] = res.get("far_edge_own_us")
-    out["v_interface"] = res.get("v_interface")
-    out["loop_cpu_s"] = res["loop_cpu_s"]
-    out["nprocs"] = res["nprocs"]
-    return out
+    return {c: out[c] for c in COLUMNS}
 
 
 def jobs(cases=CASES, loadings=LOADINGS, nprocs=1):
@@ -221,7 +207,7 @@ MIXES = (("the first broken bond", "", "t_mix_us", "psi"),
          ("the damage band", "_band", "t_band_mix_us", "psi_band"))
 CRITERIA = (("hoop strain", "hoop_strain"), ("hoop stress", "hoop_stress"),
             ("maximum energy release rate", "energy"))
-MEASURED = ("initial", "fit")    # the angles the verdict is read on (study.ANGLE_DEFS)
+MEASURED = ("initial", "fit")    # the angles the verdict is read on (kw.ANGLE_DEFS)
 AGREE_SE = 2.0    # a criterion agrees with a mean angle within this many standard errors
 
 
@@ -232,11 +218,11 @@ def _nearest(angle, predicted):
 def fine_angles(proj_rows, grid_rows):
     """(dx_mm, {definition: angles}) of the finest 2D runs with the paper's G_c, over every
     loading and grid (projectile.csv and grid_pull.csv, both cracks): what mix_verdict reads"""
-    fine = min(float(r["dx_mm"]) for r in proj_rows if r["setup"] == "2d")
+    fine = min(r["dx_mm"] for r in proj_rows if r["setup"] == "2d")
     ang = {}
     for d in MEASURED + ("chord",):
-        v = [projectile._num(r[f"{d}_deg"]) for r in proj_rows if r["setup"] == "2d"
-             and float(r["dx_mm"]) == fine and float(r["Gc"]) == 6.9e4]
+        v = [r[f"{d}_deg"] for r in proj_rows if r["setup"] == "2d" and r["dx_mm"] == fine
+             and r["Gc"] == 6.9e4]
         v += [r[f"{d}_{s}_deg"] for r in grid_rows for s in SIDES if float(r["dx_mm"]) == fine]
         ang[d] = [a for a in v if a is not None]
     return fine, ang

@@ -1,18 +1,10 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Kalthoff-Winkler with the experiment's projectile and the steel's published toughness values.
-
-Runs examples/kalthoff-winkler/in.kalthoff_winkler with `-var loading projectile` (an elastic
-steel body of type 2 hits the plate at v0 and pushes it through contact) and with the paper's
-`prescribed` loading, for several fracture energies Gc, and measures each run with the
-study's definitions (kalthoff_winkler_study.analyse) and, for the projectile, from
-projectile.dat: the momentum drift, the interface speed over INTERFACE_WINDOW_US against the 1D
-two-bar estimate, the contact force's drop and the contact's opening against 2 Lp / c
-(examples/kalthoff-winkler/README.md, "Projectile and toughness", defines each).
-
-Commands: examples/kalthoff-winkler/README.md.
+"""Kalthoff-Winkler struck by the experiment's projectile, for the steel's published
+toughness values (GC_VALUES): the loading study's angles and the contact measures of
+projectile.dat (examples/kalthoff-winkler/README.md, "Projectile and toughness", defines each
+and has the commands).
 """
 
-import csv
 import json
 import math
 import re
@@ -20,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
+from bbpd import csvfile
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as study
@@ -38,8 +31,8 @@ V0 = 32.0                                   # m/s, the experiment's impact veloc
 AREA_RATIO = math.pi * 0.025 ** 2 / (0.050 * 0.009)       # 4.363
 V_INTERFACE = V0 * AREA_RATIO / (AREA_RATIO + 1.0)         # 26.03 m/s (1D two-bar)
 # the projectile's waves: E and rho scaled alike keep the plate's speeds (plane strain, nu = 1/4)
-C_P = study.C_P                                           # 5407 m/s, plane wave
-C_STRIP = math.sqrt(study.E / (1.0 - study.NU ** 2) / study.RHO)   # 5097 m/s, plane-strain strip
+C_P = kw.C_P                                              # 5407 m/s, plane wave
+C_STRIP = math.sqrt(kw.E / (1.0 - kw.NU ** 2) / kw.RHO)   # 5097 m/s, plane-strain strip
 LP_DEFAULT = 0.100                                        # m, the input script's default
 
 # the interface speed is averaged from the end of the contact's rise to the return of the
@@ -69,7 +62,7 @@ def read_projectile(path):
 
 
 def measure_contact(d, dt):
-    """The projectile measures of the module docstring from read_projectile's columns."""
+    """The contact measures (README, "Projectile and toughness") from read_projectile's columns."""
     t = d["step"] * dt * 1e6
     p0 = d["px"][0]
     out = {"momentum_drift": float(np.max(np.abs(d["px"] - p0)) / abs(p0)),
@@ -119,7 +112,7 @@ def loop_cpu(text):
 def analyse(workdir):
     """The study's measures plus, for a projectile run, the contact measures."""
     workdir = Path(workdir)
-    res = study.analyse(workdir)
+    res = kw.analyse(workdir)
     log = (workdir / "log.lammps").read_text()
     proj = read_projectile_log(log)
     res["loading"] = "prescribed" if proj is None else "projectile"
@@ -212,20 +205,12 @@ def row(r):
 
 
 def write_csv(rows, path):
-    with open(path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=COLUMNS)
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: ("" if r[k] is None else r[k]) for k in COLUMNS})
+    csvfile.write_csv(path, rows, columns=COLUMNS)
 
 
 def read_csv(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
-
-
-def _num(v):
-    return None if v in ("", None) else float(v)
+    """The rows of write_csv: numbers as floats, empty cells None."""
+    return csvfile.read_csv(path)[1]
 
 
 def crosses_plate(r):
@@ -236,8 +221,8 @@ def crosses_plate(r):
 def at_target(r):
     """the angle definitions by which a run's crack lies within 70 +- 2 deg, if its cracks cross
     the plate (else none)"""
-    return [d for d in ("initial", "fit", "chord") if crosses_plate(r) and _num(r[f"{d}_deg"]) is not None
-            and abs(_num(r[f"{d}_deg"]) - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
+    return [d for d in ("initial", "fit", "chord") if crosses_plate(r) and r[f"{d}_deg"] is not None
+            and abs(r[f"{d}_deg"] - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
 
 
 def markdown(rows):
@@ -246,12 +231,13 @@ def markdown(rows):
          "initial (deg)", "fit (deg)", "chord (deg)", "crack length at end (mm)", "crack stops (us)",
          "far-edge crack (us)", "interface speed (m/s)", "contact force drop (us)",
          "contact opens (us)", "momentum drift", "loop CPU (s)", "ranks", "70 ± 2° and crosses"),
-        ([r["setup"].upper(), r["loading"], r["kernel"], f"{float(r['dx_mm']):g}", f"{float(r['Gc']):g}",
+        ([r["setup"].upper(), r["loading"], r["kernel"], f"{r['dx_mm']:g}", f"{r['Gc']:g}",
           cell(r["first_bond_us"], ".1f"), cell(r["band_us"], ".1f"), cell(r["initial_deg"], ".1f"),
           cell(r["fit_deg"], ".1f"), cell(r["chord_deg"], ".1f"), cell(r["length_end_mm"], ".0f"),
           r["crack_stops"], cell(r["far_edge_us"], ".0f"), cell(r["v_interface"], ".2f"),
           cell(r["t_drop_us"], ".1f"), cell(r["t_open_us"], ".1f"), cell(r["momentum_drift"], ".1e"),
-          cell(r["loop_cpu_s"], ".0f"), r["nprocs"], ", ".join(at_target(r)) or "-"] for r in rows))
+          cell(r["loop_cpu_s"], ".0f"), f"{r['nprocs']:g}", ", ".join(at_target(r)) or "-"]
+         for r in rows))
 
 
 # ---------------------------------------------------------------------------- report
@@ -314,7 +300,7 @@ def section(specs, results, figdir, notes):
         f"{AREA_RATIO:.3f}; to {TEND * 1e6:.0f} us. Angles as in the loading study (initial; fit "
         "and chord at 70 us). See examples/kalthoff-winkler/README.md, 'Projectile and toughness'.",
         specs, results,
-        lambda rows: markdown([{k: ("" if v is None else str(v)) for k, v in r.items()} for r in rows]),
+        markdown,
         report_text, figures, notes)
 
 

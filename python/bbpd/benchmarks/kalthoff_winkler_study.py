@@ -1,24 +1,14 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Kalthoff-Winkler loading study: which loading and which angle measure reproduce the experiment.
-
-The paper's setup (32 m/s held on a delta-thick layer) gives cracks at about 61 deg and a first
-broken bond at ~12 us, against the experiment's ~70 deg and the paper's 20-21.7 us. This study
-runs examples/kalthoff-winkler/in.kalthoff_winkler under the loadings of CASES, for the three
-kernels at dx = 1 mm and the Gaussian at 0.5 mm, to 100 us; the measures (initial, fit and
-chord angles, crack stops, speeds, far-edge crack) are defined in
-examples/kalthoff-winkler/README.md, "Loading study".
-
-  tools/python -m bbpd.benchmarks.kalthoff_winkler_study --work /tmp/kw-study --figures DIR
-  ... --reuse                              re-analyse the finished runs, run nothing
+"""Kalthoff-Winkler loading study: which loading (CASES) and which angle measure reproduce the
+experiment's 70 deg and the paper's 20-22 us (examples/kalthoff-winkler/README.md, "Loading
+study", defines the measures and has the commands).
 """
 
 import json
 import math
-import re
 from pathlib import Path
 
 import numpy as np
-from scipy.spatial import cKDTree
 
 from bbpd import csvfile
 from bbpd import jobs as jobmod
@@ -31,15 +21,7 @@ from bbpd.markdown import cell as f
 from bbpd import plots
 from bbpd.benchmarks import cli
 
-# ---------------------------------------------------------------------------- physics
-
-E, NU, RHO = 190.0e9, 0.25, 7800.0        # paper sec. 4.2.3 (kalthoff_winkler_steel.bbpd)
-MU = E / (2.0 * (1.0 + NU))
-C_S = math.sqrt(MU / RHO)                 # shear wave speed
-C_P = math.sqrt(3.0 * MU / RHO)           # plane-strain P wave, nu = 1/4 (lambda = mu)
-# Rayleigh speed for nu = 1/4: root of the Rayleigh equation, c_R / c_s = sqrt(2 - 2/sqrt(3))
-C_R = C_S * math.sqrt(2.0 - 2.0 / math.sqrt(3.0))
-C_BAR = math.sqrt(E / RHO)                # bar (1D) wave speed in the projectile
+C_BAR = math.sqrt(kw.E / kw.RHO)          # bar (1D) wave speed in the projectile
 
 # Projectile of the experiment: a steel cylinder of the plate's steel, 50 mm long (Kalthoff &
 # Winkler 1988, as quoted in the later literature; the paper gives no projectile).  The two
@@ -49,13 +31,8 @@ PROJECTILE_LENGTH = 0.050
 T_CONTACT = 2.0 * PROJECTILE_LENGTH / C_BAR    # ~20.3 us
 
 TEND = 100.0e-6          # s: every study run (cracks at 70 us have not all reached the edge)
-T_EVAL_US = 70.0         # paper Fig. 14
-INITIAL_RANGE = (3.0e-3, 15.0e-3)   # m from the notch tip: past the tip's horizon (5 mm at 1 mm)
-SPEED_WINDOW_US = 5.0
 ANGLE_TARGET_DEG, ANGLE_TOL_DEG = kw.EXPERIMENT_ANGLE_DEG, 2.0
 INIT_WINDOW_US = (20.0, 22.0)       # the paper's initiation times 20.0-21.7 us
-ANGLE_DEFS = ("initial", "fit", "chord")
-ARREST_GROWTH_DX, ARREST_US = 2.0, 10.0   # a crack that grows < 2 dx in the last 10 us stopped
 
 # The loadings: name -> (description, input-script variables).  "layer": "dx" means one column
 # of atoms (x < dx).  Every case runs to TEND.
@@ -88,139 +65,8 @@ def run_case(workdir, kernel, dx, case, nprocs=1, tend=TEND):
     """Run one loading case in workdir and measure it (the job of the study and the report)."""
     note = run_noted(kw.EXAMPLE, workdir, case_vars(case, kernel, dx, tend),
                      {"case": case, "kernel": kernel, "dx": dx}, nprocs)
-    res = analyse(workdir)
-    res.update(case=case, wall_s=note["wall_s"])
-    return res
-
-
-# ---------------------------------------------------------------------------- measurements
-
-def chord_angle(tip, crack_tip, outer_sign):
-    """Angle (deg) of the line from the notch tip to the crack tip, from +x to the outer side."""
-    dx_, dy_ = crack_tip[0] - tip[0], outer_sign * (crack_tip[1] - tip[1])
-    if dx_ == 0.0 and dy_ == 0.0:
-        return None
-    return math.degrees(math.atan2(dy_, dx_))
-
-
-def angles_of(x, y, phi, g):
-    """The three angles and the crack tip of both cracks in one damage field."""
-    cr = kw.notch_cracks(x, y, phi, g)
-    out = {}
-    for side, yn, sign in (("lo", g["ylo"], -1.0), ("hi", g["yhi"], 1.0)):
-        tip = (g["a"], yn)
-        ctip, length = kw.tip_of(x, y, cr[side], tip, g["dx"])
-        out[side] = {
-            "initial": kw.crack_angle(x, y, cr[side], tip, sign, fit_range=INITIAL_RANGE),
-            "fit": kw.crack_angle(x, y, cr[side], tip, sign),
-            "chord": chord_angle(tip, ctip, sign) if length > 0 else None,
-            "tip": [float(ctip[0]), float(ctip[1])], "length_mm": length * 1e3}
-    return out
-
-
-def mean_or_none(vals):
-    vals = [v for v in vals if v is not None]
-    return float(np.mean(vals)) if vals else None
-
-
-def peak_speed(t_us, lengths, window_us=SPEED_WINDOW_US):
-    """Largest mean speed (m/s) of the crack tip over any window of window_us."""
-    t, L = np.asarray(t_us), np.asarray(lengths)
-    best = None
-    for i in range(len(t)):
-        j = np.searchsorted(t, t[i] + window_us - 1e-9)
-        if j >= len(t):
-            break
-        if L[i] <= 0.0:
-            continue
-        v = (L[j] - L[i]) / ((t[j] - t[i]) * 1e-6)
-        best = v if best is None else max(best, v)
-    return best
-
-
-def analyse(workdir):
-    """kalthoff_winkler.analyse plus the study's measures (module docstring)."""
-    workdir = Path(workdir)
     res = kw.analyse(workdir)
-    g = {k: res[k] for k in ("dx", "delta", "a", "ylo", "yhi", "Lx", "Ly", "dt", "flank")}
-    log = (workdir / "log.lammps").read_text()
-    m = re.search(r"^KW loading: v0 (\S+) tramp (\S+) thold (\S+) layer (\S+)", log, re.M)
-    if m:
-        res.update(v0=float(m[1]), tramp=float(m[2]), thold=float(m[3]), layer=float(m[4]))
-    snaps = readers.dump_snapshots(workdir / "damage.dump")
-    times = [step * g["dt"] * 1e6 for step, _ in snaps]
-    # the snapshot at T_EVAL_US: the last one at or before it (snapshots are ~1 us apart)
-    k70 = max([i for i, t in enumerate(times) if t <= T_EVAL_US + 1e-6], default=None)
-    evals = {"t70": k70, "end": len(snaps) - 1}
-    for name, k in evals.items():
-        if k is None:
-            continue
-        s = snaps[k][1]
-        ang = angles_of(s["f_ref[1]"], s["f_ref[2]"], s["c_dmg"], g)
-        res[f"angles_{name}"] = ang
-        res[f"t_{name}_us"] = times[k]
-        for d in ANGLE_DEFS:
-            res[f"{d}_{name}_deg"] = mean_or_none([ang[sd][d] for sd in ("lo", "hi")])
-        res[f"length_{name}_mm"] = mean_or_none([ang[sd]["length_mm"] for sd in ("lo", "hi")])
-
-    # the initial angle on the first snapshot in which the crack reaches past INITIAL_RANGE
-    # (later damage, e.g. the far-edge crack joining the path, cannot change it)
-    tr = res["trajectory"]
-    initial, when = {}, {}
-    for side in ("lo", "hi"):
-        past = np.nonzero(np.array(tr["L_" + side]) >= INITIAL_RANGE[1])[0]
-        k = int(past[0]) if len(past) else len(snaps) - 1
-        s = snaps[k][1]
-        initial[side] = angles_of(s["f_ref[1]"], s["f_ref[2]"], s["c_dmg"], g)[side]["initial"]
-        when[side] = times[k]
-    res["initial_deg"] = mean_or_none(list(initial.values()))
-    res["initial_side_deg"] = initial      # each crack's own: they differ off the square grid
-    res["t_initial_us"] = min(when.values())
-
-    # when a crack tip first comes within delta of the plate boundary
-    res["t_edge_us"] = None
-    for t, plo, phi_ in zip(tr["t_us"], tr["lo"], tr["hi"]):
-        near = [min(p[0], res["Lx"] - p[0], p[1], res["Ly"] - p[1]) < res["delta"]
-                for p in (plo, phi_)]
-        if any(near):
-            res["t_edge_us"] = t
-            break
-    Ls = 0.5 * (np.array(tr["L_lo"]) + np.array(tr["L_hi"]))
-    # arrest: the crack grew by less than ARREST_GROWTH over the last ARREST_US of the run
-    t_all = np.array(tr["t_us"])
-    near_end = np.nonzero((Ls >= Ls[-1] - ARREST_GROWTH_DX * res["dx"]) & (Ls > 0))[0]
-    t_stop = float(t_all[near_end[0]]) if len(near_end) else float(t_all[-1])
-    res["t_arrest_us"] = (t_stop if res["t_edge_us"] is None and Ls[-1] > 0
-                          and t_all[-1] - t_stop >= ARREST_US else None)
-    res["length_end_mm"] = float(Ls[-1] * 1e3)
-    res["speed_peak"] = peak_speed(tr["t_us"], Ls)
-    res["speed_over_cR"] = None if res["speed"] is None else res["speed"] / C_R
-    res["speed_peak_over_cR"] = None if res["speed_peak"] is None else res["speed_peak"] / C_R
-
-    # the far-edge crack: the first snapshot with new damage at x > Lx - delta that lies
-    # farther than delta + dx from the notch cracks (a notch crack that runs into the far
-    # edge is not one), and how far that damage lies from the mid-line then
-    res["far_edge_own_us"], res["far_edge_y_mm"] = None, None
-    first = {int(i): p for i, p in zip(snaps[0][1]["id"], snaps[0][1]["c_dmg"])}
-    for t, (_, s) in zip(times, snaps):
-        x, y, phi = s["f_ref[1]"], s["f_ref[2]"], s["c_dmg"]
-        grew = phi > np.array([first.get(int(i), 0.0) for i in s["id"]]) + 1e-12
-        sel = grew & (x > res["Lx"] - res["delta"])
-        if not sel.any():
-            continue
-        cr = kw.notch_cracks(x, y, phi, g)
-        path = cr["lo"] | cr["hi"]
-        if path.any():
-            dist = cKDTree(np.column_stack([x[path], y[path]])).query(
-                np.column_stack([x[sel], y[sel]]))[0]
-            keep = np.nonzero(sel)[0][dist > res["delta"] + res["dx"]]
-        else:
-            keep = np.nonzero(sel)[0]
-        if len(keep):
-            res["far_edge_own_us"] = t
-            off = np.abs(y[keep] - 0.5 * res["Ly"]) * 1e3    # distance from the mid-line
-            res["far_edge_y_mm"] = [float(off.min()), float(off.max())]
-            break
+    res.update(case=case, wall_s=note["wall_s"])
     return res
 
 
@@ -228,8 +74,8 @@ def analyse(workdir):
 
 def angle(res, definition):
     """The angle of one definition as the verdicts use it: initial, or fit/chord at 70 us;
-    None for a crack shorter than INITIAL_RANGE[1] at 70 us (its direction is no path)."""
-    if (res.get("length_t70_mm") or 0.0) < INITIAL_RANGE[1] * 1e3:
+    None for a crack shorter than kw.INITIAL_RANGE[1] at 70 us (its direction is no path)."""
+    if (res.get("length_t70_mm") or 0.0) < kw.INITIAL_RANGE[1] * 1e3:
         return None
     return res.get("initial_deg") if definition == "initial" else res.get(f"{definition}_t70_deg")
 
@@ -248,7 +94,7 @@ def hits(results):
     [(case, kernel, dx, readings)] in the paper's window, 'both': [(case, kernel, dx)]}"""
     out = {"angle": [], "initiation": [], "both": []}
     for (case, k, dx), r in sorted(results.items(), key=_order):
-        defs = [d for d in ANGLE_DEFS if reaches_angle(r, d)]
+        defs = [d for d in kw.ANGLE_DEFS if reaches_angle(r, d)]
         inits = [n for n, key in (("first bond", "t_init_us"), ("damage band", "t_band_us"))
                  if in_init_window(r[key])]
         out["angle"] += [(case, k, dx, defs)] if defs else []
@@ -264,7 +110,7 @@ def conclusion(results):
     def runs(items):
         return "; ".join(f"{c} ({k}, {dx * 1e3:g} mm)" + (f": {', '.join(x[0])}" if x else "")
                          for c, k, dx, *x in items) or "no run"
-    return [f"Angle 70 +- 2 deg (initial; fit and chord at {T_EVAL_US:.0f} us): {runs(h['angle'])}.",
+    return [f"Angle 70 +- 2 deg (initial; fit and chord at {kw.T_EVAL_US:.0f} us): {runs(h['angle'])}.",
             f"Initiation in {INIT_WINDOW_US[0]:.0f}-{INIT_WINDOW_US[1]:.0f} us: {runs(h['initiation'])}.",
             f"Both at once: {runs(h['both'])}."]
 
@@ -410,7 +256,7 @@ def section(specs, results, figdir, notes):
         "Kalthoff-Winkler loading study (what reproduces 70 deg and 20-22 us)",
         cases_table() + "\n\nEvery run to 100 us; angles at 70 us unless 'at end' (100 us), "
         f"projectile contact time t_c = 2 L / c_bar = {T_CONTACT * 1e6:.1f} us (L = 50 mm), "
-        f"Rayleigh speed c_R = {C_R:.0f} m/s; the measures are defined in "
+        f"Rayleigh speed c_R = {kw.C_R:.0f} m/s; the measures are defined in "
         "examples/kalthoff-winkler/README.md, 'Loading study'.",
         specs, results, lambda rows: md_table(table_rows(done)), lambda rows: conclusion(done),
         lambda rows: figures(done, figdir), notes,
@@ -429,7 +275,7 @@ def main_study(work, figdir, workers=1, log=print, reuse_only=False, csv=None, c
         for path in sorted(Path(work).glob("*/case.json")):
             c = json.loads(path.read_text())
             if c["case"] in CASES:
-                res = analyse(path.parent)
+                res = kw.analyse(path.parent)
                 res.update(case=c["case"], wall_s=c["wall_s"])
                 done[(c["case"], c["kernel"], c["dx"])] = res
     else:

@@ -1,19 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Quasi-static kink test: the angle at which a straight crack under the
-mixed-mode Williams field kinks in BBPD, against the maximum hoop stress, maximum hoop strain
-and maximum energy release rate criteria (bbpd.kink).
-
-Runs examples/kink-mixed-mode/in.kink for every case and measures, from its outputs only:
-
-initiation   first output step (every 10 steps) at which the damage summed over the atoms
-             within delta of the tip rises above its value at t = 0 (the notch's own
-             damage): a bond near the tip broke; K_init = K(t) there, over K_c = sqrt(E' G_c)
-kink angle   bbpd.crack_path.kink_angles of the last snapshot of final.dump at the distances
-             2 delta and 4 delta from the tip (the centroid direction of the grown crack's atoms
-             within dx of that distance, in the crack-tip frame; theta < 0 for K_II > 0)
-extension    the grown crack's reach from the tip when the run stopped (fix halt at 5 delta)
-
-Commands: examples/kink-mixed-mode/README.md.
+"""Quasi-static kink test: the angle at which a straight crack under the mixed-mode Williams
+field kinks, against the maximum hoop stress, hoop strain and energy release rate criteria
+(bbpd.kink). examples/kink-mixed-mode/README.md defines the measures (initiation, kink angle at
+2 and 4 delta, extension) and has the commands.
 """
 
 import json
@@ -27,7 +16,7 @@ from matplotlib.lines import Line2D
 
 from bbpd import crack_path, csvfile, kink, plots, readers
 from bbpd import jobs as jobmod
-from bbpd.jobs import Job, run_jobs
+from bbpd.jobs import run_jobs
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.provenance import cpu
 from bbpd.runner import run_lammps
@@ -379,6 +368,22 @@ def section(specs, results, figdir, notes):
                           figure, notes)
 
 
+ESTIMATE_S = {COARSE[0]: 20.0, FINE[0]: 600.0}    # one single-rank run (s), by dx
+
+
+def jobs(cases, nprocs=1):
+    """The runs of cases [(kernel, psi, alpha, dx, m, ncross)] as bbpd.report specs (the report's
+    and this module's command); nprocs: ranks of each run (the bits do not depend on it)."""
+    inputs = (EXAMPLE, Path(__file__), Path(kink.__file__), Path(crack_path.__file__),
+              Path(readers.__file__))
+    extra = {"nprocs": nprocs} if nprocs > 1 else {}
+    return jobmod.report_specs("kink", "bbpd.benchmarks.kink:job", inputs, (
+        (k, dx, f"kink {k} dx = {dx * 1e3:g} mm psi = {p:g} crack at {a:g} deg"
+         + ("" if n == NCROSS else f" ramp {n:g} transits per K_c"),
+         dict(kernel=k, psi=p, alpha=a, dx=dx, m=m, ncross=n, **extra), ESTIMATE_S[dx])
+        for k, p, a, dx, m, n in cases))
+
+
 def case_key(r):
     """What identifies a row: kernel, mix, crack angle, grid and ramp."""
     return (r["kernel"], float(r["psi"]), float(r["alpha"]), round(float(r["dx_mm"]), 9),
@@ -422,15 +427,10 @@ def main(argv=None):
         have = {case_key(r) for r in read_rows(path)}
         todo = [c for c in todo if (c[0], c[1], c[2], round(c[3] * 1e3, 9), c[5]) not in have]
     todo = todo[:args.max_runs]
-    extra = {"nprocs": args.nprocs} if args.nprocs > 1 else {}
-    jobs = [Job(label=f"{k} psi {p:g} alpha {a:g} dx {dx * 1e3:g} mm ncross {n:g}",
-                func="bbpd.benchmarks.kink:job",
-                kwargs=dict(kernel=k, psi=p, alpha=a, dx=dx, m=m, ncross=n, **extra),
-                inputs=(str(EXAMPLE),), estimate_s=20.0 if dx == COARSE[0] else 160.0)
-            for k, p, a, dx, m, n in todo]
-    results = run_jobs(jobs, args.work, workers=args.workers)
-    rows = [row_of(results[j.label]) for j in jobs if "error" not in results[j.label]]
-    failed = [j.label for j in jobs if "error" in results[j.label]]
+    specs = jobs(todo, args.nprocs)
+    results = run_jobs([sp.job for sp in specs], args.work, workers=args.workers)
+    done, failed = jobmod.finished(specs, results)
+    rows = [row_of(results[sp.job.label]) for sp in done]
     if failed:
         print("FAILED:", failed)
     command = cli.command("kink", argv)

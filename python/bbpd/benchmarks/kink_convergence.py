@@ -1,15 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The kink test's convergence: the kink angle against m and R/delta, pure Mode II by default.
-
-A pure-K problem has no length scale, so the angle at which the crack of
-examples/kink-mixed-mode/in.kink leaves the tip is a property of the model at a given m =
-delta/dx and kernel; the disk's size R/delta only has to be large enough for the Williams
-field to hold over the tip's neighbourhood. The sweep runs CASES at delta = 5 mm, measured as
-bbpd.benchmarks.kink measures; --kernel, --psi and --alpha run them for another kernel, mode mix
-and crack direction. The time step is DT_PER_M * m * dx / c_d, the kink test's rule: the stable
-step of a bond family scales with the horizon, not with dx.
-
-Commands: examples/kink-mixed-mode/README.md.
+"""The kink test's convergence: the kink angle against m and R/delta, pure Mode II by default,
+measured as bbpd.benchmarks.kink measures (examples/kink-mixed-mode/README.md has the reasons
+and the commands).
 """
 
 import sys

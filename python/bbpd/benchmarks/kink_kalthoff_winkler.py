@@ -1,15 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Kalthoff-Winkler tied to the kink test: the mode mix at the notch tips up to initiation, and
-the kink angle that the quasi-static kink test (examples/kink-mixed-mode) gives for that mix,
-next to the angle the Kalthoff-Winkler run produces.
-
-Runs examples/kalthoff-winkler/in.kalthoff_winkler (the paper's loading) up to `tend` with a
-`compute bbpd/jintegral` at each notch tip (j.dat): K_I(t), K_II(t) of the lower notch, the
-first broken bond (kalthoff_winkler.analyse), the mix psi = arctan(K_II/K_I) just before it,
-and for that psi the criteria's angles (bbpd.kink) and the kink test's measured angles,
-interpolated in psi over the committed coarse-grid Gaussian results (results/kink.csv).
-
-Commands: examples/kink-mixed-mode/README.md.
+"""Kalthoff-Winkler tied to the kink test: the mode mix at the notch tips (compute
+bbpd/jintegral) up to initiation, and the kink angles the criteria and the kink test give for
+that mix (examples/kink-mixed-mode/README.md has the commands).
 """
 
 import json

@@ -17,6 +17,8 @@ from bbpd import freund, metrics, readers
 from bbpd.csvfile import write_csv
 from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
+from bbpd.markdown import cell
+from bbpd.markdown import table as md_table
 from bbpd.provenance import machine
 from bbpd.plots import plot_k
 from bbpd.runner import run_or_reuse
@@ -118,26 +120,88 @@ def run(workdir, kernel="gaussian", dx=0.05, model="plane/stress", dt=None, npro
     return res
 
 
-# --------------------------------------------------------------------------- reports
+# --------------------------------------------------------------------------- tables
 
-def _row(res):
-    p, c = res["paper"], res["consistent"]
-    j = res.get("jintegral", {}).get("consistent")
-    jtxt = f"{j['peak']:6.2f} {j['l2']:6.2f} | " if j else ""
-    return (f"{p['peak']:6.2f} {p['l2']:6.2f} | {c['peak']:6.2f} {c['l2']:6.2f} | {jtxt}"
-            f"{res['wall_time']:6.1f} s ({res['nprocs']} rank, dt {res['dt']:.3g})")
+TABLE3_DX = 0.05    # m, the paper's Table 3
+
+
+def _kmax_ratio(res, key, exact):
+    """max K over 0 <= t <= 3 t_c divided by max K_exact there."""
+    t = np.asarray(res["t"], dtype=float)
+    w = t <= 3.0 * res["consistent"]["t_c"]
+    return float(np.max(np.asarray(res[key], dtype=float)[w]) / np.max(exact(t[w])))
+
+
+def row(res):
+    """The CSV row of one run (examples/mode1-semi-infinite/results/mode1.csv)."""
+    exact, _ = reference("consistent", res.get("model", "plane/stress"))
+    j = (res.get("jintegral") or {}).get("consistent") or {}
+    jp = (res.get("jintegral") or {}).get("paper") or {}
+    kii_j = None
+    if "kii_j" in res:    # K_II/K_I of the interaction integral over the window: 0 by symmetry
+        t = np.asarray(res["t"], dtype=float)
+        w = t <= 3.0 * res["consistent"]["t_c"]
+        kii_j = float(np.max(np.abs(np.asarray(res["kii_j"], dtype=float)[w]))
+                      / np.max(np.abs(np.asarray(res["k_j"], dtype=float)[w])))
+    return {"kernel": res["kernel"], "dx_m": res["dx"],
+            "paper_peak": res["paper"]["peak"], "paper_l2": res["paper"]["l2"],
+            "consistent_peak": res["consistent"]["peak"],
+            "consistent_l2": res["consistent"]["l2"],
+            "j_peak": j.get("peak"), "j_l2": j.get("l2"),
+            "kmax_ratio": _kmax_ratio(res, "k_consistent", exact),
+            "kmax_ratio_j": _kmax_ratio(res, "k_j", exact) if "k_j" in res else None,
+            "j_paper_peak": jp.get("peak"), "j_paper_l2": jp.get("l2"),
+            "kii_over_ki": res.get("kii_over_ki"), "kii_j_over_k_j": kii_j, "dt_s": res["dt"],
+            "atoms": res.get("atoms"), "run_time_s": res["wall_time"]}
+
+
+def _pair(r, a, b):
+    return f"{cell(r[a])} / {cell(r[b])}"
+
+
+def table2(rows):
+    """The paper's Table 2 (the Gaussian kernel at every dx) beside ours, from row()s; a dx of
+    the paper's that did not run has its row, with '-' for ours."""
+    header = ["dx (m)", "atoms", "paper's Table 2 peak / L2", "ours, paper convention peak / L2",
+              "ours, consistent peak / L2", "dt (s)", "run time (s)"]
+    gauss = {round(r["dx_m"], 6): r for r in rows if r["kernel"] == "gaussian"}
+    cells = []
+    for dx in sorted(set(gauss) | set(PAPER_TABLE2), reverse=True):
+        ref, r = PAPER_TABLE2.get(dx), gauss.get(dx)
+        ours = ([_pair(r, "paper_peak", "paper_l2"), _pair(r, "consistent_peak", "consistent_l2"),
+                 f"{r['dt_s']:g}", cell(r["run_time_s"], ".1f")] if r else ["-"] * 4)
+        cells.append([f"{dx:g}", f"{round(10 / dx)} x {round(4 / dx)}",
+                      "-" if ref is None else f"{ref[0]:.2f} / {ref[1]:.2f}"] + ours)
+    return md_table(header, cells)
+
+
+def table3(rows):
+    """The paper's Table 3 (the kernels at TABLE3_DX) beside ours, from row()s."""
+    at = {r["kernel"]: r for r in rows if abs(r["dx_m"] - TABLE3_DX) < 1e-12}
+    header = ["kernel", "paper's Table 3 peak / L2", "ours, paper convention peak / L2",
+              "ours, consistent peak / L2", "run time (s)"]
+    cells = [[k, f"{PAPER_TABLE3[k][0]:.2f} / {PAPER_TABLE3[k][1]:.2f}",
+              _pair(at[k], "paper_peak", "paper_l2"),
+              _pair(at[k], "consistent_peak", "consistent_l2"), cell(at[k]["run_time_s"], ".1f")]
+             for k in KERNELS if k in at]
+    return md_table(header, cells)
+
+
+def jtable(rows):
+    """K_I by extrapolation and from the J-integral, every run of row()s."""
+    header = ["kernel", "dx (m)", "extrapolation peak / L2", "J: peak / L2",
+              "K_max ratio: extrapolation / J", "run time (s)"]
+    cells = [[r["kernel"], f"{r['dx_m']:g}", _pair(r, "consistent_peak", "consistent_l2"),
+              _pair(r, "j_peak", "j_l2"), f"{cell(r['kmax_ratio'], '.3f')} / "
+              f"{cell(r['kmax_ratio_j'], '.3f')}", cell(r["run_time_s"], ".1f")]
+             for r in sorted(rows, key=lambda r: (-r["dx_m"], KERNELS.index(r["kernel"])))]
+    return md_table(header, cells)
 
 
 def paper_table(work, cases, nprocs=1, model="plane/stress"):
-    """Run cases {key: (kernel, dx, the paper's (peak, L2))} and print ours beside the paper's
-    (Table 2: the Gaussian by dx; Table 3: the kernels at one dx); returns {key: result}."""
-    print("case | paper's numbers: peak L2 | ours, paper convention: peak L2 | ours, "
-          "consistent: peak L2 | K_I from J, consistent: peak L2 | wall time")
-    rows = {}
-    for key, (kernel, dx, ref) in cases.items():
-        rows[key] = run(Path(work) / f"{kernel}_{dx}", kernel, dx, model, nprocs=nprocs)
-        print(f"{key} | {ref[0]:6.2f} {ref[1]:6.2f} | {_row(rows[key])}")
-    return rows
+    """Run cases {key: (kernel, dx)}; returns {key: result}."""
+    return {key: run(Path(work) / f"{kernel}_{dx}", kernel, dx, model, nprocs=nprocs)
+            for key, (kernel, dx) in cases.items()}
 
 
 TIP_STUDY = ((0.5, 1.0, 2.0), (0.5, 1.0, 3.0), (0.5, 2.0, 3.0), (0.5, 2.0, 4.0),
@@ -200,11 +264,14 @@ def main(argv=None):
                     help="write the tip study to PATH as CSV (the README's table is generated "
                          "from examples/mode1-semi-infinite/results/tips.csv)")
     args = ap.parse_args(argv)
-    nan = (float("nan"), float("nan"))
-    rows2 = paper_table(args.work, {dx: ("gaussian", dx, PAPER_TABLE2.get(dx, nan))
-                                    for dx in args.dx}, args.nprocs, args.model) if args.table2 else {}
-    rows3 = paper_table(args.work, {k: (k, 0.05, PAPER_TABLE3[k]) for k in KERNELS},
-                        args.nprocs, args.model) if args.table3 else {}
+    rows2 = paper_table(args.work, {dx: ("gaussian", dx) for dx in args.dx}, args.nprocs,
+                        args.model) if args.table2 else {}
+    rows3 = paper_table(args.work, {k: (k, TABLE3_DX) for k in KERNELS}, args.nprocs,
+                        args.model) if args.table3 else {}
+    if rows2:
+        print(table2([row(r) for r in rows2.values()]))
+    if rows3:
+        print(table3([row(r) for r in rows3.values()]))
     if args.tips or args.tips_csv:
         out = tip_study(args.work, nprocs=args.nprocs)
         if args.tips_csv:

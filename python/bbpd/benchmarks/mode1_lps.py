@@ -1,13 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The stationary Mode-I crack with Poisson's ratio free: the LPS styles at nu = 0.3.
-
-Bond-based peridynamics fixes Poisson's ratio, so the paper's Mode-I convention (nu = 0.3) cannot
-be run consistently with it; bbpd/lps/KERNEL takes nu in pair_coeff, and in plane strain at nu =
-0.3 the paper's convention and the model's are one. This runs in.mode1 with family lps for the
-three kernels at m = 5, K_I by extrapolation and by the J-integral against eq. 42, beside the
-bond-based runs of results/mode1.csv (consistent convention).
-
-Commands: examples/mode1-semi-infinite/README.md.
+"""The stationary Mode-I crack with Poisson's ratio free: in.mode1 on the LPS styles at nu =
+0.3, where the paper's convention and the model's are one, beside the bond-based runs
+(examples/mode1-semi-infinite/README.md has the commands).
 """
 
 import sys

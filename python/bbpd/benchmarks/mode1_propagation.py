@@ -1,13 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Mode-I crack growth under a stress wave, against Freund's equation of motion.
-
-Runs examples/mode1-propagation/in.mode1-propagation (the stationary Mode-I plate with fracture
-on) and compares with bbpd.crack_motion (plane stress, the model's constants): the initiation
-time t_i (first broken bond; first move of the tracked tip) against K_I(t_i) = K_Ic with J/G_c
-at each, the crack length l(t) of compute bbpd/crack/tip (checked against bbpd.crack_tip on the
-dumps) with its L2 error against the K_Ic and the energy forms of the equation of motion, the
-crack band's half-width at 3 t_c and the speed over +-SPEED_HALF_WINDOW t_c around SPEED_TIMES.
-examples/mode1-propagation/README.md defines each and has the commands.
+"""Mode-I crack growth under a stress wave (examples/mode1-propagation), against Freund's
+equation of motion (bbpd.crack_motion); examples/mode1-propagation/README.md defines each
+measure and has the commands.
 """
 
 from pathlib import Path

@@ -1,13 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Mode-II central crack under uniform shear (Bouaraquia & Mabssout 2026, sec. 4.2.2).
-
-Runs examples/mode2-central-crack/in.mode2 (compute bbpd/dsif at both tips, every step) and
-compares K_II(t)/(tau sqrt(pi a)) with the early-time analytic reference of bbpd.freund (a
-semi-infinite crack whose faces are suddenly loaded by 2 tau when the two plane shear waves
-meet at t_start = h/c_s), valid until the P wave diffracted at the other tip arrives
-(freund.ModeIIWindow). Plane strain: its implied nu = 1/4 is the plate's, so the reference has
-the BBPD model's constants. examples/mode2-central-crack/README.md derives the window and has
-the commands.
+"""Mode-II central crack under uniform shear (Bouaraquia & Mabssout 2026, sec. 4.2.2): K_II(t)
+of examples/mode2-central-crack/in.mode2 against the early-time analytic reference of
+bbpd.freund (examples/mode2-central-crack/README.md derives its window and has the commands).
 """
 
 from pathlib import Path
@@ -18,6 +12,8 @@ import scipy.sparse as sparse
 from bbpd import freund, metrics, readers
 from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
+from bbpd.markdown import cell
+from bbpd.markdown import table as md_table
 from bbpd.plots import plot_k
 from bbpd.runner import run_or_reuse
 from bbpd.benchmarks import cli
@@ -203,21 +199,52 @@ def classical_window(mode=2):
     return start, start + 2.0 * A / c_d
 
 
-def table(work, kernels=KERNELS, dxs=(1.0e-3, 0.5e-3), td=0.0, nprocs=1):
-    rows = {}
-    print("Mode II: kernel dx | peak L2 (%) vs the analytic reference | K_II/(tau sqrt(pi a)) "
-          "at the window end: ours / analytic | K_II from J: peak L2, value at the window end "
-          "| wall time")
-    for dx in dxs:
-        for kernel in kernels:
-            res = run(Path(work) / f"{kernel}_{dx}", kernel, dx, td=td, nprocs=nprocs)
-            rows[(kernel, dx)] = res
-            j = res.get("jintegral")
-            jtxt = (f"J: {j['peak']:6.2f} {j['l2']:6.2f} {j['k_end']:.3f} | " if j else "")
-            print(f"{kernel:10s} {dx:7.2e} | {res['peak']:6.2f} {res['l2']:6.2f} | "
-                  f"{res['k_end']:.3f} / {res['k_end_exact']:.3f} | {jtxt}"
-                  f"{res['wall_time']:5.1f} s")
-    return rows
+WINDOW_END_US = 9.77    # t_start + 2a/c_d (README, "Reference")
+
+
+def row(res):
+    """The CSV row of one run (examples/mode2-central-crack/results/mode2.csv)."""
+    j = res.get("jintegral") or {}
+    natoms = int(round(2 * HALF_LENGTH / res["dx"])) * int(round(2 * HALF_HEIGHT / res["dx"]))
+    return {"kernel": res["kernel"], "dx_m": res["dx"], "atoms": natoms, "peak": res["peak"],
+            "l2": res["l2"], "k_end": res["k_end"], "k_end_exact": res["k_end_exact"],
+            "ratio_end": res["k_end"] / res["k_end_exact"], "j_peak": j.get("peak"),
+            "j_l2": j.get("l2"),
+            "j_ratio_end": (j["k_end"] / res["k_end_exact"]) if "k_end" in j else None,
+            "left_right": res.get("left_right"), "ki_over_kii": res.get("ki_over_kii"),
+            "dt_s": res["dt"], "run_time_s": res["wall_time"]}
+
+
+def _sorted(rows):
+    return sorted(rows, key=lambda r: (-r["dx_m"], KERNELS.index(r["kernel"])))
+
+
+def table(rows):
+    """K_II by extrapolation against the reference, from row()s."""
+    header = ["kernel", "dx (mm)", "atoms", "peak (%)", "L2 (%)",
+              f"K_II/(tau sqrt(pi a)) at {WINDOW_END_US} us, ours / reference", "run time (s)"]
+    return md_table(header, [[r["kernel"], f"{r['dx_m'] * 1e3:g}", f"{r['atoms']:,.0f}",
+                              cell(r["peak"]), cell(r["l2"]),
+                              f"{r['k_end']:.3f} / {r['k_end_exact']:.3f}",
+                              cell(r["run_time_s"], ".1f")] for r in _sorted(rows)])
+
+
+def jtable(rows):
+    """K_II by extrapolation and from the J-integral, from row()s."""
+    header = ["kernel", "dx (mm)", "extrapolation: peak / L2 (%)",
+              f"extrapolation: ratio at {WINDOW_END_US} us", "J: peak / L2 (%)",
+              f"J: ratio at {WINDOW_END_US} us", "run time (s)"]
+    return md_table(header, [[r["kernel"], f"{r['dx_m'] * 1e3:g}",
+                              f"{r['peak']:.2f} / {r['l2']:.2f}", f"{r['ratio_end']:.3f}",
+                              f"{cell(r['j_peak'])} / {cell(r['j_l2'])}",
+                              cell(r["j_ratio_end"], ".3f"), cell(r["run_time_s"], ".1f")]
+                             for r in _sorted(rows)])
+
+
+def runs(work, kernels=KERNELS, dxs=(1.0e-3, 0.5e-3), td=0.0, nprocs=1):
+    """Run every kernel at every dx; returns {(kernel, dx): result}."""
+    return {(kernel, dx): run(Path(work) / f"{kernel}_{dx}", kernel, dx, td=td, nprocs=nprocs)
+            for dx in dxs for kernel in kernels}
 
 
 def figure(rows, path, td=0.0):
@@ -246,7 +273,9 @@ def main(argv=None):
                   f"{np.interp(win[1], t, k) / exact(win[1]):.4f}; peak, L2 error (%) "
                   f"{100 * metrics.peak_relative_error(t, k, exact, win):.2f} "
                   f"{100 * metrics.l2_relative_error(t, k, exact, win):.2f}")
-    rows = table(args.work, args.kernels, args.dx, args.td, args.nprocs)
+    rows = runs(args.work, args.kernels, args.dx, args.td, args.nprocs)
+    print(table([row(r) for r in rows.values()]))
+    print(jtable([row(r) for r in rows.values()]))
     if args.figures and rows:
         figure(rows, Path(args.figures) / "fig12_kernels.png", args.td)
 

@@ -1,17 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Stable time step of the bbpd/* pair styles under fix nve (velocity Verlet): the bound
-printed at setup against the largest time step that is stable in practice.
-
-predicted  Y = min_i sqrt(2 rho_i / sum_j C_v V_j c(xi_ij)/xi_ij): the velocity-Verlet limit the
-           pair style prints (a Gershgorin bound, so sufficient).
-exact      2/omega_max of the periodic plate from its lattice dynamics, computed with NumPy from
-           the paper's formulas (bbpd.reference), independently of the C++ code.
-measured   bisection on r = dt/Y of a periodic noisy plate: a step is stable if the run completes
-           STEPS steps without an ERROR and the largest energy of its second half stays below
-           GROWTH x the largest of its first half (runs past HALT x the initial energy stop).
-drift      a free noisy plate at 0.5 Y for 20,000 steps: the energy's linear trend and its
-           fluctuation relative to the initial energy.
-doc/stability.md gives the reasons for each choice and the commands.
+"""Stable time step of the bbpd/* pair styles under fix nve (velocity Verlet): the bound the
+pair style prints at setup (predicted), the lattice-dynamics limit of the periodic plate from
+bbpd.reference (exact), the bisected largest stable step (measured) and the energy drift of a
+free plate; doc/stability.md gives the reasons for each choice and the commands.
 """
 
 import argparse

@@ -1,15 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Steady crack growth in a pre-stretched strip between fixed grips: the model's kinetic law.
-
-Runs examples/strip-steady-crack/in.strip and measures per run (plane stress, BBPD's nu = 1/3;
-energies per unit thickness): U' (the model's stored energy per unit length, compute
-bbpd/energy at t = 0) and Delta' = U'/G_c; the end state (crossed, arrested, branched or
-unsteady); over the MIDDLE of the strip (a + 2 H to L - H) the steady speed v_ss/c_R, the
-energy the broken bonds take (Gamma) and the waves carry off behind and ahead (Phi), the
-closure (Gamma + Phi - U')/U' and the drift of the energy balance.
-examples/strip-steady-crack/README.md defines each.
-
-Commands: examples/strip-steady-crack/README.md.
+"""Steady crack growth in a pre-stretched strip between fixed grips: the model's kinetic law
+from examples/strip-steady-crack/in.strip (examples/strip-steady-crack/README.md defines each
+measure and has the commands).
 """
 
 import math
@@ -81,7 +73,7 @@ def geometry(dx=DX, m=M, H_over_delta=H_OVER_DELTA):
 
 
 def measure(rows, uprime, g, h, Gc=G_C):
-    """The steady-state numbers of one run from the rows of strip.dat (see the module doc).
+    """The steady-state numbers of one run from the rows of strip.dat (README: the measures).
     rows: step, t, tip x, y, extension, speed, direction, U, K, B, W, balance (the strip),
     U + K more than H behind the tip, work on the seed zone, work on the far zone."""
     t, x = rows[:, 1], rows[:, 2]
@@ -162,9 +154,7 @@ def read_rows(path):
 def timing_markdown(rows):
     """'Loop times: ...': which ranks and CPU timed which runs (appended runs may come from
     another machine)."""
-    def case(r):
-        return f"{r['kernel']} m = {r['m']:g}, H/delta = {r['H_over_delta']:g}, Delta = {r['Delta']:g}"
-    return csvfile.loop_times_note(rows, "timing", case)
+    return csvfile.loop_times_note(rows, "timing", _case)
 
 
 def kinetic_law(rows, kernel, m=5.0, H_over_delta=SWEEP_H_OVER_DELTA):

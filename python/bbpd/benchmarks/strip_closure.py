@@ -1,13 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Closure: the strip's kinetic law predicts the Mode-I crack of examples/mode1-propagation.
-
-The strip's G_run(v)/G_c against v/c_R (bbpd.benchmarks.strip: U' at the steady speed), fed into
-Freund's equation of motion (bbpd.crack_motion, criterion 'kinetic') for the Mode-I plate, gives
-l(t) without a fitted parameter; its L2 error against the PD tip histories of
-examples/mode1-propagation (results/tip_histories.csv) stands beside the two
-constant-toughness forms' (recomputed here the same way).
-
-Commands: examples/strip-steady-crack/README.md.
+"""Closure: the strip's kinetic law, fed into Freund's equation of motion (bbpd.crack_motion),
+predicts the Mode-I crack of examples/mode1-propagation without a fitted parameter
+(examples/strip-steady-crack/README.md has the commands).
 """
 
 import argparse

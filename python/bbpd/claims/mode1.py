@@ -6,12 +6,13 @@ tests/regression/test_mode1.py."""
 from bbpd import csvfile
 from bbpd.benchmarks import mode1 as mode1_bench
 from bbpd.benchmarks import mode1_lps
-from bbpd.kernels import KERNELS
 
-from .text import at, f, md_table, run_note
+from .text import md_table, run_note
 
 NAME = "mode1"
-TABLE3_DX = 0.05
+TABLE3_DX = mode1_bench.TABLE3_DX
+
+
 def paper():
     return mode1_bench.PAPER_TABLE2, mode1_bench.PAPER_TABLE3
 
@@ -26,40 +27,15 @@ def _pair(r, a, b):
 
 
 def table2(data):
-    t2, _ = paper()
-    header = ["dx (m)", "atoms", "paper's Table 2 peak / L2", "ours, paper convention peak / L2",
-              "ours, consistent peak / L2", "dt (s)", "run time (s)"]
-    rows = []
-    for r in _gauss(data):
-        ref = t2.get(round(r["dx_m"], 6))
-        rows.append([f"{r['dx_m']:g}", f"{round(10 / r['dx_m'])} x {round(4 / r['dx_m'])}",
-                     "-" if ref is None else f"{ref[0]:.2f} / {ref[1]:.2f}",
-                     _pair(r, "paper_peak", "paper_l2"),
-                     _pair(r, "consistent_peak", "consistent_l2"), f"{r['dt_s']:g}",
-                     f(r["run_time_s"], ".1f")])
-    return md_table(header, rows) + "\n\n" + run_note(data, NAME)
+    return mode1_bench.table2(data.rows(NAME)) + "\n\n" + run_note(data, NAME)
 
 
 def table3(data):
-    _, t3 = paper()
-    at_dx = at(data.rows(NAME), TABLE3_DX)
-    header = ["kernel", "paper's Table 3 peak / L2", "ours, paper convention peak / L2",
-              "ours, consistent peak / L2", "run time (s)"]
-    rows = [[k, f"{t3[k][0]:.2f} / {t3[k][1]:.2f}", _pair(at_dx[k], "paper_peak", "paper_l2"),
-             _pair(at_dx[k], "consistent_peak", "consistent_l2"), f(at_dx[k]["run_time_s"], ".1f")]
-            for k in KERNELS if k in at_dx]
-    return md_table(header, rows) + "\n\n" + run_note(data, NAME)
+    return mode1_bench.table3(data.rows(NAME)) + "\n\n" + run_note(data, NAME)
 
 
 def jtable(data):
-    header = ["kernel", "dx (m)", "extrapolation peak / L2", "J: peak / L2",
-              "K_max ratio: extrapolation / J", "run time (s)"]
-    rows = [[r["kernel"], f"{r['dx_m']:g}", _pair(r, "consistent_peak", "consistent_l2"),
-             _pair(r, "j_peak", "j_l2"), f"{r['kmax_ratio']:.3f} / {r['kmax_ratio_j']:.3f}",
-             f(r["run_time_s"], ".1f")]
-            for r in sorted(data.rows(NAME), key=lambda r: (-r["dx_m"],
-                                                            KERNELS.index(r["kernel"])))]
-    return md_table(header, rows) + "\n\n" + run_note(data, NAME)
+    return mode1_bench.jtable(data.rows(NAME)) + "\n\n" + run_note(data, NAME)
 
 
 TIPS = "mode1_tips"

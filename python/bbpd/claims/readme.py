@@ -9,7 +9,7 @@ from .text import at as at_dx
 from .text import grids as grids_of
 from .text import md_table, mm, sci, span
 
-DISPERSION_KDX = 2.5    # the k dx of the c/v the table quotes (report.tables.DISP_KDX[-1])
+DISPERSION_KDX = 2.5    # the k dx of the c/v the table quotes (dispersion.TABLE_KDX[-1])
 
 
 def _order(values):

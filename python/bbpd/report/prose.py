@@ -43,7 +43,7 @@ def _span(values):
 
 
 def dispersion_text(numbers, table):
-    """numbers: tables.dispersion_table's; table: dispersion.analytic_table's."""
+    """numbers: dispersion.table's; table: dispersion.analytic_table's."""
     min_vg, dev = numbers["min_vg"], numbers["dev"]
     if not dev:
         return []

@@ -10,11 +10,13 @@ from pathlib import Path
 
 import numpy as np
 
+from bbpd.benchmarks import dispersion
+from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import mode1, mode2
 from bbpd.csvfile import write_csv
 from bbpd.kernels import KERNELS
 
-from .tables import DISP_KDX, failed, run_time
+from .tables import failed, run_time
 
 FOLDER = "results"
 # Spec.bench of every run that belongs to a benchmark's file (the work-precision runs complete
@@ -23,65 +25,18 @@ FAMILY = {"mode1": ("mode1", "wp-mode1"), "mode2": ("mode2", "wp-mode2"),
           "kalthoff_winkler": ("kw", "wp-kw")}
 
 
-def _kmax_ratio(res, key, exact):
-    """max K over 0 <= t <= 3 t_c divided by max K_exact there (Mode I)."""
-    t = np.asarray(res["t"], dtype=float)
-    w = t <= 3.0 * res["consistent"]["t_c"]
-    return float(np.max(np.asarray(res[key], dtype=float)[w]) / np.max(exact(t[w])))
-
-
-def mode1_row(res):
-    exact, _ = mode1.reference("consistent", res.get("model", "plane/stress"))
-    j = (res.get("jintegral") or {}).get("consistent") or {}
-    jp = (res.get("jintegral") or {}).get("paper") or {}
-    kii_j = None
-    if "kii_j" in res:    # K_II/K_I of the interaction integral over the window: 0 by symmetry
-        t = np.asarray(res["t"], dtype=float)
-        w = t <= 3.0 * res["consistent"]["t_c"]
-        kii_j = float(np.max(np.abs(np.asarray(res["kii_j"], dtype=float)[w]))
-                      / np.max(np.abs(np.asarray(res["k_j"], dtype=float)[w])))
-    return {"paper_peak": res["paper"]["peak"], "paper_l2": res["paper"]["l2"],
-            "consistent_peak": res["consistent"]["peak"],
-            "consistent_l2": res["consistent"]["l2"],
-            "j_peak": j.get("peak"), "j_l2": j.get("l2"),
-            "kmax_ratio": _kmax_ratio(res, "k_consistent", exact),
-            "kmax_ratio_j": _kmax_ratio(res, "k_j", exact) if "k_j" in res else None,
-            "j_paper_peak": jp.get("peak"), "j_paper_l2": jp.get("l2"),
-            "kii_over_ki": res.get("kii_over_ki"), "kii_j_over_k_j": kii_j, "dt_s": res["dt"], "atoms": res.get("atoms")}
-
-
-def mode2_row(res):
-    j = res.get("jintegral") or {}
-    natoms = (int(round(2 * mode2.HALF_LENGTH / res["dx"]))
-              * int(round(2 * mode2.HALF_HEIGHT / res["dx"])))
-    return {"atoms": natoms, "peak": res["peak"], "l2": res["l2"], "k_end": res["k_end"],
-            "k_end_exact": res["k_end_exact"], "ratio_end": res["k_end"] / res["k_end_exact"],
-            "j_peak": j.get("peak"), "j_l2": j.get("l2"),
-            "j_ratio_end": (j["k_end"] / res["k_end_exact"]) if "k_end" in j else None,
-            "left_right": res.get("left_right"), "ki_over_kii": res.get("ki_over_kii"),
-            "dt_s": res["dt"]}
-
-
-def kw_row(res):
-    return {"atoms": len(res["damage_map"]["x"]), "first_bond_us": res["t_init_us"],
-            "damage_band_us": res["t_band_us"], "angle_deg": res["angle_deg"],
-            "speed_m_s": res["speed"], "symmetry_tip_mm": res["symmetry_tip_mm"],
-            "far_edge_crack_us": res["t_far_edge_us"] if res["far_edge_crack"] else None,
-            "far_damage_other_atoms": res.get("far_damage_other")}
-
-
 def dispersion_row(res, kernel):
     info = res["info"]
     v = math.sqrt(info["E"] / info["rho"])
     meas = res["measured"]
     phase = np.asarray(meas["omega"], dtype=float) / np.asarray(meas["k"], dtype=float) / v
     kdx = np.asarray(meas["k_dx"], dtype=float)
-    row = {f"phase_kdx{x:g}": float(np.interp(x, kdx, phase)) for x in DISP_KDX}
+    row = {f"phase_kdx{x:g}": float(np.interp(x, kdx, phase)) for x in dispersion.TABLE_KDX}
     row["max_dev_discrete_dt"] = res["errors"]["discrete_dt"]["max"]
     return row
 
 
-ROWS = {"mode1": mode1_row, "mode2": mode2_row, "kalthoff_winkler": kw_row}
+ROWS = {"mode1": mode1.row, "mode2": mode2.row, "kalthoff_winkler": kw.row}
 
 
 def tables(specs, results):
@@ -97,8 +52,7 @@ def tables(specs, results):
             if failed(res) or key in seen:
                 continue
             seen.add(key)
-            rows.append({"kernel": s.kernel, "dx_m": s.dx, **ROWS[name](res),
-                         "run_time_s": run_time(res)})
+            rows.append(ROWS[name](res))
         out[name] = rows
     rows = []
     for s in specs:

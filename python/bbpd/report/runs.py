@@ -15,8 +15,8 @@ from bbpd import jobs as jobmod
 from bbpd import readers
 from bbpd.benchmarks import (branching, dispersion, kalthoff_winkler_3d, kalthoff_winkler_deck,
                              kalthoff_winkler_grid, kalthoff_winkler_projectile,
-                             kalthoff_winkler_study, kink, kink_convergence, quasi_static,
-                             strip)
+                             kalthoff_winkler_study, kink, kink_convergence, mode1,
+                             quasi_static, strip)
 from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 
@@ -31,7 +31,7 @@ ESTIMATES_ENV = "BBPD_REPORT_ESTIMATES"   # label -> expected seconds, for the h
 # Resolutions.  Default: the whole set of LAMMPS runs stays within minutes on 2 cores (the
 # README has the measured time); --full adds finer grids.
 MODE1_TABLE2_DX = (0.1, 0.05, 0.025)        # m, Gaussian (paper Table 2)
-MODE1_TABLE3_DX = 0.05                      # m, three kernels (paper Table 3)
+MODE1_TABLE3_DX = mode1.TABLE3_DX           # m, three kernels (paper Table 3)
 MODE2_DX = (1.0e-3, 0.5e-3)                 # m, three kernels (Fig. 12; the paper gives no dx)
 MODE2_DX_FULL = (1.0e-3, 0.5e-3, 0.25e-3)
 KW_DX = (2.0e-3, 1.0e-3)                    # m, three kernels (1 mm: the paper's, Figs. 14-15)
@@ -56,7 +56,6 @@ ESTIMATE_S = {
     ("mode2", 1.0e-3): 2.0, ("mode2", 0.5e-3): 8.0, ("mode2", 0.25e-3): 30.0,
     ("kw", 2.0e-3): 8.0, ("kw", 1.0e-3): 75.0, ("kw", 0.5e-3): 200.0, ("kw", 0.25e-3): 1200.0,
     ("mode1prop", 0.1): 3.0, ("mode1prop", 0.05): 15.0, ("mode1prop", 0.025): 160.0,
-    ("kink", 1.0e-3): 20.0, ("kink", 0.5e-3): 600.0,
     ("branching", 4): 60.0, ("branching", 3): 25.0,
 }
 
@@ -136,8 +135,6 @@ def bench_inputs(bench):
                           ROOT / "python" / "bbpd" / "crack_motion.py",
                           ROOT / "python" / "bbpd" / "crack_tip.py", FREUND_PY,
                           READERS_PY),
-            "kink": (kink.EXAMPLE, BENCH / "kink.py", ROOT / "python" / "bbpd" / "kink.py",
-                     ROOT / "python" / "bbpd" / "crack_path.py", READERS_PY),
             "branching": (branching.EXAMPLE, BENCH / "branching.py", READERS_PY, FREUND_PY,
                           BENCH / "mode1_propagation.py")}[bench]
 
@@ -146,10 +143,6 @@ def label_of(bench, kernel, dx, args):
     """The run's name in the log and the report (part of its cache key)."""
     if bench == "branching":
         return f"crack branching {args['name']}"
-    if bench == "kink":
-        return (f"kink {kernel} dx = {dx * 1e3:g} mm psi = {args['psi']:g} crack at "
-                f"{args['alpha']:g} deg" + ("" if args["ncross"] == kink.NCROSS else
-                                            f" ramp {args['ncross']:g} transits per K_c"))
     return {"dispersion": f"dispersion {kernel}",
             "mode1": f"Mode I {kernel} dx = {dx:g} m",
             "mode2": f"Mode II {kernel} dx = {dx * 1e3:g} mm",
@@ -225,13 +218,8 @@ def benchmark_specs(full=False, study=None):
 def kink_specs(full=False):
     """The kink test's runs: KINK_DEFAULT's five mixes, or with full=True the whole sweep."""
     kernel, alpha = KINK_DEFAULT
-    cases = [c for c in kink.cases() if full or (c[0], c[2], c[3], c[5]) ==
-             (kernel, alpha, kink.COARSE[0], kink.NCROSS)]
-    inputs = bench_inputs("kink")
-    return [make_spec("kink", k, dx, "bbpd.benchmarks.kink:job",
-                      {"kernel": k, "psi": p, "alpha": a, "dx": dx, "m": m, "ncross": n},
-                      inputs, ESTIMATE_S.get(("kink", dx), 600.0))
-            for k, p, a, dx, m, n in cases]
+    return kink.jobs([c for c in kink.cases() if full or (c[0], c[2], c[3], c[5]) ==
+                      (kernel, alpha, kink.COARSE[0], kink.NCROSS)])
 
 
 def branching_specs(full=False):

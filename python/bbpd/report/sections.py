@@ -1,10 +1,12 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """One section of REPORT.md per benchmark: its title, the setup it ran, the table, the
 paragraph and the figures, each from tables, prose and figures."""
-from bbpd.benchmarks import (branching, kalthoff_winkler_3d, kalthoff_winkler_deck,
-                             kalthoff_winkler_grid, kalthoff_winkler_projectile,
-                             kalthoff_winkler_study, kink, kink_convergence, mode1_propagation,
-                             quasi_static, strip)
+from bbpd.benchmarks import (branching, dispersion, kalthoff_winkler, kalthoff_winkler_3d,
+                             kalthoff_winkler_deck, kalthoff_winkler_grid,
+                             kalthoff_winkler_projectile, kalthoff_winkler_study, kink,
+                             kink_convergence, mode1, mode1_propagation, mode2, quasi_static,
+                             strip)
+from bbpd.kernels import KERNELS
 
 from . import figures, prose, tables
 from .runs import MODE1_TABLE3_DX
@@ -47,34 +49,45 @@ def _section(name, table, text, figs):
     return {"title": title, "setup": setup, "table": table, "text": " ".join(text), "figures": figs}
 
 
+def _tables(parts, specs, results):
+    """[(title, table)] one after the other, then the table of the failed runs among specs"""
+    texts = [(f"{title}:\n\n" if title else "") + table for title, table in parts]
+    return "\n\n".join(texts + [tables.failures(specs, results)]).strip()
+
+
 def dispersion_section(specs, results, figdir, notes):
     runs = tables.dispersion_runs(specs, results)
     table, paper, cv = tables.dispersion_csv(runs, figdir)
-    header, rows, numbers = tables.dispersion_table(specs, results, runs, table)
+    header, rows, numbers = dispersion.table(runs, table)
     text = prose.dispersion_text(numbers, table)
     figs = figures.dispersion_figures(runs, paper, cv, figdir, notes)
-    return _section("dispersion", md_table(header, rows), text, figs)
+    return _section("dispersion", _tables([("", md_table(header, rows))], specs, results), text,
+                    figs)
 
 
 def mode1_section(specs, results, figdir, notes):
-    by, ok = tables.mode1_results(specs, results)
-    (h2, rows2, rows2_ok), (h3, rows3, rows3_ok) = tables.mode1_tables(by, ok)
+    ok = tables.finished(specs, results, ("t", "k_paper", "k_consistent", "k_ii"))
+    rows3_ok = {k: ok[k, MODE1_TABLE3_DX] for k in KERNELS if (k, MODE1_TABLE3_DX) in ok}
     text = prose.mode1_text(ok, rows3_ok)
-    figs = figures.mode1_figures(rows2_ok, rows3_ok, figdir, notes)
-    table = ("Table 2, Gaussian kernel:\n\n" + md_table(h2, rows2)
-             + f"\n\nTable 3, dx = {MODE1_TABLE3_DX:g} m:\n\n" + md_table(h3, rows3))
+    figs = figures.mode1_figures({dx: r for (k, dx), r in ok.items() if k == "gaussian"},
+                                 rows3_ok, figdir, notes)
+    rows = [mode1.row(r) for r in ok.values()]
+    table = _tables([("Table 2, Gaussian kernel", mode1.table2(rows)),
+                     (f"Table 3, dx = {MODE1_TABLE3_DX:g} m", mode1.table3(rows)),
+                     ("K_I from the J-integral", mode1.jtable(rows))], specs, results)
     return _section("mode1", table, text, figs)
 
 
 def mode2_section(specs, results, figdir, notes):
-    header, rows, ok = tables.mode2_table(specs, results)
-    text = prose.mode2_text(ok)
-    figs = figures.mode2_figures(ok, figdir, notes)
-    return _section("mode2", md_table(header, rows), text, figs)
+    ok = tables.finished(specs, results, ("t", "k_ii", "k_i", "k_ii_left", "k_ii_j"))
+    rows = [mode2.row(r) for r in ok.values()]
+    table = _tables([("", mode2.table(rows)), ("K_II from the J-integral", mode2.jtable(rows))],
+                    specs, results)
+    return _section("mode2", table, prose.mode2_text(ok), figures.mode2_figures(ok, figdir, notes))
 
 
 def kw_section(specs, results, figdir, notes):
-    header, rows, ok = tables.kw_table(specs, results)
+    ok = tables.finished(specs, results)
     text = prose.kw_text(ok)
     figs = figures.kw_figures(ok, figdir, notes)
     for (k, dx), r in sorted(ok.items()):
@@ -83,7 +96,9 @@ def kw_section(specs, results, figdir, notes):
                         f"at {len(r['snapshots'])} times, drawn during the run by LAMMPS's "
                         "dump image (the input's variable images; the other runs leave it "
                         "off).")
-    return _section("kw", md_table(header, rows), text, figs)
+    table = _tables([("", kalthoff_winkler.table([kalthoff_winkler.row(r) for r in ok.values()]))],
+                    specs, results)
+    return _section("kw", table, text, figs)
 
 
 # the sections of REPORT.md in order: (Spec.bench of their runs, builder)

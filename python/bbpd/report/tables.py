@@ -2,7 +2,6 @@
 """The report's tables: the runs' results (as the job cache holds them) turned into rows of
 numbers beside the paper's, and the CSV files of the dispersion curves."""
 import json
-import math
 import re
 from pathlib import Path
 
@@ -10,15 +9,7 @@ import numpy as np
 
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import dispersion as disp
-from bbpd.benchmarks import kalthoff_winkler as kw
-from bbpd.benchmarks import mode1, mode2
-from bbpd.kernels import KERNELS
-from bbpd.markdown import cell as f
 from bbpd.markdown import table as md_table
-
-from .runs import MODE1_TABLE3_DX
-
-DISP_KDX = (1.0, 2.0, 2.5)
 
 
 # --------------------------------------------------------------------------- results, cells
@@ -56,6 +47,20 @@ def failed_row(res, ncols, lead):
     return list(lead) + [failure_text(res)] + [""] * (ncols - len(lead) - 1)
 
 
+def finished(specs, results, arrays=()):
+    """{(kernel, dx): result} of the finished runs among specs, its `arrays` as arrays."""
+    return {(s.kernel, s.dx): _arrays(results[s.job.label], arrays) for s in specs
+            if not failed(results.get(s.job.label))}
+
+
+def failures(specs, results):
+    """The failed runs among specs as a table (dx, kernel, error), '' when none failed."""
+    bad = [s for s in specs if failed(results.get(s.job.label))]
+    return md_table(["dx (m)", "kernel", "run"], [[f"{s.dx:g}", s.kernel,
+                                                   failure_text(results.get(s.job.label))]
+                                                  for s in bad]) if bad else ""
+
+
 # --------------------------------------------------------------------------- dispersion
 
 def dispersion_runs(specs, results):
@@ -84,132 +89,3 @@ def dispersion_csv(runs, figdir):
                    delimiter=",", header="k (1/m), k dx, omega (rad/s), relative power",
                    comments="# ")
     return table, paper, cv
-
-
-def dispersion_table(specs, results, runs, table):
-    """(header, rows, numbers): numbers holds per kernel the smallest measured v_g/v ('min_vg')
-    and the deviation from what LAMMPS integrates ('dev')."""
-    info = next(iter(runs.values()))["info"] if runs else None
-    v = math.sqrt(info["E"] / info["rho"]) if info else 1.0
-
-    header = ["kernel", "c/v measured at k dx = 1 / 2 / 2.5",
-              "eq. 31 + C_v + dt (what LAMMPS integrates)", "paper: eq. 31 as printed",
-              "continuous eq. 29", "max dev. from eq. 31 + C_v + dt", "from eq. 31 as printed + dt",
-              "min v_g/v: measured / paper's eq. 31", "run time (s)"]
-    rows, min_vg, dev = [], {}, {}
-    for s in specs:
-        k = s.kernel
-        if k not in runs:
-            rows.append(failed_row(results.get(s.job.label), len(header), [k]))
-            continue
-        r = runs[k]
-        meas, ana = r["measured"], r["analytic"][k]
-        phase = meas["omega"] / meas["k"] / v
-        meas_phase = [float(np.interp(x, meas["k_dx"], phase)) for x in DISP_KDX]
-        lammps = [float(np.interp(x, ana["k_dx"], ana["phase_discrete_dt"])) for x in DISP_KDX]
-        energetic = ((meas["power"] >= disp.MIN_POWER) & (meas["k_dx"] >= disp.KDX_RANGE[0])
-                     & (meas["k_dx"] <= disp.KDX_RANGE[1]))
-        vg = disp.measured_group_velocity(meas) / v
-        min_vg[k] = float(vg[energetic].min()) if energetic.any() else None
-        dev[k] = r["errors"]["discrete_dt"]["max"]
-        t = table[k]
-        rows.append([k, " / ".join(f"{p:.3f}" for p in meas_phase),
-                     " / ".join(f"{p:.3f}" for p in lammps),
-                     " / ".join(f"{t['discrete']['phase'][f'{x:g}']:.3f}" for x in DISP_KDX),
-                     " / ".join(f"{t['continuous']['phase'][f'{x:g}']:.3f}" for x in DISP_KDX),
-                     f"{dev[k]:.1e}", f"{r['errors']['paper_eq31_dt']['max']:.1e}",
-                     f"{f(min_vg[k], '.3f')} / {t['discrete']['group_min']:.3f}",
-                     f(run_time(r), ".1f")])
-    return header, rows, {"min_vg": min_vg, "dev": dev}
-
-
-# --------------------------------------------------------------------------- Mode I
-
-def mode1_results(specs, results):
-    """(kernel, dx) -> result of every run, and of the finished ones with arrays."""
-    by = {(s.kernel, s.dx): results.get(s.job.label) for s in specs}
-    ok = {key: _arrays(r, ("t", "k_paper", "k_consistent", "k_ii"))
-          for key, r in by.items() if not failed(r)}
-    return by, ok
-
-
-def mode1_tables(by, ok):
-    """Table 2 (Gaussian, every dx) and Table 3 (three kernels): (header, rows, finished runs
-    by dx or kernel) of each."""
-
-    def cells(r):
-        p, c = r["paper"], r["consistent"]
-        j = r.get("jintegral", {}).get("consistent")
-        return [f"{p['peak']:.2f} / {p['l2']:.2f}", f"{c['peak']:.2f} / {c['l2']:.2f}",
-                f"{j['peak']:.2f} / {j['l2']:.2f}" if j else "-",
-                f"{r['dt']:.3g}", f(run_time(r), ".1f")]
-
-    def table(head, runs):
-        """runs: [(name, (kernel, dx), leading cells)] -> (header, rows, finished runs by name)"""
-        header = head + ["ours, paper convention: peak / L2", "ours, consistent: peak / L2",
-                         "K_I from J, consistent: peak / L2", "dt (s)", "run time (s)"]
-        rows = [lead + cells(ok[key]) if key in ok else failed_row(by[key], len(header), lead)
-                for _, key, lead in runs]
-        return header, rows, {name: ok[key] for name, key, _ in runs if key in ok}
-
-    def paper(ref):
-        return "-" if ref is None else f"{ref[0]:.2f} / {ref[1]:.2f}"
-
-    t2 = [(dx, ("gaussian", dx), [f"{dx:g}", f"{int(round(10 / dx))} x {int(round(4 / dx))}",
-                                  paper(mode1.PAPER_TABLE2.get(dx))])
-          for dx in sorted({dx for k, dx in by if k == "gaussian"}, reverse=True)]
-    t3 = [(k, (k, MODE1_TABLE3_DX), [k, paper(mode1.PAPER_TABLE3[k])])
-          for k in KERNELS if (k, MODE1_TABLE3_DX) in by]
-    return (table(["dx (m)", "atoms", "paper's Table 2: peak / L2"], t2),
-            table(["kernel", "paper's Table 3: peak / L2"], t3))
-
-
-# --------------------------------------------------------------------------- Mode II
-
-def mode2_table(specs, results):
-    """(header, rows, {(kernel, dx): finished result with arrays})"""
-    header = ["kernel", "dx (mm)", "atoms", "peak (%)", "L2 (%)",
-              "K_II/(tau sqrt(pi a)) at window end: ours / reference", "ours/reference",
-              "K_II from J: peak / L2 (%)", "from J: ours/reference", "paper", "run time (s)"]
-    rows, ok = [], {}
-    for s in sorted(specs, key=lambda s: (-s.dx, KERNELS.index(s.kernel))):
-        res = results.get(s.job.label)
-        natoms = int(round(2 * mode2.HALF_LENGTH / s.dx)) * int(round(2 * mode2.HALF_HEIGHT / s.dx))
-        lead = [s.kernel, f"{s.dx * 1e3:g}", f"{natoms}"]
-        if failed(res):
-            rows.append(failed_row(res, len(header), lead))
-            continue
-        r = _arrays(res, ("t", "k_ii", "k_i", "k_ii_left", "k_ii_j"))
-        ok[(s.kernel, s.dx)] = r
-        j = r.get("jintegral")
-        rows.append(lead + [f"{r['peak']:.2f}", f"{r['l2']:.2f}",
-                            f"{r['k_end']:.3f} / {r['k_end_exact']:.3f}",
-                            f"{r['k_end'] / r['k_end_exact']:.3f}",
-                            f"{j['peak']:.2f} / {j['l2']:.2f}" if j else "-",
-                            f"{j['k_end'] / r['k_end_exact']:.3f}" if j else "-", "figure only",
-                            f(run_time(r), ".1f")])
-    return header, rows, ok
-
-
-# --------------------------------------------------------------------------- Kalthoff-Winkler
-
-def kw_table(specs, results):
-    """(header, rows, {(kernel, dx): finished result})"""
-    header = ["kernel", "dx (mm)", "atoms", "first bond (us)", "damage band (us)",
-              "paper initiation (us)", "angle (deg)", "experiment (deg)", "speed (m/s)",
-              "far-edge crack from (us)", "run time (s)"]
-    rows, ok = [], {}
-    for s in sorted(specs, key=lambda s: (KERNELS.index(s.kernel), -s.dx)):
-        res = results.get(s.job.label)
-        lead = [s.kernel, f"{s.dx * 1e3:g}"]
-        if failed(res):
-            rows.append(failed_row(res, len(header), lead))
-            continue
-        ok[(s.kernel, s.dx)] = res
-        rows.append(lead + [
-            str(len(res["damage_map"]["x"])), f(res["t_init_us"], ".1f"),
-            f(res["t_band_us"], ".1f"), f"{kw.PAPER_INITIATION_US[s.kernel]:.1f}",
-            f(res["angle_deg"], ".1f"), f"{kw.EXPERIMENT_ANGLE_DEG:.0f}", f(res["speed"], ".0f"),
-            f(res["t_far_edge_us"], ".0f") if res["far_edge_crack"] else "none",
-            f(run_time(res), ".1f")])
-    return header, rows, ok

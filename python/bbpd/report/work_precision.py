@@ -1,12 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Work-precision diagrams: error against run time for every benchmark of tools/reproduce, one
-line per kernel through its resolutions (Mode I and II: per K extraction method as well). The
-errors, the run time (the median LAMMPS loop time of TIMING_REPEATS timings for runs expected
-under REPEAT_BELOW_S) and the figures are described in doc/work_precision.md.
-
-extra_specs() adds the runs the report does not make already, and the timing repeats; section()
-turns the results into report/csv/work_precision.csv, report/work_precision_<benchmark>.png and
-a report section.
+line per kernel through its resolutions (doc/work_precision.md). extra_specs() adds the runs
+the report lacks and the timing repeats; section() writes the CSV, the figures and the report
+section.
 """
 
 import importlib
