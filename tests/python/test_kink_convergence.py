@@ -347,8 +347,14 @@ def test_the_coverage_lists_what_of_the_plan_is_left():
 
 def test_the_report_section_carries_the_committed_limit():
     # the whole sweeps take days: REPORT.md states their limit from the committed CSV, run or not
-    line = kc.limit_line(kl.limit(kc.read_rows()))
-    assert line in kc.section([], {}, None, [])["setup"]
+    found = kl.limit(kc.read_rows())
+    table = kc.section([], {}, None, [])["table"].splitlines()
+    assert table[0] == "| kernel | R/delta | m | at | state | limit | follows |"
+    cells = [[c.strip() for c in ln.split("|")[1:-1]] for ln in table[2:]]
+    assert [c[:4] for c in cells] == [["gaussian", "20", "5, 10, 15, 20", d] for d in ("2d", "4d")]
+    assert [c[4] for c in cells] == [found["at"][d]["state"] for d in ("2d", "4d")]
+    assert [c[5] for c in cells] == [kc.NAMES["hoop_strain"], "-"]
+    assert [c[6] for c in cells] == ["not settled"] * 2
 
 
 def test_the_committed_sweeps_give_the_limit_the_readme_states():

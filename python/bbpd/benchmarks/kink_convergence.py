@@ -239,14 +239,17 @@ def figure(rows, path=FIGURE):
             ax_row[1].legend(fontsize=6.5, loc="best")
 
 
-def limit_line(found):
-    """the committed limit as REPORT.md's template fills it"""
+def limit_table(found):
+    """kink_limit.limit as a table: the disk and the m of the committed whole sweeps, per
+    distance the state of the limit and the criterion approached, and the one every distance
+    follows; empty without two whole sweeps"""
     if found is None:
-        return "no R/delta with the whole mixed-mode sweep at two m yet."
-    return (f"{found['kernel']}, R/delta = {found['rd']:g}, m = {', '.join(f'{m:g}' for m in found['ms'])}: "
-            + "; ".join(f"{d}: {t['state']}" + (f" {NAMES[t['limit']]}" if t["limit"] else "")
-                        for d, t in found["at"].items())
-            + f"; follows: {NAMES[found['follows']] if found['follows'] else 'not settled'}.")
+        return ""
+    return md_table(("kernel", "R/delta", "m", "at", "state", "limit", "follows"), (
+        [found["kernel"], f"{found['rd']:g}", ", ".join(f"{m:g}" for m in found["ms"]), d,
+         t["state"], NAMES[t["limit"]] if t["limit"] else "-",
+         NAMES[found["follows"]] if found["follows"] else "not settled"]
+        for d, t in found["at"].items()))
 
 
 # ---------------------------------------------------------------------------- report
@@ -266,15 +269,19 @@ def jobs(nprocs=1):
 def section(specs, results, figdir, notes):
     """The kink convergence section of REPORT.md (tools/reproduce --full), with the limit
     that the committed whole sweeps name (they take days, so no report run remakes them)."""
-    committed = (f"The committed whole mixed-mode sweeps ({CSV.relative_to(kinkbench.ROOT)}): "
-                 + limit_line(limit(read_rows())))
-    return jobmod.section(
+    found = limit(read_rows())
+    committed = (f"The last table gives the limit the committed whole mixed-mode sweeps "
+                 f"({CSV.relative_to(kinkbench.ROOT)}) name." if found else
+                 "No R/delta has the whole mixed-mode sweep at two m yet.")
+    s = jobmod.section(
         REPORT_TITLE, f"Gaussian kernel, pure Mode II, crack along the rows, delta = "
         f"{DELTA * 1e3:g} mm; see examples/kink-mixed-mode/README.md. {committed}", specs, results,
         lambda rows: table(rows) + "\n\n" + sequences_table(rows),
         not_run=f"Not run by default ({len(jobs())} runs, about an hour): `tools/reproduce --full` "
         "runs them; the last measured table is in examples/kink-mixed-mode/README.md, "
         f"'Convergence in m and in the disk's size'. {committed}")
+    s["table"] = "\n\n".join(p for p in (s["table"], limit_table(found)) if p)
+    return s
 
 
 def read_rows(path=CSV):

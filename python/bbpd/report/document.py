@@ -23,7 +23,7 @@ def versions_text(results):
 
 def section_lines(s):
     """A section's lines: its title and the parts it has, one blank line after each (a section
-    not run by default has its one-line setup only)."""
+    not run by default has its one-line setup, and a table only where it reads committed data)."""
     parts = [p for p in (s["setup"], s["table"], s["text"]) if p]
     parts += ["\n".join(f"![{name}]({name})" for name in s["figures"])] if s["figures"] else []
     lines = [f"## {s['title']}", ""]
