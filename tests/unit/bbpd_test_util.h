@@ -42,6 +42,16 @@ inline std::string test_label(const std::string &s)
   return out;
 }
 
+// The material and geometry of the kernel and calibration tests, deliberately not 1 so that a
+// wrong power of delta shows
+namespace material {
+constexpr double E = 3.7;
+constexpr double DELTA = 0.8;
+constexpr double A = 0.6;     // bar cross-section
+constexpr double H = 0.35;    // plate thickness
+constexpr double GC = 2.3;
+}    // namespace material
+
 }    // namespace BBPD::test
 
 #endif

@@ -6,6 +6,7 @@
 
 #include "bbpd_bond_model.h"
 #include "bbpd_row.h"
+#include "bbpd_test_row.h"
 #include "toy_bond_models.h"
 
 #include <gtest/gtest.h>
@@ -24,29 +25,21 @@ using BBPDToy::SymmetricStretchBond;
 
 constexpr int NB = 29;    // partners of atom 0: 3 full groups of 8 and a tail
 
-struct Row {
-  std::vector<double> x;    // 3 per atom, atom 0 first
-  std::vector<int> bj;
-  std::vector<double> xi0, coef;
-};
+using BBPD::test::Row;
 
 // atom 0 and NB partners, every bond at the given stretch to within 1e-4
 Row make_row(double stretch)
 {
   std::mt19937 gen(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Row row;
-  row.x = {0.3, 0.1, -0.4};
-  for (int k = 0; k < NB; k++) {
-    const double ref[3] = {u(gen), u(gen), 1.0 + 0.05 * k};
-    const double len = std::sqrt(ref[0] * ref[0] + ref[1] * ref[1] + ref[2] * ref[2]);
+  return BBPD::test::make_row(NB, {0.3, 0.1, -0.4}, [&](int k, const double *x0, double *ref, double *p) {
+    ref[0] = u(gen);
+    ref[1] = u(gen);
+    ref[2] = 1.0 + 0.05 * k;
     const double scale = 1.0 + stretch + 1e-4 * u(gen);
-    for (int m = 0; m < 3; m++) row.x.push_back(row.x[m] + ref[m] * scale);
-    row.bj.push_back(k + 1);
-    row.xi0.push_back(len);
-    row.coef.push_back(1.0 + 0.5 * u(gen));
-  }
-  return row;
+    for (int m = 0; m < 3; m++) p[m] = x0[m] + ref[m] * scale;
+    return 1.0 + 0.5 * u(gen);
+  });
 }
 
 struct Result {
@@ -58,14 +51,7 @@ struct Result {
 template <class Model, int FRACTURE> Result portable(const Row &row, double s0)
 {
   Result r;
-  double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
-  r.tally = {};
-  auto xi0_of = [&](int k) { return row.xi0[k]; };
-  auto coef_of = [&](int k, double) { return row.coef[k]; };
-  auto s0_of = [&](int) { return s0; };
-  r.broken = BBPD::row_force_portable<FRACTURE, 1, Model>(row.x.data(), 0, row.bj.data(), NB, xi0_of,
-                                                         coef_of, s0_of, 0.0, ax, ay, az, &r.tally);
-  BBPD::lane_sum(ax, ay, az, r.f);
+  r.broken = BBPD::test::portable_row<Model, FRACTURE, 1>(row, s0, r.f, &r.tally);
   return r;
 }
 

@@ -21,18 +21,12 @@
 #include <tuple>
 
 using namespace BBPD;
+using namespace BBPD::test::material;
 using BBPD::test::rel_near;
 
 namespace {
 
 constexpr double TOL = 1.0e-10;
-
-// Material and geometry, deliberately not 1 so a wrong power of delta shows
-constexpr double E = 3.7;
-constexpr double DELTA = 0.8;
-constexpr double GEOM_1D = 0.6;    // cross-section A
-constexpr double GEOM_2D = 0.35;   // thickness h
-constexpr double GC = 2.3;
 constexpr double STRAIN = 1.0e-3;
 
 // Poisson ratios fixed by bond-based PD (paper sec. 2.1; Silling 2000)
@@ -204,7 +198,7 @@ double fracture_energy(const KernelInfo &k, Model m, double c0, double s0, doubl
   }
 }
 
-double geometry(Model m) { return m == Model::Bar1D ? GEOM_1D : GEOM_2D; }
+double geometry(Model m) { return m == Model::Bar1D ? A : H; }
 
 class Calibration : public ::testing::TestWithParam<std::tuple<std::string, Model>> {
  protected:
@@ -272,8 +266,8 @@ TEST(Calibration, ImpliedPoissonRatio)
 TEST(Calibration, ShearDetectsWrongPoissonRatio)
 {
   const KernelInfo k = kernel_info<ConstantKernel>();
-  const double c0 = micromodulus(k, Model::PlaneStress, E, DELTA, GEOM_2D);
-  const double pd = pd_energy(k, Model::PlaneStress, c0, GEOM_2D, pure_shear());
+  const double c0 = micromodulus(k, Model::PlaneStress, E, DELTA, H);
+  const double pd = pd_energy(k, Model::PlaneStress, c0, H, pure_shear());
   const double nu = 0.3;
   const double ccm = E / (1.0 + nu) * STRAIN * STRAIN;    // eq. 13 with eps12 only
   EXPECT_GT(std::fabs(pd / ccm - 1.0), 1.0e-3);

@@ -14,17 +14,12 @@
 #include <stdexcept>
 
 using namespace BBPD;
+using namespace BBPD::test::material;
 using BBPD::test::rel_near;
 
 namespace {
 
 constexpr double TOL = 1.0e-12;
-
-constexpr double E = 3.7;
-constexpr double DELTA = 0.8;
-constexpr double A = 0.6;    // bar cross-section
-constexpr double H = 0.35;   // plate thickness
-constexpr double GC = 2.3;
 
 const double E4 = std::exp(4.0);
 const double ERF2 = std::erf(2.0);

@@ -4,6 +4,7 @@
    AVX2, if any) gives the same bits. */
 
 #include "bbpd_row.h"
+#include "bbpd_test_row.h"
 
 #include <gtest/gtest.h>
 
@@ -22,41 +23,25 @@ using BBPD::RowTally;
 // atom 0 at the centre, NB partners around it, displaced a little from a reference grid
 constexpr int NB = 37;
 
-struct Row {
-  std::vector<double> x;    // 3 per atom, atom 0 first
-  std::vector<int> bj;
-  std::vector<double> xi0, coef;
-};
+using BBPD::test::Row;
 
 Row make_row(double strain)
 {
   std::mt19937 gen(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Row row;
-  row.x = {0.1, -0.2, 0.05};
-  for (int k = 0; k < NB; k++) {
-    const double ref[3] = {1.0 + 0.1 * k, 0.5 * u(gen), 0.5 * u(gen)};
-    const double len = std::sqrt(ref[0] * ref[0] + ref[1] * ref[1] + ref[2] * ref[2]);
-    for (int m = 0; m < 3; m++) row.x.push_back(row.x[m] + ref[m] * (1.0 + strain) + 1e-3 * u(gen));
-    row.bj.push_back(k + 1);
-    row.xi0.push_back(len);
-    row.coef.push_back(1.0 + 0.25 * u(gen));
-  }
-  return row;
+  return BBPD::test::make_row(NB, {0.1, -0.2, 0.05}, [&](int k, const double *x0, double *ref, double *p) {
+    ref[0] = 1.0 + 0.1 * k;
+    ref[1] = 0.5 * u(gen);
+    ref[2] = 0.5 * u(gen);
+    for (int m = 0; m < 3; m++) p[m] = x0[m] + ref[m] * (1.0 + strain) + 1e-3 * u(gen);
+    return 1.0 + 0.25 * u(gen);
+  });
 }
 
 template <int FRACTURE, int EV>
 bool portable(const Row &row, double s0, double *f, RowTally *tally)
 {
-  double ax[LANES] = {0.0}, ay[LANES] = {0.0}, az[LANES] = {0.0};
-  *tally = {};
-  auto xi0_of = [&](int k) { return row.xi0[k]; };
-  auto coef_of = [&](int k, double) { return row.coef[k]; };
-  auto s0_of = [&](int) { return s0; };
-  const bool broken = BBPD::row_force_portable<FRACTURE, EV, BBPD::CriticalStretchBond>(
-      row.x.data(), 0, row.bj.data(), NB, xi0_of, coef_of, s0_of, 0.0, ax, ay, az, tally);
-  BBPD::lane_sum(ax, ay, az, f);
-  return broken;
+  return BBPD::test::portable_row<BBPD::CriticalStretchBond, FRACTURE, EV>(row, s0, f, tally);
 }
 
 TEST(Row, PortableLoopIsEquation21)
