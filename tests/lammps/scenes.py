@@ -180,3 +180,38 @@ region          right block {length - delta} INF INF INF INF INF units box
 group           left region left
 group           right region right
 """
+
+
+# the end state of a run that breaks bonds, and the same run made in other ways
+END_KEYS = ("x", "y", "z", "vx", "vy", "vz", "c_dmg")
+END_DUMP = "write_dump all custom end.dump id x y z vx vy vz c_dmg modify sort id format float %.17g\n"
+
+
+def assert_same_bits_every_way(lmp, tmp_path, head, lattice, steps, dt, others=()):
+    """head (a script up to its run: compute dmg, thermo of c_dmean) run `steps` steps of dt on 1
+    and 2 ranks (bonds must break), each script of others on 1 rank, and from a restart written
+    half way on 1 and 2 ranks: every run ends in the same bits. Returns the outputs of others."""
+    def end(script, nsteps, nprocs=1):
+        out = lmp(script + f"fix 1 all nve\nrun {nsteps}\n" + END_DUMP, nprocs=nprocs).output
+        d = ref.read_dump(tmp_path / "end.dump")
+        return out, {k: np.asarray(d[k]) for k in END_KEYS}
+    states, outs = [], []
+    for nprocs in (1, 2):
+        out, state = end(head, steps, nprocs)
+        dmean = ref.thermo_tables(out)[-1]["c_dmean"]
+        assert dmean[0] == 0.0 and dmean[-1] > 0.01, dmean    # bonds broke during the run
+        states.append(state)
+    for other in others:
+        out, state = end(other, steps)
+        outs.append(out)
+        states.append(state)
+    half = steps // 2
+    lmp(head + f"fix 1 all nve\nrun {half}\nwrite_restart state.restart\n")
+    second = ("plugin load bbpdplugin.so\nread_restart state.restart\n" + lattice +
+              f"timestep {dt!r}\ncompute dmg all bbpd/damage/atom\n")
+    for nprocs in (1, 2):
+        states.append(end(second, steps - half, nprocs)[1])
+    for other in states[1:]:
+        for key in END_KEYS:
+            np.testing.assert_array_equal(states[0][key], other[key])
+    return outs

@@ -26,7 +26,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
-from scenes import peri_preamble
+from scenes import assert_same_bits_every_way, peri_preamble
 
 KERNELS = ("constant", "triangular", "gaussian")
 MODELS = ("3d", "plane/strain", "plane/stress")
@@ -154,9 +154,7 @@ RUN_HORIZON = 3.015 * DX
 RUN_STEPS = 60
 RUN_DT = 5.0e-8
 EXPANSION_RATE = 2.0e4    # 1/s: the bonds reach s0 (~4e-3) within the run
-RUN_KEYS = ("x", "y", "z", "vx", "vy", "vz", "c_dmg")
-RUN_DUMP = ("write_dump all custom end.dump id x y z vx vy vz c_dmg modify sort id "
-            "format float %.17g\n")
+
 
 
 def run_head(tmp_path, kernel, model, nprocs_grid=None):
@@ -177,36 +175,13 @@ def run_head(tmp_path, kernel, model, nprocs_grid=None):
             "thermo 10\nthermo_modify format float %.17g\n")
 
 
-def end_of(tmp_path):
-    d = ref.read_dump(tmp_path / "end.dump")
-    return {k: np.asarray(d[k]) for k in RUN_KEYS}
-
-
 @pytest.mark.parametrize("kernel,model", RUN_CASES)
 def test_same_bits_on_1_and_2_ranks_and_restart(lmp, tmp_path, kernel, model):
     head = run_head(tmp_path, kernel, model)
-    half = RUN_STEPS // 2
-    states = []
-    for nprocs in (1, 2):
-        out = lmp(head + f"fix 1 all nve\nrun {RUN_STEPS}\n" + RUN_DUMP, nprocs=nprocs).output
-        dmean = ref.thermo_tables(out)[-1]["c_dmean"]
-        assert dmean[0] == 0.0 and dmean[-1] > 0.01, dmean    # bonds broke during the run
-        states.append(end_of(tmp_path))
     threaded = head.replace("units si", "package omp 2\nunits si", 1)
-    out = lmp(threaded + f"fix 1 all nve\nrun {RUN_STEPS}\n" + RUN_DUMP).output
+    out, = assert_same_bits_every_way(lmp, tmp_path, head, lattice_line(ref.DIMENSION[model]),
+                                      RUN_STEPS, RUN_DT, [threaded])
     assert "1 MPI tasks x 2 OpenMP threads" in out
-    states.append(end_of(tmp_path))
-    lmp(head + f"fix 1 all nve\nrun {half}\nwrite_restart state.restart\n")
-    dim = ref.DIMENSION[model]
-    second = ("plugin load bbpdplugin.so\nread_restart state.restart\n" + lattice_line(dim) +
-              f"timestep {RUN_DT!r}\ncompute dmg all bbpd/damage/atom\nfix 1 all nve\n"
-              f"run {RUN_STEPS - half}\n" + RUN_DUMP)
-    for nprocs in (1, 2):
-        lmp(second, nprocs=nprocs)
-        states.append(end_of(tmp_path))
-    for other in states[1:]:
-        for key in RUN_KEYS:
-            np.testing.assert_array_equal(states[0][key], other[key])
 
 
 # ---------------------------------------------------------------------------

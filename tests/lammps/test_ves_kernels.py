@@ -26,7 +26,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
-from scenes import peri_preamble
+from scenes import assert_same_bits_every_way, peri_preamble
 
 DX = 1.0e-3
 THICKNESS = 1.0e-3
@@ -153,13 +153,6 @@ RUN_DT = 5.0e-8
 RUN_HORIZON = 3.015 * DX
 GC = 1.0e4
 EXPANSION_RATE = 2.0e4    # 1/s: the bonds reach s0 within the run (test_lps_kernels.py)
-KEYS = ("x", "y", "z", "vx", "vy", "vz", "c_dmg")
-DUMP = "write_dump all custom end.dump id x y z vx vy vz c_dmg modify sort id format float %.17g\n"
-
-
-def end_of(tmp_path):
-    d = ref.read_dump(tmp_path / "end.dump")
-    return {k: np.asarray(d[k]) for k in KEYS}
 
 
 @pytest.mark.parametrize("kernel,model", (("gaussian", "3d"), ("triangular", "plane/stress")))
@@ -182,28 +175,11 @@ def test_same_bits_on_1_and_2_ranks_and_restart(lmp, tmp_path, kernel, model):
              f"timestep {RUN_DT!r}\ncompute dmg all bbpd/damage/atom\n"
              "compute dmean all reduce ave c_dmg\nthermo_style custom step pe c_dmean\n"
              "thermo 10\nthermo_modify format float %.17g\n")
-    states = []
-    for nprocs in (1, 2):
-        out = lmp(head_ + f"fix 1 all nve\nrun {RUN_STEPS}\n" + DUMP, nprocs=nprocs).output
-        dmean = ref.thermo_tables(out)[-1]["c_dmean"]
-        assert dmean[0] == 0.0 and dmean[-1] > 0.01, dmean    # bonds broke during the run
-        states.append(end_of(tmp_path))
-    # every vector path gives the bits of the portable loop (auto chose one of them above)
+    # every vector path gives the bits of the portable loop (auto chose one of them)
     style = f"pair_style bbpd/ves/{kernel} {model}{thick}"
-    for path in ("portable", "avx2"):
-        lmp(head_.replace(style, f"{style} simd {path}") + f"fix 1 all nve\nrun {RUN_STEPS}\n" + DUMP)
-        states.append(end_of(tmp_path))
-    half = RUN_STEPS // 2
-    lmp(head_ + f"fix 1 all nve\nrun {half}\nwrite_restart state.restart\n")
-    second = ("plugin load bbpdplugin.so\nread_restart state.restart\n" + lattice +
-              f"timestep {RUN_DT!r}\ncompute dmg all bbpd/damage/atom\nfix 1 all nve\n"
-              f"run {RUN_STEPS - half}\n" + DUMP)
-    for nprocs in (1, 2):
-        lmp(second, nprocs=nprocs)
-        states.append(end_of(tmp_path))
-    for other in states[1:]:
-        for key in KEYS:
-            np.testing.assert_array_equal(states[0][key], other[key])
+    assert_same_bits_every_way(lmp, tmp_path, head_, lattice, RUN_STEPS, RUN_DT,
+                               [head_.replace(style, f"{style} simd {path}")
+                                for path in ("portable", "avx2")])
 
 
 # ---------------------------------------------------------------------------
