@@ -1,6 +1,7 @@
-"""examples/quasi-static: the plate with a hole's second measure (bbpd.benchmarks.plate_hole.fitted)
+"""examples/quasi-static: the plate with a hole's fitted measure (bbpd.benchmarks.plate_hole.fitted)
 on a field of known concentration, the issue's verdict on it as data from the committed sweep,
-and the README's tables of K and of the dynamic initiation against the CSVs they quote."""
+and the README's tables (K, the kernels' own constants, the dynamic initiation) against the CSVs
+they quote."""
 import csv
 
 import numpy as np
@@ -33,6 +34,58 @@ def test_the_fit_returns_the_amplitude_of_tans_form(tmp_path):
     dump.write_text("ITEM: ATOMS id x y c_u[1] c_u[2]\n" + "\n".join(lines) + "\n")
     k, n = ph.fitted(dump, 1.0e-3, ph.FIT_OUTER)
     assert k == pytest.approx(k_true, rel=1e-9) and n == 8
+
+
+def pct(x):
+    return f"{100 * float(x):+.1f} %".replace("-", "−")
+
+
+def test_the_verdict_follows_the_sweep():
+    full = rows("plate_hole_full.csv")
+    assert [(r["kernel"], float(r["delta_mm"])) for r in full] == [
+        (k, d) for k in ("constant", "triangular", "gaussian") for d in (2, 1, 0.5)]
+    for column in ("error", "error_fit", "error_fit_wide", "error_fit_own"):
+        for kernel, got in ph.verdict(full, column).items():
+            errs = [abs(float(r[column])) for r in full if r["kernel"] == kernel]
+            assert got == {"finest": errs[-1], "within": errs[-1] <= ph.TOL,
+                           "falls": errs[0] > errs[1] > errs[2]}
+    # what the README says of it: the fit (either constants) meets the acceptance for every
+    # kernel, the first row's value and the wider window do not
+    for column in ("error_fit", "error_fit_own"):
+        assert all(v["within"] and v["falls"] for v in ph.verdict(full, column).values())
+    first, wide = ph.verdict(full, "error"), ph.verdict(full, "error_fit_wide")
+    assert not first["gaussian"]["within"] and not first["constant"]["falls"]
+    assert all(v["within"] for v in wide.values())
+    assert [k for k, v in sorted(wide.items()) if not v["falls"]] == ["constant", "gaussian"]
+
+
+def test_the_readme_quotes_the_plate_hole_csvs():
+    both = rows("plate_hole.csv") + rows("plate_hole_full.csv")
+    for r in both:
+        cells = (f"| {r['m']} | {int(r['atoms']):,} | {float(r['K']):.3f} | {pct(r['error'])} | "
+                 f"{float(r['K_fit']):.3f} | {pct(r['error_fit'])} | {pct(r['error_fit_wide'])} | "
+                 f"{pct(r['error_fit_own'])} | {int(r['iterations']):,} |")
+        assert cells in README, cells
+    drops = [float(r["error_fit"]) - float(r["error_fit_wide"]) for r in both]
+    assert all(d > 0 for d in drops)    # the same sign for every kernel and grid
+    assert f"lowers K by {100 * min(drops):.1f} to {100 * max(drops):.1f} points" in README
+
+
+def test_the_readme_quotes_the_kernels_own_constants():
+    plain = {(r["kernel"], r["m"], float(r["delta_mm"])): r for r in rows("plate_hole_modulus.csv")}
+    assert max(float(r["spread"]) for r in plain.values()) < 4e-4
+    for b in rows("plate_hole_bulk.csv"):
+        c11, c12 = float(b["C11"]), float(b["C12"])
+        e_eff = c11 - c12 ** 2 / c11
+        cells = f"| {b['m']} | {c11:.4f} | {c12:.4f} | {e_eff:.4f} | {c12 / c11:.3f} | "
+        c2 = float(plain[(b["kernel"], b["m"], 2.0)]["E_eps_over_sigma"])
+        cells += f"{c2:.4f} |"
+        if (b["kernel"], b["m"], 1.0) in plain:
+            c1 = float(plain[(b["kernel"], b["m"], 1.0)]["E_eps_over_sigma"])
+            extrapolated = 1 / (2 * c1 - c2)
+            cells += f" {c1:.4f} | {extrapolated:.4f} |"
+            assert abs(extrapolated / e_eff - 1) < 5e-4, b    # two routes to the same modulus
+        assert cells in README, cells
 
 
 def test_the_readme_quotes_the_dynamic_initiation_csv():

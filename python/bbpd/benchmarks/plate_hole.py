@@ -21,7 +21,12 @@ derivative of the columns' mean u_y along y), and the amplitude K of Tan's finit
 sigma_xx(r) = (K/3) sigma_Kirsch(r) (Kirsch's shape with the concentration as the unknown:
 S. C. Tan, J. Compos. Mater. 22, 1988, 1080) is fitted by least squares over the rows at
 R + delta <= r <= FIT_OUTER R: one horizon off the hole's edge, within one radius of it where
-the concentration lives. K_fit_wide: the same to r = FIT_OUTER_WIDE R.
+the concentration lives. K_fit_wide: the same to r = FIT_OUTER_WIDE R. K_fit_own: the same fit
+with the stress from the kernel's own elastic constants on the grid, sigma_xx = C11 eps_xx +
+C12 eps_yy (bulk: in.bulk-modulus), instead of the continuum's E/(1 - nu^2) and nu E/(1 - nu^2):
+the bonds' lattice sum at m = 4 is not the integral the micromodulus is calibrated with, and a
+concentration factor is a ratio of two stresses in the same material. --modulus checks those
+constants against the plain plate's strain (results/plate_hole_modulus.csv, _bulk.csv).
 
 Finite width (d/W = 0.3): K_tg = [2 + (1 - d/W)^3] / (1 - d/W) (Heywood, Designing by
 Photoelasticity, 1952; Pilkey & Pilkey, Peterson's Stress Concentration Factors, 3rd ed., 2008,
@@ -29,6 +34,7 @@ sec. 4.3.1), on the gross stress sigma = load / (W h).
 """
 import argparse
 import csv
+import functools
 import re
 from pathlib import Path
 
@@ -66,8 +72,8 @@ def read_dump(dump):
                      for line in text.split("ITEM: ATOMS")[1].splitlines()[1:] if line.strip()])
 
 
-def fitted(dump, delta, outer):
-    """K_fit: Tan's form's amplitude fitted to sigma_xx on the rows R + delta <= r <= outer R"""
+def ligament(dump):
+    """(r, eps_xx, eps_yy) on the rows of the two columns beside the ligament"""
     rows = read_dump(dump)
     x0, y0 = rows[:, 1] - rows[:, 3], rows[:, 2] - rows[:, 4]
     ys = np.unique(np.round(y0, 12))
@@ -78,13 +84,38 @@ def fitted(dump, delta, outer):
         exx.append((rows[right, 3].mean() - rows[left, 3].mean())
                    / (x0[right].mean() - x0[left].mean()))
         uy.append(rows[row, 4].mean())
-    exx = np.array(exx)
-    eyy = np.gradient(np.array(uy), ys)
-    r = ys - W / 2
-    sxx = E * (exx + NU * eyy) / (1.0 - NU ** 2) / SIGMA
+    return ys - W / 2, np.array(exx), np.gradient(np.array(uy), ys)
+
+
+def fitted(dump, delta, outer, c=(1.0 / (1.0 - NU ** 2), NU / (1.0 - NU ** 2))):
+    """K_fit: Tan's form's amplitude fitted to sigma_xx = E (C11 eps_xx + C12 eps_yy) on the
+    rows R + delta <= r <= outer R; c = (C11, C12) / E, by default the continuum's"""
+    r, exx, eyy = ligament(dump)
+    sxx = E * (c[0] * exx + c[1] * eyy) / SIGMA
     w = (r >= R + delta - 1.0e-12) & (r <= outer * R + 1.0e-12)
     shape = kirsch_ligament(r[w])[0]
     return 3.0 * shape @ sxx[w] / (shape @ shape), int(w.sum())
+
+
+def modulus(kernel, delta, m, out):
+    """the plain plate (no hole, -var R 0): E eps_xx / sigma on the ligament's rows, the
+    kernel's compliance against E (mean, and its spread over the rows)"""
+    work = Path(out) / f"plain-{kernel}-d{delta * 1e3:g}mm-m{m}"
+    run_lammps(str(HERE / "in.plate-hole"), work,
+               vars={"kernel": kernel, "dx": repr(delta / m), "m": m, "R": 0})
+    c = E * ligament(work / "ligament.dump")[1] / SIGMA
+    return {"kernel": kernel, "delta_mm": delta * 1e3, "m": m, "E_eps_over_sigma": c.mean(),
+            "spread": c.max() - c.min()}
+
+
+@functools.lru_cache(maxsize=None)
+def bulk(kernel, m, out="/tmp/bbpd-plate-hole"):
+    """(C11, C12) / E of the kernel's bonds on the grid at m (in.bulk-modulus: a uniform strain,
+    the virial stress away from every surface)"""
+    proc = run_lammps(str(HERE / "in.bulk-modulus"), Path(out) / f"bulk-{kernel}-m{m}",
+                      vars={"kernel": kernel, "m": m})
+    c = re.search(r"BULK-MODULUS: .* C11 (\S+) C12 (\S+)", proc.output)
+    return float(c.group(1)), float(c.group(2))
 
 
 def concentration(dump, dx):
@@ -122,6 +153,7 @@ def run_case(kernel, delta, m, out):
     k, r1 = concentration(work / "ligament.dump", dx)
     k_fit, n_fit = fitted(work / "ligament.dump", delta, FIT_OUTER)
     k_wide, _ = fitted(work / "ligament.dump", delta, FIT_OUTER_WIDE)
+    k_own, _ = fitted(work / "ligament.dump", delta, FIT_OUTER, bulk(kernel, m, out))
     line = re.search(r"bbpd/relax: load step 1 converged at step \d+: (\d+) iterations.*?, "
                      r"([0-9.e+-]+) s$", proc.output, re.M)
     atoms = int(re.search(r"PLATE-HOLE: .* atoms (\d+)", proc.output).group(1))
@@ -129,7 +161,19 @@ def run_case(kernel, delta, m, out):
             "K": k, "K_heywood": heywood(2 * R / W), "error": k / heywood(2 * R / W) - 1.0,
             "r1_over_R": r1 / R, "K_fit": k_fit, "error_fit": k_fit / heywood(2 * R / W) - 1.0,
             "fit_rows": n_fit, "K_fit_wide": k_wide,
-            "error_fit_wide": k_wide / heywood(2 * R / W) - 1.0, "iterations": int(line.group(1)), "wall_s": float(line.group(2))}
+            "error_fit_wide": k_wide / heywood(2 * R / W) - 1.0, "K_fit_own": k_own,
+            "error_fit_own": k_own / heywood(2 * R / W) - 1.0, "iterations": int(line.group(1)),
+            "wall_s": float(line.group(2))}
+
+
+def write(rows, out):
+    out.parent.mkdir(exist_ok=True)
+    with open(out, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
+    print(f"wrote {out}")
 
 
 def main(argv=None):
@@ -137,27 +181,31 @@ def main(argv=None):
     ap.add_argument("--full", action="store_true", help="add the finest grid (delta = 0.5 mm)")
     ap.add_argument("--out", default="/tmp/bbpd-plate-hole", help="work directory of the runs")
     ap.add_argument("--kernels", default=",".join(KERNELS), help="comma-separated kernels")
+    ap.add_argument("--modulus", action="store_true", help="instead: the plain plate of each "
+                    "kernel at m = 4 (delta = 2, 1 mm) and the Gaussian's m = 3, 5 (2 mm)")
     args = ap.parse_args(argv)
     kernels = args.kernels.split(",")
+    if args.modulus:
+        rows = [modulus(k, d, 4, args.out) for k in kernels for d in DELTAS]
+        rows += [modulus("gaussian", DELTAS[0], m, args.out) for m in MS if m != 4]
+        write(rows, HERE / "results" / "plate_hole_modulus.csv")
+        constants = [(k, 4) for k in kernels] + [("gaussian", m) for m in MS if m != 4]
+        return write([{"kernel": k, "m": m, "C11": bulk(k, m, args.out)[0],
+                       "C12": bulk(k, m, args.out)[1]} for k, m in constants],
+                     HERE / "results" / "plate_hole_bulk.csv")
     cases = [(k, d, 4) for k in kernels for d in (DELTAS_FULL if args.full else DELTAS)]
     if "gaussian" in kernels and not args.full:
         cases += [("gaussian", 1.0e-3, m) for m in MS if m != 4]
     rows = [run_case(*c, args.out) for c in cases]
-    out = HERE / "results" / ("plate_hole_full.csv" if args.full else "plate_hole.csv")
-    out.parent.mkdir(exist_ok=True)
-    with open(out, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
+    write(rows, HERE / "results" / ("plate_hole_full.csv" if args.full else "plate_hole.csv"))
     for r in rows:
         print(f"{r['kernel']:10s} delta {r['delta_mm']:4g} mm m {r['m']}: K = {r['K']:.4f} "
               f"(Heywood {r['K_heywood']:.4f}, {100 * r['error']:+.1f} %), fit {r['K_fit']:.4f} "
-              f"({100 * r['error_fit']:+.1f} %, wide {100 * r['error_fit_wide']:+.1f} %), {r['atoms']} atoms, "
+              f"({100 * r['error_fit']:+.1f} %, wide {100 * r['error_fit_wide']:+.1f} %, own constants "
+              f"{100 * r['error_fit_own']:+.1f} %), {r['atoms']} atoms, "
               f"{r['iterations']} iterations, {r['wall_s']:.3g} s")
-    for column in ("error", "error_fit", "error_fit_wide"):
+    for column in ("error", "error_fit", "error_fit_wide", "error_fit_own"):
         print(column, verdict(rows, column))
-    print(f"wrote {out}")
 
 
 if __name__ == "__main__":
