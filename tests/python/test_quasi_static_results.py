@@ -88,8 +88,9 @@ def test_the_readme_quotes_the_kernels_own_constants():
         assert cells in README, cells
 
 
-def test_the_readme_quotes_the_dynamic_initiation_csv():
-    data = rows("center_crack_dynamic.csv")
+@pytest.mark.parametrize("name", ["center_crack_dynamic.csv", "center_crack_dynamic_1mm.csv"])
+def test_the_readme_quotes_the_dynamic_initiation_csv(name):
+    data = rows(name)
     assert [r["solver"] for r in data[:2]] == ["relax", "relax"]
     assert all(int(r["away_from_tips"]) == 0 for r in data)
     for r in data:
@@ -123,3 +124,10 @@ def test_the_dynamic_reading_follows_the_csv():
     r20 = next(r for r in dyn if float(r["ramp_transits"]) == 20)
     excess = float(r20["sigma_grips_MPa"]) / float(r20["sigma_MPa"]) - 1
     assert f"({100 * excess:+.1f} % above k u at 20 T)" in README
+    fine = [r for r in rows("center_crack_dynamic_1mm.csv") if r["solver"] == "dynamic"]
+    slow = max(abs(float(r["vs_relax"])) for r in fine if float(r["ramp_transits"]) >= 40)
+    assert f"within {100 * slow:.2f} % of\nthe relaxed initiation from 40 transit times on" in README
+    bound = max(abs(float(r["vs_relax"])) * float(r["ramp_transits"]) for r in fine)
+    worst = max(fine, key=lambda r: abs(float(r["vs_relax"])) * float(r["ramp_transits"]))
+    assert f"at most {100 * bound:.0f} % T\n(at {float(worst['ramp_transits']):g} T)" in README
+    assert all(float(r["vs_relax"]) < 0 for r in fine if float(r["ramp_transits"]) <= 20)
