@@ -51,7 +51,7 @@ DELTAS = (2.0e-3, 1.0e-3)              # at m = 4; --full adds 0.5 mm
 DELTAS_FULL = (2.0e-3, 1.0e-3, 0.5e-3)
 MS = (3, 4, 5)                         # at delta = 1 mm, Gaussian kernel
 FIT_OUTER, FIT_OUTER_WIDE = 2.0, 2.5   # the fit's window ends at this many radii
-TOL = 0.03                             # issue 57: within 3 % of Heywood on the finest grid
+TOL = 0.03                             # the acceptance: within 3 % of Heywood on the finest grid
 
 
 def heywood(d_over_w):
@@ -134,7 +134,7 @@ def concentration(dump, dx):
 
 
 def verdict(rows, column="error_fit"):
-    """issue 57's acceptance per kernel from the sweep's rows at m = 4 (CSV dicts): the error on
+    """the Kirsch acceptance per kernel from the sweep's rows at m = 4 (CSV dicts): the error on
     the finest grid, whether it is within TOL, whether |error| falls at every refinement"""
     out = {}
     for kernel in sorted({r["kernel"] for r in rows}):
