@@ -15,18 +15,10 @@ r1 - R above the edge, where Kirsch's hoop stress has fallen by up to 7 (r1 - R)
 measured value is moved to r = R with the ratio of Kirsch's infinite-plate field at R and r1
 (a shift of less than a grid spacing, the shape of the field only).
 
-The second measure, K_fit, averages over the ligament outside the surface layer instead: on
-every row r of the two columns sigma_xx = E (eps_xx + nu eps_yy) / (1 - nu^2) (eps_yy the
-derivative of the columns' mean u_y along y), and the amplitude K of Tan's finite-width form
-sigma_xx(r) = (K/3) sigma_Kirsch(r) (Kirsch's shape with the concentration as the unknown:
-S. C. Tan, J. Compos. Mater. 22, 1988, 1080) is fitted by least squares over the rows at
-R + delta <= r <= FIT_OUTER R: one horizon off the hole's edge, within one radius of it where
-the concentration lives. K_fit_wide: the same to r = FIT_OUTER_WIDE R. K_fit_own: the same fit
-with the stress from the kernel's own elastic constants on the grid, sigma_xx = C11 eps_xx +
-C12 eps_yy (bulk: in.bulk-modulus), instead of the continuum's E/(1 - nu^2) and nu E/(1 - nu^2):
-the bonds' lattice sum at m = 4 is not the integral the micromodulus is calibrated with, and a
-concentration factor is a ratio of two stresses in the same material. --modulus checks those
-constants against the plain plate's strain (results/plate_hole_modulus.csv, _bulk.csv).
+K_fit: Tan's finite-width form sigma_xx(r) = (K/3) sigma_Kirsch(r) fitted by least squares to
+sigma_xx = E (C11 eps_xx + C12 eps_yy) on the rows R + delta <= r <= FIT_OUTER R (outside the
+surface layer, within a radius of the edge); K_fit_wide to FIT_OUTER_WIDE R; K_fit_own with the
+kernel's own constants (bulk, in.bulk-modulus) instead of the continuum's (README.md).
 
 Finite width (d/W = 0.3): K_tg = [2 + (1 - d/W)^3] / (1 - d/W) (Heywood, Designing by
 Photoelasticity, 1952; Pilkey & Pilkey, Peterson's Stress Concentration Factors, 3rd ed., 2008,
