@@ -88,7 +88,8 @@ def test_the_readme_quotes_the_kernels_own_constants():
         assert cells in README, cells
 
 
-@pytest.mark.parametrize("name", ["center_crack_dynamic.csv", "center_crack_dynamic_1mm.csv"])
+@pytest.mark.parametrize("name", ["center_crack_dynamic.csv", "center_crack_dynamic_1mm.csv",
+                                  "center_crack_dynamic_lps.csv"])
 def test_the_readme_quotes_the_dynamic_initiation_csv(name):
     data = rows(name)
     assert [r["solver"] for r in data[:2]] == ["relax", "relax"]
@@ -131,3 +132,10 @@ def test_the_dynamic_reading_follows_the_csv():
     worst = max(fine, key=lambda r: abs(float(r["vs_relax"])) * float(r["ramp_transits"]))
     assert f"at most {100 * bound:.0f} % T\n(at {float(worst['ramp_transits']):g} T)" in README
     assert all(float(r["vs_relax"]) < 0 for r in fine if float(r["ramp_transits"]) <= 20)
+    lps = [r for r in rows("center_crack_dynamic_lps.csv") if r["solver"] == "dynamic"]
+    slow = max(abs(float(r["vs_relax"])) for r in lps if float(r["ramp_transits"]) >= 20)
+    slowest = max(lps, key=lambda r: float(r["ramp_transits"]))
+    assert (f"within\n{100 * slow:.2f} % from 20 transit times on and "
+            f"{100 * abs(float(slowest['vs_relax'])):.2f} % at {float(slowest['ramp_transits']):g} T") in README
+    bound = max(abs(float(r["vs_relax"])) * float(r["ramp_transits"]) for r in lps)
+    assert f"at most\n{100 * bound:.0f} % T" in README

@@ -201,7 +201,8 @@ def main(argv=None):
         delta, m = CASES[0]
         if args.cases:
             delta, m = float(args.cases.split(":")[0]), int(args.cases.split(":")[1].split(",")[0])
-        return dynamic_study(args.kernels.split(",")[0], delta, m,
+        kernel = args.kernels.split(",")[0]
+        return dynamic_study(f"lps/{kernel}" if args.lps else kernel, delta, m,
                              [float(r) for r in args.dynamic.split(",")], args.out, args.csv)
     rows = []
     for kernel in args.kernels.split(","):
