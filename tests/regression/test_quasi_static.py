@@ -6,7 +6,9 @@ The Gaussian kernel at m = 4 on the two coarse grids, delta = 2 and 1 mm (4,688 
 atoms, marked slow: 95 s with the cores shared): the load step converges, K is above the infinite-plate
 3 and within ERROR_TOL of Heywood, and the error falls with delta (measured: +14.0 % and +6.2 %; the
 committed results, examples/quasi-static/results/plate_hole.csv, hold every kernel: the constant kernel's
-error rises as delta falls, README.md gives the measured cause). The finest grid is not run yet.
+error rises as delta falls). That is the first row's value; the fitted measure (K_fit, README.md)
+is checked on the coarse grid, fast, and its sweep to delta = 0.5 mm in the committed CSVs
+(tests/python/test_quasi_static_results.py).
 
 And the centre-cracked plate (bbpd.benchmarks.center_crack): the initiation stress of the Gaussian kernel at
 delta = 2 mm, m = 4 (3,200 atoms, 7 one-load-step trials) within INITIATION_TOL of LEFM; its
@@ -22,6 +24,15 @@ from bbpd.report import sections
 # measured at delta = 2 mm, m = 4 (results/plate_hole.csv): +14 %; the admitted error is the
 # coarse grid's, the test asks that it falls with delta (it does not for the constant kernel)
 ERROR_TOL = 0.2
+
+
+# the second measure, Tan's form fitted on the ligament over R + delta <= r <= 2R (README.md):
+# measured at delta = 2 mm, m = 4 (results/plate_hole.csv) +1.4 % (Gaussian), against +14.0 %
+# for the first row's value; the wider window (to 2.5R) -0.4 %
+def test_fitted_concentration_on_the_coarse_grid(tmp_path):
+    r = plate_hole.run_case("gaussian", 2.0e-3, 4, tmp_path)
+    assert r["fit_rows"] >= 2 and abs(r["error_fit"]) < plate_hole.TOL, r
+    assert abs(r["error_fit_wide"] - r["error_fit"]) < plate_hole.TOL, r
 
 
 @pytest.mark.slow    # 95 s with the 2 cores shared (the 1 mm grid's 18,752 atoms)
@@ -48,6 +59,23 @@ def test_gaussian_crack_initiation_against_lefm(tmp_path):
     assert r["u_hi"] / r["u_lo"] - 1.0 <= center_crack.REL_RES, r
     assert abs(r["error"]) < INITIATION_TOL, r
     assert r["broken_at_hi"] > 0, r
+
+
+# the same initiation from a dynamic ramp (in.center-crack -var solver dynamic, Gaussian,
+# delta = 2 mm, m = 4) over 10 transit times to the LEFM opening, against the committed
+# bisection (results/center_crack_gaussian_full.csv): the first broken bond is at a tip, and
+# the opening then is within DYNAMIC_TOL of the relaxed one (measured: see
+# results/center_crack_dynamic.csv); about 2,000 steps
+DYNAMIC_TOL = 0.02
+
+
+def test_slow_dynamic_ramp_initiates_where_the_relaxed_plate_does(tmp_path):
+    import csv
+    row = next(csv.DictReader(open(center_crack.HERE / "results" / "center_crack_gaussian_full.csv")))
+    row = {k: float(v) for k, v in row.items() if k != "kernel"}
+    r = center_crack.dynamic("gaussian", 2.0e-3, 4, 10, row, tmp_path)
+    assert r["away_from_tips"] == 0, r
+    assert abs(r["vs_relax"]) < DYNAMIC_TOL, r
 
 
 # the centre-cracked plate's load-displacement path through initiation and its energy account

@@ -20,6 +20,12 @@ from the reference state to u (the body is linear elastic until a bond breaks, s
 state at u does not depend on the path), and the trial answers whether bonds break in the
 converged state. sigma_c lies between the stress of the highest trial without a broken bond and
 the stiffness times the lowest opening with one; the bisection stops when they differ by REL_RES.
+
+--dynamic RAMPS: the same initiation from explicit dynamics (in.center-crack -var solver dynamic):
+the grips open at a constant rate that reaches the LEFM opening after RAMP transit times, and the
+run stops at the first broken bond; its load is the plate's elastic stiffness (from the relaxed
+probe) times the opening then, beside the grips' reaction. Against the bisection to REL_RES and
+to TIGHT_RES, in results/center_crack_dynamic.csv.
 """
 import argparse
 import csv
@@ -41,6 +47,7 @@ FIRST_GUESS = 1.0      # the first trial at this fraction of the LEFM opening
 STEP = 1.1             # bracket search: multiply / divide the opening by this
 CAP_FACTOR = 4         # iteration cap of a trial: this many elastic load steps' iterations
 LPS_NU = 1.0 / 3.0     # Poisson's ratio of the state-based kernels (lps/KERNEL)
+TIGHT_RES = 0.001      # --dynamic: the relaxed bracket it is compared with
 
 
 def kernel_vars(kernel, delta):
@@ -86,8 +93,8 @@ def trial(kernel, delta, m, u, out, iters):
             "atoms": atoms, "elastic": float(r.group(5)), "wall_s": time.perf_counter() - start}
 
 
-def initiation(kernel, delta, m, out):
-    """bisect the grip opening; returns the row of the results table"""
+def initiation(kernel, delta, m, out, rel_res=REL_RES):
+    """bisect the grip opening to rel_res; returns the row of the results table"""
     s_lefm = sigma_lefm()
     # stiffness from an opening well below initiation
     u0 = 1.0e-6
@@ -95,11 +102,11 @@ def initiation(kernel, delta, m, out):
     assert first["broken"] == 0, first
     k = first["stress"] / u0
     iters = CAP_FACTOR * first["iterations"] + 100
-    lo, hi, trials, wall = None, None, 1, first["wall_s"]
+    lo, hi, trials, wall, its = None, None, 1, first["wall_s"], first["iterations"]
     u = FIRST_GUESS * s_lefm / k
     while lo is None or hi is None:
         r = trial(kernel, delta, m, u, out, iters)
-        trials, wall = trials + 1, wall + r["wall_s"]
+        trials, wall, its = trials + 1, wall + r["wall_s"], its + r["iterations"]
         if r["broken"]:
             hi, at_hi = u, r
             u /= STEP
@@ -108,10 +115,10 @@ def initiation(kernel, delta, m, out):
             u *= STEP
         if lo is not None and hi is not None:
             break
-    while hi / lo - 1.0 > REL_RES:
+    while hi / lo - 1.0 > rel_res:
         u = 0.5 * (lo + hi)
         r = trial(kernel, delta, m, u, out, iters)
-        trials, wall = trials + 1, wall + r["wall_s"]
+        trials, wall, its = trials + 1, wall + r["wall_s"], its + r["iterations"]
         if r["broken"]:
             hi, at_hi = u, r
         else:
@@ -123,7 +130,59 @@ def initiation(kernel, delta, m, out):
             "sigma_c_MPa": s_c / 1e6, "sigma_lefm_MPa": s_lefm / 1e6,
             "error": s_c / s_lefm - 1.0, "u_lo": lo, "u_hi": hi, "broken_at_hi": at_hi["broken"],
             "arrested_at_hi": int(at_hi["converged"]), "trials": trials,
-            "elastic_iterations": first["iterations"], "wall_s": wall, "cpu": provenance.cpu()}
+            "iterations": its, "elastic_iterations": first["iterations"], "wall_s": wall, "cpu": provenance.cpu()}
+
+
+def dynamic(kernel, delta, m, ramp, row, out):
+    """the first broken bond of a dynamic ramp over `ramp` transit times to the LEFM opening;
+    row: initiation()'s row of the same plate (its stiffness and sigma_c)"""
+    k = row["sigma_lo_MPa"] / row["u_lo"]
+    u_ref = row["sigma_lefm_MPa"] / k
+    work = Path(out) / f"{kernel.replace('/', '-')}-d{delta * 1e3:g}mm-m{m}" / f"ramp{ramp:g}"
+    start = time.perf_counter()
+    proc = run_lammps(str(HERE / "in.center-crack"), work,
+                      vars={**kernel_vars(kernel, delta), "dx": repr(delta / m), "m": m,
+                            "u": repr(u_ref), "solver": "dynamic", "ramp": ramp})
+    r = re.search(r"CENTER-CRACK-DYNAMIC: step (\d+) time \S+ opening (\S+) stress (\S+) bottom (\S+) "
+                  r"brokenenergy (\S+) away (\S+)", proc.output)
+    steps = int(re.search(r"CENTER-CRACK-DYNAMIC-SETUP: .* steps (\d+)", proc.output).group(1))
+    if float(r.group(5)) <= 0.0:
+        raise RuntimeError(f"{work}: no bond broke in {steps} steps")
+    u = float(r.group(2))
+    return {"solver": "dynamic", "kernel": kernel, "delta_mm": delta * 1e3, "m": m,
+            "ramp_transits": ramp, "bracket": 0.0, "steps": int(r.group(1)), "u_um": u * 1e6,
+            "sigma_MPa": k * u, "sigma_grips_MPa": 0.5 * (float(r.group(3)) + float(r.group(4))) / 1e6,
+            "error": k * u / row["sigma_lefm_MPa"] - 1.0,
+            "vs_relax": k * u / row["sigma_c_MPa"] - 1.0, "away_from_tips": int(float(r.group(6))),
+            "wall_s": time.perf_counter() - start, "cpu": provenance.cpu()}
+
+
+def write_rows(rows, name):
+    with open(HERE / "results" / name, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        for row in rows:
+            w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in row.items()})
+
+
+def dynamic_study(kernel, delta, m, ramps, out, name):
+    """results/NAME: the bisections to REL_RES and TIGHT_RES, then one dynamic ramp per ramp"""
+    rows, tight = [], None
+    for res in (REL_RES, TIGHT_RES):
+        b = tight = initiation(kernel, delta, m, out, res)
+        rows.append({"solver": "relax", "kernel": kernel, "delta_mm": delta * 1e3, "m": m,
+                     "ramp_transits": 0, "bracket": res, "steps": b["iterations"],
+                     "u_um": 0.5e6 * (b["u_lo"] + b["u_hi"]), "sigma_MPa": b["sigma_c_MPa"],
+                     "sigma_grips_MPa": b["sigma_c_MPa"], "error": b["error"],
+                     "vs_relax": 0.0, "away_from_tips": 0, "wall_s": b["wall_s"], "cpu": b["cpu"]})
+    for ramp in ramps:
+        rows.append(dynamic(kernel, delta, m, ramp, tight, out))
+        rows[0]["vs_relax"] = rows[0]["sigma_MPa"] / tight["sigma_c_MPa"] - 1.0
+        write_rows(rows, name)
+        r = rows[-1]
+        print(f"{kernel} delta {delta * 1e3:g} mm ramp {ramp:g} transits: u = {r['u_um']:.5f} um, "
+              f"sigma = {r['sigma_MPa']:.4f} MPa ({100 * r['vs_relax']:+.2f} % of relax, "
+              f"{100 * r['error']:+.2f} % of LEFM), {r['steps']} steps, {r['wall_s']:.3g} s", flush=True)
 
 
 def main(argv=None):
@@ -135,7 +194,16 @@ def main(argv=None):
     ap.add_argument("--full", action="store_true", help="add delta = 0.5 mm and m = 3")
     ap.add_argument("--cases", help="instead: comma-separated delta:m pairs, e.g. 0.5e-3:4")
     ap.add_argument("--csv", default="center_crack.csv", help="file name under results/")
+    ap.add_argument("--dynamic", help="instead: comma-separated ramps in transit times, on the "
+                    "first kernel and case (default the first of CASES)")
     args = ap.parse_args(argv)
+    if args.dynamic:
+        delta, m = CASES[0]
+        if args.cases:
+            delta, m = float(args.cases.split(":")[0]), int(args.cases.split(":")[1].split(",")[0])
+        kernel = args.kernels.split(",")[0]
+        return dynamic_study(f"lps/{kernel}" if args.lps else kernel, delta, m,
+                             [float(r) for r in args.dynamic.split(",")], args.out, args.csv)
     rows = []
     for kernel in args.kernels.split(","):
         kernel = f"lps/{kernel}" if args.lps else kernel
@@ -149,14 +217,8 @@ def main(argv=None):
                   f" MPa [{r['sigma_lo_MPa']:.4f}, {r['sigma_hi_MPa']:.4f}] vs LEFM "
                   f"{r['sigma_lefm_MPa']:.4f} ({100 * r['error']:+.1f} %), {r['atoms']} atoms, "
                   f"{r['trials']} trials", flush=True)
-            out = HERE / "results" / args.csv
-            with open(out, "w", newline="") as f:
-                w = csv.DictWriter(f, fieldnames=list(rows[0]))
-                w.writeheader()
-                for row in rows:
-                    w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v)
-                                for k, v in row.items()})
-    print(f"wrote {out}")
+            write_rows(rows, args.csv)
+    print(f"wrote {HERE / 'results' / args.csv}")
 
 
 if __name__ == "__main__":

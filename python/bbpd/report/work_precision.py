@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd.benchmarks import dispersion
+from bbpd.benchmarks import center_crack, dispersion
 from bbpd.benchmarks.kalthoff_winkler import EXPERIMENT_ANGLE_DEG
 from bbpd import csvfile
 from bbpd import jobs as jobmod
@@ -25,7 +25,7 @@ from .runs import ESTIMATE_S, bench_inputs, build_of_run, label_of
 from .tables import failed, md_table
 from .work_precision_figure import METHOD_LABEL, plot
 
-BENCHMARKS = ("mode1", "mode2", "dispersion", "kalthoff_winkler")
+BENCHMARKS = ("mode1", "mode2", "dispersion", "kalthoff_winkler", "quasi_static")
 CSV_COLUMNS = ("benchmark", "kernel", "method", "resolution", "error_metric", "error", "wall_s")
 CSV_NAME = "work_precision.csv"
 
@@ -72,7 +72,13 @@ TARGETS = {("mode1", "L2 (%)"): 3.0,        # the paper's Gaussian L2 at dx = 0.
            ("mode2", "L2 (%)"): 10.0,
            ("dispersion", "|c/c_29 - 1|"): 5.0e-3,
            ("kalthoff_winkler", "|angle - finest| (deg)"): 3.0,
-           ("kalthoff_winkler", "|angle - 70 deg| (deg)"): 10.0}
+           ("kalthoff_winkler", "|angle - 70 deg| (deg)"): 10.0,
+           ("quasi_static", "|sigma_c/relaxed - 1| (%)"): 1.0}
+
+# quasi-static crack initiation (examples/quasi-static): not run by the report, read from the
+# example's committed CSV (bbpd.benchmarks.center_crack --dynamic); its resolution is the
+# bisection's bracket (relax, below 1) or the ramp in transit times (dynamic, 1 and above)
+QUASI_STATIC_CSV = center_crack.HERE / "results" / "center_crack_dynamic.csv"
 
 
 
@@ -269,6 +275,22 @@ def rows(runs, notes=None):
     return out
 
 
+def quasi_static_rows(path=QUASI_STATIC_CSV):
+    """rows() of the committed initiation study: the error against LEFM and against the
+    tightest bisection, per solver (relax: resolution = the bracket; dynamic: the ramp)"""
+    out = []
+    for r in csvfile.read_csv(path)[1]:
+        res = r["ramp_transits"] if r["solver"] == "dynamic" else r["bracket"]
+        for metric, err in (("|sigma_c/LEFM - 1| (%)", r["error"]),
+                            ("|sigma_c/relaxed - 1| (%)", r["vs_relax"])):
+            if metric.startswith("|sigma_c/r") and res == center_crack.TIGHT_RES:
+                continue    # the reference itself
+            out.append(dict(benchmark="quasi_static", kernel=r["kernel"], method=r["solver"],
+                            resolution=res, error_metric=metric, error=100 * abs(err),
+                            wall_s=r["wall_s"]))
+    return out
+
+
 def write_csv(path, table):
     """table: rows() dicts -> CSV with CSV_COLUMNS (resolution: dx in m)."""
     path = Path(path)
@@ -312,6 +334,8 @@ def _fmt_dx(benchmark, dx):
         return f"m = {DISPERSION_DELTA / dx:.3g}"
     if benchmark == "mode1":
         return f"dx = {dx:g} m"
+    if benchmark == "quasi_static":
+        return f"bracket {100 * dx:g} %" if dx < 1 else f"ramp {dx:g} T"
     return f"dx = {dx * 1e3:g} mm"
 
 
@@ -345,7 +369,9 @@ TITLES = {"mode1": "Mode I: K_I against Freund (consistent constants)",
           "mode2": "Mode II: K_II against the FE-checked reference",
           "dispersion": f"1D dispersion: phase velocity against eq. 29,\nwavelength "
                         f"{WAVELENGTH * 1e3:g} mm, delta = {DISPERSION_DELTA * 1e3:g} mm",
-          "kalthoff_winkler": "Kalthoff-Winkler: crack angle and initiation"}
+          "kalthoff_winkler": "Kalthoff-Winkler: crack angle and initiation",
+          "quasi_static": "Quasi-static crack initiation (centre crack, Gaussian, delta = 2 mm):\n"
+                          "relaxed bisection and dynamic ramps"}
 
 
 def collect(specs, results):
@@ -380,7 +406,7 @@ def section(specs, results, figdir, notes):
     of reaching each target."""
     figdir = Path(figdir)
     runs, samples = collect(specs, results)
-    table = rows(runs, notes)
+    table = rows(runs, notes) + quasi_static_rows()
     csv_path = write_csv(figdir / "csv" / CSV_NAME, table)
     figs = []
     for bench in BENCHMARKS:
@@ -405,7 +431,9 @@ def section(specs, results, figdir, notes):
                  {round(DISPERSION_DELTA / r[2]) for r in runs if r[0] == 'dispersion'}))
              + f", error |c/c_29 - 1| at the wavelength {WAVELENGTH * 1e3:g} mm (k delta = "
              f"{2 * math.pi * DISPERSION_DELTA / WAVELENGTH:.2f}). Kalthoff-Winkler: "
-             "initiation = the damage band leaves the tip. Machine: " + machine()
+             "initiation = the damage band leaves the tip. Quasi-static initiation: "
+             f"{QUASI_STATIC_CSV.name}, committed (wall time of the whole LAMMPS runs). "
+             "Machine: " + machine()
              + f". All points: {csv_path.parent.name}/{csv_path.name}.")
     return {"title": "Error against run time (work-precision diagrams)", "setup": setup,
             "table": summary_table(table), "text": " ".join(text), "figures": figs}

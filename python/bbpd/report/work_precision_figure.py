@@ -7,12 +7,15 @@ from bbpd.benchmarks.kalthoff_winkler import PAPER_INITIATION_US
 from bbpd.kernels import COLORS, KERNELS
 
 METHOD_LABEL = {"dsif": "displacement extrapolation", "jintegral": "J-integral",
-                "ridge": "FFT ridge", "damage": "damage map"}
-METHOD_STYLE = {"dsif": "-", "jintegral": "--", "ridge": "-", "damage": "-"}
+                "ridge": "FFT ridge", "damage": "damage map", "relax": "fix bbpd/relax bisection",
+                "dynamic": "dynamic ramp"}
+METHOD_STYLE = {"dsif": "-", "jintegral": "--", "ridge": "-", "damage": "-", "relax": "-",
+                "dynamic": "--"}
 PANELS = {"mode1": ("L2 (%)", "peak (%)"), "mode2": ("L2 (%)",),
           "dispersion": ("|c/c_29 - 1|",),
           "kalthoff_winkler": ("|angle - finest| (deg)", "|angle - 70 deg| (deg)",
-                               "initiation time (us)")}
+                               "initiation time (us)"),
+          "quasi_static": ("|sigma_c/LEFM - 1| (%)", "|sigma_c/relaxed - 1| (%)")}
 PLAIN_TICKS_SPAN = 30.0    # label the minor ticks of log axes spanning less than this factor
 MINOR_LABELS = (2.0, 3.0, 5.0)
 LABEL_ALL_SPAN = 3.0       # ... and every minor tick of those spanning less than this factor
@@ -58,7 +61,7 @@ def plot(path, table, benchmark, title, resolution):
                                   else f", {METHOD_LABEL[method]}")
                 (h,) = ax.plot(t, y, METHOD_STYLE.get(method, "-"),
                                color=COLORS.get(kernel, "black"),
-                               marker="o" if method != "jintegral" else "s", markersize=4,
+                               marker="s" if method in ("jintegral", "relax") else "o", markersize=4,
                                label=label)
                 handles.setdefault(label, h)
                 for ti, yi, di in zip(t, y, dx):
