@@ -94,3 +94,44 @@ def test_the_bpm_table_takes_each_variants_minimum_over_the_rounds(tmp_path, mon
     monkeypatch.setattr(perf, "VS_BPM_FILES", (faster,))
     line = next(l for l in perf.vs_bpm(None).splitlines() if "| 1 | lps |" in l)
     assert f"| {ours / 4:.2f} |" in line and f"| {best / (ours / 4):.2f}× |" in line
+
+
+def _minima(path, key, keep=lambda r: True):
+    """the minimum loop time of each key(row) over the rows of a CSV"""
+    import csv
+    best = {}
+    for r in csv.DictReader(open(path, newline="")):
+        if keep(r):
+            t = float(r["loop_s"])
+            best[key(r)] = min(best.get(key(r), t), t)
+    return best
+
+
+def test_the_bpm_lines_of_doc_performance_follow_the_csv():
+    """doc/performance.md's hand-written ratios ours / bpm/peri (one decimal), and which
+    targets they reach, from perf/results/spr-vs-bpm.csv"""
+    text = (perf.ROOT / "doc" / "performance.md").read_text()
+    best = _minima(perf.VS_BPM_FILES[0], lambda r: (r["ranks"], r["model"], r["variant"]))
+    ratio = {(n, m): best[(n, m, "bpm")] / best[(n, m, "ours")] for n in ("1", "2") for m in perf.BPM_MODELS}
+    one = ", ".join(f"{m.upper()} {ratio[('1', m)]:.1f}x" for m in perf.BPM_MODELS)
+    two = ", ".join(f"{ratio[('2', m)]:.1f}x" for m in perf.BPM_MODELS)
+    assert f"Ours / `bpm/peri` on one rank: {one}; on two ranks {two}." in " ".join(text.split())
+    # reached: 4x on one rank (PMB only), 3x on two ranks (PMB, LPS, VES; not EPS)
+    assert [m for m in perf.BPM_MODELS if ratio[("1", m)] >= 4.0] == ["pmb"]
+    assert [m for m in perf.BPM_MODELS if ratio[("2", m)] >= 3.0] == ["pmb", "lps", "ves"]
+    lps_in_pmb = best[("1", "lps", "ours")] / best[("1", "pmb", "ours")]
+    assert f"An LPS step is {lps_in_pmb:.1f} PMB steps ({best[('1', 'lps', 'ours')]:.3f} / " \
+           f"{best[('1', 'pmb', 'ours')]:.3f} s" in " ".join(text.split())
+
+
+def test_no_style_got_slower_with_the_families():
+    """doc/performance.md's before/after line of the model families, from
+    perf/results/spr-two-builds-families.csv (perf/two_builds.sh): each input's minimum loop
+    time of the base build and of the new one, and no input slower"""
+    text = " ".join((perf.ROOT / "doc" / "performance.md").read_text().split())
+    best = _minima(perf.RESULTS / "spr-two-builds-families.csv", lambda r: (r["input"], r["build"]))
+    inputs = sorted({i for i, _ in best})
+    assert len(inputs) == 5
+    for i in inputs:
+        assert best[(i, "new")] <= best[(i, "base")], i
+        assert f"{best[(i, 'base')]:.3f} -> {best[(i, 'new')]:.3f}" in text, i
