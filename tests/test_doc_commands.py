@@ -156,6 +156,9 @@ def run_cheap(command, session):
         proc = run([exe, "--help"], cwd)
         assert proc.returncode == 0, f"{' '.join(command)}: --help failed\n{proc.stderr}"
         check_options(command, proc.stdout + proc.stderr)
+    elif program and program.parts[0] == "perf" and program.suffix == ".sh":
+        proc = run([exe, "--help"], cwd)
+        assert proc.returncode == 0 and proc.stdout, f"{' '.join(command)}: --help failed\n{proc.stderr}"
     elif command[:3] == ["/usr/bin/python3", "-m", "pytest"]:
         proc = run([*command, "--collect-only", "-p", "no:cacheprovider"], cwd)
         assert proc.returncode == 0, f"{' '.join(command)}: collects no test\n{proc.stdout}"
