@@ -32,8 +32,11 @@ def test_no_run_failed(made):
 def test_csv_has_every_benchmark_and_kernel_with_finite_errors(made):
     out = made[0]
     table = wp.read_csv(out / "csv" / wp.CSV_NAME)
+    # the quasi-static rows come from the committed initiation study, whose kernels are its own
+    study = {r["kernel"] for r in wp.quasi_static_rows()}
+    assert study
     for bench in wp.BENCHMARKS:
-        for kernel in TINY.kernels:
+        for kernel in sorted(study) if bench == "quasi_static" else TINY.kernels:
             mine = [r for r in table if r["benchmark"] == bench and r["kernel"] == kernel]
             assert mine, (bench, kernel)
             assert all(math.isfinite(r["error"]) and r["error"] >= 0 for r in mine)
