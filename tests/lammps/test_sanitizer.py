@@ -17,6 +17,8 @@ import test_lps_compat as lc
 import test_mpi_restart as mr  # the scenes of those tests (tests/lammps is on pytest's pythonpath)
 import test_pmb_compat as pc
 import test_reliability as rel
+import test_simd_builds as sb
+import test_ves_eps_compat as ve
 
 TIMEOUT = 900
 
@@ -106,6 +108,18 @@ def test_silling_askari_two_ranks(sanitized, lmp, variant):
     """the shattering cylinder with bbpd/pmb (bonds that act in the step they break, short-range
     forces) and with bbpd/gaussian/alpha and contact, on 2 ranks"""
     clean(lmp(pc.cylinder(variant, steps=150), nprocs=2, timeout=TIMEOUT).output)
+
+
+@pytest.mark.parametrize("path", [pytest.param(p, marks=sb.needs_path(p)) for p in ("avx2", "avx512")])
+@pytest.mark.parametrize("family", ["ves", "eps"])
+def test_history_rows_two_ranks(sanitized, lmp, family, path):
+    """the shattering cylinder with bbpd/ves and bbpd/eps on 2 ranks and a vector path (auto
+    takes the portable loop in this build): the history rows read and write the bonds' history
+    whole in rows that lost no partner (masked vector loads and stores at a row's end) and slot
+    by slot in rows that did"""
+    out = clean(lmp(sb.with_path(ve.cylinder(family, steps=150), path), nprocs=2,
+                    timeout=TIMEOUT).output)
+    assert f"bond loop: {path} path" in out
 
 
 def test_lps_two_ranks_and_restart(sanitized, lmp):
