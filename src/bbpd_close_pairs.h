@@ -90,7 +90,6 @@ class ClosePairs {
       if (!std::isfinite(hi[m] - lo[m])) {
         xhold.clear();
         first.assign(nlocal + 1, 0);
-        nearest.assign(nlocal, std::numeric_limits<double>::infinity());
         return false;
       }
     double b = reach;

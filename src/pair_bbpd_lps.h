@@ -141,12 +141,12 @@ class PairBBPDLPS : public PairBBPD {
   template <int EVFLAG, class F> struct HistoryRow;
   template <class F> F family_of(int i) const;
   BBPD::VES::Family ves_of_type(int itype) const;
-  int history_width() const;
+  int history_width() const;    // doubles per atom in fix bbpd/history
   // the force row of local atom i of a family with history on the current path, with
   // stand-in states and a scratch history, nothing kept (time_path's probe); a force of it
   double history_row_probe(int i, const BBPD::LPS::AtomState *states, BBPD::CoefCache *cache);
   std::vector<double> probe_history;    // the probe's scratch history and slots
-  std::vector<int> probe_slot;    // doubles per atom in fix bbpd/history
+  std::vector<int> probe_slot;
   double dilatation_of(int i);
   double time_path(BBPD::SimdPath p, int first, int last) override;
   template <int EVFLAG> void eval_lps();

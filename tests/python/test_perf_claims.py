@@ -74,15 +74,24 @@ def test_the_zen5_lines_of_doc_performance_follow_the_csvs():
     assert all(r["path"] == "avx2" for r in other if r["path"])
 
 
+def _minima(path, key, keep=lambda r: True):
+    """the minimum loop time of each key(row) over the rows of a CSV"""
+    import csv
+    best = {}
+    for r in csv.DictReader(open(path, newline="")):
+        if keep(r):
+            t = float(r["loop_s"])
+            best[key(r)] = min(best.get(key(r), t), t)
+    return best
+
+
 def test_the_bpm_table_takes_each_variants_minimum_over_the_rounds(tmp_path, monkeypatch):
     """perf/vs_bpm.py's table: a row per rank count and model, the minimum loop time of each
     variant and the ratios to ours; a faster round moves the minimum and the ratio"""
     import csv
     rows = list(csv.DictReader(open(perf.VS_BPM_FILES[0], newline="")))
-    best = min(float(r["loop_s"]) for r in rows
-               if (r["ranks"], r["model"], r["variant"]) == ("1", "lps", "bpm"))
-    ours = min(float(r["loop_s"]) for r in rows
-               if (r["ranks"], r["model"], r["variant"]) == ("1", "lps", "ours"))
+    minima = _minima(perf.VS_BPM_FILES[0], lambda r: (r["ranks"], r["model"], r["variant"]))
+    best, ours = minima[("1", "lps", "bpm")], minima[("1", "lps", "ours")]
     line = next(l for l in perf.vs_bpm(None).splitlines() if "| 1 | lps |" in l)
     assert f"| {best:.2f} | {ours:.2f} |" in line and f"| {best / ours:.2f}× |" in line
     faster = tmp_path / "vs-bpm.csv"
@@ -94,17 +103,6 @@ def test_the_bpm_table_takes_each_variants_minimum_over_the_rounds(tmp_path, mon
     monkeypatch.setattr(perf, "VS_BPM_FILES", (faster,))
     line = next(l for l in perf.vs_bpm(None).splitlines() if "| 1 | lps |" in l)
     assert f"| {ours / 4:.2f} |" in line and f"| {best / (ours / 4):.2f}× |" in line
-
-
-def _minima(path, key, keep=lambda r: True):
-    """the minimum loop time of each key(row) over the rows of a CSV"""
-    import csv
-    best = {}
-    for r in csv.DictReader(open(path, newline="")):
-        if keep(r):
-            t = float(r["loop_s"])
-            best[key(r)] = min(best.get(key(r), t), t)
-    return best
 
 
 def test_the_bpm_lines_of_doc_performance_follow_the_csv():

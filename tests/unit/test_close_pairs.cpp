@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* bbpd_close_pairs.h: the candidates of the short-range forces and the skip of may_be_close.
+   Whatever the atoms do within half the skin, an atom that has a pair closer than its
+   distance is never skipped; an atom at rest whose pairs all lie beyond it is. */
+
+#include "bbpd_close_pairs.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace {
+
+constexpr double LC = 1.0;            // lattice constant
+constexpr double D = 0.9 * LC;        // the pairs' distance (peri/pmb's 0.9 |xi0| for neighbours)
+constexpr double SKIN = 0.6 * LC;
+constexpr int N = 6;                   // a cubic block of N^3 atoms, all local
+
+std::vector<double> block()
+{
+  std::vector<double> x;
+  for (int a = 0; a < N; a++)
+    for (int b = 0; b < N; b++)
+      for (int c = 0; c < N; c++) x.insert(x.end(), {a * LC, b * LC, c * LC});
+  return x;
+}
+
+bool has_close_pair(const BBPD::ClosePairs &cp, const std::vector<double> &x, int i)
+{
+  for (int m = cp.first[i]; m < cp.first[i + 1]; m++) {
+    const int j = cp.pairs[m];
+    const double dx = x[3 * i] - x[3 * j], dy = x[3 * i + 1] - x[3 * j + 1],
+                 dz = x[3 * i + 2] - x[3 * j + 2];
+    if (std::sqrt(dx * dx + dy * dy + dz * dz) < cp.dist[m]) return true;
+  }
+  return false;
+}
+
+}    // namespace
+
+TEST(ClosePairs, AtomsAtRestAreSkipped)
+{
+  std::vector<double> x = block();
+  const int n = static_cast<int>(x.size() / 3);
+  BBPD::ClosePairs cp;
+  ASSERT_TRUE(cp.build(x.data(), n, n, D, SKIN, [](int, int) { return D; }));
+  ASSERT_TRUE(cp.current(x.data(), n, n));
+  for (int i = 0; i < n; i++) EXPECT_FALSE(cp.may_be_close(i)) << i;
+}
+
+TEST(ClosePairs, AnAtomWithAClosePairIsNeverSkipped)
+{
+  std::mt19937 gen(7);
+  const std::vector<double> x0 = block();
+  const int n = static_cast<int>(x0.size() / 3);
+  int close_seen = 0, skipped = 0;
+  for (double amplitude : {0.01, 0.05, 0.1, 0.2}) {
+    BBPD::ClosePairs cp;
+    ASSERT_TRUE(cp.build(x0.data(), n, n, D, SKIN, [](int, int) { return D; }));
+    // every atom moves at most amplitude (under half the skin): the candidates stay current
+    std::uniform_real_distribution<double> u(-amplitude / std::sqrt(3.0), amplitude / std::sqrt(3.0));
+    for (int round = 0; round < 20; round++) {
+      std::vector<double> x = x0;
+      for (double &v : x) v += u(gen);
+      ASSERT_TRUE(cp.current(x.data(), n, n));
+      for (int i = 0; i < n; i++) {
+        const bool close = has_close_pair(cp, x, i);
+        close_seen += close;
+        skipped += !cp.may_be_close(i);
+        if (close) {
+          EXPECT_TRUE(cp.may_be_close(i)) << "atom " << i << " amplitude " << amplitude;
+        }
+      }
+    }
+  }
+  EXPECT_GT(close_seen, 0);    // the largest amplitude brings neighbours within D
+  EXPECT_GT(skipped, 0);       // the smallest leaves atoms to skip
+}
