@@ -5,6 +5,7 @@
 
 #include "fix_bbpd_bonds.h"
 #include "bbpd_compat.h"
+#include "bbpd_family_order.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -38,16 +39,20 @@ using MathConst::MY_PI;
 // LAMMPS's default page size is 100 x its default 'neigh_modify one' (neighbor.cpp); the family
 // build asks for at least this ratio when it raises 'one' (LAMMPS requires page >= 10 x one)
 static constexpr int PAGE_PER_ONE = 10;
+// the bond cache is allocated 1/64 larger than the rank's bonds: atoms that migrate in at a
+// reneighboring rarely bring more, and the headroom costs 0.2 bytes per bond (16 bytes per bond)
+static constexpr int CACHE_HEADROOM = 64;
 
 FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), maxpartner(1), npartner(nullptr), partner(nullptr), vinit(nullptr),
+    Fix(lmp, narg, arg), maxpartner(1), npartner(nullptr), vinit(nullptr),
     ebroken(nullptr),
-    bond_start(nullptr), nbond(nullptr), bdelta(nullptr), bj(nullptr), bclass(nullptr),
+    bond_start(nullptr), nbond(nullptr), bdelta(nullptr), jstart(nullptr), bj(nullptr), bclass(nullptr),
     bxi0(nullptr),
     bcoef(nullptr),
     vintact(nullptr), uniform_type(0), uniform_vfrac(0.0), first(1),
     nlocal_cache(0), nbond_cache(0), list(nullptr), have_rules(false), offsets_allowed(false),
-    extent0(0.0), need_raw(0), nmax_raw(0), xraw(nullptr), generation(0), xi0_min(0.0)
+    extent0(0.0), need_raw(0), nmax_raw(0), xraw(nullptr), generation(0), xi0_min(0.0),
+    nbj_cache(0), nindex_ends(0)
 {
   if (narg != 3) error->all(FLERR, "Fix bbpd/bonds takes no arguments (it is created by the pair style)");
   restart_global = 1;
@@ -73,12 +78,12 @@ FixBBPDBonds::~FixBBPDBonds()
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(npartner);
-  memory->destroy(partner);
   memory->destroy(vinit);
   memory->destroy(ebroken);
   memory->destroy(bond_start);
   memory->destroy(nbond);
   memory->destroy(bdelta);
+  memory->destroy(jstart);
   memory->destroy(bj);
   memory->destroy(bclass);
   memory->destroy(bxi0);
@@ -101,6 +106,7 @@ void FixBBPDBonds::init()
     neighbor->add_request(this, NeighConst::REQ_NEWTON_OFF | NeighConst::REQ_OCCASIONAL);
     size_family_neighbor_list();
   }
+  choose_sort_bins();
   // in a periodic box the two ends of a bond see different images of each other (x + L rounds
   // differently from x - L): both decide breaking from their owners' unshifted positions
   // (a 2D body has no image in z)
@@ -136,6 +142,24 @@ void FixBBPDBonds::size_family_neighbor_list()
   if (comm->me == 0)
     utils::logmesg(lmp, "BBPD: bond families need up to {} neighbors per atom: set "
                    "'neigh_modify one {} page {}'\n", need, neighbor->oneatom, neighbor->pgsize);
+}
+
+/* In 3D LAMMPS sorts atoms by bins of half the neighbor cutoff, z slowest: in a body thicker
+   than two bins the partners above and below an atom lie a whole layer of bins away in memory,
+   beyond a 2-byte offset (bbpd_partner_index.h), and the rows take indices (4 bytes per bond end
+   instead of 2). Bins as wide as the family cutoff keep every partner within the neighboring
+   bins, and a plate up to two cutoffs thick in one layer of bins. Only when the input has not
+   chosen a bin size ('atom_modify sort'); the bins order memory, never what is computed. */
+void FixBBPDBonds::choose_sort_bins()
+{
+  if (domain->dimension != 3 || atom->sortfreq <= 0 || !force->pair) return;
+  if (atom->userbinsize > 0.0 && atom->userbinsize != sort_binsize) return;    // the input's
+  if (atom->userbinsize == force->pair->cutforce) return;
+  sort_binsize = atom->userbinsize = force->pair->cutforce;
+  if (comm->me == 0)
+    utils::logmesg(lmp, "BBPD: atoms sorted in bins of the family cutoff {:.6g}, so that bond "
+                   "partners stay near in memory (set 'atom_modify sort' to choose)\n",
+                   sort_binsize);
 }
 
 /* ghosts get their owners' unshifted positions before every force evaluation */
@@ -190,8 +214,9 @@ void FixBBPDBonds::init_list(int, NeighList *ptr)
    bbpd/notch and the setup report is printed by the pair style, from their own hooks. */
 void FixBBPDBonds::setup_post_neighbor()
 {
+  // (a family build ends with a fresh cache)
   if (first) build_families();
-  refresh_cache();
+  else refresh_cache();
 }
 
 void FixBBPDBonds::post_neighbor()
@@ -250,31 +275,39 @@ void FixBBPDBonds::build_families()
 
   // the list is half (each pair of local atoms once, a local-ghost pair at its local atom): a
   // listed pair joins the family of each local end
-  std::vector<int> count(nlocal, 0);
+  // counted first, so that every row is allocated once at its length
   auto for_each_pair = [&](auto &&add) {
     for (int ii = 0; ii < list->inum; ii++) {
       const int i = list->ilist[ii];
       for (int jj = 0; jj < list->numneigh[i]; jj++) {
         const int j = list->firstneigh[i][jj] & NEIGHMASK;
         if (!in_family(i, j)) continue;
-        add(i, tag[j]);
-        if (j < nlocal) add(j, tag[i]);
+        add(i, j);
+        if (j < nlocal) add(j, i);
       }
     }
   };
-  for_each_pair([&](int i, tagint) { count[i]++; });
+  grow_arrays(atom->nmax);
+  for (int i = 0; i < nlocal; i++) npartner[i] = 0;
+  for_each_pair([&](int i, int) { npartner[i]++; });
   int mymax = 0;
-  for (int i = 0; i < nlocal; i++) mymax = MAX(mymax, count[i]);
-  std::vector<int>().swap(count);
+  std::size_t total = 0;
+  for (int i = 0; i < nlocal; i++) {
+    partner.clear(i);
+    total += npartner[i];
+  }
+  partner.reserve_more(total);
+  for (int i = 0; i < nlocal; i++) {
+    partner.resize(i, npartner[i]);
+    mymax = MAX(mymax, npartner[i]);
+    npartner[i] = 0;
+  }
+  // local or ghost indices until the families are sorted below, then tags
+  for_each_pair([&](int i, int j) { partner[i][npartner[i]++] = j; });
   MPI_Allreduce(&mymax, &maxpartner, 1, MPI_INT, MPI_MAX, world);
   maxpartner = MAX(maxpartner, 1);
   set_maxexchange();
-  memory->destroy(partner);
-  partner = nullptr;
-  grow_arrays(atom->nmax);
-  for (int i = 0; i < nlocal; i++) npartner[i] = 0;
-  for_each_pair([&](int i, tagint t) { partner[i][npartner[i]++] = t; });
-  // the tags hold the families: the list's pages go back before the sort below and the cache
+  // the rows hold the families: the list's pages go back before the sort below and the cache
   release_family_list();
 #if defined(__GLIBC__)
   // the pages are small blocks inside the heap, which glibc keeps resident once freed: hand the
@@ -290,22 +323,22 @@ void FixBBPDBonds::build_families()
   // its images.
   {
     const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
-    std::vector<std::pair<std::array<double, 3>, tagint>> family;
+    std::vector<BBPD::FamilyEntry<tagint>> family;
+    BBPD::FamilyOrder<tagint> order;
     std::vector<tagint> tags;
     for (int i = 0; i < nlocal; i++) {
       family.clear();
       for (int k = 0; k < npartner[i]; k++) {
-        const int j = atom->map(partner[i][k]);
+        const int j = partner[i][k];
         double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
         if (periodic) BBPDCompat::minimum_image(domain, d);
-        family.push_back({{d[2], d[1], d[0]}, partner[i][k]});
+        family.push_back({d[2], d[1], d[0], tag[j]});
       }
-      std::sort(family.begin(), family.end());
-      tags.clear();
-      for (int k = 0; k < npartner[i]; k++) {
-        partner[i][k] = family[k].second;
-        tags.push_back(family[k].second);
-      }
+      order.sort(family, law.spacing);
+      for (int k = 0; k < npartner[i]; k++) partner[i][k] = family[k].tag;
+      // two images of one atom in a family (only a periodic box has images)
+      if (!periodic) continue;
+      tags.assign(partner[i], partner[i] + npartner[i]);
       std::sort(tags.begin(), tags.end());
       if (std::adjacent_find(tags.begin(), tags.end()) != tags.end())
         error->one(FLERR, "Atom {} bonds twice to the same partner: the periodic box is smaller "
@@ -348,8 +381,10 @@ void FixBBPDBonds::refresh_cache()
     memory->destroy(bond_start);
     memory->destroy(nbond);
     memory->destroy(vintact);
+    memory->destroy(jstart);
     memory->create(bond_start, nlocal_cache, "bbpd/bonds:bond_start");
     memory->create(nbond, nlocal_cache, "bbpd/bonds:nbond");
+    memory->create(jstart, nlocal_cache, "bbpd/bonds:jstart");
     memory->create(vintact, nlocal_cache, "bbpd/bonds:vintact");
   }
   // bond ends of this rank, counted in a bigint: the cache indexes them with int
@@ -370,20 +405,20 @@ void FixBBPDBonds::refresh_cache()
   tags_cached.assign(atom->tag, atom->tag + nlocal + atom->nghost);
   const bool compact = !policy.caches_geometry();
   if (nbond_cache < n) {
-    // headroom: migration changes the count a little
-    nbond_cache = static_cast<int>(MIN((bigint) n + n / 8, (bigint) MAXSMALLINT));
+    // headroom: migration changes the count a little (a rebuild reallocates past it)
+    nbond_cache = static_cast<int>(MIN((bigint) n + n / CACHE_HEADROOM, (bigint) MAXSMALLINT));
     free_partners();
     free_bond_values();
   }
-  // offsets unless the pair style's loops want indices; a partner out of reach of an offset
-  // turns the rank to indices (widen_partners), tried again at the next refresh
+  // offsets unless the pair style's loops want indices; a row with a partner out of reach of an
+  // offset keeps indices (in bj, from jstart[i]), decided again at every refresh
   if (offsets_allowed && !bdelta) {
     free_partners();
     memory->create(bdelta, nbond_cache + LANES_PAD, "bbpd/bonds:bdelta");
     for (int m = nbond_cache; m < nbond_cache + LANES_PAD; m++) bdelta[m] = 0;
-  } else if (!offsets_allowed && !bj) {
+  } else if (!offsets_allowed && (bdelta || !bj)) {
     free_partners();
-    memory->create(bj, nbond_cache, "bbpd/bonds:bj");
+    reserve_indices(nbond_cache);
   }
   if (compact) free_bond_values();
   else if (!bclass && !bxi0) {
@@ -411,8 +446,23 @@ void FixBBPDBonds::refresh_cache()
         uniform_type = 0;
   }
 
+  int nbj = 0;    // entries of bj taken by index rows
+  std::vector<int> row;
+  // on a grid most rows repeat the row before bond for bond: a bond of the same length to a
+  // partner of the same type and volume from an atom of the same type has the same coefficient
+  // and class (compared by their bits), found without the bond law or the class table's hash
+  struct Seen {
+    double xi, vj, coef;
+    int jtype, cls;
+  };
+  std::vector<Seen> prev, cur;
+  int prev_itype = -1;
+  auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; };
   for (int i = 0; i < nlocal; i++) {
     int m = bond_start[i];
+    cur.clear();
+    bool fits = bdelta != nullptr;
+    row.clear();
     for (int k = 0; k < npartner[i]; k++) {
       const tagint t = partner[i][k];
       if (t <= 0) continue;
@@ -430,18 +480,59 @@ void FixBBPDBonds::refresh_cache()
       if (xi <= 0.0)
         error->one(FLERR, "Atoms {} and {} share a reference position: bonds need distinct atoms",
                    tag[i], t);
-      if (bdelta && !BBPD::fits_offset(i, j)) widen_partners(i, m);
-      if (bdelta)
-        bdelta[m] = static_cast<BBPD::PartnerOffset>(j - i);
-      else
-        bj[m] = j;
+      fits = fits && BBPD::fits_offset(i, j);
+      row.push_back(j);
       xi0_min = std::min(xi0_min, xi);
-      if (!compact) store_bond_values(m, xi, law.coefficient(type[i], type[j], xi, vfrac[j]));
+      if (!compact) {
+        const std::size_t kk = cur.size();
+        if (type[i] == prev_itype && kk < prev.size() && same(prev[kk].xi, xi) &&
+            prev[kk].jtype == type[j] && same(prev[kk].vj, vfrac[j])) {
+          cur.push_back(prev[kk]);
+          if (bclass) bclass[m] = static_cast<BBPD::BondClass>(prev[kk].cls);
+          else store_bond_values(m, xi, prev[kk].coef);
+        } else {
+          const double coef = law.coefficient(type[i], type[j], xi, vfrac[j]);
+          store_bond_values(m, xi, coef);
+          cur.push_back({xi, vfrac[j], coef, type[j], bclass ? (int) bclass[m] : -1});
+        }
+      }
       m++;
     }
-    nbond[i] = m - bond_start[i];
+    prev.swap(cur);
+    prev_itype = type[i];
+    const int beg = bond_start[i];
+    nbond[i] = m - beg;
+    jstart[i] = -1;
+    if (!bdelta) {
+      std::copy(row.begin(), row.end(), bj + beg);
+    } else if (fits) {
+      for (int k = 0; k < nbond[i]; k++) bdelta[beg + k] = static_cast<BBPD::PartnerOffset>(row[k] - i);
+    } else {
+      reserve_indices(nbj + nbond[i]);
+      jstart[i] = nbj;
+      std::copy(row.begin(), row.end(), bj + nbj);
+      nbj += nbond[i];
+    }
     vintact[i] = intact_volume(i);
   }
+  nindex_ends = bdelta ? nbj : n;
+  // an end of an index row costs 6 bytes beside offsets (its unused offset too), 4 in a rank of
+  // index rows alone: past half of the ends the rank keeps indices alone (offsets are tried
+  // again at the next rebuild)
+  if (bdelta && 2 * (bigint) nbj > n) all_indices();
+}
+
+/* every row of the rank as indices, indexed like bclass: no offsets, no jstart */
+void FixBBPDBonds::all_indices()
+{
+  const int nlocal = atom->nlocal;
+  std::vector<int> full(bond_start[nlocal]);
+  for (int i = 0; i < nlocal; i++)
+    for (int k = bond_start[i]; k < bond_start[i] + nbond[i]; k++) full[k] = partner_of(i, k);
+  free_partners();
+  reserve_indices(nbond_cache);
+  std::copy(full.begin(), full.end(), bj);
+  nindex_ends = bond_start[nlocal];
 }
 
 void FixBBPDBonds::free_partners()
@@ -450,18 +541,17 @@ void FixBBPDBonds::free_partners()
   memory->destroy(bj);
   bdelta = nullptr;
   bj = nullptr;
+  nbj_cache = 0;
 }
 
-/* partner indices instead of offsets from cache entry m of atom i on (the entries before m
-   are converted) */
-void FixBBPDBonds::widen_partners(int i, int m)
+/* bj holds at least n entries (and a SIMD vector's more, which a row end may read); the entries
+   kept keep their values. Index rows beside offsets grow it by half again at a time. */
+void FixBBPDBonds::reserve_indices(int n)
 {
-  memory->create(bj, nbond_cache, "bbpd/bonds:bj");
-  for (int a = 0; a < i; a++)
-    for (int e = bond_start[a]; e < bond_start[a] + nbond[a]; e++) bj[e] = a + bdelta[e];
-  for (int e = bond_start[i]; e < m; e++) bj[e] = i + bdelta[e];
-  memory->destroy(bdelta);
-  bdelta = nullptr;
+  if (n + LANES_PAD <= nbj_cache) return;
+  const bigint want = bdelta ? MAX((bigint) n, (bigint) nbj_cache + nbj_cache / 2) : (bigint) n;
+  nbj_cache = static_cast<int>(MIN(want + LANES_PAD, (bigint) MAXSMALLINT));
+  memory->grow(bj, nbj_cache, "bbpd/bonds:bj");
 }
 
 void FixBBPDBonds::free_bond_values()
@@ -526,10 +616,13 @@ void FixBBPDBonds::remove_bond(int i, int k)
       break;
     }
   const int last = bond_start[i] + nbond[i] - 1;
-  if (bdelta)
+  if (index_row(i)) {
+    // the same shift in the row's own entries of bj
+    const int shift = bdelta ? jstart[i] - bond_start[i] : 0;
+    for (int m = k; m < last; m++) bj[m + shift] = bj[m + shift + 1];
+  } else {
     for (int m = k; m < last; m++) bdelta[m] = bdelta[m + 1];
-  else
-    for (int m = k; m < last; m++) bj[m] = bj[m + 1];
+  }
   if (bclass)
     for (int m = k; m < last; m++) bclass[m] = bclass[m + 1];
   if (bxi0)
@@ -564,7 +657,10 @@ double FixBBPDBonds::bytes_per_bond() const
   // per bond end: partner tag (persistent) + bdelta | bj [+ bclass | bxi0 + bcoef] (cache); two
   // ends per bond (the class table itself is a few kB per rank, not counted)
   const double cached = bclass ? sizeof(BBPD::BondClass) : bxi0 ? 2.0 * sizeof(double) : 0.0;
-  const double index = bdelta ? sizeof(BBPD::PartnerOffset) : sizeof(int);
+  // offsets where the rows have them, and 4 bytes more for each end of an index row
+  const bigint ends = bond_start ? (bigint) bond_start[atom->nlocal] : 0;
+  const double index = bdelta ? sizeof(BBPD::PartnerOffset) + (ends ? sizeof(int) * (double) nindex_ends / ends : 0.0)
+                              : sizeof(int);
   return 2.0 * (sizeof(tagint) + index + cached);
 }
 
@@ -584,11 +680,11 @@ double FixBBPDBonds::memory_usage()
 {
   const double nmax = atom->nmax;
   double bytes = nmax * (sizeof(int) + 2.0 * sizeof(double));    // npartner, vinit, ebroken
-  bytes += nmax * maxpartner * sizeof(tagint);
+  bytes += partner.bytes();
   bytes += nlocal_cache * (2.0 * sizeof(int) + sizeof(double));
   bytes += (double) nbond_cache * (bxi0 ? 2.0 * sizeof(double) : 0.0);
   if (bdelta) bytes += (nbond_cache + LANES_PAD) * sizeof(BBPD::PartnerOffset);
-  if (bj) bytes += (double) nbond_cache * sizeof(int);
+  bytes += (double) nbj_cache * sizeof(int) + nlocal_cache * sizeof(int);    // bj, jstart
   if (bclass)
     bytes += (nbond_cache + LANES_PAD) * sizeof(BBPD::BondClass) +
         2.0 * sizeof(double) * classes.size();
@@ -599,15 +695,17 @@ double FixBBPDBonds::memory_usage()
 void FixBBPDBonds::grow_arrays(int nmax)
 {
   memory->grow(npartner, nmax, "bbpd/bonds:npartner");
-  memory->grow(partner, nmax, maxpartner, "bbpd/bonds:partner");
+  partner.grow(nmax);
   memory->grow(vinit, nmax, "bbpd/bonds:vinit");
   memory->grow(ebroken, nmax, "bbpd/bonds:ebroken");
 }
 
-void FixBBPDBonds::copy_arrays(int i, int j, int)
+void FixBBPDBonds::copy_arrays(int i, int j, int delflag)
 {
   npartner[j] = npartner[i];
-  for (int k = 0; k < npartner[j]; k++) partner[j][k] = partner[i][k];
+  // a deleted source (migration) hands its row over; a sort reads the source again
+  if (delflag) partner.move(i, j);
+  else partner.copy(i, j, npartner[i]);
   vinit[j] = vinit[i];
   ebroken[j] = ebroken[i];
 }
@@ -615,6 +713,7 @@ void FixBBPDBonds::copy_arrays(int i, int j, int)
 void FixBBPDBonds::set_arrays(int i)
 {
   npartner[i] = 0;
+  partner.clear(i);
   vinit[i] = 0.0;
   ebroken[i] = 0.0;
 }
@@ -633,6 +732,7 @@ int FixBBPDBonds::unpack_exchange(int nlocal, double *buf)
 {
   int m = 0;
   npartner[nlocal] = static_cast<int>(buf[m++]);
+  partner.resize(nlocal, npartner[nlocal]);
   for (int k = 0; k < npartner[nlocal]; k++) partner[nlocal][k] = (tagint) ubuf(buf[m++]).i;
   vinit[nlocal] = buf[m++];
   ebroken[nlocal] = buf[m++];
@@ -663,8 +763,6 @@ void FixBBPDBonds::restart(char *buf)
     extent0 = list[2];
   }
   set_maxexchange();
-  memory->destroy(partner);
-  partner = nullptr;
   grow_arrays(atom->nmax);
 }
 
@@ -690,6 +788,7 @@ void FixBBPDBonds::unpack_restart(int nlocal, int nth)
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   const int size = static_cast<int>(extra[nlocal][m++]);
   npartner[nlocal] = static_cast<int>(extra[nlocal][m++]);
+  partner.resize(nlocal, npartner[nlocal]);
   for (int k = 0; k < npartner[nlocal]; k++) partner[nlocal][k] = (tagint) ubuf(extra[nlocal][m++]).i;
   vinit[nlocal] = extra[nlocal][m++];
   ebroken[nlocal] = size > npartner[nlocal] + RESTART_VALUES_OLD ? extra[nlocal][m++] : 0.0;

@@ -5,7 +5,8 @@
    Created by the pair style (ID BBPD_BONDS); not meant for input scripts.
    Persistent per-atom data, carried through atom migration and restart files:
      npartner[i]       number of bonds the atom started with
-     partner[i][k]     tag of partner k; negative = broken. Partners are kept in
+     partner[i][k]     tag of partner k; negative = broken (rows of their own length,
+                       bbpd_partner_rows.h). Partners are kept in
                        the order of their reference offset x0_j - x0_i (compared
                        exactly: z, then y, then x): the summation order then
                        depends on the geometry only, not on the atom numbering
@@ -16,10 +17,13 @@
    Cached per intact bond, rebuilt only when LAMMPS reneighbors (post_neighbor),
    one flat structure-of-arrays row per local atom, partners in that order:
      bond_start[i], nbond[i]  first entry and number of intact bonds of atom i
-     bdelta[k]               partner's local/ghost index minus i, 2 bytes, where every partner
-                             of the rank is within that reach (bbpd_partner_index.h); else
-     bj[k]                   local/ghost index of the partner (bdelta null); partner_of(i, k)
-                             reads either
+     bdelta[k]               partner's local/ghost index minus i, 2 bytes, for a row whose
+                             partners are all within that reach (bbpd_partner_index.h); else
+     bj[jstart[i] + k - bond_start[i]]  local/ghost index of the partner, 4 bytes (rows near a
+                             rank's ghosts, or beyond the reach of an offset in memory order;
+                             every row when the pair style's loop reads indices: then bdelta
+                             and jstart are null and bj is indexed like bclass). partner_of(i, k)
+                             and visit_row() read either
      bclass[k]               class of the bond in the rank's table 'classes' of distinct
                              (reference length, coefficient) pairs (bbpd_bond_table.h):
        classes.xi0[c]        reference bond length |x0_j - x0_i|
@@ -51,6 +55,7 @@
 #include "bbpd_bond_table.h"
 #include "bbpd_bond_values.h"
 #include "bbpd_partner_index.h"
+#include "bbpd_partner_rows.h"
 #include "bbpd_row_paths.h"
 #include "fix.h"
 
@@ -106,13 +111,19 @@ class FixBBPDBonds : public Fix {
   bool families_built() const { return !first; }
   int maxpartner;
   int *npartner;
-  tagint **partner;
+  BBPD::PartnerRows<tagint> partner;    // partner[i][k], npartner[i] of them (bbpd_partner_rows.h)
   double *vinit;
   double *ebroken;
   int *bond_start, *nbond;
-  BBPD::PartnerOffset *bdelta;    // null unless the rank stores offsets
-  int *bj;                        // null unless the rank stores indices
-  int partner_of(int i, int k) const { return bdelta ? i + bdelta[k] : bj[k]; }
+  BBPD::PartnerOffset *bdelta;    // null when every row stores indices
+  int *jstart;                    // per row: its first entry in bj, or -1 (offsets); null with bdelta
+  int *bj;
+  bool index_row(int i) const { return !bdelta || jstart[i] >= 0; }
+  int partner_of(int i, int k) const
+  {
+    if (!bdelta) return bj[k];
+    return jstart[i] < 0 ? i + bdelta[k] : bj[jstart[i] + k - bond_start[i]];
+  }
   BBPD::BondClass *bclass;    // null unless the table holds the pairs
   BBPD::BondClassTable classes;
   double *bxi0, *bcoef;        // null unless the pairs are kept per bond
@@ -159,7 +170,8 @@ class FixBBPDBonds : public Fix {
       return fn(row_partners, BBPD::CompactValues{
                                   x0, i, atom->vfrac, atom->type, &cache, coef_fn, uniform_type, uniform_vfrac});
     };
-    return bdelta ? with_values(bdelta + beg) : with_values(bj + beg);
+    if (!bdelta) return with_values(bj + beg);
+    return jstart[i] < 0 ? with_values(bdelta + beg) : with_values(bj + jstart[i]);
   }
 
   /* the one way bonds break (the pair styles' breaking rules, fix bbpd/notch): remove every
@@ -227,7 +239,12 @@ class FixBBPDBonds : public Fix {
   static constexpr int LANES_PAD = 8;
   void free_bond_values();
   void free_partners();
-  void widen_partners(int i, int m);
+  int nbj_cache;           // allocated size of bj
+  bigint nindex_ends;      // bond ends of the index rows at the last rebuild (storage report)
+  void reserve_indices(int n);
+  double sort_binsize = 0.0;    // the atom sort's bin size this fix chose (0: none chosen)
+  void choose_sort_bins();
+  void all_indices();
   void store_bond_values(int m, double xi, double coef);
 
   void remove_bond(int i, int k);

@@ -15,9 +15,11 @@
 #include "force.h"
 #include "group.h"
 #include "modify.h"
+#include "pair.h"
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -117,9 +119,9 @@ void FixBBPDNotch::init()
 }
 
 /* does the bond xa-xb cross the notch? points on the notch plane count as its positive side */
-bool FixBBPDNotch::crosses(const Cut &c, const double *xa, const double *xb, int dim)
+/* a normal of the notch's line (2D) or plane (3D) */
+static void notch_normal(const FixBBPDNotch::Cut &c, int dim, double *n)
 {
-  double n[3];
   if (dim == 2) {
     n[0] = -c.a[1];
     n[1] = c.a[0];
@@ -129,6 +131,24 @@ bool FixBBPDNotch::crosses(const Cut &c, const double *xa, const double *xb, int
     n[1] = c.a[2] * c.b[0] - c.a[0] * c.b[2];
     n[2] = c.a[0] * c.b[1] - c.a[1] * c.b[0];
   }
+}
+
+/* distance of x from the notch's line or plane (0 for a degenerate notch) */
+double FixBBPDNotch::plane_distance(const Cut &c, const double *x, int dim)
+{
+  double n[3], nn = 0.0, s = 0.0;
+  notch_normal(c, dim, n);
+  for (int m = 0; m < dim; m++) {
+    nn += n[m] * n[m];
+    s += n[m] * (x[m] - c.p[m]);
+  }
+  return nn > 0.0 ? std::fabs(s) / std::sqrt(nn) : 0.0;
+}
+
+bool FixBBPDNotch::crosses(const Cut &c, const double *xa, const double *xb, int dim)
+{
+  double n[3];
+  notch_normal(c, dim, n);
   double sa = 0.0, sb = 0.0;
   for (int m = 0; m < dim; m++) {
     sa += n[m] * (xa[m] - c.p[m]);
@@ -187,8 +207,18 @@ void FixBBPDNotch::setup_pre_force(int)
         return true;
     return false;
   };
+  // a bond that crosses a notch has both ends within its length of the notch's plane: rows
+  // farther from every plane than the longest bond keep their bonds unread (not under periodic
+  // boundaries, where an end may be an image, nor with group notches)
+  const double reach = force->pair ? force->pair->cutforce : std::numeric_limits<double>::infinity();
+  auto near_a_cut = [&](int i) {
+    if (periodic || !group_bits.empty()) return true;
+    for (const auto &c : cuts)
+      if (plane_distance(c, x0[i], dim) <= reach) return true;
+    return false;
+  };
   for (int i = 0; i < atom->nlocal; i++)
-    n += bonds->remove_bonds_if(i, [&](int k) {
+    if (near_a_cut(i)) n += bonds->remove_bonds_if(i, [&](int k) {
       const int j = bonds->partner_of(i, k);
       return ((mask[i] & groupbit) || (mask[j] & groupbit)) && bond_cut(i, j);
     });

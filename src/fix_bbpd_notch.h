@@ -42,6 +42,7 @@ class FixBBPDNotch : public Fix {
     double p[3], a[3], b[3];    // origin and edge vectors (b = 0 for a 2D segment)
   };
   static bool crosses(const Cut &, const double *xa, const double *xb, int dim);
+  static double plane_distance(const Cut &, const double *x, int dim);
 
  private:
   std::vector<Cut> cuts;

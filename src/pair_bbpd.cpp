@@ -659,6 +659,7 @@ template <int EVFLAG, int FRACTURE, int MULTI> void PairBBPD::eval()
     void finish(double *) {}
   };
   const int *type = atom->type;
+  if (MULTI) refresh_row_s0();
   eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
     return Row{*this, i, acc, cache, MULTI ? critical_stretch[type[i]] : nullptr};
   });
@@ -731,10 +732,12 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc,
       return BBPD::row_force_portable<FRACTURE, EVFLAG, BondModel>(
           xx, i, bj, n, xi0_of, coef_of, s0_of, break_margin, ax, ay, az, &lanes);
     };
-    if (MULTI) return portable();    // the SIMD kernels take one critical stretch
+    // the SIMD kernels take one critical stretch: a row whose bonds have several runs portable
+    const double s0 = MULTI ? row_s0[i] : s0_single;
+    if (MULTI && std::isnan(s0)) return portable();
     return BBPD::on_path(simd_path, [&](auto path) {
       return decltype(path)::template row_force<FRACTURE, EVFLAG, BondModel>(
-          xx, i, bj, vals, n, s0_single, break_margin, ax, ay, az, &lanes);
+          xx, i, bj, vals, n, s0, break_margin, ax, ay, az, &lanes);
     }, portable);
   });
   if (broken) return true;
@@ -755,6 +758,25 @@ void PairBBPD::tally_lanes(int i, const RowTally &lanes, double *acc)
   for (int m = 0; m < 6; m++) {
     acc[1 + m] += vir[m];
     if (vflag_atom) vatom[i][m] += vir[m];
+  }
+}
+
+/* the critical stretch of each row's bonds, where they share one (types are fixed during a
+   run; a row only loses bonds, so one that shares keeps sharing until the cache is rebuilt) */
+void PairBBPD::refresh_row_s0()
+{
+  if (row_s0_generation == bonds->cache_generation()) return;
+  row_s0_generation = bonds->cache_generation();
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  row_s0.assign(nlocal, std::numeric_limits<double>::quiet_NaN());
+  for (int i = 0; i < nlocal; i++) {
+    const double *s0row = critical_stretch[type[i]];
+    const int beg = bonds->bond_start[i], n = bonds->nbond[i];
+    const double s0 = n ? s0row[type[bonds->partner_of(i, beg)]] : s0row[type[i]];
+    bool shared = true;
+    for (int k = beg + 1; k < beg + n && shared; k++) shared = s0row[type[bonds->partner_of(i, k)]] == s0;
+    if (shared) row_s0[i] = s0;
   }
 }
 

@@ -148,6 +148,12 @@ class PairBBPD : public Pair {
   bool bonded(int i, tagint jtag) const;
   int multi_s0;           // critical stretch differs between type pairs
   double s0_single;       // the critical stretch when it does not
+  // multi_s0: per local atom the critical stretch all its bonds share, or NaN where they differ
+  // (a row beside a band of another type); rebuilt with the bond cache. A row of one critical
+  // stretch runs the SIMD kernels, which take one
+  std::vector<double> row_s0;
+  bigint row_s0_generation = -1;
+  void refresh_row_s0();
   double break_margin;    // periodic box: bonds this close to s0 are re-checked canonically
   bool past_critical(int i, int j, double xi0, double s0) const;
   // bond k of atom i breaks at the critical stretch s0: book atom i's share of the energy it

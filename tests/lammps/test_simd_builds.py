@@ -115,10 +115,38 @@ def cylinder_state(lmp, tmp_path, path, plugin=None):
 
 
 def far_partners_state(lmp, tmp_path, path):
-    """Final state of a run whose rank keeps 4-byte partner indices (unsorted atoms: partners
-    out of an offset's reach; test_storage.py), with bonds breaking."""
+    """Final state of a run whose rows beside the middle line keep 4-byte partner indices and the
+    others offsets (unsorted atoms: partners out of an offset's reach; test_storage.py), with
+    bonds breaking."""
     script = storage.FAR_PARTNERS.format(sort="0", storage="fast")
-    assert "bond storage: 20.0 bytes per bond" in lmp(with_path(script, path)).output
+    assert 16.0 < storage.storage_bytes(lmp(with_path(script, path)).output) < 17.0
+    return (tmp_path / "final.dump").read_text()
+
+
+# a band of atoms whose bonds never break along the bottom edge: rows of one critical stretch (the
+# band's, infinite, and the plate's) run the SIMD kernels, rows beside the band the portable loop
+NO_FAIL_BAND = (("create_box 1 box", "create_box 2 box"),
+                ("create_atoms 1 box", "create_atoms 1 box\nregion band block INF INF INF 3 INF INF\n"
+                 "set region band type 2"),
+                ("pair_coeff 1 1 190e9 6.9e3 0.005", "pair_coeff 1 1 190e9 6.9e3 0.005\n"
+                 "pair_coeff 1 2 190e9 none 0.005\npair_coeff 2 2 190e9 none 0.005"))
+
+
+def band_state(lmp, tmp_path, path):
+    """Final state of the crack scene with a no-fail band (two critical stretches)"""
+    script = storage.SCENE.format(kernel="gaussian", storage="fast")
+    for old, new in NO_FAIL_BAND:
+        assert old in script
+        script = script.replace(old, new)
+    notch, final = storage.broken_counts(lmp(with_path(script, path)).output)
+    assert final > notch + 100    # a crack grew
+    return (tmp_path / "final.dump").read_text()
+
+
+def all_indices_state(lmp, tmp_path, path):
+    """Final state of the unsorted 3D slab of test_storage.py, whose rank keeps indices alone"""
+    script = storage.SLAB.format(sort="sort 0 0.0")
+    assert storage.storage_bytes(lmp(with_path(script, path)).output) == 20.0
     return (tmp_path / "final.dump").read_text()
 
 
@@ -127,7 +155,9 @@ def states(lmp, tmp_path, path):
             "compact": crack_state(lmp, tmp_path, path, "compact")[0],
             "compact, two volumes": crack_state(lmp, tmp_path, path, "compact", volumes=2)[0],
             "cylinder": cylinder_state(lmp, tmp_path, path),
-            "far partners": far_partners_state(lmp, tmp_path, path)}
+            "far partners": far_partners_state(lmp, tmp_path, path),
+            "all indices": all_indices_state(lmp, tmp_path, path),
+            "no-fail band": band_state(lmp, tmp_path, path)}
 
 
 # a periodic LPS block set moving until bonds break: its rows are decided from local lengths

@@ -114,8 +114,9 @@ def test_per_bond_fallback_is_bit_identical(lmp, tmp_path):
 
 # 201 x 171 atoms created top half first, then bottom half: unsorted (atom_modify sort 0), the
 # atoms just above the middle line come first in memory and their partners below it about 34,000
-# entries later, beyond a 2-byte offset, so the rank keeps 4-byte partner indices; LAMMPS's
-# spatial sort brings them within reach of offsets. The notch cuts along the middle line.
+# entries later, beyond a 2-byte offset, so the rows beside the middle line keep 4-byte partner
+# indices (and the others offsets); LAMMPS's spatial sort brings them within reach of offsets.
+# The notch cuts along the middle line.
 FAR_PARTNERS = peri_preamble(2, lattice="sq 0.001", atom_modify="sort {sort} 0.0") + """\
 region box block 0 200 0 170 -0.5 0.5
 create_box 1 box
@@ -141,10 +142,15 @@ def by_position(dump):
     return sorted(rows, key=lambda r: (round(float(r[1]), 6), round(float(r[0]), 6)))
 
 
+def storage_bytes(out):
+    """bytes per bond of the bond storage, from the first setup report"""
+    return float(re.search(r"bond storage: ([0-9.]+) bytes per bond", out).group(1))
+
+
 def test_partner_indices_give_the_bits_of_offsets(lmp, tmp_path):
-    """Partners out of a 2-byte offset's reach: the rank stores 4-byte indices and gives the
-    bits of offsets (sorted atoms, and 2 ranks), with bonds breaking during the run; compact
-    storage with indices gives them too."""
+    """Partners out of a 2-byte offset's reach: the rows beside the middle line store 4-byte
+    indices, the others offsets, and give the bits of offsets alone (sorted atoms, and 2 ranks),
+    with bonds breaking during the run; compact storage with indices gives them too."""
     # on 2 ranks the unsorted atoms are within reach again (half as many per rank): offsets,
     # with ghost partners
     runs = {("offsets", 1): ("1000", "fast", 1), ("indices", 1): ("0", "fast", 1),
@@ -153,10 +159,11 @@ def test_partner_indices_give_the_bits_of_offsets(lmp, tmp_path):
     for key, (sort, storage, nprocs) in runs.items():
         outs[key] = lmp(FAR_PARTNERS.format(sort=sort, storage=storage), nprocs=nprocs).output
         dumps[key] = by_position((tmp_path / "final.dump").read_text())
-    assert "bond storage: 16.0 bytes per bond" in outs[("offsets", 1)]
-    assert "bond storage: 20.0 bytes per bond" in outs[("indices", 1)]
-    assert "bond storage: 16.0 bytes per bond" in outs[("unsorted", 2)]
-    assert "bond storage: 16.0 bytes per bond" in outs[("compact indices", 1)]
+    assert storage_bytes(outs[("offsets", 1)]) == 16.0
+    assert storage_bytes(outs[("unsorted", 2)]) == 16.0
+    # some rows with indices (4 bytes more per bond for them), most with offsets
+    assert 16.0 < storage_bytes(outs[("indices", 1)]) < 17.0
+    assert 12.0 < storage_bytes(outs[("compact indices", 1)]) < 13.0
     broken = [int(b) for b in re.findall(r"total bonds \d+ \((\d+) broken\)", outs[("offsets", 1)])]
     assert broken[-1] > broken[0] + 100    # bonds broke during the run
     for key in runs:
@@ -216,3 +223,56 @@ def test_compact_storage_follows_new_coefficients(lmp, tmp_path):
         lmp(script)
         dumps[storage] = (tmp_path / "final.dump").read_text()
     assert dumps["fast"] == dumps["compact"]
+
+
+# A 3D slab of 121 x 301 x 2 atoms (spacing 1 mm, horizon 3 mm), unsorted: every atom has
+# partners in the other layer, 36,421 atoms away in memory, beyond a 2-byte offset: every row
+# needs indices and the rank keeps them alone (20 bytes per bond, not the 22 that offsets beside
+# indices would cost). Sorted in bins thinner than half the slab (the input's 0.4 mm) the layers
+# fall in different bin layers, as far apart; in bins of the family cutoff, which the bond fix
+# chooses when the input does not, they share one bin layer and every partner is within an
+# offset's reach.
+SLAB = peri_preamble(3, lattice="sc 0.001", atom_modify="{sort}") + """region box block 0 120 0 300 0 1
+create_box 1 box
+create_atoms 1 box
+set group all density 7800
+set group all volume 1e-9
+pair_style bbpd/constant 3d
+pair_coeff 1 1 190e9 6.9e3 0.003
+neighbor 0.001 bin
+fix n all bbpd/notch rectangle 0.02 0.1495 -1 0.04 0 0 0 0 3
+region left block INF 3 INF INF INF INF
+group left region left
+velocity left set 32 0 0 units box
+fix 1 all nve
+timestep 8.7e-8
+run 40
+write_dump all custom final.dump id x y z vx vy vz modify format float %.17g
+run 0
+"""
+
+
+def by_position_3d(dump):
+    rows = [line.split()[1:] for line in dump.split("ITEM: ATOMS")[1].splitlines()[1:] if line]
+    return sorted(rows, key=lambda r: (round(float(r[2]), 6), round(float(r[1]), 6),
+                                       round(float(r[0]), 6)))
+
+
+def test_sort_bins_of_the_family_cutoff_keep_3d_partners_within_offsets(lmp, tmp_path):
+    """An unsorted slab needs indices in every row and keeps them alone; the input's thin sort
+    bins put the slab's layers in two bin layers, also indices; the bins the bond fix chooses
+    give offsets throughout. The same bits in all three, with bonds breaking."""
+    runs = {"unsorted": "sort 0 0.0", "input bins": "sort 1000 0.0004", "chosen bins": ""}
+    outs, dumps = {}, {}
+    for key, sort in runs.items():
+        outs[key] = lmp(SLAB.format(sort=sort)).output
+        dumps[key] = by_position_3d((tmp_path / "final.dump").read_text())
+    assert storage_bytes(outs["unsorted"]) == 20.0
+    assert "atoms sorted in bins of the family cutoff" in outs["chosen bins"]
+    assert storage_bytes(outs["input bins"]) == 20.0
+    assert "atoms sorted in bins" not in outs["unsorted"] + outs["input bins"]
+    assert storage_bytes(outs["chosen bins"]) == 16.0
+    broken = [int(b) for b in re.findall(r"total bonds \d+ \((\d+) broken\)", outs["chosen bins"])]
+    assert broken[-1] > broken[0]
+    for key in runs:
+        assert dumps[key] == dumps["chosen bins"], key
