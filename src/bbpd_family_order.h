@@ -6,8 +6,8 @@
 
    A comparison sort of every family is most of a large 3D setup (300 partners per atom and
    half a million atoms: seconds). On a grid the offsets fall on a few cells of the grid
-   spacing h: a counting sort by cell (floor of z/h, y/h, x/h, which never decreases as the
-   offset grows) puts the entries in order but for entries that share a cell, and an insertion
+   spacing h: a counting sort by cell (the multiples of h nearest z, y, x, which never
+   decrease as the offset grows) puts the entries in order but for entries that share a cell, and an insertion
    sort with the exact comparison then finishes it (on a grid it finds nothing to move). Any
    h gives the exact order; h only sets how much is left to the insertion sort. When the cells
    would be too many (a tiny h, non-finite offsets) the comparison sort does it all.
