@@ -122,3 +122,99 @@ def test_the_verdict_as_data():
     res = [v[k]["residual"] for k in kp.KERNELS[:3]]
     meas = [v[k]["measured"] for k in kp.KERNELS[:3]]
     assert max(res) / min(res) - 1 < kp.TOL_EXPLAIN < max(meas) / min(meas) - 1
+
+
+# the README (examples/quasi-static/README.md) against the CSVs it quotes
+TEXT = " ".join(README.split())
+
+
+def name(kernel):
+    return kernel.replace("lps/", "LPS ").replace("gaussian", "Gaussian")
+
+
+def pct(x):
+    return f"{100 * float(x):+.1f} %".replace("-", "−")
+
+
+def three(x):
+    return f"{float(x):.3f}" if x else "–"
+
+
+def test_the_readme_quotes_the_probe_table():
+    table = {}
+    for r in rows("kfield_probe.csv"):
+        table.setdefault((r["kernel"], r["m"]), {})[r["delta_mm"]] = r
+    quoted = 0
+    for (kernel, m), by in table.items():
+        probes = [float(r["probe"]) for r in by.values()]
+        assert max(probes) / min(probes) - 1 < 2e-4    # the probe does not move with delta
+        if any(r["measured"] for r in by.values()):
+            meas = " / ".join(three(by[d]["measured"]) for d in ("2", "1", "0.5"))
+            res = " / ".join(three(by[d]["residual"]) for d in ("2", "1", "0.5"))
+            line = f"| {name(kernel)} | {m} | {probes[0]:.3f} | {meas} | {res} |"
+            assert line in README, line
+            quoted += 1
+    assert quoted == 20
+
+
+def test_the_readme_quotes_the_m_series_csvs():
+    for r in rows("center_crack_m_kernels.csv"):
+        line = (f"| {r['kernel']} | {float(r['delta_mm']):g} | {float(r['delta_over_a']):g} | {r['m']} | "
+                f"{int(r['atoms']):,} | {float(r['sigma_c_MPa']):.3f} | {float(r['sigma_lo_MPa']):.3f}–"
+                f"{float(r['sigma_hi_MPa']):.3f} | {pct(r['error'])} | {r['broken_at_hi']} |")
+        assert line in README, line
+    for r in rows("center_crack_lps_m.csv"):
+        line = (f"| {name(r['kernel'])} | {r['m']} | {int(r['atoms']):,} | {float(r['sigma_c_MPa']):.3f} | "
+                f"{float(r['sigma_lo_MPa']):.3f}–{float(r['sigma_hi_MPa']):.3f} | {pct(r['error'])} | "
+                f"{r['broken_at_hi']} | {float(r['wall_s']):.0f} s |")
+        assert line in README, line
+    err = {(r["kernel"], r["delta_mm"], r["m"]): pct(r["error"]) for r in rows("center_crack_m_kernels.csv")}
+    for kernel in ("triangular", "constant"):
+        for m in ("3", "5"):
+            assert f"{err[(kernel, '2', m)]} / {err[(kernel, '1', m)]} at m = {m}".replace(" % /", " /") in TEXT
+    lps = {(r["kernel"], r["m"]): 100 * float(r["error"]) for r in rows("center_crack_lps_m.csv")}
+    falls = [round(lps[(f"lps/{k}", "3")] - lps[(f"lps/{k}", "5")]) for k in ("triangular", "gaussian", "constant")]
+    assert f"from m = 3 to 5 by {falls[0]} and {falls[1]} points; the constant kernel's initiation falls by {falls[2]} points" in TEXT
+
+
+def test_the_readme_reading_follows_the_probe():
+    from test_kfield_s0 import notch_bonds    # tests/lammps: the count LAMMPS is checked against
+    assert f"(1,104 at δ = 2 mm, m = 4)" in TEXT and notch_bonds(4, 16) == 1104
+    data = rows("kfield_probe.csv")
+    c = {round(float(r["tip_coefficient"]), 3) for r in data}
+    assert c == {0.517} and "Its stretch is 0.517 K/(E √Δ)" in TEXT
+    bb = [r for r in data if r["kernel"] in kp.KERNELS[:3] and r["measured"]]
+    spans = []
+    for d, label in (("2", "2 mm"), ("1", "1 mm"), ("0.5", "0.5 mm")):
+        res = [float(r["residual"]) for r in bb if r["delta_mm"] == d]
+        spans.append(f"{min(res):.3f}–{max(res):.3f} at {'δ = ' if d == '2' else ''}{label}")
+    assert ", ".join(spans) in TEXT
+    meas = [float(r["measured"]) for r in bb if r["delta_mm"] == "2"]
+    assert f"spans {min(meas):.3f}–{max(meas):.3f} at δ = 2 mm" in TEXT
+    res = [float(r["residual"]) for r in bb]
+    assert f"{1 / max(res):.2f} to {1 / min(res):.2f} times more" in TEXT
+    g4 = sorted((r for r in data if r["kernel"] == "gaussian" and r["m"] == "4"), key=lambda r: -float(r["delta_mm"]))
+    assert ", ".join(three(r["residual"]) for r in g4) in TEXT
+    griffith = ", ".join(f"{float(r['measured']) / float(r['probe_griffith']):.3f}" for r in g4)
+    assert f"the residual is {griffith}" in TEXT
+    v = kp.verdict(data)
+    assert f"−10.9 %, outside by {100 * v['constant']['miss']:.1f} points" in TEXT
+    assert f"−13.0 %, outside by {100 * v['lps/constant']['miss']:.1f} points" in TEXT
+    assert f"{100 * (1 - v['constant']['probe'] / v['gaussian']['probe']):.1f} % below the Gaussian's" in TEXT
+    assert f"(probe {v['constant']['probe']:.3f} against {v['gaussian']['probe']:.3f})" in TEXT
+    assert f"same to {100 * (v['constant']['residual'] / v['gaussian']['residual'] - 1):.0f} %" in TEXT
+    assert f"residual passes {1 / v['gaussian']['probe']:.3f}" in TEXT
+    lpsc = [three(r["residual"]) for r in data if r["kernel"] == "lps/constant" and r["delta_mm"] == "2" and r["measured"]]
+    assert f"({', '.join(lpsc)} at m = 3, 4, 5, δ = 2 mm)" in TEXT
+    lps = [float(r["residual"]) for r in data if r["kernel"] in ("lps/triangular", "lps/gaussian") and r["measured"]]
+    assert f"residual is {min(lps):.2f}–{max(lps):.2f}" in TEXT
+    shared = lambda d: sum(float(r["residual"]) for r in bb if r["delta_mm"] == d and r["m"] == "4") / 3
+    above = [float(r["residual"]) / shared(r["delta_mm"]) - 1 for r in data
+             if r["kernel"] in ("lps/triangular", "lps/gaussian") and r["m"] == "4" and r["delta_mm"] in ("0.5", "2")]
+    assert f"by {100 * min(above):.0f} % on the finest grid, {100 * max(above):.0f} % at δ = 2 mm" in TEXT
+    low = [1 - v[k]["predicted"] / v[k]["measured"] for k in ("lps/triangular", "lps/gaussian")]
+    assert all(round(100 * x) == 7 for x in low) and "predicts them 7 % low" in TEXT
+    pmb = [r for r in data if r["kernel"] == "pmb" and r["measured"]]
+    assert f"residual {' / '.join(three(r['residual']) for r in pmb)} at δ = 2 / 1 mm" in TEXT
+    below = sorted(round(100 * (1 - float(r["residual"]) / shared(r["delta_mm"]))) for r in pmb)
+    assert f"{below[0]}–{below[1]} % below the bond-based kernels'" in TEXT
