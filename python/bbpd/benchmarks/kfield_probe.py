@@ -3,13 +3,13 @@
 (Williams' leading term, nu = 1/3) imposed on in.center-crack's grid at one tip, every bond's
 stretch, and K_probe, the K_I at which the largest stretch reaches the kernel's s0.
 
-    tools/python -m bbpd.benchmarks.kfield_probe      # results/kfield_probe.csv, in seconds
+    tools/python -m bbpd.benchmarks.kfield_probe    # results/kfield_probe.csv, in seconds
 
 The grid as in.center-crack's: atoms at ((i + 1/2) Delta, (j + 1/2) Delta) from the tip, the
 crack along y = 0, x <= 0, a bond cut if it crosses it at x <= 0 (fix bbpd/notch: ends included),
-families |xi| < delta + Delta/2; s0 as the plugin calibrates it (tests/lammps/test_kfield_s0.py
-reads it back). K_probe/K_Ic is sigma_c/sigma_LEFM of a plate whose atoms followed LEFM's field
-to the tip; the measured value over it (the residual) is what the peridynamic body adds.
+families |xi| < delta + Delta/2 (LPS, pmb: <= delta; the largest stretch's bond is sqrt(5) Delta),
+s0 as the plugin's (tests/lammps/test_kfield_s0.py reads it back). K_probe/K_Ic is sigma_c/
+sigma_LEFM of a plate that followed LEFM's field to the tip; measured/probe is the body's own.
 """
 import argparse
 import csv
@@ -129,11 +129,11 @@ def verdict(table):
     for kernel in dict.fromkeys(r["kernel"] for r in got):
         runs = sorted((r for r in got if r["kernel"] == kernel), key=lambda r: -r["delta_mm"])
         r, errs = runs[-1], [abs(q["measured"] - 1.0) for q in runs]
-        predicted = r["probe"] * shared[r["delta_mm"]]
+        p = r["probe"] * shared[r["delta_mm"]]
         out[kernel] = {"delta_mm": r["delta_mm"], "measured": r["measured"], "probe": r["probe"],
                        "residual": r["residual"], "within": errs[-1] <= TOL,
                        "miss": max(0.0, errs[-1] - TOL), "falls": all(np.diff(errs) < 0),
-                       "predicted": predicted, "explained": abs(r["measured"] / predicted - 1.0) <= TOL_EXPLAIN}
+                       "predicted": p, "explained": abs(r["measured"] / p - 1.0) <= TOL_EXPLAIN}
     return out
 
 
