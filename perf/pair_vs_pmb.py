@@ -13,12 +13,15 @@ constant-kernel c0, the same force law up to the partial-volume weights):
            from the reference configuration (atoms at rest on the lattice)
   cylinder examples/peri-pmb-dropin: LAMMPS's peri/pmb example and its bbpd/pmb port,
            1000 steps
+  plate3d  issue 56's 3D glass plate, ours only: 400 x 160 x 8 atoms (512,000), spacing
+           0.25 mm, delta 1 mm, bbpd/constant 3d, a notch through the thickness and two no-fail
+           bands, 20 steps (--steps / 10) at rest
   memory   the maximum resident set of our block at 41^3 and 51^3 atoms (2 steps each):
            the bytes per bond at the margin, (RSS_51 - RSS_41) / (bonds_51 - bonds_41)
   (and plate variants: contact, kernels, compact storage, 2 MPI ranks)
 
 Usage (from the repository root): tools/python perf/pair_vs_pmb.py [--steps 200] [--nprocs 1]
-    [--reps 3] [--scenes plate,block,bench,cylinder,memory] [--csv perf/results/NAME.csv]
+    [--reps 3] [--scenes plate,block,bench,cylinder,plate3d,memory] [--csv perf/results/NAME.csv]
     [--simd auto|portable|avx2|avx512]
 Prints the CPU (model, family/model numbers) and the paths of the bond loops the plugin build
 holds, then per scene ms/step of the whole loop and of the pair computation, undirected bond
@@ -119,6 +122,35 @@ timestep {dt}
 thermo {steps}
 run {steps}
 """
+# issue 56's plate (see the module doc): its own material, ours only (peri/pmb would need
+# hours for its 77 million bonds)
+PLATE3D = """
+plugin load bbpdplugin.so
+units si
+boundary s s s
+atom_style peri
+atom_modify map array
+lattice sc {dx} origin 0.5 0.5 0.5
+region plate block 0 400 0 160 0 8
+create_box 2 plate
+create_atoms 1 region plate
+region nofail block INF INF $(4*{dx}) $(156*{dx}) INF INF side out units box
+set region nofail type 2
+set group all density 2440
+set group all volume {vol}
+pair_style bbpd/constant 3d {simd}
+pair_coeff 1 1 72e9 3.8 1.0e-3
+pair_coeff 1 2 72e9 none 1.0e-3
+pair_coeff 2 2 72e9 none 1.0e-3
+neighbor {dx} bin
+fix notch all bbpd/notch rectangle -1 0.02 -1 $(1+100*{dx}) 0 0 0 0 3
+fix 1 all nve
+timestep 2e-8
+thermo {steps}
+run {steps}
+"""
+PLATE3D_DIMS = {"dx": 0.25e-3, "vol": 0.25e-3 ** 3}
+
 BENCH_DX = 0.5e-3
 BENCH_DELTA_PMB = 0.0015001
 BENCH_DIMS = {"nx": 16, "ny": 16, "nz": 16, "dx": BENCH_DX, "vol": BENCH_DX ** 3,
@@ -214,10 +246,12 @@ def parse(out, steps):
         bonds = int(m.group(1)) // 2 if m else None
     c0 = re.search(r"micromodulus c0 = ([0-9.eE+-]+)", out)
     mem = re.search(r"bond storage: ([0-9.]+) bytes per bond", out)
+    total = re.search(r"memory of the bonds and the pair style: .* ([0-9.]+) per bond", out)
     path = re.search(r"bond loop: (\w+) path", out)
     return {"path": path.group(1) if path else "","ms_per_step": 1e3 * pair / steps, "loop_ms_per_step": 1e3 * loop / steps, "bonds": bonds,
             "c0": float(c0.group(1)) if c0 else None,
-            "bytes_per_bond": float(mem.group(1)) if mem else None}
+            "bytes_per_bond": float(mem.group(1)) if mem else None,
+            "memory_per_bond": float(total.group(1)) if total else None}
 
 
 def run_once(template, pair, steps, nprocs, dims, workdir):
@@ -291,7 +325,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--steps", type=int, default=200)
     ap.add_argument("--nprocs", type=int, default=1)
-    ap.add_argument("--scenes", default="plate,contact,kernels,compact,block,bench,cylinder,memory,mpi")
+    ap.add_argument("--scenes", default="plate,contact,kernels,compact,block,bench,cylinder,plate3d,memory,mpi")
     ap.add_argument("--reps", type=int, default=REPS, help="repetitions of each run (minimum kept)")
     ap.add_argument("--csv", help="also write the rows to this CSV file")
     ap.add_argument("--simd", choices=["auto", "portable", "avx2", "avx512"],
@@ -347,6 +381,10 @@ def main():
             r_ours, r_pmb = run_pair(None, CYLINDER / "in.bbpd.pmb", CYLINDER / "in.peri.pmb",
                                      CYLINDER_STEPS, args.nprocs, {}, tmp / "y")
             rows.append(("cylinder (peri-pmb-dropin), bbpd/pmb", r_ours, r_pmb))
+        if "plate3d" in scenes:
+            dims = dict(PLATE3D_DIMS, simd=f"simd {SIMD}" if SIMD else "")
+            r, _ = run_pair(PLATE3D, "", None, max(args.steps // 10, 1), args.nprocs, dims, tmp / "p3")
+            rows.append(("plate 3D 512,000 atoms, notch, no-fail bands", r, None))
         if "memory" in scenes:
             memory = memory_margin(tmp / "mem")
     load_after = load_average()
@@ -392,7 +430,7 @@ def write_csv(path, rows, memory, machine):
     path.parent.mkdir(parents=True, exist_ok=True)
     command = "tools/python perf/pair_vs_pmb.py " + " ".join(shlex.quote(a) for a in sys.argv[1:])
     fields = ["scene", "ours_loop_ms", "ours_pair_ms", "pmb_loop_ms", "pmb_pair_ms", "ratio",
-              "bonds", "bytes_per_bond", "max_rss_mb", "path", "cpu", "family", "model", "isa", "reps",
+              "bonds", "bytes_per_bond", "memory_per_bond", "ns_per_bond_end", "max_rss_mb", "path", "cpu", "family", "model", "isa", "reps",
               "load_before", "load_after", "date", "command"]
     date = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     with open(path, "w", newline="") as f:
@@ -406,6 +444,8 @@ def write_csv(path, rows, memory, machine):
                             pmb_pair_ms=f"{b['ms_per_step']:.4f}" if b else "",
                             ratio=f"{b['loop_ms_per_step'] / a['loop_ms_per_step']:.2f}" if b else "",
                             bonds=a["bonds"], bytes_per_bond=a["bytes_per_bond"] or "",
+                            memory_per_bond=a["memory_per_bond"] or "",
+                            ns_per_bond_end=f"{1e6 * a['ms_per_step'] / (2 * a['bonds']):.3f}" if a["bonds"] else "",
                             path=a["path"]))
         if memory:
             runs, margin = memory

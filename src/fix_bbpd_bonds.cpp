@@ -27,6 +27,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <utility>
@@ -275,21 +276,37 @@ void FixBBPDBonds::build_families()
 
   // the list is half (each pair of local atoms once, a local-ghost pair at its local atom): a
   // listed pair joins the family of each local end
-  // counted first, so that every row is allocated once at its length
-  auto for_each_pair = [&](auto &&add) {
+  // counted first, so that every row is allocated once at its length; the count marks each
+  // listed pair that is bonded (a bit per pair), so that the fill reads no position again
+  std::vector<std::uint64_t> bonded;
+  grow_arrays(atom->nmax);
+  for (int i = 0; i < nlocal; i++) npartner[i] = 0;
+  {
+    std::size_t e = 0;
     for (int ii = 0; ii < list->inum; ii++) {
       const int i = list->ilist[ii];
-      for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      bonded.resize((e + list->numneigh[i]) / 64 + 1, 0);
+      for (int jj = 0; jj < list->numneigh[i]; jj++, e++) {
         const int j = list->firstneigh[i][jj] & NEIGHMASK;
         if (!in_family(i, j)) continue;
+        bonded[e / 64] |= std::uint64_t(1) << (e % 64);
+        npartner[i]++;
+        if (j < nlocal) npartner[j]++;
+      }
+    }
+  }
+  auto for_each_pair = [&](auto &&add) {
+    std::size_t e = 0;
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      for (int jj = 0; jj < list->numneigh[i]; jj++, e++) {
+        if (!(bonded[e / 64] >> (e % 64) & 1)) continue;
+        const int j = list->firstneigh[i][jj] & NEIGHMASK;
         add(i, j);
         if (j < nlocal) add(j, i);
       }
     }
   };
-  grow_arrays(atom->nmax);
-  for (int i = 0; i < nlocal; i++) npartner[i] = 0;
-  for_each_pair([&](int i, int) { npartner[i]++; });
   int mymax = 0;
   std::size_t total = 0;
   for (int i = 0; i < nlocal; i++) {
@@ -304,6 +321,7 @@ void FixBBPDBonds::build_families()
   }
   // local or ghost indices until the families are sorted below, then tags
   for_each_pair([&](int i, int j) { partner[i][npartner[i]++] = j; });
+  std::vector<std::uint64_t>().swap(bonded);
   MPI_Allreduce(&mymax, &maxpartner, 1, MPI_INT, MPI_MAX, world);
   maxpartner = MAX(maxpartner, 1);
   set_maxexchange();
@@ -452,7 +470,7 @@ void FixBBPDBonds::refresh_cache()
   // partner of the same type and volume from an atom of the same type has the same coefficient
   // and class (compared by their bits), found without the bond law or the class table's hash
   struct Seen {
-    double xi, vj, coef;
+    double xi, vj, coef, volume;
     int jtype, cls;
   };
   std::vector<Seen> prev, cur;
@@ -461,6 +479,7 @@ void FixBBPDBonds::refresh_cache()
   for (int i = 0; i < nlocal; i++) {
     int m = bond_start[i];
     cur.clear();
+    double volume = 0.0;    // intact_volume(i), summed as it does (fast storage)
     bool fits = bdelta != nullptr;
     row.clear();
     for (int k = 0; k < npartner[i]; k++) {
@@ -493,8 +512,10 @@ void FixBBPDBonds::refresh_cache()
         } else {
           const double coef = law.coefficient(type[i], type[j], xi, vfrac[j]);
           store_bond_values(m, xi, coef);
-          cur.push_back({xi, vfrac[j], coef, type[j], bclass ? (int) bclass[m] : -1});
+          cur.push_back({xi, vfrac[j], coef, law.partner_volume(type[i], type[j], xi, vfrac[j]),
+                         type[j], bclass ? (int) bclass[m] : -1});
         }
+        volume += cur.back().volume;
       }
       m++;
     }
@@ -513,7 +534,7 @@ void FixBBPDBonds::refresh_cache()
       std::copy(row.begin(), row.end(), bj + nbj);
       nbj += nbond[i];
     }
-    vintact[i] = intact_volume(i);
+    vintact[i] = compact ? intact_volume(i) : volume;
   }
   nindex_ends = bdelta ? nbj : n;
   // an end of an index row costs 6 bytes beside offsets (its unused offset too), 4 in a rank of
