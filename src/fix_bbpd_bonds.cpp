@@ -51,7 +51,7 @@ FixBBPDBonds::FixBBPDBonds(LAMMPS *lmp, int narg, char **arg) :
     bxi0(nullptr),
     bcoef(nullptr),
     vintact(nullptr), uniform_type(0), uniform_vfrac(0.0), first(1),
-    nlocal_cache(0), nbond_cache(0), list(nullptr), have_rules(false), offsets_allowed(false),
+    nlocal_cache(0), nbond_cache(0), list(nullptr), have_rules(false),
     extent0(0.0), need_raw(0), nmax_raw(0), xraw(nullptr), generation(0), xi0_min(0.0),
     nbj_cache(0), nindex_ends(0)
 {
@@ -428,15 +428,12 @@ void FixBBPDBonds::refresh_cache()
     free_partners();
     free_bond_values();
   }
-  // offsets unless the pair style's loops want indices; a row with a partner out of reach of an
-  // offset keeps indices (in bj, from jstart[i]), decided again at every refresh
-  if (offsets_allowed && !bdelta) {
+  // offsets; a row with a partner out of reach of an offset keeps indices (in bj, from
+  // jstart[i]), decided again at every refresh (as is a rank of indices alone)
+  if (!bdelta) {
     free_partners();
     memory->create(bdelta, nbond_cache + LANES_PAD, "bbpd/bonds:bdelta");
     for (int m = nbond_cache; m < nbond_cache + LANES_PAD; m++) bdelta[m] = 0;
-  } else if (!offsets_allowed && (bdelta || !bj)) {
-    free_partners();
-    reserve_indices(nbond_cache);
   }
   if (compact) free_bond_values();
   else if (!bclass && !bxi0) {

@@ -94,13 +94,12 @@ class FixBBPDBonds : public Fix {
   int maxsize_restart() override;
 
   // the pair style, at every init after its calibration and before the fix's own init: the
-  // bond law (calibrated values, copied), the storage policy, whether its loops read partner
-  // offsets (bdelta) and the run limits (again whenever a limit changes)
-  void set_rules(const BBPD::BondLaw &l, BBPD::BondStorage s, bool offsets)
+  // bond law (calibrated values, copied), the storage policy and the run limits (again whenever
+  // a limit changes)
+  void set_rules(const BBPD::BondLaw &l, BBPD::BondStorage s)
   {
     law = l;
     policy = s;
-    offsets_allowed = offsets;
     have_rules = true;
     coef_epoch = next_coef_epoch();    // coefficients recomputed with the old law are stale
   }
@@ -220,7 +219,6 @@ class FixBBPDBonds : public Fix {
   BBPD::BondLaw law;
   bool have_rules;
   BBPD::BondStorage policy;
-  bool offsets_allowed;
   BBPD::RunLimits limits;
   double extent0;    // size of the body when the families were built (in restart files)
   int need_raw;       // periodic box with fracture: ghosts carry their owner's position

@@ -381,9 +381,7 @@ void PairBBPD::init_style()
   law.micromodulus = BBPD::TypePairTable(atom->ntypes, micromodulus);
   law.horizon = BBPD::TypePairTable(atom->ntypes, horizon);
   law.bondless = BBPD::TypePairTable(atom->ntypes, bondless);
-  // the Silling-Askari loop (pair_bbpd_silling_askari.cpp) reads partner indices, the others
-  // offsets too
-  bonds->set_rules(law, storage, !rules.silling_askari);
+  bonds->set_rules(law, storage);
   send_run_limits();
 }
 
