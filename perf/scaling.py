@@ -10,16 +10,21 @@ should stay flat if the cost is linear in the number of bonds; and the bytes per
 bonds and the pair style from the setup report.
 
 Usage (from the repository root): tools/python perf/scaling.py [--dim 2|3] [--sizes 1e4,1e5,1e6]
-    [--ms 3,5,8] [--steps 20] [--nprocs 1]
+    [--ms 3,5,8] [--steps 20] [--nprocs 1] [--csv perf/results/NAME.csv]
+--csv also writes the rows with the CPU, the load average before and after and the command.
 """
 import argparse
+import csv
 import re
+import shlex
+import sys
 import tempfile
 import time
 from math import sqrt
 from pathlib import Path
 
 from bbpd.runner import run_lammps
+from pair_vs_pmb import build_isa, cpu_model, cpu_numbers, load_average
 
 SCRIPT = """
 plugin load bbpdplugin.so
@@ -91,7 +96,9 @@ def main():
     ap.add_argument("--ms", help="horizon ratios (default 3,5,8; 3D 4)")
     ap.add_argument("--steps", type=int, default=20)
     ap.add_argument("--nprocs", type=int, default=1)
+    ap.add_argument("--csv", help="also write the rows to this CSV file")
     args = ap.parse_args()
+    rows, load_before = [], load_average()
     sizes = args.sizes or ("1e4,1e5,1e6" if args.dim == 2 else "1e5,3e5,1e6")
     ms = args.ms or ("3,5,8" if args.dim == 2 else "4")
     print(f"{'N atoms':>9s} {'m':>3s} {'bonds':>11s} {'ms/step':>9s} {'ns/bond-end':>12s} "
@@ -119,6 +126,21 @@ def main():
                 print(f"{atoms:9d} {m:3d} {bonds:11d} {ms_step:9.3f} "
                       f"{1e6 * ms_step / (2 * bonds):12.3f} {wall_s:8.2f} {1e9 * wall_s / bonds:14.1f} "
                       f"{mem:7.1f}", flush=True)
+                rows.append({"dim": args.dim, "atoms": atoms, "m": m, "bonds": bonds,
+                             "nprocs": args.nprocs, "pair_ms_per_step": f"{ms_step:.3f}",
+                             "ns_per_bond_end": f"{1e6 * ms_step / (2 * bonds):.3f}",
+                             "setup_s": f"{wall_s:.2f}", "memory_per_bond": mem})
+    if args.csv:
+        family, model = cpu_numbers()
+        common = {"cpu": cpu_model(), "family": family, "model": model, "isa": build_isa(),
+                  "load_before": load_before, "load_after": load_average(),
+                  "command": "tools/python perf/scaling.py " + " ".join(shlex.quote(a) for a in sys.argv[1:])}
+        with open(args.csv, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(rows[0]) + list(common))
+            w.writeheader()
+            for r in rows:
+                w.writerow(dict(r, **common))
+        print(f"written: {args.csv}")
 
 
 if __name__ == "__main__":
