@@ -13,7 +13,7 @@ constant-kernel c0, the same force law up to the partial-volume weights):
            from the reference configuration (atoms at rest on the lattice)
   cylinder examples/peri-pmb-dropin: LAMMPS's peri/pmb example and its bbpd/pmb port,
            1000 steps
-  plate3d  issue 56's 3D glass plate, ours only: 400 x 160 x 8 atoms (512,000), spacing
+  plate3d  a large 3D glass plate, ours only: 400 x 160 x 8 atoms (512,000), spacing
            0.25 mm, delta 1 mm, bbpd/constant 3d, a notch through the thickness and two no-fail
            bands, 20 steps (--steps / 10) at rest
   memory   the maximum resident set of our block at 41^3 and 51^3 atoms (2 steps each):
@@ -122,7 +122,7 @@ timestep {dt}
 thermo {steps}
 run {steps}
 """
-# issue 56's plate (see the module doc): its own material, ours only (peri/pmb would need
+# the large 3D plate (see the module doc): its own material, ours only (peri/pmb would need
 # hours for its 77 million bonds)
 PLATE3D = """
 plugin load bbpdplugin.so

@@ -3,7 +3,7 @@
 """Scaling of bbpd/constant with the number of atoms N and the horizon ratio m = delta/dx.
 
 2D plane-stress plates of N = 1e4, 1e5, 1e6 atoms for m = 3, 5, 8, elastic, a few steps; with
---dim 3, 3D glass plates eight atoms thick (the plate of issue 56: spacing 0.25 mm, 2.5 : 1 in
+--dim 3, 3D glass plates eight atoms thick (the plate3d scene of pair_vs_pmb.py: spacing 0.25 mm, 2.5 : 1 in
 plane) of N = 1e5 to 1e6 atoms. Prints the pair time per step, the time per directed bond
 evaluation (should not grow with N or m), the setup time (bond families + caches) per bond: all
 should stay flat if the cost is linear in the number of bonds; and the bytes per bond of the
