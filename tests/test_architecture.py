@@ -504,9 +504,8 @@ PYTHON_LAYERS = [
     {"bbpd.report.work_precision"},
     {"bbpd.report.document", "bbpd.report.make", "bbpd.report.__main__"},
     {"bbpd.claims", "bbpd.claims.__main__", "bbpd.claims.blocks", "bbpd.claims.checks",
-     "bbpd.claims.data", "bbpd.claims.kw", "bbpd.claims.mode1",
-     "bbpd.claims.mode2", "bbpd.claims.readme", "bbpd.claims.text", "bbpd.claims.times",
-     "bbpd.claims.crack", "bbpd.claims.perf"},
+     "bbpd.claims.data", "bbpd.claims.paper", "bbpd.claims.times", "bbpd.claims.crack",
+     "bbpd.claims.perf"},
 ]
 
 
