@@ -499,7 +499,7 @@ PYTHON_LAYERS = [
      "bbpd.benchmarks.center_crack_growth", "bbpd.benchmarks.quasi_static",
      "bbpd.benchmarks.dcb_growth", "bbpd.benchmarks.kfield_probe"},
     {"bbpd.report", "bbpd.report.runs", "bbpd.report.tables", "bbpd.report.figures",
-     "bbpd.report.prose", "bbpd.report.sections", "bbpd.report.results",
+     "bbpd.report.sections", "bbpd.report.results",
      "bbpd.report.work_precision_figure"},
     {"bbpd.report.work_precision"},
     {"bbpd.report.document", "bbpd.report.make", "bbpd.report.__main__"},

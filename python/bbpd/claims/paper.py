@@ -6,7 +6,6 @@ from bbpd import csvfile
 from bbpd.benchmarks import kalthoff_winkler as kw_bench
 from bbpd.benchmarks import mode1 as mode1_bench
 from bbpd.benchmarks import mode1_lps
-from bbpd.benchmarks import mode2 as mode2_bench
 from bbpd.kernels import KERNELS
 from bbpd.markdown import table as md_table
 

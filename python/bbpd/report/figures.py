@@ -7,7 +7,6 @@ from pathlib import Path
 import numpy as np
 
 from bbpd import snapshots
-from bbpd.benchmarks import dispersion as disp
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import mode1, mode2
 from bbpd.kernels import COLORS, KERNELS
@@ -26,15 +25,6 @@ def _figure(make, path, notes):
         return [Path(path).name]
     except Exception as exc:  # the report must still be written
         notes.append(f"figure {Path(path).name} not made: {type(exc).__name__}: {exc}")
-        return []
-
-
-def dispersion_figures(runs, paper, cv, figdir, notes):
-    """Figs. 4-6 (dispersion.plot_figures): measured points on the analytic curves."""
-    try:
-        return [p.name for p in disp.plot_figures(runs, paper, cv, figdir)]
-    except Exception as exc:  # the report must still be written
-        notes.append(f"dispersion figures not made: {type(exc).__name__}: {exc}")
         return []
 
 
