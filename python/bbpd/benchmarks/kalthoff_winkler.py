@@ -369,15 +369,20 @@ def study_measures(snaps, traj, g):
 
 # --------------------------------------------------------------------------- running
 
+def variables(kernel, dx, **extra):
+    """The input script's -var arguments: floats written exactly, other values as they are,
+    None left out"""
+    return {k: repr(float(v)) if isinstance(v, float) else str(v)
+            for k, v in dict(kernel=kernel, dx=float(dx), **extra).items() if v is not None}
+
+
 def run(kernel, dx, workdir, nprocs=2, tend=None, reuse=False, images=False):
     """Run the example in workdir; return analyse(workdir) with the run's wall time (s).
     reuse: analyse the outputs of an earlier finished run in workdir instead of running.
     images: the input's damage pictures as well, listed as snapshots [(t in us, path)]."""
     workdir = Path(workdir)
-    variables = {"kernel": kernel, "dx": repr(float(dx)), "images": "yes" if images else "no"}
-    if tend is not None:
-        variables["tend"] = repr(float(tend))
-    note = run_noted(EXAMPLE, workdir, variables, {"kernel": kernel, "dx": dx}, nprocs, reuse)
+    note = run_noted(EXAMPLE, workdir, variables(kernel, dx, images="yes" if images else "no",
+                                                 tend=tend), {"kernel": kernel, "dx": dx}, nprocs, reuse)
     res = analyse(workdir)
     res["wall_s"] = note["wall_s"]
     if images:

@@ -38,12 +38,9 @@ COLUMNS = ("setup", "kernel", "dx_mm", "m", "delta_mm", "horizons_through", "ato
            "loop_s", "memory_MB", "nprocs")
 
 
-def case_vars(dx, m=M, kernel=KERNEL, setup="3d"):
-    out = {"kernel": kernel, "dx": repr(float(dx)), "m": repr(float(m)), "loading": "projectile",
-           "tend": repr(TEND)}
-    if setup == "3d":
-        out["monitor"] = str(MONITOR)
-    return out
+def case_vars(dx, m=M, setup="3d"):
+    return kw.variables(KERNEL, dx, m=float(m), loading="projectile", tend=TEND,
+                        monitor=MONITOR if setup == "3d" else None)
 
 
 def log_figures(text):
@@ -108,8 +105,7 @@ def run_case(workdir, setup, dx, m=M, reuse=False, nprocs=None):
     ranks = (NPROCS if nprocs is None else nprocs) if setup == "3d" else 1
     if not (reuse and (wd / "log.lammps").is_file()):
         script = projectile.EXAMPLE_3D if setup == "3d" else kw.EXAMPLE
-        run_lammps(str(script), wd, nprocs=ranks, vars=case_vars(dx, m, setup=setup),
-                   timeout=TIMEOUT_S)
+        run_lammps(str(script), wd, nprocs=ranks, vars=case_vars(dx, m, setup), timeout=TIMEOUT_S)
     row = measure(wd, setup, dx, m)
     row["nprocs"] = readers.loop_time((wd / "log.lammps").read_text())[1] or ranks
     return row

@@ -51,9 +51,7 @@ COLUMNS = ("deck", "kernel", "dx_mm", "v0", "rho", "Gc", "first_bond_us", "band_
 
 
 def case_vars(deck, kernel, dx):
-    out = {"kernel": kernel, "dx": repr(float(dx)), "tend": repr(study.TEND)}
-    out.update({k: v if isinstance(v, str) else repr(float(v)) for k, v in DECKS[deck][1].items()})
-    return out
+    return kw.variables(kernel, dx, tend=study.TEND, **DECKS[deck][1])
 
 
 def run_case(workdir, deck, kernel, dx, nprocs=1, reuse=False):
@@ -111,7 +109,7 @@ def comparison(rows):
         if a and b and a[f"{d}_deg"] is not None and b[f"{d}_deg"] is not None:
             return b[f"{d}_deg"], b[f"{d}_deg"] - a[f"{d}_deg"]
         return None
-    out = dict(fine=fine, coarse=coarse, deck={}, grid={}, changes={}, hits=[])
+    out = dict(fine=fine, coarse=coarse, deck={}, grid={}, changes={})
     for k in KERNELS:
         for d in kw.ANGLE_DEFS:
             if (v := moved("paper", "standard", k, fine, d)) is not None:
@@ -125,11 +123,8 @@ def comparison(rows):
             if got:
                 out["changes"][deck] = (dx, got)
                 break
-    for r in sorted(rows, key=_order):
-        defs = [d for d in kw.ANGLE_DEFS if r[f"{d}_deg"] is not None
-                and abs(r[f"{d}_deg"] - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
-        if defs and r["crack_stops"].startswith("edge"):
-            out["hits"].append((r["deck"], r["kernel"], r["dx_mm"], defs))
+    out["hits"] = [(r["deck"], r["kernel"], r["dx_mm"], defs) for r in sorted(rows, key=_order)
+                   if (defs := projectile.at_target(r))]
     return out
 
 

@@ -141,10 +141,8 @@ def run_case(workdir, kernel, dx, loading, gc, nprocs=1, tend=TEND, lp=None, reu
              dim=2):
     """Run one case in workdir (unless reuse and it has finished) and measure it; dim = 3
     runs in.kalthoff_winkler_3d."""
-    variables = {"kernel": kernel, "dx": repr(float(dx)), "tend": repr(float(tend)),
-                 "loading": loading, "Gc": repr(float(gc))}
-    if lp is not None:
-        variables["Lp"] = repr(float(lp))
+    variables = kw.variables(kernel, dx, tend=float(tend), loading=loading, Gc=float(gc),
+                             Lp=None if lp is None else float(lp))
     case = run_noted(kw.EXAMPLE if dim == 2 else EXAMPLE_3D, workdir, variables,
                      {"kernel": kernel, "dx": dx, "loading": loading, "Gc": gc}, nprocs, reuse)
     res = analyse(workdir)

@@ -53,17 +53,10 @@ STUDY_KERNEL_DX = [(k, 1.0e-3) for k in kw.KERNELS] + [("gaussian", 0.5e-3)]
 
 # ---------------------------------------------------------------------------- running
 
-def case_vars(case, kernel, dx, tend=TEND):
-    """The -var arguments of one study run."""
-    out = {"kernel": kernel, "dx": repr(float(dx)), "tend": repr(float(tend))}
-    for k, v in CASES[case][1].items():
-        out[k] = repr(float(dx)) if v == "dx" else repr(float(v))
-    return out
-
-
 def run_case(workdir, kernel, dx, case, nprocs=1, tend=TEND):
     """Run one loading case in workdir and measure it (the job of the study and the report)."""
-    note = run_noted(kw.EXAMPLE, workdir, case_vars(case, kernel, dx, tend),
+    extra = {k: float(dx) if v == "dx" else float(v) for k, v in CASES[case][1].items()}
+    note = run_noted(kw.EXAMPLE, workdir, kw.variables(kernel, dx, tend=tend, **extra),
                      {"case": case, "kernel": kernel, "dx": dx}, nprocs)
     res = kw.analyse(workdir)
     res.update(case=case, wall_s=note["wall_s"])
