@@ -111,11 +111,11 @@ def run_case(workdir, setup, dx, m=M, reuse=False, nprocs=None):
     return row
 
 
-def table(rows, command=None):
+def table(rows):
     def faces(r):
         return ("-" if r["fit_face_lo_deg"] is None else
                 f"{r['fit_face_lo_deg']:.1f} / {r['fit_face_hi_deg']:.1f}")
-    out = md_table(
+    return md_table(
         ("setup", "dx (mm)", "m", "delta (mm)", "horizons through 9 mm", "atoms", "bonds", "steps",
          "first bond (us)", "damage band (us)", "initial (deg)", "fit, mid-plane (deg)",
          "fit, faces (deg)", "chord, mid-plane / faces (deg)", "crack length (mm)",
@@ -128,7 +128,6 @@ def table(rows, command=None):
           _f(r["length_end_mm"], ".0f"), r["crack_stops"], _f(r["loop_s"], ".0f"),
           _f(r["memory_MB"], ".0f"), f"{r['nprocs']:g}"]
          for r in sorted(rows, key=lambda r: (-r["dx_mm"], r["setup"]))))
-    return out if command is None else f"Made by `{command}`.\n\n" + out
 
 
 def against_2d(rows):

@@ -166,11 +166,6 @@ def read_csv(path=CSV):
     return [[r[c] for c in TABLE_HEADER] for r in rows], csvfile.provenance(path)
 
 
-def readme_table(path=CSV):
-    rows, made = read_csv(path)
-    return markdown.made_by([ln.partition(": ")[2] for ln in made]) + "\n\n" + md_table(rows)
-
-
 def cases_table():
     rows = [[name, desc, f"{v.get('v0', 32.0):g}", f"{v.get('tramp', 0.0) * 1e6:g}",
              f"{v['thold'] * 1e6:.1f}" if "thold" in v else "held",

@@ -45,19 +45,18 @@ def _bond(bond_rows, kernel, dx):
     return None
 
 
-def table(rows, bond_rows, command=None):
+def table(rows, bond_rows):
     def bond(r):
         b = _bond(bond_rows, r["kernel"], r["dx_m"])
         return ([f"{b['consistent_peak']:.2f} / {b['consistent_l2']:.2f}",
                  f"{b['j_peak']:.2f} / {b['j_l2']:.2f}"] if b else ["-", "-"])
-    out = md_table(
+    return md_table(
         ("kernel", "dx (m)", "LPS nu = 0.3, plane strain: DSIF peak / L2 (%)",
          "J-integral peak / L2 (%)", "bond-based plane stress (nu = 1/3), consistent: DSIF peak / "
          "L2 (%)", "J-integral peak / L2 (%)", "LPS loop (s)"),
         ([r["kernel"], f"{r['dx_m']:g}", f"{r['peak_pct']:.2f} / {r['l2_pct']:.2f}",
           f"{r['j_peak_pct']:.2f} / {r['j_l2_pct']:.2f}", *bond(r), f"{r['loop_s']:.1f}"]
          for r in sorted(rows, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx_m"]))))
-    return f"Made by `{command}`.\n\n" + out if command else out
 
 
 def main(argv=None):

@@ -12,7 +12,6 @@ from bbpd import crack_motion, crack_tip, csvfile, freund, plots, readers
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import mode1
 from bbpd.kernels import COLORS, KERNELS
-from bbpd.markdown import made_by
 from bbpd.provenance import cpu
 from bbpd.runner import run_or_reuse
 from bbpd.benchmarks import cli
@@ -189,18 +188,14 @@ def cpu_markdown(rows):
     return csvfile.loop_times_note(rows, "cpu", lambda r: f"{r['kernel']} at dx = {r['dx']:g} m")
 
 
-def table_markdown(rows, command=None):
-    """The README table of a results CSV (rows: dicts with the CSV's columns); command: the
-    command that made it, or the CSV's provenance lines."""
+def table_markdown(rows):
+    """The README table of a results CSV (rows: dicts with the CSV's columns)."""
     head = ("| kernel | dx (m) | atoms | first bond: t_i (ms), error (%), J/G_c | "
             "tip moved: t_i (ms), error (%), J/G_c | extension at 3 t_c (m) | "
             "L2 of l(t), K_Ic form (%) | L2 of l(t), energy form (%) | v/c_R at "
             + ", ".join(f"{s:g}" for s in SPEED_TIMES)
             + " t_c | crack half-width at 3 t_c (delta) | loop time (s) |")
-    if isinstance(command, str):
-        command = [f"made by: {command}"]
-    lines = ([made_by([ln.partition(": ")[2] for ln in command]), ""] if command else []) + [
-        head, "|" + "---|" * (head.count("|") - 1)]
+    lines = [head, "|" + "---|" * (head.count("|") - 1)]
     prob = problem(rows[0]["Gc"]) if rows else problem()
     for r in rows:
         speeds = ", ".join(f"{r[f'v_{s:g}tc_over_cR']:.2f}" for s in SPEED_TIMES)

@@ -7,6 +7,8 @@ from bbpd.benchmarks import kalthoff_winkler as kw_bench
 from bbpd.benchmarks import mode1 as mode1_bench
 from bbpd.benchmarks import mode1_lps
 from bbpd.kernels import KERNELS
+from bbpd.jobs import ROOT
+from bbpd.markdown import made_by
 from bbpd.markdown import table as md_table
 
 MODE1, MODE2, KW, TIPS = "mode1", "mode2", "kalthoff_winkler", "mode1_tips"
@@ -61,6 +63,21 @@ def _three(values, spec=".2f"):
 
 # --------------------------------------------------------------------------- tables
 
+MOST_COMMANDS = 20    # a CSV written by more commands names them in its header only
+
+
+def made(path, render, timing=False):
+    """A block: render(data) under the commands of the CSV at path's provenance lines ('made
+    by: X', 'rows added by: Y') and, with timing, its timing line"""
+    commands = [ln.split(": ", 1)[1] for ln in csvfile.provenance(path)]
+    intro = (made_by(commands) if len(commands) <= MOST_COMMANDS else
+             f"Made by `{commands[0]}`; rows added by {len(commands) - 1} more commands, each "
+             f"named in the header of `{path.relative_to(ROOT)}`.")
+    if timing:
+        intro += f" Timing: {csvfile.comment(path, 'timing')}."
+    return lambda data: intro + "\n\n" + render(data)
+
+
 def with_run_note(table, name):
     """render(data): table(rows of the reference `name`) and the note under a table of one
     single-rank run per row"""
@@ -91,9 +108,7 @@ def tips_table(data):
     return md_table(header, rows) + f"\n\nFrom {data.source(TIPS)}."
 
 
-def lps_table(data):
-    made = [ln.split(": ", 1)[1] for ln in csvfile.provenance(mode1_lps.CSV)]
-    return mode1_lps.table(mode1_lps.read_rows(), data.rows(MODE1), made[0] if made else None)
+lps_table = made(mode1_lps.CSV, lambda data: mode1_lps.table(mode1_lps.read_rows(), data.rows(MODE1)))
 
 
 def mode2_excess(data):
