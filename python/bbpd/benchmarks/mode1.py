@@ -16,7 +16,7 @@ import numpy as np
 from bbpd import freund, metrics, readers
 from bbpd.csvfile import write_csv
 from bbpd.jobs import ROOT
-from bbpd.kernels import KERNELS
+from bbpd.kernels import COLORS, KERNELS
 from bbpd.markdown import cell
 from bbpd.markdown import table as md_table
 from bbpd.provenance import machine
@@ -237,20 +237,32 @@ def write_tips_csv(path, study, command):
                            f"machine: {machine()}"])
 
 
+RESOLUTION_COLORS = ("tab:purple", "tab:red", "tab:green", "tab:blue", "tab:brown")
+
+
 def figures(rows2, rows3, folder):
-    folder = Path(folder)
+    """Fig. 9 (the Gaussian's results by dx, rows2) and Fig. 10 (by kernel at TABLE3_DX, rows3):
+    K_I(t) against eq. 42 in both conventions; returns the paths written."""
     norm = SIGMA0 * np.sqrt(H)
     exact, t_c = reference("consistent")
     exact_p, _ = reference("paper")
-    tt = np.linspace(0.0, 3.0 * t_c, 400)
-    refs = [("eq. 42, BBPD constants", tt, exact(tt) / norm, "--", "black"),
-            ("eq. 42, nu = 0.3 (paper)", tt, exact_p(tt) / norm, "-.", "grey")]
-    for name, rows, label in (("fig9_resolutions.png", rows2, lambda k: f"dx = {k} m"),
-                              ("fig10_kernels.png", rows3, lambda k: k)):
+    tt = np.linspace(0.0, T_END, 600)
+    refs = [("eq. 42, BBPD constants (consistent)", tt * 1e3, exact(tt) / norm, "--", "black"),
+            ("eq. 42, paper's constants (nu = 0.3)", tt * 1e3, exact_p(tt) / norm, "-.", "grey")]
+    rows2 = dict(sorted(rows2.items(), reverse=True))
+    colors = {**dict(zip(rows2, RESOLUTION_COLORS * len(rows2))), **COLORS}
+    out = []
+    for name, rows, label, title in (
+            ("fig9_resolutions.png", rows2, lambda dx: f"dx = {dx:g} m",
+             "Fig. 9: Mode-I K_I(t), Gaussian kernel, m = 5, three grids"),
+            ("fig10_kernels.png", rows3, lambda k: k,
+             f"Fig. 10: Mode-I K_I(t), dx = {TABLE3_DX:g} m, m = 5, three kernels")):
         if rows:
-            plot_k(folder / name, [(label(k), r["t"], r["k_consistent"] / norm, None)
-                                   for k, r in rows.items()], refs, (0.0, 3.0 * t_c),
-                   name.split(".")[0], "t (s)", "K_I / (sigma0 sqrt(H))")
+            out.append(plot_k(Path(folder) / name, [
+                (f"{label(key)} (consistent L2 {r['consistent']['l2']:.2f} %)", r["t"] * 1e3,
+                 r["k_consistent"] / norm, colors[key]) for key, r in rows.items()],
+                refs, (0.0, 3.0 * t_c * 1e3), title, "t (ms)", r"$K_I/(\sigma_0\sqrt{H})$"))
+    return out
 
 
 def main(argv=None):

@@ -1,60 +1,29 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The report's figures (PNG beside REPORT.md): K(t) against the references, and the
 benchmark modules' own plots; a figure that fails is noted in the report, not fatal."""
-import math
 from pathlib import Path
 
 import numpy as np
 
 from bbpd import snapshots
 from bbpd.benchmarks import kalthoff_winkler as kw
-from bbpd.benchmarks import mode1, mode2
+from bbpd.benchmarks import mode2
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.plots import plot_k
 
-from .runs import MODE1_TABLE3_DX
-
-RESOLUTION_COLORS = ("tab:purple", "tab:red", "tab:green", "tab:blue", "tab:brown")
-
-
-def _figure(make, path, notes):
-    """[the name of the figure make() draws at path], or [] with a note in the report: a failure
-    does not stop it."""
+def _figures(make, what, notes):
+    """The names of the figures make() draws (it returns their paths), or [] with a note in the
+    report: a failure does not stop it."""
     try:
-        make()
-        return [Path(path).name]
+        return [Path(p).name for p in make()]
     except Exception as exc:  # the report must still be written
-        notes.append(f"figure {Path(path).name} not made: {type(exc).__name__}: {exc}")
+        notes.append(f"{what} not made: {type(exc).__name__}: {exc}")
         return []
 
 
-def mode1_figures(rows2_ok, rows3_ok, figdir, notes):
-    """Fig. 9 (Gaussian, every dx) and Fig. 10 (three kernels): K_I(t) against eq. 42."""
-    figs = []
-    norm = mode1.SIGMA0 * math.sqrt(mode1.H)
-    exact, t_c = mode1.reference("consistent")
-    exact_p, _ = mode1.reference("paper")
-    tt = np.linspace(0.0, mode1.T_END, 600)
-    refs = [("eq. 42, BBPD constants (consistent)", tt * 1e3, exact(tt) / norm, "--", "black"),
-            ("eq. 42, paper's constants (nu = 0.3)", tt * 1e3, exact_p(tt) / norm, "-.", "grey")]
-    window = (0.0, 3.0 * t_c * 1e3)
-    ylabel = r"$K_I/(\sigma_0\sqrt{H})$"
-    if rows2_ok:
-        path = figdir / "fig9_resolutions.png"
-        series = [(f"dx = {dx:g} m (consistent L2 {r['consistent']['l2']:.2f} %)", r["t"] * 1e3,
-                   r["k_consistent"] / norm, RESOLUTION_COLORS[n % len(RESOLUTION_COLORS)])
-                  for n, (dx, r) in enumerate(sorted(rows2_ok.items(), reverse=True))]
-        figs += _figure(lambda: plot_k(path, series, refs, window, "Fig. 9: Mode-I K_I(t), "
-                                       "Gaussian kernel, m = 5, three grids", "t (ms)", ylabel),
-                        path, notes)
-    if rows3_ok:
-        path = figdir / "fig10_kernels.png"
-        series = [(f"{k} (consistent L2 {r['consistent']['l2']:.2f} %)", r["t"] * 1e3,
-                   r["k_consistent"] / norm, COLORS[k]) for k, r in rows3_ok.items()]
-        figs += _figure(lambda: plot_k(path, series, refs, window, "Fig. 10: Mode-I K_I(t), "
-                                       f"dx = {MODE1_TABLE3_DX:g} m, m = 5, three kernels",
-                                       "t (ms)", ylabel), path, notes)
-    return figs
+def _figure(make, path, notes):
+    """[the name of the figure make() draws at path], or [] with a note in the report"""
+    return _figures(lambda: (make(), [path])[1], f"figure {Path(path).name}", notes)
 
 
 def mode2_figures(ok, figdir, notes):

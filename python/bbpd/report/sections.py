@@ -166,11 +166,8 @@ def dispersion_section(specs, results, figdir, notes):
     table, paper, cv = tables.dispersion_csv(runs, figdir)
     header, rows, numbers = dispersion.table(runs, table)
     text = dispersion_text(numbers, table)
-    try:    # Figs. 4-6: measured points on the analytic curves
-        figs = [p.name for p in dispersion.plot_figures(runs, paper, cv, figdir)]
-    except Exception as exc:  # the report must still be written
-        notes.append(f"dispersion figures not made: {type(exc).__name__}: {exc}")
-        figs = []
+    figs = figures._figures(lambda: dispersion.plot_figures(runs, paper, cv, figdir),
+                            "dispersion figures", notes)    # Figs. 4-6
     return _section("dispersion", _tables([("", md_table(header, rows))], specs, results), text,
                     figs)
 
@@ -179,8 +176,8 @@ def mode1_section(specs, results, figdir, notes):
     ok = tables.finished(specs, results, ("t", "k_paper", "k_consistent", "k_ii"))
     rows3_ok = {k: ok[k, MODE1_TABLE3_DX] for k in KERNELS if (k, MODE1_TABLE3_DX) in ok}
     text = mode1_text(ok, rows3_ok)
-    figs = figures.mode1_figures({dx: r for (k, dx), r in ok.items() if k == "gaussian"},
-                                 rows3_ok, figdir, notes)
+    figs = figures._figures(lambda: mode1.figures(
+        {dx: r for (k, dx), r in ok.items() if k == "gaussian"}, rows3_ok, figdir), "Figs. 9-10", notes)
     rows = [mode1.row(r) for r in ok.values()]
     table = _tables([("Table 2, Gaussian kernel", mode1.table2(rows)),
                      (f"Table 3, dx = {MODE1_TABLE3_DX:g} m", mode1.table3(rows)),
