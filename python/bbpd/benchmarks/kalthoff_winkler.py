@@ -440,6 +440,31 @@ def plot_paths(runs, path, title, fontsize=7):
     return path
 
 
+def figures(results, folder):
+    """The crack growing (the dump images of the runs that drew them, in a row), the damage map
+    of every run, the kernels' crack paths at each dx and each kernel's over its dx; returns
+    the paths written."""
+    folder = Path(folder)
+    out = []
+    for r in sorted(results, key=lambda r: (-r["dx"], KERNELS.index(r["kernel"]))):
+        tag = f"{r['kernel']}_dx{r['dx'] * 1e3:g}mm"
+        if r.get("snapshots"):
+            out.append(snapshots.draw_strip(
+                [(f"t = {t:.1f} us", p) for t, p in r["snapshots"]], folder / f"growth_{tag}.png",
+                f"Kalthoff-Winkler, {r['kernel']}, dx = {r['dx'] * 1e3:g} mm: damage from 0 "
+                "(blue) to 1 (red), LAMMPS dump image"))
+        out.append(plot_damage_map(r, folder / f"damage_{tag}.png"))
+    for dx in sorted({r["dx"] for r in results}, reverse=True):
+        same = [r for r in results if r["dx"] == dx]
+        if len(same) > 1:
+            out.append(plot_runs(same, folder / f"paths_dx{dx * 1e3:g}mm.png"))
+    for kernel in KERNELS:
+        same = sorted((r for r in results if r["kernel"] == kernel), key=lambda r: -r["dx"])
+        if len(same) > 1:
+            out.append(plot_runs(same, folder / f"paths_{kernel}_convergence.png"))
+    return out
+
+
 def plot_runs(results, path):
     """plot_paths of the kernels at one dx, or of one kernel's grids"""
     by_dx = len({r["dx"] for r in results}) > 1
@@ -493,14 +518,7 @@ def main(argv=None):
             print(f"{kernel} dx = {dx * 1e3:g} mm: initiation {fmt(res['t_init_us'], '.2f')} us, "
                   f"angle {fmt(res['angle_deg'], '.1f')} deg, speed {fmt(res['speed'], '.0f')} m/s, "
                   f"wall {res['wall_s']:.0f} s", flush=True)
-            plot_damage_map(res, figs / f"damage_{kernel}_dx{dx * 1e3:g}mm.png")
-        same = [r for r in results if r["dx"] == dx]
-        if len(same) > 1:
-            plot_runs(same, figs / f"paths_dx{dx * 1e3:g}mm.png")
-    for kernel in args.kernels:
-        same = sorted((r for r in results if r["kernel"] == kernel), key=lambda r: -r["dx"])
-        if len(same) > 1:
-            plot_runs(same, figs / f"paths_{kernel}_convergence.png")
+    figures(results, figs)
     # the table covers every finished run in --work, also those of earlier invocations
     rows = [row(json.loads(p.read_text())) for p in sorted(work.glob("*/results.json"))]
     print(table(rows))

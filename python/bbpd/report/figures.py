@@ -5,11 +5,10 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import snapshots
-from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import mode2
-from bbpd.kernels import COLORS, KERNELS
+from bbpd.kernels import COLORS
 from bbpd.plots import plot_k
+
 
 def _figures(make, what, notes):
     """The names of the figures make() draws (it returns their paths), or [] with a note in the
@@ -48,41 +47,4 @@ def mode2_figures(ok, figdir, notes):
                 figs += _figure(lambda: plot_k(path, series, refs, window,
                                                title.format(f"{dx * 1e3:g}"), "t (us)",
                                                r"$K_{II}/(\tau\sqrt{\pi a})$"), path, notes)
-    return figs
-
-
-def growth_name(kernel, dx):
-    return f"growth_{kernel}_dx{dx * 1e3:g}mm.png"
-
-
-def kw_growth_figures(ok, figdir, notes):
-    """The crack growing: the dump image pictures of the runs that drew them, in a row."""
-    figs = []
-    for (k, dx), r in sorted(ok.items()):
-        if not r.get("snapshots"):
-            continue
-        path = figdir / growth_name(k, dx)
-        frames = [(f"t = {t:.1f} us", p) for t, p in r["snapshots"]]
-        title = (f"Kalthoff-Winkler, {k}, dx = {dx * 1e3:g} mm: damage from 0 (blue) to 1 "
-                 "(red), LAMMPS dump image")
-        figs += _figure(lambda: snapshots.draw_strip(frames, path, title), path, notes)
-    return figs
-
-
-def kw_figures(ok, figdir, notes):
-    """The crack growing (kw_growth_figures), damage maps of every run, crack paths per dx and
-    the Gaussian's paths over dx."""
-    gauss = sorted(((d, r) for (k, d), r in ok.items() if k == "gaussian"), reverse=True)
-    figs = kw_growth_figures(ok, figdir, notes)
-    for (k, dx), r in sorted(ok.items(), key=lambda x: (-x[0][1], KERNELS.index(x[0][0]))):
-        path = figdir / f"damage_{k}_dx{dx * 1e3:g}mm.png"
-        figs += _figure(lambda: kw.plot_damage_map(r, path), path, notes)
-    for dx in sorted({dx for _, dx in ok}, reverse=True):
-        same = [ok[(k, dx)] for k in KERNELS if (k, dx) in ok]
-        if len(same) > 1:
-            path = figdir / f"paths_dx{dx * 1e3:g}mm.png"
-            figs += _figure(lambda: kw.plot_runs(same, path), path, notes)
-    if len(gauss) > 1:
-        path = figdir / "paths_gaussian_convergence.png"
-        figs += _figure(lambda: kw.plot_runs([r for _, r in gauss], path), path, notes)
     return figs

@@ -196,9 +196,10 @@ def mode2_section(specs, results, figdir, notes):
 def kw_section(specs, results, figdir, notes):
     ok = tables.finished(specs, results)
     text = kw_text(ok)
-    figs = figures.kw_figures(ok, figdir, notes)
+    figs = figures._figures(lambda: kalthoff_winkler.figures(list(ok.values()), figdir),
+                            "Kalthoff-Winkler figures", notes)
     for (k, dx), r in sorted(ok.items()):
-        if figures.growth_name(k, dx) in figs:
+        if f"growth_{k}_dx{dx * 1e3:g}mm.png" in figs:
             text.append(f"The row of pictures is the damage of the {k} run at {dx * 1e3:g} mm "
                         f"at {len(r['snapshots'])} times, drawn during the run by LAMMPS's "
                         "dump image (the input's variable images; the other runs leave it "
