@@ -220,10 +220,11 @@ def row_of(res):
     return r
 
 
-def write_csv(rows, path, command):
+def write_csv(rows, path, provenance):
+    """provenance: the 'made by' and 'rows added by' lines (csvfile.continue_csv)"""
     path.parent.mkdir(parents=True, exist_ok=True)
     csvfile.write_csv(path, [{c: r.get(c) for c in COLUMNS} for r in rows], [
-        command, f"CPU: {cpu()}; nprocs MPI ranks per run (empty: one), on a shared machine "
+        *provenance, f"CPU: {cpu()}; nprocs MPI ranks per run (empty: one), on a shared machine "
         "(wall_s); angles in degrees (theta < 0 for K_II > 0), extension in horizons"])
 
 
@@ -390,18 +391,6 @@ def case_key(r):
             float(r["ncross"]))
 
 
-def merged(rows, path):
-    """rows, and the rows of the CSV at path that are not among them (same case_key)."""
-    mine = {case_key(r) for r in rows}
-    return [r for r in read_rows(path) if case_key(r) not in mine] + rows
-
-
-def first_line(path):
-    """The command in the first line of a CSV written by write_csv."""
-    with open(path) as fh:
-        return fh.readline().lstrip("# ").strip()
-
-
 def main(argv=None):
     ap = cli.parser(__doc__, "/tmp/kink", nprocs=1, kernels=KERNELS)
     ap.add_argument("--workers", type=int, default=2, help="runs at a time")
@@ -423,9 +412,10 @@ def main(argv=None):
             and not (args.fine_only and c[3] != FINE[0]) and c[0] in args.kernels]
     todo.sort(key=lambda c: (-c[3], c[5]))    # the coarse grid first, the ramp check last
     path = Path(args.results)
-    if args.add_missing and path.is_file():
-        have = {case_key(r) for r in read_rows(path)}
-        todo = [c for c in todo if (c[0], c[1], c[2], round(c[3] * 1e3, 9), c[5]) not in have]
+    earlier, old, made = csvfile.continue_csv(path if args.add_missing else None,
+                                              cli.command("kink", argv).strip(), read_rows)
+    have = {case_key(r) for r in old}
+    todo = [c for c in todo if (c[0], c[1], c[2], round(c[3] * 1e3, 9), c[5]) not in have]
     todo = todo[:args.max_runs]
     specs = jobs(todo, args.nprocs)
     results = run_jobs([sp.job for sp in specs], args.work, workers=args.workers)
@@ -433,11 +423,8 @@ def main(argv=None):
     rows = [row_of(results[sp.job.label]) for sp in done]
     if failed:
         print("FAILED:", failed)
-    command = cli.command("kink", argv)
-    if args.add_missing and path.is_file():
-        command = f"{first_line(path)}; rows added by {command.strip()}"
-        rows = merged(rows, path)
-    write_csv(rows, path, command.strip())
+    mine = {case_key(r) for r in rows}
+    write_csv([r for r in old if case_key(r) not in mine] + rows, path, [*earlier, made])
     if not args.add_missing:
         check = loading_check(Path(args.work) / "loading-check")
         print(f"J-integral check: {check}")
