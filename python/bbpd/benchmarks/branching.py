@@ -170,13 +170,12 @@ def run_case(workdir, kernel, delta, m, sigma, name=None, reuse=False, nprocs=1)
 # --------------------------------------------------------------------------- outputs
 
 def write_csv(path, rows, command):
-    csvfile.write_table(path, rows, CSV_COLUMNS,
-                        (f"made by: {command}", f"timing: LAMMPS loop time, 1 rank, {cpu()}"),
-                        text=TEXT_COLUMNS)
+    csvfile.write_csv(path, rows, (f"made by: {command}", f"timing: LAMMPS loop time, 1 rank, "
+                                   f"{cpu()}"), CSV_COLUMNS, TEXT_COLUMNS, nan="nan")
 
 
 def read_rows(path=RESULTS):
-    return csvfile.read_table(path, text=TEXT_COLUMNS)
+    return csvfile.read_csv(path, TEXT_COLUMNS)[1]
 
 
 def _f(v, fmt):

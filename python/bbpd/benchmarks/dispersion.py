@@ -22,7 +22,7 @@ from bbpd import plots, readers
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.markdown import cell
 from bbpd.markdown import table as md_table
-from bbpd.readers import read_csv
+from bbpd.csvfile import columns
 from bbpd.runner import run_lammps
 from bbpd.benchmarks import cli
 
@@ -82,7 +82,7 @@ def analytic_curves(outdir, m, delta, E, rho, dt=0.0, volume_correction=True, po
         args.append("--volume-correction")
     outdir.mkdir(parents=True, exist_ok=True)
     run_tool("bbpd-dispersion-curves", args, cwd=outdir)
-    return {k: read_csv(outdir / f"dispersion_{k}.csv") for k in KERNELS}
+    return {k: columns(outdir / f"dispersion_{k}.csv") for k in KERNELS}
 
 
 def value_at(curve, column, kdx):
@@ -179,7 +179,7 @@ def run_kernel(kernel, workdir, nprocs=1, **lmp_vars):
               "u.dump"], cwd=workdir)
     # the 10-digit text dump is only needed by the FFT tool
     (workdir / "u.dump").unlink()
-    return info, read_csv(workdir / "measured.csv")
+    return info, columns(workdir / "measured.csv")
 
 
 def deviation(measured, omega_ref, kdx_range=KDX_RANGE, min_power=MIN_POWER):

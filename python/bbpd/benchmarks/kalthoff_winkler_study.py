@@ -157,12 +157,12 @@ CSV = kw.ROOT / "examples" / "kalthoff-winkler" / "results" / "study.csv"
 
 
 def write_csv(path, rows, command):
-    csvfile.write_table(path, [dict(zip(TABLE_HEADER, r)) for r in rows], TABLE_HEADER,
-                        [f"made by: {command}"], text=TABLE_HEADER)
+    csvfile.write_csv(path, [dict(zip(TABLE_HEADER, r)) for r in rows], [f"made by: {command}"],
+                      TABLE_HEADER, TABLE_HEADER)
 
 
 def read_csv(path=CSV):
-    rows = csvfile.read_table(path, text=TABLE_HEADER)
+    rows = csvfile.read_csv(path, TABLE_HEADER)[1]
     return [[r[c] for c in TABLE_HEADER] for r in rows], csvfile.provenance(path)
 
 

@@ -144,8 +144,9 @@ def run(workdir, kernel="gaussian", dx=0.05, G_c=G_C, dt=None, nprocs=1, t_end=T
 def write_csv(path, rows, provenance):
     """The results CSV: the commands that made its rows (csvfile.provenance lines), then one
     row per run, the loop time's CPU in a column (appended rows may come from another machine)."""
-    csvfile.write_table(path, rows, CSV_COLUMNS, list(provenance) + [
-        "timing: LAMMPS loop time, 1 rank, on the CPU of column cpu"], text=TEXT_COLUMNS)
+    csvfile.write_csv(path, rows, list(provenance) + [
+        "timing: LAMMPS loop time, 1 rank, on the CPU of column cpu"], CSV_COLUMNS, TEXT_COLUMNS,
+        nan="nan")
 
 
 def merge_rows(earlier, new):
@@ -159,15 +160,14 @@ def merge_rows(earlier, new):
 
 def write_histories(path, rows):
     """Tip histories of every run (for the figures): kernel, dx, t, l."""
-    csvfile.write_table(path, [{"kernel": r["kernel"], "dx": r["dx"], "t": t, "l": l} for r in rows
-                               for t, l in zip(r["t_tip"], r["l_pd"])], ("kernel", "dx", "t", "l"),
-                        text=("kernel",))
+    csvfile.write_csv(path, [{"kernel": r["kernel"], "dx": r["dx"], "t": t, "l": l} for r in rows
+                             for t, l in zip(r["t_tip"], r["l_pd"])], nan="nan")
 
 
 def read_histories(path):
     """{(kernel, dx): (t, l)} of write_histories' file"""
     hist = {}
-    for r in csvfile.read_table(path, text=("kernel",)):
+    for r in csvfile.read_csv(path, ("kernel",))[1]:
         hist.setdefault((r["kernel"], r["dx"]), []).append((r["t"], r["l"]))
     return {key: tuple(np.array(v).T) for key, v in hist.items()}
 
@@ -175,7 +175,7 @@ def read_histories(path):
 def read_rows(path, histories=None):
     """The CSV written by write_csv as a list of dicts (kernel and cpu strings, the rest floats),
     given histories (write_histories' file) with each run's tip history as t_tip, l_pd"""
-    rows = csvfile.read_table(path, text=TEXT_COLUMNS)
+    rows = csvfile.read_csv(path, TEXT_COLUMNS)[1]
     if histories:
         hist = read_histories(histories)
         for r in rows:

@@ -141,14 +141,15 @@ def run(workdir, kernel="gaussian", Delta=2.0, dx=DX, m=M, H_over_delta=H_OVER_D
 
 def write_csv(path, rows, provenance):
     """provenance: the 'made by' and 'rows added by' lines (csvfile.continue_csv)"""
-    csvfile.write_table(path, rows, CSV_COLUMNS, list(provenance) + [
-        "timing: LAMMPS loop time; its ranks and CPU in column timing"], text=TEXT_COLUMNS)
+    csvfile.write_csv(path, rows, list(provenance) + [
+        "timing: LAMMPS loop time; its ranks and CPU in column timing"], CSV_COLUMNS, TEXT_COLUMNS,
+        nan="nan")
 
 
 def read_rows(path):
     """The CSV of write_csv as dicts (kernel, state and timing strings, crossed a bool, the rest
     floats)"""
-    return csvfile.read_table(path, text=TEXT_COLUMNS, flags=("crossed",))
+    return csvfile.read_csv(path, TEXT_COLUMNS, ("crossed",))[1]
 
 
 def timing_markdown(rows):

@@ -93,7 +93,7 @@ def closure_rows(strip_rows, hist):
 
 
 def write_csv(path, rows, command):
-    csvfile.write_table(path, rows, CSV_COLUMNS, (f"made by: {command}",))
+    csvfile.write_csv(path, rows, (f"made by: {command}",), CSV_COLUMNS, nan="nan")
 
 
 def main(argv=None):
@@ -134,7 +134,7 @@ CLOSURE_GOAL_PCT = 5.0    # L2 of l(t) at the finest grid (issue's criterion)
 
 
 def read_rows(path):
-    return csvfile.read_table(path, text=("kernel",))
+    return csvfile.read_csv(path, ("kernel",))[1]
 
 
 def height_effect(r):
