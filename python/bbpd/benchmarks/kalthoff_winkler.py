@@ -338,16 +338,14 @@ def study_measures(snaps, traj, g):
 
     # the initial angle on the first snapshot in which the crack reaches past INITIAL_RANGE
     # (later damage, e.g. the far-edge crack joining the path, cannot change it)
-    initial, when = {}, {}
+    initial = {}
     for side in ("lo", "hi"):
         past = np.nonzero(np.array(traj["L_" + side]) >= INITIAL_RANGE[1])[0]
         k = int(past[0]) if len(past) else len(snaps) - 1
         s = snaps[k][1]
         initial[side] = angles_of(s["f_ref[1]"], s["f_ref[2]"], s["c_dmg"], g)[side]["initial"]
-        when[side] = times[k]
     res["initial_deg"] = mean_or_none(list(initial.values()))
     res["initial_side_deg"] = initial      # each crack's own: they differ off the square grid
-    res["t_initial_us"] = min(when.values())
 
     # when a crack tip first comes within delta of the plate boundary
     res["t_edge_us"] = None

@@ -150,15 +150,15 @@ def rms(values):
 def verdict(rows, dist="2d", dx=COARSE[0], cases=None):
     """Numbers behind the README's sentence, from the mixed-mode rows of one grid (psi > 0: in
     pure Mode I every criterion says 0; cases: only these (kernel, psi, alpha)): RMS and mean
-    (measured - criterion) with its standard error, for all kernels and angles and per kernel
-    and crack angle; the grid's pull = mean |angle(alpha = 22.5) - angle(alpha = 0)| over
+    (measured - criterion) with its standard error, for all kernels and angles and per kernel;
+    the grid's pull = mean |angle(alpha = 22.5) - angle(alpha = 0)| over
     kernels and mixes; the kernel effect = the spread (max - min) of the angle across the
     kernels at one (mix, alpha)."""
     grid = [r for r in rows if r["dx"] == dx and r["ncross"] == NCROSS]
     key = f"angle_{dist}"
     mixed = [r for r in grid if r["psi"] > 0 and r[key] is not None
              and (cases is None or (r["kernel"], r["psi"], r["alpha"]) in cases)]
-    out = {"n": len(mixed), "rms": {}, "bias": {}, "se": {}, "rms_kernel": {}, "rms_alpha": {}}
+    out = {"n": len(mixed), "rms": {}, "bias": {}, "se": {}, "rms_kernel": {}}
     for c in CRITERIA:
         d = np.array([r[key] - r[c] for r in mixed])
         out["rms"][c] = rms(d)
@@ -166,26 +166,19 @@ def verdict(rows, dist="2d", dx=COARSE[0], cases=None):
         out["se"][c] = float(d.std(ddof=1) / math.sqrt(len(d))) if len(d) > 1 else math.nan
         for k in KERNELS:
             out["rms_kernel"][k, c] = rms([r[key] - r[c] for r in mixed if r["kernel"] == k])
-        for a in ALPHAS_DEG:
-            out["rms_alpha"][a, c] = rms([r[key] - r[c] for r in mixed if r["alpha"] == a])
     out["best"] = min(CRITERIA, key=lambda c: out["rms"][c])
     present = [k for k in KERNELS if out["rms_kernel"][k, CRITERIA[0]] is not None]
     out["best_kernel"] = {k: min(CRITERIA, key=lambda c: out["rms_kernel"][k, c]) for k in present}
-    # how far apart the criteria themselves are over the same runs
-    out["criteria_rms"] = {(a, b): rms([r[a] - r[b] for r in mixed])
-                           for a in CRITERIA for b in CRITERIA if a < b}
     by = {(r["kernel"], r["psi"], r["alpha"]): r[key] for r in mixed}
     pairs = [(k, p) for k in KERNELS for p in MIXES_DEG
              if (k, p, ALPHAS_DEG[1]) in by and (k, p, ALPHAS_DEG[0]) in by]
     pulls = [abs(by[k, p, ALPHAS_DEG[1]] - by[k, p, ALPHAS_DEG[0]]) for k, p in pairs]
-    out["pull_cases"] = {(k, p, a) for k, p in pairs for a in ALPHAS_DEG}
     out["pull_mean"] = float(np.mean(pulls)) if pulls else None
     out["pull_max"] = float(np.max(pulls)) if pulls else None
     groups = [(p, a) for p in MIXES_DEG for a in ALPHAS_DEG
               if all((k, p, a) in by for k in KERNELS)]
     spreads = [max(by[k, p, a] for k in KERNELS) - min(by[k, p, a] for k in KERNELS)
                for p, a in groups]
-    out["spread_cases"] = {(k, p, a) for p, a in groups for k in KERNELS}
     out["kernel_spread_mean"] = float(np.mean(spreads)) if spreads else None
     out["kernel_spread_max"] = float(np.max(spreads)) if spreads else None
     return out
