@@ -392,15 +392,21 @@ def run(kernel, dx, workdir, nprocs=2, tend=None, reuse=False, images=False):
 
 # --------------------------------------------------------------------------- figures
 
+def damage_panel(ax, res, size):
+    """The damage at the end of a run on its reference configuration, a square of `size`
+    (points^2 at dx = 1 mm) per atom; returns the scatter (for a colour bar)."""
+    m = res["damage_map"]
+    sc = ax.scatter(np.array(m["x"]) * 1e3, np.array(m["y"]) * 1e3, c=m["phi"], marker="s",
+                    s=size * (res["dx"] / 1e-3) ** 2, linewidths=0, cmap="jet", vmin=0.0,
+                    vmax=0.6, rasterized=True)
+    ax.set_aspect("equal")
+    return sc
+
+
 def plot_damage_map(res, path):
     """Damage at the end of the run on the reference configuration (paper Fig. 14)."""
-    m = res["damage_map"]
     with plots.figure(path, figsize=(3.6, 6.0)) as (fig, ax):
-        size = 4.0 * (res["dx"] / 1e-3) ** 2
-        sc = ax.scatter(np.array(m["x"]) * 1e3, np.array(m["y"]) * 1e3, c=m["phi"], s=size,
-                        marker="s", linewidths=0, cmap="jet", vmin=0.0, vmax=0.6)
-        fig.colorbar(sc, ax=ax, label="damage")
-        ax.set_aspect("equal")
+        fig.colorbar(damage_panel(ax, res, 4.0), ax=ax, label="damage")
         ax.set_xlabel("x (mm)")
         ax.set_ylabel("y (mm)")
         ax.set_title(f"{res['kernel']}, dx = {res['dx'] * 1e3:g} mm, "

@@ -319,9 +319,6 @@ def main(argv=None):
                                  f"dx{dx * 1e3:g}mm-Gc{gc:g}")
                     r = run_case(wd, kernel, dx, loading, gc, nprocs=args.nprocs,
                                  reuse=args.reuse, dim=args.dim, tend=args.tend)
-                    (wd / "results.json").write_text(json.dumps(
-                        {k: v for k, v in r.items() if k not in ("damage_map", "trajectory")},
-                        default=str))
                     print(f"{wd.name}: fit {r.get('fit_t70_deg')} chord {r.get('chord_t70_deg')} "
                           f"v_i {r.get('v_interface')} open {r.get('t_open_us')} "
                           f"wall {r['wall_s']:.0f} s", flush=True)

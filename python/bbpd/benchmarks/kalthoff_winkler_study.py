@@ -8,8 +8,6 @@ import json
 import math
 from pathlib import Path
 
-import numpy as np
-
 from bbpd import csvfile
 from bbpd import jobs as jobmod
 from bbpd import readers
@@ -191,11 +189,7 @@ def plot_damage_cases(results, kernel, dx, path):
     with plots.figure(path, 1, len(runs), figsize=(2.0 * len(runs) + 0.8, 4.2), squeeze=False,
                       dpi=130) as (fig, axes):
         for ax, (c, r) in zip(axes[0], runs):
-            m = r["damage_map"]
-            sc = ax.scatter(np.array(m["x"]) * 1e3, np.array(m["y"]) * 1e3, c=m["phi"],
-                            s=1.0 * (dx / 1e-3) ** 2, marker="s", linewidths=0, cmap="jet",
-                            vmin=0.0, vmax=0.6, rasterized=True)
-            ax.set_aspect("equal")
+            sc = kw.damage_panel(ax, r, 1.0)
             ax.set_title(c, fontsize=8)
             ax.tick_params(labelsize=6)
         fig.colorbar(sc, ax=list(axes[0]), label="damage", shrink=0.8)
