@@ -18,7 +18,7 @@ from bbpd.crack_path import clusters
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_noted
 from bbpd.markdown import cell as fmt
-from bbpd.markdown import table as md_table
+from bbpd.markdown import columns
 from bbpd import plots
 from bbpd.benchmarks import cli
 
@@ -493,17 +493,16 @@ def row(res):
 
 def table(rows):
     """Markdown table of row()s: kernel x resolution, the paper's values beside ours."""
-    header = ["kernel", "dx (mm)", "atoms", "first bond (us)", "damage band (us)", "paper (us)",
-              "angle (deg)", "exp. (deg)", "speed (m/s)", "tip mirror mismatch (mm)",
-              "far-edge crack from (us)", "other far damage (atoms)", "run time (s)"]
-    cells = [[r["kernel"], f"{r['dx_m'] * 1e3:g}", f"{r['atoms']:.0f}", fmt(r["first_bond_us"], ".1f"),
-              fmt(r["damage_band_us"], ".1f"), f"{PAPER_INITIATION_US[r['kernel']]:.1f}",
-              fmt(r["angle_deg"], ".1f"), f"{EXPERIMENT_ANGLE_DEG:.0f}", fmt(r["speed_m_s"], ".0f"),
-              fmt(r["symmetry_tip_mm"], ".1e"),
-              "none" if r["far_edge_crack_us"] is None else f"{r['far_edge_crack_us']:.0f}",
-              fmt(r["far_damage_other_atoms"], ".0f"), fmt(r["run_time_s"], ".1f")]
-             for r in sorted(rows, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx_m"]))]
-    return md_table(header, cells)
+    return columns(sorted(rows, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx_m"])), (
+        ("kernel", "kernel"), ("dx (mm)", lambda r: f"{r['dx_m'] * 1e3:g}"), ("atoms", "atoms", ".0f"),
+        ("first bond (us)", "first_bond_us", ".1f"), ("damage band (us)", "damage_band_us", ".1f"),
+        ("paper (us)", lambda r: f"{PAPER_INITIATION_US[r['kernel']]:.1f}"),
+        ("angle (deg)", "angle_deg", ".1f"), ("exp. (deg)", lambda r: f"{EXPERIMENT_ANGLE_DEG:.0f}"),
+        ("speed (m/s)", "speed_m_s", ".0f"), ("tip mirror mismatch (mm)", "symmetry_tip_mm", ".1e"),
+        ("far-edge crack from (us)", lambda r: "none" if r["far_edge_crack_us"] is None
+         else f"{r['far_edge_crack_us']:.0f}"),
+        ("other far damage (atoms)", "far_damage_other_atoms", ".0f"),
+        ("run time (s)", "run_time_s", ".1f")))
 
 
 def main(argv=None):

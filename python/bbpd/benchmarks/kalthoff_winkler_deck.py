@@ -17,7 +17,7 @@ from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_noted
 from bbpd.markdown import cell as _f
-from bbpd.markdown import table as md_table
+from bbpd.markdown import columns
 from bbpd.benchmarks import cli
 
 CSV = ROOT / "examples" / "kalthoff-winkler" / "results" / "standard_deck.csv"
@@ -76,15 +76,14 @@ def loaded_density(workdir):
 
 
 def table(rows):
-    head = ("deck", "kernel", "dx (mm)", "v0 (m/s)", "rho (kg/m3)", "G_c (J/m2)", "first bond (us)",
-            "damage band (us)", "initial (deg)", "fit (deg)", "chord (deg)",
-            "crack length at end (mm)", "crack stops (us)", "loop CPU (s)")
-    return md_table(head, ([
-        r["deck"], r["kernel"], f"{r['dx_mm']:g}", f"{r['v0']:g}", _f(r["rho"], ".0f"),
-        f"{r['Gc']:g}", _f(r["first_bond_us"], ".1f"), _f(r["band_us"], ".1f"),
-        _f(r["initial_deg"], ".1f"), _f(r["fit_deg"], ".1f"), _f(r["chord_deg"], ".1f"),
-        _f(r["length_end_mm"], ".0f"), r["crack_stops"], _f(r["loop_cpu_s"], ".0f")]
-        for r in sorted(rows, key=_order)))
+    return columns(sorted(rows, key=_order), (
+        ("deck", "deck"), ("kernel", "kernel"), ("dx (mm)", "dx_mm", "g"), ("v0 (m/s)", "v0", "g"),
+        ("rho (kg/m3)", "rho", ".0f"), ("G_c (J/m2)", "Gc", "g"),
+        ("first bond (us)", "first_bond_us", ".1f"), ("damage band (us)", "band_us", ".1f"),
+        ("initial (deg)", "initial_deg", ".1f"),
+        ("fit (deg)", "fit_deg", ".1f"), ("chord (deg)", "chord_deg", ".1f"),
+        ("crack length at end (mm)", "length_end_mm", ".0f"), ("crack stops (us)", "crack_stops"),
+        ("loop CPU (s)", "loop_cpu_s", ".0f")))
 
 
 def _order(r):

@@ -18,8 +18,7 @@ from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.runner import run_noted
 from bbpd import plots
-from bbpd.markdown import cell
-from bbpd.markdown import table as md_table
+from bbpd.markdown import columns
 from bbpd.benchmarks import cli
 
 # ---------------------------------------------------------------------------- physics
@@ -224,18 +223,16 @@ def at_target(r):
 
 
 def markdown(rows):
-    return md_table(
-        ("setup", "loading", "kernel", "dx (mm)", "Gc (J/m2)", "first bond (us)", "damage band (us)",
-         "initial (deg)", "fit (deg)", "chord (deg)", "crack length at end (mm)", "crack stops (us)",
-         "far-edge crack (us)", "interface speed (m/s)", "contact force drop (us)",
-         "contact opens (us)", "momentum drift", "loop CPU (s)", "ranks", "70 ± 2° and crosses"),
-        ([r["setup"].upper(), r["loading"], r["kernel"], f"{r['dx_mm']:g}", f"{r['Gc']:g}",
-          cell(r["first_bond_us"], ".1f"), cell(r["band_us"], ".1f"), cell(r["initial_deg"], ".1f"),
-          cell(r["fit_deg"], ".1f"), cell(r["chord_deg"], ".1f"), cell(r["length_end_mm"], ".0f"),
-          r["crack_stops"], cell(r["far_edge_us"], ".0f"), cell(r["v_interface"], ".2f"),
-          cell(r["t_drop_us"], ".1f"), cell(r["t_open_us"], ".1f"), cell(r["momentum_drift"], ".1e"),
-          cell(r["loop_cpu_s"], ".0f"), f"{r['nprocs']:g}", ", ".join(at_target(r)) or "-"]
-         for r in rows))
+    return columns(rows, (
+        ("setup", lambda r: r["setup"].upper()), ("loading", "loading"), ("kernel", "kernel"),
+        ("dx (mm)", "dx_mm", "g"), ("Gc (J/m2)", "Gc", "g"), ("first bond (us)", "first_bond_us", ".1f"),
+        ("damage band (us)", "band_us", ".1f"), ("initial (deg)", "initial_deg", ".1f"),
+        ("fit (deg)", "fit_deg", ".1f"), ("chord (deg)", "chord_deg", ".1f"),
+        ("crack length at end (mm)", "length_end_mm", ".0f"), ("crack stops (us)", "crack_stops"),
+        ("far-edge crack (us)", "far_edge_us", ".0f"), ("interface speed (m/s)", "v_interface", ".2f"),
+        ("contact force drop (us)", "t_drop_us", ".1f"), ("contact opens (us)", "t_open_us", ".1f"),
+        ("momentum drift", "momentum_drift", ".1e"), ("loop CPU (s)", "loop_cpu_s", ".0f"),
+        ("ranks", "nprocs", "g"), ("70 ± 2° and crosses", lambda r: ", ".join(at_target(r)) or "-")))
 
 
 # ---------------------------------------------------------------------------- report
