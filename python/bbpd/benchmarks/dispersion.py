@@ -85,10 +85,6 @@ def analytic_curves(outdir, m, delta, E, rho, dt=0.0, volume_correction=True, po
     return {k: columns(outdir / f"dispersion_{k}.csv") for k in KERNELS}
 
 
-def value_at(curve, column, kdx):
-    return float(np.interp(kdx, curve["k_dx"], curve[column]))
-
-
 NEGATIVE_TOL = 1.0e-9   # v_g/v below -NEGATIVE_TOL is negative; round-off of exact zeros is not
 
 
@@ -124,7 +120,8 @@ def analytic_table(workdir, m=PAPER_M, delta=PAPER_DELTA, E=1.0, rho=1.0):
                                      ("discrete", paper[k], "discrete"),
                                      ("discrete_cv", cv[k], "discrete")):
             row[label] = {
-                "phase": {f"{x:g}": value_at(curve, "phase_" + suffix, x) for x in TABLE_KDX},
+                "phase": {f"{x:g}": float(np.interp(x, curve["k_dx"], curve["phase_" + suffix]))
+                          for x in TABLE_KDX},
                 "phase_k0": float(curve["phase_" + suffix][1]),
                 "group_negative": negative_intervals(curve, "group_" + suffix),
                 "group_min": float(curve["group_" + suffix].min()),

@@ -32,7 +32,6 @@ V_INTERFACE = V0 * AREA_RATIO / (AREA_RATIO + 1.0)         # 26.03 m/s (1D two-b
 # the projectile's waves: E and rho scaled alike keep the plate's speeds (plane strain, nu = 1/4)
 C_P = kw.C_P                                              # 5407 m/s, plane wave
 C_STRIP = math.sqrt(kw.E / (1.0 - kw.NU ** 2) / kw.RHO)   # 5097 m/s, plane-strain strip
-LP_DEFAULT = 0.100                                        # m, the input script's default
 
 # the interface speed is averaged from the end of the contact's rise to the return of the
 # plate's wave from the notch tips (2 x 50 mm / c_p = 18.5 us), where the struck strip widens
@@ -42,11 +41,6 @@ OPEN_MIN_US = 1.0
 # J/m^2: the paper; K_Ic = 90 MPa sqrt(m) with E = 191 GPa; phase-field decks after Borden et al. 2012
 GC_VALUES = {"paper": 6.9e4, "KIc90": 4.24e4, "phasefield": 2.213e4}
 TEND = 100.0e-6
-
-
-def two_l_over_c(lp=LP_DEFAULT):
-    """2 Lp / c of the projectile (us) with the plane-wave and the strip speed."""
-    return 2.0 * lp / C_P * 1e6, 2.0 * lp / C_STRIP * 1e6
 
 
 # ---------------------------------------------------------------------------- measurements
@@ -93,11 +87,6 @@ def measure_contact(d, dt):
     return out
 
 
-def read_projectile_log(text):
-    m = re.search(r"^KW projectile: Lp (\S+) \((\d+) columns\)", text, re.M)
-    return None if m is None else {"Lp": float(m[1]), "ncol": int(m[2])}
-
-
 def loop_cpu(text):
     """CPU seconds of the run's loop, all ranks: LAMMPS's loop (wall) time x its CPU use.
     On a shared machine the wall time follows the load; the CPU time much less."""
@@ -113,15 +102,14 @@ def analyse(workdir):
     workdir = Path(workdir)
     res = kw.analyse(workdir)
     log = (workdir / "log.lammps").read_text()
-    proj = read_projectile_log(log)
+    proj = re.search(r"^KW projectile: Lp (\S+) \((\d+) columns\)", log, re.M)
     res["loading"] = "prescribed" if proj is None else "projectile"
     res["setup"] = "3d" if re.search(r"^KW 3d:", log, re.M) else "2d"
     res["loop_cpu_s"] = loop_cpu(log)
     m = re.search(r"types 1 1: E = \S+\s+Gc = (\S+)", log)
     res["Gc"] = float(m[1]) if m else None
     if proj is not None:
-        res.update(proj)
-        res["Lp_effective"] = proj["ncol"] * res["dx"]
+        res.update(Lp=float(proj[1]), ncol=int(proj[2]), Lp_effective=int(proj[2]) * res["dx"])
         res.update(measure_contact(read_projectile(workdir / "projectile.dat"), res["dt"]))
         # the contact stress: force over the struck face (width between the notch lines x
         # thickness: dx in 2D, one layer of cells; the plate's in 3D)
@@ -130,7 +118,8 @@ def analyse(workdir):
         res["contact_stress_MPa"] = res["force_plateau"] / ((res["yhi"] - res["ylo"]) * thick) / 1e6
         # the faces' largest overlap past the contact distance, in grid spacings
         res["overlap_max_dx"] = (0.9 * res["dx"] - res["gap_min"]) / res["dx"]
-        res["two_l_over_c_us"] = two_l_over_c(res["Lp_effective"])
+        # 2 Lp / c of the projectile (us) with the plane-wave and the strip speed
+        res["two_l_over_c_us"] = tuple(2.0 * res["Lp_effective"] / c * 1e6 for c in (C_P, C_STRIP))
     return res
 
 
@@ -210,15 +199,11 @@ def read_csv(path):
     return csvfile.read_csv(path)[1]
 
 
-def crosses_plate(r):
-    """The crack reached the plate's boundary (not arrested, not still running inside)."""
-    return r["crack_stops"].startswith("edge")
-
-
 def at_target(r):
     """the angle definitions by which a run's crack lies within 70 +- 2 deg, if its cracks cross
     the plate (else none)"""
-    return [d for d in ("initial", "fit", "chord") if crosses_plate(r) and r[f"{d}_deg"] is not None
+    return [d for d in ("initial", "fit", "chord") if r["crack_stops"].startswith("edge")
+            and r[f"{d}_deg"] is not None
             and abs(r[f"{d}_deg"] - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
 
 

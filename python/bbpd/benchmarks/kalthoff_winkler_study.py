@@ -71,23 +71,15 @@ def angle(res, definition):
     return res.get("initial_deg") if definition == "initial" else res.get(f"{definition}_t70_deg")
 
 
-def reaches_angle(res, definition):
-    a = angle(res, definition)
-    return a is not None and abs(a - ANGLE_TARGET_DEG) <= ANGLE_TOL_DEG
-
-
-def in_init_window(t):
-    return t is not None and INIT_WINDOW_US[0] <= t <= INIT_WINDOW_US[1]
-
-
 def hits(results):
     """{'angle': [(case, kernel, dx, definitions)] of the runs at 70 +- 2 deg, 'initiation':
     [(case, kernel, dx, readings)] in the paper's window, 'both': [(case, kernel, dx)]}"""
     out = {"angle": [], "initiation": [], "both": []}
     for (case, k, dx), r in sorted(results.items(), key=_order):
-        defs = [d for d in kw.ANGLE_DEFS if reaches_angle(r, d)]
+        defs = [d for d in kw.ANGLE_DEFS if (a := angle(r, d)) is not None
+                and abs(a - ANGLE_TARGET_DEG) <= ANGLE_TOL_DEG]
         inits = [n for n, key in (("first bond", "t_init_us"), ("damage band", "t_band_us"))
-                 if in_init_window(r[key])]
+                 if r[key] is not None and INIT_WINDOW_US[0] <= r[key] <= INIT_WINDOW_US[1]]
         out["angle"] += [(case, k, dx, defs)] if defs else []
         out["initiation"] += [(case, k, dx, inits)] if inits else []
         out["both"] += [(case, k, dx)] if defs and inits else []

@@ -187,11 +187,6 @@ def verdict(rows, dist="2d", dx=COARSE[0], cases=None):
 LOCK_DEG = 1.0     # a kink within this of a lattice direction counts as locked onto it
 
 
-def grid_offset(lab_deg):
-    """Distance (deg) of a lab-frame direction from the nearest multiple of 45 deg."""
-    return abs((lab_deg + 22.5) % 45.0 - 22.5)
-
-
 def admitted(v):
     """The criteria the mean deviation admits: |mean| <= TEST_SE standard errors."""
     return [c for c in CRITERIA if abs(v["bias"][c]) <= TEST_SE * v["se"][c]]
@@ -306,7 +301,7 @@ def locked(rows):
     """The mixed-mode runs whose crack left the tip within LOCK_DEG of a grid direction (a
     multiple of 45 deg in the lattice frame) while more than 2 LOCK_DEG from every criterion"""
     return [r for r in rows if r["psi"] > 0 and r["angle_2d"] is not None
-            and grid_offset(r["angle_2d"] + r["alpha"]) <= LOCK_DEG
+            and abs((r["angle_2d"] + r["alpha"] + 22.5) % 45.0 - 22.5) <= LOCK_DEG
             and min(abs(r["angle_2d"] - r[c]) for c in CRITERIA) > 2 * LOCK_DEG]
 
 
