@@ -498,7 +498,7 @@ PYTHON_LAYERS = [
      "bbpd.benchmarks.big_run", "bbpd.benchmarks.plate_hole", "bbpd.benchmarks.center_crack",
      "bbpd.benchmarks.center_crack_growth", "bbpd.benchmarks.quasi_static",
      "bbpd.benchmarks.dcb_growth", "bbpd.benchmarks.kfield_probe"},
-    {"bbpd.report", "bbpd.report.runs", "bbpd.report.tables", "bbpd.report.figures",
+    {"bbpd.report", "bbpd.report.runs", "bbpd.report.tables",
      "bbpd.report.sections", "bbpd.report.results",
      "bbpd.report.work_precision_figure"},
     {"bbpd.report.work_precision"},

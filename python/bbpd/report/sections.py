@@ -1,15 +1,20 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """One section of REPORT.md per benchmark: its title, the setup it ran, the table, the lines
 under it (sentences written by hand as templates, the runs' numbers filled in; the Mode-II
-verdict as data, mode2_j) and the figures."""
+verdict as data, mode2_j) and the figures (a figure that fails is noted in the report)."""
+from pathlib import Path
+
+import numpy as np
+
 from bbpd.benchmarks import (branching, dispersion, kalthoff_winkler, kalthoff_winkler_3d,
                              kalthoff_winkler_deck, kalthoff_winkler_grid,
                              kalthoff_winkler_projectile, kalthoff_winkler_study, kink,
                              kink_convergence, mode1, mode1_propagation, mode2, quasi_static,
                              strip)
-from bbpd.kernels import KERNELS
+from bbpd.kernels import COLORS, KERNELS
+from bbpd.plots import plot_k
 
-from . import figures, tables
+from . import tables
 from .runs import MODE1_TABLE3_DX
 from .tables import md_table
 
@@ -119,6 +124,48 @@ def kw_text(ok):
     return text
 
 
+# --------------------------------------------------------------------------- figures
+
+def _figures(make, what, notes):
+    """The names of the figures make() draws (it returns their paths), or [] with a note in the
+    report: a failure does not stop it."""
+    try:
+        return [Path(p).name for p in make()]
+    except Exception as exc:  # the report must still be written
+        notes.append(f"{what} not made: {type(exc).__name__}: {exc}")
+        return []
+
+
+def _figure(make, path, notes):
+    """[the name of the figure make() draws at path], or [] with a note in the report"""
+    return _figures(lambda: (make(), [path])[1], f"figure {Path(path).name}", notes)
+
+
+def mode2_figures(ok, figdir, notes):
+    """Fig. 12 per dx: K_II(t) of the three kernels, from the extrapolation and from J."""
+    figs = []
+    win = mode2.window()
+    tt = np.linspace(0.0, mode2.T_END, 600)
+    refs = [("semi-infinite crack loaded by 2 tau", tt * 1e6,
+             mode2.normalise(mode2.reference()(tt)), "--", "black")]
+    # the extrapolation's figure and the J-integral's: (file, K_II column, label, title)
+    kinds = (("kernels", "k_ii", lambda r: f"(L2 {r['l2']:.1f} %)",
+              "Fig. 12: Mode-II K_II(t), dx = {} mm, m = 5, three kernels"),
+             ("jintegral", "k_ii_j", lambda r: f"from J (peak {r['jintegral']['peak']:.1f} %)",
+              "Mode-II K_II(t) from the J-integral, dx = {} mm, three kernels"))
+    window = (win.t_start * 1e6, win.t_end_ignoring_corners * 1e6)
+    for dx in sorted({dx for _, dx in ok}, reverse=True):
+        for name, col, label, title in kinds:
+            series = [(f"{k} {label(r)}", r["t"] * 1e6, mode2.normalise(r[col]), COLORS[k])
+                      for (k, d), r in ok.items() if d == dx and col in r]
+            if series:
+                path = figdir / f"fig12_{name}_dx{dx * 1e3:g}mm.png"
+                figs += _figure(lambda: plot_k(path, series, refs, window,
+                                               title.format(f"{dx * 1e3:g}"), "t (us)",
+                                               r"$K_{II}/(\tau\sqrt{\pi a})$"), path, notes)
+    return figs
+
+
 # title and setup of each section this module builds
 SETUP = {
     "dispersion": ("Wave dispersion of a 1D bar (sec. 4.1, Figs. 4-6)",
@@ -166,7 +213,7 @@ def dispersion_section(specs, results, figdir, notes):
     table, paper, cv = tables.dispersion_csv(runs, figdir)
     header, rows, numbers = dispersion.table(runs, table)
     text = dispersion_text(numbers, table)
-    figs = figures._figures(lambda: dispersion.plot_figures(runs, paper, cv, figdir),
+    figs = _figures(lambda: dispersion.plot_figures(runs, paper, cv, figdir),
                             "dispersion figures", notes)    # Figs. 4-6
     return _section("dispersion", _tables([("", md_table(header, rows))], specs, results), text,
                     figs)
@@ -176,7 +223,7 @@ def mode1_section(specs, results, figdir, notes):
     ok = tables.finished(specs, results, ("t", "k_paper", "k_consistent", "k_ii"))
     rows3_ok = {k: ok[k, MODE1_TABLE3_DX] for k in KERNELS if (k, MODE1_TABLE3_DX) in ok}
     text = mode1_text(ok, rows3_ok)
-    figs = figures._figures(lambda: mode1.figures(
+    figs = _figures(lambda: mode1.figures(
         {dx: r for (k, dx), r in ok.items() if k == "gaussian"}, rows3_ok, figdir), "Figs. 9-10", notes)
     rows = [mode1.row(r) for r in ok.values()]
     table = _tables([("Table 2, Gaussian kernel", mode1.table2(rows)),
@@ -190,13 +237,13 @@ def mode2_section(specs, results, figdir, notes):
     rows = [mode2.row(r) for r in ok.values()]
     table = _tables([("", mode2.table(rows)), ("K_II from the J-integral", mode2.jtable(rows))],
                     specs, results)
-    return _section("mode2", table, mode2_text(ok), figures.mode2_figures(ok, figdir, notes))
+    return _section("mode2", table, mode2_text(ok), mode2_figures(ok, figdir, notes))
 
 
 def kw_section(specs, results, figdir, notes):
     ok = tables.finished(specs, results)
     text = kw_text(ok)
-    figs = figures._figures(lambda: kalthoff_winkler.figures(list(ok.values()), figdir),
+    figs = _figures(lambda: kalthoff_winkler.figures(list(ok.values()), figdir),
                             "Kalthoff-Winkler figures", notes)
     for (k, dx), r in sorted(ok.items()):
         if f"growth_{k}_dx{dx * 1e3:g}mm.png" in figs:
