@@ -38,16 +38,10 @@ def read_rows(path=CSV):
     return csvfile.read_csv(path)[1]
 
 
-def _bond(bond_rows, kernel, dx):
-    for r in bond_rows:
-        if r["kernel"] == kernel and abs(r["dx_m"] - dx) < 1e-12:
-            return r
-    return None
-
-
 def table(rows, bond_rows):
-    def bond(r):
-        b = _bond(bond_rows, r["kernel"], r["dx_m"])
+    def bond(r):    # the bond-based run of the same kernel and grid
+        b = next((q for q in bond_rows if q["kernel"] == r["kernel"]
+                  and abs(q["dx_m"] - r["dx_m"]) < 1e-12), None)
         return ([f"{b['consistent_peak']:.2f} / {b['consistent_l2']:.2f}",
                  f"{b['j_peak']:.2f} / {b['j_l2']:.2f}"] if b else ["-", "-"])
     return md_table(
