@@ -498,15 +498,14 @@ PYTHON_LAYERS = [
      "bbpd.benchmarks.big_run", "bbpd.benchmarks.plate_hole", "bbpd.benchmarks.center_crack",
      "bbpd.benchmarks.center_crack_growth", "bbpd.benchmarks.quasi_static",
      "bbpd.benchmarks.dcb_growth", "bbpd.benchmarks.kfield_probe"},
-    {"bbpd.report", "bbpd.report.runs", "bbpd.report.tables", "bbpd.report.figures",
-     "bbpd.report.prose", "bbpd.report.sections", "bbpd.report.results",
+    {"bbpd.report", "bbpd.report.runs", "bbpd.report.tables",
+     "bbpd.report.sections", "bbpd.report.results",
      "bbpd.report.work_precision_figure"},
     {"bbpd.report.work_precision"},
     {"bbpd.report.document", "bbpd.report.make", "bbpd.report.__main__"},
     {"bbpd.claims", "bbpd.claims.__main__", "bbpd.claims.blocks", "bbpd.claims.checks",
-     "bbpd.claims.data", "bbpd.claims.kw", "bbpd.claims.mode1",
-     "bbpd.claims.mode2", "bbpd.claims.readme", "bbpd.claims.text", "bbpd.claims.times",
-     "bbpd.claims.crack", "bbpd.claims.perf"},
+     "bbpd.claims.data", "bbpd.claims.paper", "bbpd.claims.times", "bbpd.claims.crack",
+     "bbpd.claims.perf"},
 ]
 
 

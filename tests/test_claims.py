@@ -104,29 +104,29 @@ def test_import_takes_report_results(tmp_path, monkeypatch):
 
 def test_the_verification_page_states_what_the_data_give():
     """doc/verification.md's list under the benchmark table, by hand: checked against the CSVs"""
-    from bbpd.claims import kw, mode1, mode2, text
+    from bbpd.claims import paper
     data = Data()
     disp = {r["kernel"]: r["phase_kdx2.5"] for r in data.rows("dispersion")}
     assert max(disp, key=disp.get) == "gaussian" and min(disp, key=disp.get) == "constant"
-    _, t3 = mode1.paper()
-    at = text.at(data.rows(mode1.NAME), mode1.TABLE3_DX)
+    t3 = paper.mode1_bench.PAPER_TABLE3
+    at = paper.at(data.rows(paper.MODE1), paper.TABLE3_DX)
     assert sorted(at, key=lambda k: at[k]["consistent_l2"]) == sorted(at, key=lambda k: t3[k][1])
     assert max(abs(at[k][c] - t3[k][i]) for k in ("constant", "triangular")
                for i, c in ((0, "consistent_peak"), (1, "consistent_l2"))) < 2.1
-    t2, _ = mode1.paper()
-    g = [r["consistent_l2"] for r in mode1._gauss(data)]
+    t2 = paper.mode1_bench.PAPER_TABLE2
+    g = [r["consistent_l2"] for r in paper.gauss(data.rows("mode1"))]
     assert g == sorted(g, reverse=True)
-    assert all(r["consistent_l2"] < t2[round(r["dx_m"], 6)][1] for r in mode1._gauss(data))
-    assert max(r["j_peak"] for r in data.rows(mode1.NAME)) < 1.65
-    assert mode2.excess(data) == "12–29 %"
-    ratio = {(r["kernel"], r["dx_m"]): r["ratio_end"] for r in data.rows(mode2.NAME)}
-    grids = text.grids(data.rows(mode2.NAME))
+    assert all(r["consistent_l2"] < t2[round(r["dx_m"], 6)][1] for r in paper.gauss(data.rows("mode1")))
+    assert max(r["j_peak"] for r in data.rows(paper.MODE1)) < 1.65
+    assert paper.mode2_excess(data) == "12–29 %"
+    ratio = {(r["kernel"], r["dx_m"]): r["ratio_end"] for r in data.rows(paper.MODE2)}
+    grids = paper.grids(data.rows(paper.MODE2))
     assert all(ratio[k, grids[-1]] >= ratio[k, grids[0]] for k in ("constant", "triangular", "gaussian"))
-    paper, exp = kw._consts()
-    flat = [exp - r["angle_deg"] for r in text.at(data.rows(kw.NAME), 1.0e-3).values()]
+    initiation, exp = paper.kw_bench.PAPER_INITIATION_US, paper.kw_bench.EXPERIMENT_ANGLE_DEG
+    flat = [exp - r["angle_deg"] for r in paper.at(data.rows(paper.KW), 1.0e-3).values()]
     assert 8.5 <= min(flat) and max(flat) < 10.5
-    band = {k: r["damage_band_us"] for k, r in text.at(data.rows(kw.NAME), 1.0e-3).items()}
-    assert sorted(band, key=band.get) == sorted(paper, key=paper.get)
+    band = {k: r["damage_band_us"] for k, r in paper.at(data.rows(paper.KW), 1.0e-3).items()}
+    assert sorted(band, key=band.get) == sorted(initiation, key=initiation.get)
 
 
 def test_the_mode2_readme_states_what_the_data_give():
@@ -161,11 +161,11 @@ def test_the_mode1_readme_states_what_the_data_give():
     """examples/mode1-semi-infinite/README.md, by hand: rankings, the paper's numbers, the
     J-integral's errors, the symmetry checks and the tips table's reading"""
     import re
-    from bbpd.claims import mode1, text
+    from bbpd.claims import paper
     data = Data()
     rows = data.rows("mode1")
-    _, t3 = mode1.paper()
-    at = text.at(data.rows(mode1.NAME), mode1.TABLE3_DX)
+    t3 = paper.mode1_bench.PAPER_TABLE3
+    at = paper.at(data.rows(paper.MODE1), paper.TABLE3_DX)
 
     def order(col, sel=at):
         return sorted(sel, key=lambda k: sel[k][col])
@@ -175,7 +175,7 @@ def test_the_mode1_readme_states_what_the_data_give():
     diffs = [abs(at[k][c] - t3[k][i]) for k in ("constant", "triangular")
              for i, c in ((0, "consistent_peak"), (1, "consistent_l2"))]
     assert (round(min(diffs), 1), round(max(diffs), 1)) == (0.2, 2.1)
-    g = mode1._gauss(data)
+    g = paper.gauss(data.rows("mode1"))
     assert [round(r["consistent_l2"], 2) for r in g] == [4.39, 2.33, 1.57]
     assert [round(r["consistent_peak"], 2) for r in g] == [1.19, 1.70, 0.83]
     assert round(100 * max(r["kii_over_ki"] for r in rows), 2) == 0.66 and round(100 * max(r["kii_j_over_k_j"] for r in rows), 2) == 0.72
@@ -184,7 +184,7 @@ def test_the_mode1_readme_states_what_the_data_give():
     assert (round(min(r["j_l2"] for r in rows), 1), round(max(r["j_l2"] for r in rows), 1)) == (0.1, 1.6)
     for dx, want in ((0.1, ["gaussian", "constant", "triangular"]), (0.05, ["gaussian", "triangular", "constant"]),
                      (0.025, ["gaussian", "triangular", "constant"])):
-        assert order("j_peak", text.at(data.rows(mode1.NAME), dx)) == want
+        assert order("j_peak", paper.at(data.rows(paper.MODE1), dx)) == want
     low = [100 * (1 - r["kmax_ratio_j"]) for r in rows if r["kernel"] == "constant"]
     assert (round(min(low), 1), round(max(low), 1)) == (0.5, 1.6)
     tips = data.rows("mode1_tips")
@@ -200,24 +200,24 @@ def test_the_mode1_readme_states_what_the_data_give():
 def test_the_kalthoff_winkler_readme_states_what_the_data_give():
     """examples/kalthoff-winkler/README.md, 'Reading the table', by hand: initiation, angle,
     speed, symmetry and far-edge crack against results/kalthoff_winkler.csv"""
-    from bbpd.claims import kw, text
+    from bbpd.claims import paper
     data = Data()
     rows = data.rows("kalthoff_winkler")
-    paper, exp = kw._consts()
+    initiation, exp = paper.kw_bench.PAPER_INITIATION_US, paper.kw_bench.EXPERIMENT_ANGLE_DEG
     g = {round(r["dx_m"] * 1e3, 2): r for r in rows if r["kernel"] == "gaussian"}
     assert [round(g[dx]["first_bond_us"], 1) for dx in (2.0, 1.0, 0.5)] == [12.0, 12.4, 12.3]
     assert [round(g[dx]["damage_band_us"], 1) for dx in (2.0, 1.0, 0.5)] == [23.0, 20.0, 17.4]
     assert [round(g[dx]["angle_deg"], 1) for dx in (2.0, 1.0, 0.5)] == [58.8, 61.1, 62.3]
     main = [r for r in rows if r["dx_m"] >= 1e-3]
     assert (round(min(r["first_bond_us"] for r in main), 1), round(max(r["first_bond_us"] for r in main), 1)) == (10.8, 12.4)
-    at = text.at(data.rows(kw.NAME), 1.0e-3)
-    late = [paper[k] - r["first_bond_us"] for k, r in at.items()]
+    at = paper.at(data.rows(paper.KW), 1.0e-3)
+    late = [initiation[k] - r["first_bond_us"] for k, r in at.items()]
     assert (round(min(late), 1), round(max(late), 1)) == (8.7, 9.3)
-    early = [paper[k] - r["damage_band_us"] for k, r in at.items()]
+    early = [initiation[k] - r["damage_band_us"] for k, r in at.items()]
     assert (round(min(early), 1), round(max(early), 1)) == (1.7, 1.9)
     ang = {k: r["angle_deg"] for k, r in at.items()}
     assert round(max(ang.values()) - min(ang.values()), 1) == 1.2
-    two = text.at(data.rows(kw.NAME), 2.0e-3)
+    two = paper.at(data.rows(paper.KW), 2.0e-3)
     moved = [ang[k] - two[k]["angle_deg"] for k in ang]
     assert (round(min(moved), 1), round(max(moved), 1)) == (2.3, 3.8)
     speed = [r["speed_m_s"] / 1e3 for r in main]

@@ -11,19 +11,24 @@ import numpy as np
 from bbpd.markdown import table
 
 
-def _num(v, digits=6):
-    """A cell: numbers to `digits` significant digits, None and NaN as empty."""
-    if v is None or (isinstance(v, float) and math.isnan(v)):
+def _num(v, nan=""):
+    """A cell: numbers to 6 significant digits, None as empty, NaN as `nan`."""
+    if v is None:
         return ""
+    if isinstance(v, float) and math.isnan(v):
+        return nan
     if isinstance(v, (bool, str)):
         return str(v)
     if isinstance(v, (int, np.integer)):
         return str(int(v))
-    return f"{float(v):.{digits}g}"
+    return f"{float(v):.6g}"
 
 
-def write_csv(path, rows, comments=(), columns=None):
-    """rows (dicts) in columns (default: the first row's keys), the comments first"""
+def write_csv(path, rows, comments=(), columns=None, text=(), nan=""):
+    """rows (dicts) in columns (default: the first row's keys), the comments first; a cell of
+    a `text` column is written as it is"""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
     columns = list(columns or rows[0])
     with open(path, "w", newline="") as fh:
         for line in comments:
@@ -31,19 +36,26 @@ def write_csv(path, rows, comments=(), columns=None):
         w = csv.writer(fh, lineterminator="\n")
         w.writerow(columns)
         for r in rows:
-            w.writerow([_num(r.get(c)) for c in columns])
+            w.writerow([r.get(c) if c in text else _num(r.get(c), nan) for c in columns])
 
 
-def read_csv(path):
-    """(comment lines, [row dict of floats / strings / None])"""
+def read_csv(path, text=(), flags=()):
+    """(comment lines, [row dict]): a cell of a `text` column a string, of a `flags` column a
+    bool, any other a float, a string where it is none, or None where it is empty"""
     comments, body = [], []
     for line in Path(path).read_text().splitlines():
         (comments if line.startswith("#") else body).append(line.lstrip("# ") if
                                                             line.startswith("#") else line)
-    rows = []
-    for r in csv.DictReader(body):
-        rows.append({k: _value(v) for k, v in r.items()})
-    return comments, rows
+
+    def cell(name, v):
+        return v if name in text else (v == "True") if name in flags else _value(v)
+    return comments, [{k: cell(k, v) for k, v in r.items()} for r in csv.DictReader(body)]
+
+
+def columns(path):
+    """{column: array of floats} of a numeric CSV"""
+    rows = read_csv(path)[1]
+    return {c: np.array([r[c] for r in rows], dtype=float) for c in rows[0]}
 
 
 def _value(text):
@@ -53,36 +65,6 @@ def _value(text):
         return float(text)
     except ValueError:
         return text
-
-
-# --------------------------------------------------------------------------- benchmark tables
-# The benchmarks' own tables (strip, strip_closure, branching): fixed columns, '#' lines first,
-# text cells as they are, True/False for flags, numbers to 6 significant digits.
-
-def write_table(path, rows, columns, comments=(), text=()):
-    """rows (dicts) in the given columns; a cell of a `text` column, or a str or bool, is kept"""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, "w", newline="") as f:
-        for line in comments:
-            f.write(f"# {line}\n")
-        w = csv.writer(f)
-        w.writerow(columns)
-        for r in rows:
-            w.writerow([r[c] if c in text or isinstance(r[c], (str, bool)) else f"{r[c]:.6g}"
-                        for c in columns])
-
-
-def read_table(path, text=(), flags=()):
-    """The rows of write_table as dicts: `text` columns strings, `flags` columns bools, the
-    rest floats"""
-    lines = [ln for ln in Path(path).read_text().splitlines() if ln and not ln.startswith("#")]
-    table = list(csv.reader(lines))    # a text cell may hold a comma (quoted by write_table)
-    names = table[0]
-
-    def cell(n, v):
-        return v if n in text else (v == "True") if n in flags else float(v)
-    return [{n: cell(n, v) for n, v in zip(names, cells)} for cells in table[1:]]
 
 
 def comment(source, key):

@@ -66,10 +66,6 @@ def finished(specs, results):
     return done, [s.job.label for s in specs if s not in done]
 
 
-def not_measured(labels):
-    return "Not measured (failed or not run): " + ", ".join(labels) + "."
-
-
 def section(title, setup, specs, results, table, text=None, figures=None, notes=None,
             not_run=None):
     """A report section whose runs each return one result (a row): the setup not_run when it is
@@ -88,7 +84,8 @@ def section(title, setup, specs, results, table, text=None, figures=None, notes=
         except Exception as exc:  # the report must still be written
             notes.append(f"{title}: figures not made: {type(exc).__name__}: {exc}")
     return {"title": title, "setup": setup, "table": table(rows) if rows else "",
-            "text": " ".join(t for t in lines + ([not_measured(bad)] if bad else []) if t),
+            "text": " ".join(t for t in lines + ([f"Not measured (failed or not run): "
+                                                  f"{', '.join(bad)}."] if bad else []) if t),
             "figures": names}
 
 

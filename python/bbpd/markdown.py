@@ -24,3 +24,11 @@ def table(header, rows):
     lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
     return "\n".join(lines)
+
+
+def columns(rows, spec):
+    """table() of rows, one column per entry of spec: (header, key) takes the row's value as it
+    is, (header, key, format) through cell(), (header, function of the row) what it returns"""
+    def value(r, key, fmt=None):
+        return key(r) if callable(key) else r[key] if fmt is None else cell(r[key], fmt)
+    return table([s[0] for s in spec], [[value(r, *s[1:]) for s in spec] for r in rows])

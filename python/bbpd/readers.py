@@ -2,7 +2,6 @@
 """Readers of what LAMMPS and the plugin write: logs (versions, loop time, thermo tables),
 text dumps, the examples' fix print files (k.dat, tips.dat) and CSV tables of the tools."""
 import re
-from pathlib import Path
 
 import numpy as np
 
@@ -103,13 +102,3 @@ def tips(path):
     tip (lower, upper)."""
     d = np.loadtxt(path, comments="#")
     return d[:, 0].astype(int), d[:, 1], d[:, 2], d[:, 3], d[:, 4], d[:, 5]
-
-
-# --------------------------------------------------------------------------- tables
-
-def read_csv(path):
-    """CSV with '#' comment lines and a header row -> dict of column -> array."""
-    lines = [ln for ln in Path(path).read_text().splitlines() if ln and not ln.startswith("#")]
-    names = lines[0].split(",")
-    data = np.array([[float(v) for v in ln.split(",")] for ln in lines[1:]])
-    return {n: data[:, i] for i, n in enumerate(names)}

@@ -6,6 +6,7 @@ import numpy as np
 
 from bbpd import csvfile
 from bbpd.benchmarks import mode1_propagation as mp
+from bbpd.claims.paper import made
 
 
 def row(kernel, dx, ext, cpu="CPU A", **kw):
@@ -33,7 +34,7 @@ def test_append_keeps_rows_provenance_and_cpu(tmp_path):
     assert [r["cpu"] for r in rows] == ["CPU B", "CPU A", "CPU B"]
     assert rows[0]["ext_pd_3tc"] == 1.0          # the new run replaced the old one
     assert csvfile.provenance(path) == ["made by: first", "rows added by: second"]
-    table = mp.table_markdown(rows, csvfile.provenance(path))
+    table = made(path, lambda data: mp.table_markdown(rows))(None)    # the README's block
     assert "Made by `first`. Rows added by `second`." in table
     assert "| CPU B | every other run |\n| CPU A | gaussian at dx = 0.1 m |" in table
 

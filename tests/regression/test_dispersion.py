@@ -74,7 +74,7 @@ def test_fft_tool_recovers_known_frequencies(tmp_path):
             f.writelines(f"{i + 1} {u[s, i]!r} 7.0\n" for i in order)
     disp.run_tool("bbpd-measure-dispersion", ["--dx", dx, "--sample-dt", dt, "--column",
                                               "c_u[1]", "--out", "m.csv", "u.dump"], tmp_path)
-    m = disp.read_csv(tmp_path / "m.csv")
+    m = disp.columns(tmp_path / "m.csv")
     assert np.allclose(m["k"], k, rtol=1e-10)
     # above a few bins the +-omega images and the neighbouring k do not overlap
     ok = omega > 8 * 2.0 * np.pi / (nt * dt)

@@ -13,7 +13,7 @@ import pytest
 
 from bbpd import csvfile, report
 from bbpd.benchmarks import mode1
-from bbpd.report import make, prose
+from bbpd.report import make, sections
 
 ROOT = Path(__file__).resolve().parents[2]
 EX = ROOT / "examples"
@@ -96,7 +96,7 @@ def test_tables_hold_the_runs_numbers(calls):
     # the J-integral columns, and the verdict as data from those numbers
     r = res[("gaussian", 2e-3)]
     assert f"{r['jintegral']['peak']:.2f} / {r['jintegral']['l2']:.2f}" in m2
-    j = prose.mode2_j({key: v for key, v in res.items() if "k_end_exact" in v})
+    j = sections.mode2_j({key: v for key, v in res.items() if "k_end_exact" in v})
     assert j["where"] in ("extrapolation", "field", "partly")
     assert j["j"][("gaussian", 2e-3)] == r["jintegral"]["k_end"] / r["k_end_exact"]
     # Mode I Table 2: ours beside the paper's Table 2 value for dx = 0.1

@@ -170,13 +170,12 @@ def run_case(workdir, kernel, delta, m, sigma, name=None, reuse=False, nprocs=1)
 # --------------------------------------------------------------------------- outputs
 
 def write_csv(path, rows, command):
-    csvfile.write_table(path, rows, CSV_COLUMNS,
-                        (f"made by: {command}", f"timing: LAMMPS loop time, 1 rank, {cpu()}"),
-                        text=TEXT_COLUMNS)
+    csvfile.write_csv(path, rows, (f"made by: {command}", f"timing: LAMMPS loop time, 1 rank, "
+                                   f"{cpu()}"), CSV_COLUMNS, TEXT_COLUMNS, nan="nan")
 
 
 def read_rows(path=RESULTS):
-    return csvfile.read_table(path, text=TEXT_COLUMNS)
+    return csvfile.read_csv(path, TEXT_COLUMNS)[1]
 
 
 def _f(v, fmt):
@@ -188,14 +187,13 @@ def grown(r):
     return r["v_max_over_cR"] <= 1.0
 
 
-def table(rows, command=None, cpu=None):
+def table(rows):
     """The README table of the results CSV (a run whose crack jumped: no split or speed)."""
     head = ("| kernel | δ (mm) | m | σ (MPa) | atoms | t_init (µs) | v before split (m/s), "
             "/c_R | mean v to split, /c_R | first split: t (µs), seen (µs), x (mm), y (mm) | "
             "branch angle (°) | v at end, /c_R | tips, splits at end | mirror: tips (dx), "
             "damage (%) | v_max/c_R | loop (s) |")
-    lines = ([f"Made by `{command}`" + (f" ({cpu})." if cpu else "."), ""] if command else [])
-    lines += [head, "|" + "---|" * (head.count("|") - 1)]
+    lines = [head, "|" + "---|" * (head.count("|") - 1)]
     for r in rows:
         cells = [r["kernel"], f"{r['delta_mm']:g}", f"{r['m']:g}", f"{r['sigma_MPa']:g}",
                  f"{int(r['atoms'])}", _f(r["t_init_us"], ".2f")]

@@ -22,7 +22,7 @@ from bbpd import plots, readers
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.markdown import cell
 from bbpd.markdown import table as md_table
-from bbpd.readers import read_csv
+from bbpd.csvfile import columns
 from bbpd.runner import run_lammps
 from bbpd.benchmarks import cli
 
@@ -82,11 +82,7 @@ def analytic_curves(outdir, m, delta, E, rho, dt=0.0, volume_correction=True, po
         args.append("--volume-correction")
     outdir.mkdir(parents=True, exist_ok=True)
     run_tool("bbpd-dispersion-curves", args, cwd=outdir)
-    return {k: read_csv(outdir / f"dispersion_{k}.csv") for k in KERNELS}
-
-
-def value_at(curve, column, kdx):
-    return float(np.interp(kdx, curve["k_dx"], curve[column]))
+    return {k: columns(outdir / f"dispersion_{k}.csv") for k in KERNELS}
 
 
 NEGATIVE_TOL = 1.0e-9   # v_g/v below -NEGATIVE_TOL is negative; round-off of exact zeros is not
@@ -124,7 +120,8 @@ def analytic_table(workdir, m=PAPER_M, delta=PAPER_DELTA, E=1.0, rho=1.0):
                                      ("discrete", paper[k], "discrete"),
                                      ("discrete_cv", cv[k], "discrete")):
             row[label] = {
-                "phase": {f"{x:g}": value_at(curve, "phase_" + suffix, x) for x in TABLE_KDX},
+                "phase": {f"{x:g}": float(np.interp(x, curve["k_dx"], curve["phase_" + suffix]))
+                          for x in TABLE_KDX},
                 "phase_k0": float(curve["phase_" + suffix][1]),
                 "group_negative": negative_intervals(curve, "group_" + suffix),
                 "group_min": float(curve["group_" + suffix].min()),
@@ -179,7 +176,7 @@ def run_kernel(kernel, workdir, nprocs=1, **lmp_vars):
               "u.dump"], cwd=workdir)
     # the 10-digit text dump is only needed by the FFT tool
     (workdir / "u.dump").unlink()
-    return info, read_csv(workdir / "measured.csv")
+    return info, columns(workdir / "measured.csv")
 
 
 def deviation(measured, omega_ref, kdx_range=KDX_RANGE, min_power=MIN_POWER):

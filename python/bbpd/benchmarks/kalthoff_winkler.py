@@ -18,7 +18,7 @@ from bbpd.crack_path import clusters
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_noted
 from bbpd.markdown import cell as fmt
-from bbpd.markdown import table as md_table
+from bbpd.markdown import columns
 from bbpd import plots
 from bbpd.benchmarks import cli
 
@@ -338,16 +338,14 @@ def study_measures(snaps, traj, g):
 
     # the initial angle on the first snapshot in which the crack reaches past INITIAL_RANGE
     # (later damage, e.g. the far-edge crack joining the path, cannot change it)
-    initial, when = {}, {}
+    initial = {}
     for side in ("lo", "hi"):
         past = np.nonzero(np.array(traj["L_" + side]) >= INITIAL_RANGE[1])[0]
         k = int(past[0]) if len(past) else len(snaps) - 1
         s = snaps[k][1]
         initial[side] = angles_of(s["f_ref[1]"], s["f_ref[2]"], s["c_dmg"], g)[side]["initial"]
-        when[side] = times[k]
     res["initial_deg"] = mean_or_none(list(initial.values()))
     res["initial_side_deg"] = initial      # each crack's own: they differ off the square grid
-    res["t_initial_us"] = min(when.values())
 
     # when a crack tip first comes within delta of the plate boundary
     res["t_edge_us"] = None
@@ -369,15 +367,20 @@ def study_measures(snaps, traj, g):
 
 # --------------------------------------------------------------------------- running
 
+def variables(kernel, dx, **extra):
+    """The input script's -var arguments: floats written exactly, other values as they are,
+    None left out"""
+    return {k: repr(float(v)) if isinstance(v, float) else str(v)
+            for k, v in dict(kernel=kernel, dx=float(dx), **extra).items() if v is not None}
+
+
 def run(kernel, dx, workdir, nprocs=2, tend=None, reuse=False, images=False):
     """Run the example in workdir; return analyse(workdir) with the run's wall time (s).
     reuse: analyse the outputs of an earlier finished run in workdir instead of running.
     images: the input's damage pictures as well, listed as snapshots [(t in us, path)]."""
     workdir = Path(workdir)
-    variables = {"kernel": kernel, "dx": repr(float(dx)), "images": "yes" if images else "no"}
-    if tend is not None:
-        variables["tend"] = repr(float(tend))
-    note = run_noted(EXAMPLE, workdir, variables, {"kernel": kernel, "dx": dx}, nprocs, reuse)
+    note = run_noted(EXAMPLE, workdir, variables(kernel, dx, images="yes" if images else "no",
+                                                 tend=tend), {"kernel": kernel, "dx": dx}, nprocs, reuse)
     res = analyse(workdir)
     res["wall_s"] = note["wall_s"]
     if images:
@@ -389,15 +392,21 @@ def run(kernel, dx, workdir, nprocs=2, tend=None, reuse=False, images=False):
 
 # --------------------------------------------------------------------------- figures
 
+def damage_panel(ax, res, size):
+    """The damage at the end of a run on its reference configuration, a square of `size`
+    (points^2 at dx = 1 mm) per atom; returns the scatter (for a colour bar)."""
+    m = res["damage_map"]
+    sc = ax.scatter(np.array(m["x"]) * 1e3, np.array(m["y"]) * 1e3, c=m["phi"], marker="s",
+                    s=size * (res["dx"] / 1e-3) ** 2, linewidths=0, cmap="jet", vmin=0.0,
+                    vmax=0.6, rasterized=True)
+    ax.set_aspect("equal")
+    return sc
+
+
 def plot_damage_map(res, path):
     """Damage at the end of the run on the reference configuration (paper Fig. 14)."""
-    m = res["damage_map"]
     with plots.figure(path, figsize=(3.6, 6.0)) as (fig, ax):
-        size = 4.0 * (res["dx"] / 1e-3) ** 2
-        sc = ax.scatter(np.array(m["x"]) * 1e3, np.array(m["y"]) * 1e3, c=m["phi"], s=size,
-                        marker="s", linewidths=0, cmap="jet", vmin=0.0, vmax=0.6)
-        fig.colorbar(sc, ax=ax, label="damage")
-        ax.set_aspect("equal")
+        fig.colorbar(damage_panel(ax, res, 4.0), ax=ax, label="damage")
         ax.set_xlabel("x (mm)")
         ax.set_ylabel("y (mm)")
         ax.set_title(f"{res['kernel']}, dx = {res['dx'] * 1e3:g} mm, "
@@ -435,6 +444,31 @@ def plot_paths(runs, path, title, fontsize=7):
     return path
 
 
+def figures(results, folder):
+    """The crack growing (the dump images of the runs that drew them, in a row), the damage map
+    of every run, the kernels' crack paths at each dx and each kernel's over its dx; returns
+    the paths written."""
+    folder = Path(folder)
+    out = []
+    for r in sorted(results, key=lambda r: (-r["dx"], KERNELS.index(r["kernel"]))):
+        tag = f"{r['kernel']}_dx{r['dx'] * 1e3:g}mm"
+        if r.get("snapshots"):
+            out.append(snapshots.draw_strip(
+                [(f"t = {t:.1f} us", p) for t, p in r["snapshots"]], folder / f"growth_{tag}.png",
+                f"Kalthoff-Winkler, {r['kernel']}, dx = {r['dx'] * 1e3:g} mm: damage from 0 "
+                "(blue) to 1 (red), LAMMPS dump image"))
+        out.append(plot_damage_map(r, folder / f"damage_{tag}.png"))
+    for dx in sorted({r["dx"] for r in results}, reverse=True):
+        same = [r for r in results if r["dx"] == dx]
+        if len(same) > 1:
+            out.append(plot_runs(same, folder / f"paths_dx{dx * 1e3:g}mm.png"))
+    for kernel in KERNELS:
+        same = sorted((r for r in results if r["kernel"] == kernel), key=lambda r: -r["dx"])
+        if len(same) > 1:
+            out.append(plot_runs(same, folder / f"paths_{kernel}_convergence.png"))
+    return out
+
+
 def plot_runs(results, path):
     """plot_paths of the kernels at one dx, or of one kernel's grids"""
     by_dx = len({r["dx"] for r in results}) > 1
@@ -459,17 +493,16 @@ def row(res):
 
 def table(rows):
     """Markdown table of row()s: kernel x resolution, the paper's values beside ours."""
-    header = ["kernel", "dx (mm)", "atoms", "first bond (us)", "damage band (us)", "paper (us)",
-              "angle (deg)", "exp. (deg)", "speed (m/s)", "tip mirror mismatch (mm)",
-              "far-edge crack from (us)", "other far damage (atoms)", "run time (s)"]
-    cells = [[r["kernel"], f"{r['dx_m'] * 1e3:g}", f"{r['atoms']:.0f}", fmt(r["first_bond_us"], ".1f"),
-              fmt(r["damage_band_us"], ".1f"), f"{PAPER_INITIATION_US[r['kernel']]:.1f}",
-              fmt(r["angle_deg"], ".1f"), f"{EXPERIMENT_ANGLE_DEG:.0f}", fmt(r["speed_m_s"], ".0f"),
-              fmt(r["symmetry_tip_mm"], ".1e"),
-              "none" if r["far_edge_crack_us"] is None else f"{r['far_edge_crack_us']:.0f}",
-              fmt(r["far_damage_other_atoms"], ".0f"), fmt(r["run_time_s"], ".1f")]
-             for r in sorted(rows, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx_m"]))]
-    return md_table(header, cells)
+    return columns(sorted(rows, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx_m"])), (
+        ("kernel", "kernel"), ("dx (mm)", lambda r: f"{r['dx_m'] * 1e3:g}"), ("atoms", "atoms", ".0f"),
+        ("first bond (us)", "first_bond_us", ".1f"), ("damage band (us)", "damage_band_us", ".1f"),
+        ("paper (us)", lambda r: f"{PAPER_INITIATION_US[r['kernel']]:.1f}"),
+        ("angle (deg)", "angle_deg", ".1f"), ("exp. (deg)", lambda r: f"{EXPERIMENT_ANGLE_DEG:.0f}"),
+        ("speed (m/s)", "speed_m_s", ".0f"), ("tip mirror mismatch (mm)", "symmetry_tip_mm", ".1e"),
+        ("far-edge crack from (us)", lambda r: "none" if r["far_edge_crack_us"] is None
+         else f"{r['far_edge_crack_us']:.0f}"),
+        ("other far damage (atoms)", "far_damage_other_atoms", ".0f"),
+        ("run time (s)", "run_time_s", ".1f")))
 
 
 def main(argv=None):
@@ -488,14 +521,7 @@ def main(argv=None):
             print(f"{kernel} dx = {dx * 1e3:g} mm: initiation {fmt(res['t_init_us'], '.2f')} us, "
                   f"angle {fmt(res['angle_deg'], '.1f')} deg, speed {fmt(res['speed'], '.0f')} m/s, "
                   f"wall {res['wall_s']:.0f} s", flush=True)
-            plot_damage_map(res, figs / f"damage_{kernel}_dx{dx * 1e3:g}mm.png")
-        same = [r for r in results if r["dx"] == dx]
-        if len(same) > 1:
-            plot_runs(same, figs / f"paths_dx{dx * 1e3:g}mm.png")
-    for kernel in args.kernels:
-        same = sorted((r for r in results if r["kernel"] == kernel), key=lambda r: -r["dx"])
-        if len(same) > 1:
-            plot_runs(same, figs / f"paths_{kernel}_convergence.png")
+    figures(results, figs)
     # the table covers every finished run in --work, also those of earlier invocations
     rows = [row(json.loads(p.read_text())) for p in sorted(work.glob("*/results.json"))]
     print(table(rows))

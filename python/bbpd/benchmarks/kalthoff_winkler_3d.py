@@ -19,7 +19,7 @@ from bbpd.provenance import cpu
 from bbpd.jobs import ROOT
 from bbpd.runner import run_lammps
 from bbpd.markdown import cell as _f
-from bbpd.markdown import table as md_table
+from bbpd.markdown import columns
 from bbpd.benchmarks import cli
 
 CSV = ROOT / "examples" / "kalthoff-winkler" / "results" / "kw3d.csv"
@@ -38,12 +38,9 @@ COLUMNS = ("setup", "kernel", "dx_mm", "m", "delta_mm", "horizons_through", "ato
            "loop_s", "memory_MB", "nprocs")
 
 
-def case_vars(dx, m=M, kernel=KERNEL, setup="3d"):
-    out = {"kernel": kernel, "dx": repr(float(dx)), "m": repr(float(m)), "loading": "projectile",
-           "tend": repr(TEND)}
-    if setup == "3d":
-        out["monitor"] = str(MONITOR)
-    return out
+def case_vars(dx, m=M, setup="3d"):
+    return kw.variables(KERNEL, dx, m=float(m), loading="projectile", tend=TEND,
+                        monitor=MONITOR if setup == "3d" else None)
 
 
 def log_figures(text):
@@ -108,31 +105,26 @@ def run_case(workdir, setup, dx, m=M, reuse=False, nprocs=None):
     ranks = (NPROCS if nprocs is None else nprocs) if setup == "3d" else 1
     if not (reuse and (wd / "log.lammps").is_file()):
         script = projectile.EXAMPLE_3D if setup == "3d" else kw.EXAMPLE
-        run_lammps(str(script), wd, nprocs=ranks, vars=case_vars(dx, m, setup=setup),
-                   timeout=TIMEOUT_S)
+        run_lammps(str(script), wd, nprocs=ranks, vars=case_vars(dx, m, setup), timeout=TIMEOUT_S)
     row = measure(wd, setup, dx, m)
     row["nprocs"] = readers.loop_time((wd / "log.lammps").read_text())[1] or ranks
     return row
 
 
-def table(rows, command=None):
+def table(rows):
     def faces(r):
         return ("-" if r["fit_face_lo_deg"] is None else
                 f"{r['fit_face_lo_deg']:.1f} / {r['fit_face_hi_deg']:.1f}")
-    out = md_table(
-        ("setup", "dx (mm)", "m", "delta (mm)", "horizons through 9 mm", "atoms", "bonds", "steps",
-         "first bond (us)", "damage band (us)", "initial (deg)", "fit, mid-plane (deg)",
-         "fit, faces (deg)", "chord, mid-plane / faces (deg)", "crack length (mm)",
-         "crack stops (us)", "loop (s)", "memory (MB)", "ranks"),
-        ([r["setup"].upper(), f"{r['dx_mm']:g}", f"{r['m']:g}", f"{r['delta_mm']:g}",
-          _f(r["horizons_through"], ".0f"), _f(r["atoms"], ".0f"), _f(r["bonds"], ".3g"),
-          _f(r["steps"], ".0f"), _f(r["first_bond_us"], ".1f"), _f(r["band_us"], ".1f"),
-          _f(r["initial_deg"], ".1f"), _f(r["fit_deg"], ".1f"), faces(r),
-          f"{_f(r['chord_deg'], '.1f')} / {_f(r['chord_face_deg'], '.1f')}",
-          _f(r["length_end_mm"], ".0f"), r["crack_stops"], _f(r["loop_s"], ".0f"),
-          _f(r["memory_MB"], ".0f"), f"{r['nprocs']:g}"]
-         for r in sorted(rows, key=lambda r: (-r["dx_mm"], r["setup"]))))
-    return out if command is None else f"Made by `{command}`.\n\n" + out
+    return columns(sorted(rows, key=lambda r: (-r["dx_mm"], r["setup"])), (
+        ("setup", lambda r: r["setup"].upper()), ("dx (mm)", "dx_mm", "g"), ("m", "m", "g"),
+        ("delta (mm)", "delta_mm", "g"), ("horizons through 9 mm", "horizons_through", ".0f"),
+        ("atoms", "atoms", ".0f"), ("bonds", "bonds", ".3g"), ("steps", "steps", ".0f"),
+        ("first bond (us)", "first_bond_us", ".1f"), ("damage band (us)", "band_us", ".1f"),
+        ("initial (deg)", "initial_deg", ".1f"), ("fit, mid-plane (deg)", "fit_deg", ".1f"),
+        ("fit, faces (deg)", faces), ("chord, mid-plane / faces (deg)", lambda r:
+                                      f"{_f(r['chord_deg'], '.1f')} / {_f(r['chord_face_deg'], '.1f')}"),
+        ("crack length (mm)", "length_end_mm", ".0f"), ("crack stops (us)", "crack_stops"),
+        ("loop (s)", "loop_s", ".0f"), ("memory (MB)", "memory_MB", ".0f"), ("ranks", "nprocs", "g")))
 
 
 def against_2d(rows):

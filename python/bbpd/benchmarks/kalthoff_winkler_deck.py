@@ -17,7 +17,7 @@ from bbpd.jobs import ROOT
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_noted
 from bbpd.markdown import cell as _f
-from bbpd.markdown import made_by, table as md_table
+from bbpd.markdown import columns
 from bbpd.benchmarks import cli
 
 CSV = ROOT / "examples" / "kalthoff-winkler" / "results" / "standard_deck.csv"
@@ -51,9 +51,7 @@ COLUMNS = ("deck", "kernel", "dx_mm", "v0", "rho", "Gc", "first_bond_us", "band_
 
 
 def case_vars(deck, kernel, dx):
-    out = {"kernel": kernel, "dx": repr(float(dx)), "tend": repr(study.TEND)}
-    out.update({k: v if isinstance(v, str) else repr(float(v)) for k, v in DECKS[deck][1].items()})
-    return out
+    return kw.variables(kernel, dx, tend=study.TEND, **DECKS[deck][1])
 
 
 def run_case(workdir, deck, kernel, dx, nprocs=1, reuse=False):
@@ -77,18 +75,15 @@ def loaded_density(workdir):
     return None
 
 
-def table(rows, command=None):
-    head = ("deck", "kernel", "dx (mm)", "v0 (m/s)", "rho (kg/m3)", "G_c (J/m2)", "first bond (us)",
-            "damage band (us)", "initial (deg)", "fit (deg)", "chord (deg)",
-            "crack length at end (mm)", "crack stops (us)", "loop CPU (s)")
-    out = md_table(head, ([
-        r["deck"], r["kernel"], f"{r['dx_mm']:g}", f"{r['v0']:g}", _f(r["rho"], ".0f"),
-        f"{r['Gc']:g}", _f(r["first_bond_us"], ".1f"), _f(r["band_us"], ".1f"),
-        _f(r["initial_deg"], ".1f"), _f(r["fit_deg"], ".1f"), _f(r["chord_deg"], ".1f"),
-        _f(r["length_end_mm"], ".0f"), r["crack_stops"], _f(r["loop_cpu_s"], ".0f")]
-        for r in sorted(rows, key=_order)))
-    made = [command] if isinstance(command, str) else list(command or [])
-    return made_by(made) + "\n\n" + out if made else out
+def table(rows):
+    return columns(sorted(rows, key=_order), (
+        ("deck", "deck"), ("kernel", "kernel"), ("dx (mm)", "dx_mm", "g"), ("v0 (m/s)", "v0", "g"),
+        ("rho (kg/m3)", "rho", ".0f"), ("G_c (J/m2)", "Gc", "g"),
+        ("first bond (us)", "first_bond_us", ".1f"), ("damage band (us)", "band_us", ".1f"),
+        ("initial (deg)", "initial_deg", ".1f"),
+        ("fit (deg)", "fit_deg", ".1f"), ("chord (deg)", "chord_deg", ".1f"),
+        ("crack length at end (mm)", "length_end_mm", ".0f"), ("crack stops (us)", "crack_stops"),
+        ("loop CPU (s)", "loop_cpu_s", ".0f")))
 
 
 def _order(r):
@@ -111,7 +106,7 @@ def comparison(rows):
         if a and b and a[f"{d}_deg"] is not None and b[f"{d}_deg"] is not None:
             return b[f"{d}_deg"], b[f"{d}_deg"] - a[f"{d}_deg"]
         return None
-    out = dict(fine=fine, coarse=coarse, deck={}, grid={}, changes={}, hits=[])
+    out = dict(fine=fine, coarse=coarse, deck={}, grid={}, changes={})
     for k in KERNELS:
         for d in kw.ANGLE_DEFS:
             if (v := moved("paper", "standard", k, fine, d)) is not None:
@@ -125,11 +120,8 @@ def comparison(rows):
             if got:
                 out["changes"][deck] = (dx, got)
                 break
-    for r in sorted(rows, key=_order):
-        defs = [d for d in kw.ANGLE_DEFS if r[f"{d}_deg"] is not None
-                and abs(r[f"{d}_deg"] - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
-        if defs and r["crack_stops"].startswith("edge"):
-            out["hits"].append((r["deck"], r["kernel"], r["dx_mm"], defs))
+    out["hits"] = [(r["deck"], r["kernel"], r["dx_mm"], defs) for r in sorted(rows, key=_order)
+                   if (defs := projectile.at_target(r))]
     return out
 
 

@@ -49,10 +49,6 @@ SIDES = ("lo", "hi")
 
 # ---------------------------------------------------------------------------- running
 
-def grid_vars(grid):
-    return {k: (v if isinstance(v, str) else repr(v)) for k, v in GRIDS[grid].items()}
-
-
 # per-atom data of the analysis, not needed for the rows
 BULKY = ("damage_map", "trajectory", "crack_lo", "crack_hi")
 
@@ -62,9 +58,7 @@ def run_case(workdir, kernel, dx, loading, grid, nprocs=1, tend=TEND):
     rows are made from the result by row(), outside the job, so that the table's code is no
     part of the runs' cache key."""
     workdir = Path(workdir)
-    variables = {"kernel": kernel, "dx": repr(float(dx)), "tend": repr(float(tend)),
-                 "loading": loading}
-    variables.update(grid_vars(grid))
+    variables = kw.variables(kernel, dx, tend=float(tend), loading=loading, **GRIDS[grid])
     wall = run_or_reuse(kw.EXAMPLE, workdir, variables, nprocs)[1]
     res = projectile.analyse(workdir)
     res.update(nprocs=nprocs, wall_s=wall, grid=grid)

@@ -18,8 +18,7 @@ from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.runner import run_noted
 from bbpd import plots
-from bbpd.markdown import cell
-from bbpd.markdown import table as md_table
+from bbpd.markdown import columns
 from bbpd.benchmarks import cli
 
 # ---------------------------------------------------------------------------- physics
@@ -33,7 +32,6 @@ V_INTERFACE = V0 * AREA_RATIO / (AREA_RATIO + 1.0)         # 26.03 m/s (1D two-b
 # the projectile's waves: E and rho scaled alike keep the plate's speeds (plane strain, nu = 1/4)
 C_P = kw.C_P                                              # 5407 m/s, plane wave
 C_STRIP = math.sqrt(kw.E / (1.0 - kw.NU ** 2) / kw.RHO)   # 5097 m/s, plane-strain strip
-LP_DEFAULT = 0.100                                        # m, the input script's default
 
 # the interface speed is averaged from the end of the contact's rise to the return of the
 # plate's wave from the notch tips (2 x 50 mm / c_p = 18.5 us), where the struck strip widens
@@ -43,11 +41,6 @@ OPEN_MIN_US = 1.0
 # J/m^2: the paper; K_Ic = 90 MPa sqrt(m) with E = 191 GPa; phase-field decks after Borden et al. 2012
 GC_VALUES = {"paper": 6.9e4, "KIc90": 4.24e4, "phasefield": 2.213e4}
 TEND = 100.0e-6
-
-
-def two_l_over_c(lp=LP_DEFAULT):
-    """2 Lp / c of the projectile (us) with the plane-wave and the strip speed."""
-    return 2.0 * lp / C_P * 1e6, 2.0 * lp / C_STRIP * 1e6
 
 
 # ---------------------------------------------------------------------------- measurements
@@ -94,11 +87,6 @@ def measure_contact(d, dt):
     return out
 
 
-def read_projectile_log(text):
-    m = re.search(r"^KW projectile: Lp (\S+) \((\d+) columns\)", text, re.M)
-    return None if m is None else {"Lp": float(m[1]), "ncol": int(m[2])}
-
-
 def loop_cpu(text):
     """CPU seconds of the run's loop, all ranks: LAMMPS's loop (wall) time x its CPU use.
     On a shared machine the wall time follows the load; the CPU time much less."""
@@ -114,15 +102,14 @@ def analyse(workdir):
     workdir = Path(workdir)
     res = kw.analyse(workdir)
     log = (workdir / "log.lammps").read_text()
-    proj = read_projectile_log(log)
+    proj = re.search(r"^KW projectile: Lp (\S+) \((\d+) columns\)", log, re.M)
     res["loading"] = "prescribed" if proj is None else "projectile"
     res["setup"] = "3d" if re.search(r"^KW 3d:", log, re.M) else "2d"
     res["loop_cpu_s"] = loop_cpu(log)
     m = re.search(r"types 1 1: E = \S+\s+Gc = (\S+)", log)
     res["Gc"] = float(m[1]) if m else None
     if proj is not None:
-        res.update(proj)
-        res["Lp_effective"] = proj["ncol"] * res["dx"]
+        res.update(Lp=float(proj[1]), ncol=int(proj[2]), Lp_effective=int(proj[2]) * res["dx"])
         res.update(measure_contact(read_projectile(workdir / "projectile.dat"), res["dt"]))
         # the contact stress: force over the struck face (width between the notch lines x
         # thickness: dx in 2D, one layer of cells; the plate's in 3D)
@@ -131,7 +118,8 @@ def analyse(workdir):
         res["contact_stress_MPa"] = res["force_plateau"] / ((res["yhi"] - res["ylo"]) * thick) / 1e6
         # the faces' largest overlap past the contact distance, in grid spacings
         res["overlap_max_dx"] = (0.9 * res["dx"] - res["gap_min"]) / res["dx"]
-        res["two_l_over_c_us"] = two_l_over_c(res["Lp_effective"])
+        # 2 Lp / c of the projectile (us) with the plane-wave and the strip speed
+        res["two_l_over_c_us"] = tuple(2.0 * res["Lp_effective"] / c * 1e6 for c in (C_P, C_STRIP))
     return res
 
 
@@ -141,10 +129,8 @@ def run_case(workdir, kernel, dx, loading, gc, nprocs=1, tend=TEND, lp=None, reu
              dim=2):
     """Run one case in workdir (unless reuse and it has finished) and measure it; dim = 3
     runs in.kalthoff_winkler_3d."""
-    variables = {"kernel": kernel, "dx": repr(float(dx)), "tend": repr(float(tend)),
-                 "loading": loading, "Gc": repr(float(gc))}
-    if lp is not None:
-        variables["Lp"] = repr(float(lp))
+    variables = kw.variables(kernel, dx, tend=float(tend), loading=loading, Gc=float(gc),
+                             Lp=None if lp is None else float(lp))
     case = run_noted(kw.EXAMPLE if dim == 2 else EXAMPLE_3D, workdir, variables,
                      {"kernel": kernel, "dx": dx, "loading": loading, "Gc": gc}, nprocs, reuse)
     res = analyse(workdir)
@@ -213,31 +199,25 @@ def read_csv(path):
     return csvfile.read_csv(path)[1]
 
 
-def crosses_plate(r):
-    """The crack reached the plate's boundary (not arrested, not still running inside)."""
-    return r["crack_stops"].startswith("edge")
-
-
 def at_target(r):
     """the angle definitions by which a run's crack lies within 70 +- 2 deg, if its cracks cross
     the plate (else none)"""
-    return [d for d in ("initial", "fit", "chord") if crosses_plate(r) and r[f"{d}_deg"] is not None
+    return [d for d in ("initial", "fit", "chord") if r["crack_stops"].startswith("edge")
+            and r[f"{d}_deg"] is not None
             and abs(r[f"{d}_deg"] - study.ANGLE_TARGET_DEG) <= study.ANGLE_TOL_DEG]
 
 
 def markdown(rows):
-    return md_table(
-        ("setup", "loading", "kernel", "dx (mm)", "Gc (J/m2)", "first bond (us)", "damage band (us)",
-         "initial (deg)", "fit (deg)", "chord (deg)", "crack length at end (mm)", "crack stops (us)",
-         "far-edge crack (us)", "interface speed (m/s)", "contact force drop (us)",
-         "contact opens (us)", "momentum drift", "loop CPU (s)", "ranks", "70 ± 2° and crosses"),
-        ([r["setup"].upper(), r["loading"], r["kernel"], f"{r['dx_mm']:g}", f"{r['Gc']:g}",
-          cell(r["first_bond_us"], ".1f"), cell(r["band_us"], ".1f"), cell(r["initial_deg"], ".1f"),
-          cell(r["fit_deg"], ".1f"), cell(r["chord_deg"], ".1f"), cell(r["length_end_mm"], ".0f"),
-          r["crack_stops"], cell(r["far_edge_us"], ".0f"), cell(r["v_interface"], ".2f"),
-          cell(r["t_drop_us"], ".1f"), cell(r["t_open_us"], ".1f"), cell(r["momentum_drift"], ".1e"),
-          cell(r["loop_cpu_s"], ".0f"), f"{r['nprocs']:g}", ", ".join(at_target(r)) or "-"]
-         for r in rows))
+    return columns(rows, (
+        ("setup", lambda r: r["setup"].upper()), ("loading", "loading"), ("kernel", "kernel"),
+        ("dx (mm)", "dx_mm", "g"), ("Gc (J/m2)", "Gc", "g"), ("first bond (us)", "first_bond_us", ".1f"),
+        ("damage band (us)", "band_us", ".1f"), ("initial (deg)", "initial_deg", ".1f"),
+        ("fit (deg)", "fit_deg", ".1f"), ("chord (deg)", "chord_deg", ".1f"),
+        ("crack length at end (mm)", "length_end_mm", ".0f"), ("crack stops (us)", "crack_stops"),
+        ("far-edge crack (us)", "far_edge_us", ".0f"), ("interface speed (m/s)", "v_interface", ".2f"),
+        ("contact force drop (us)", "t_drop_us", ".1f"), ("contact opens (us)", "t_open_us", ".1f"),
+        ("momentum drift", "momentum_drift", ".1e"), ("loop CPU (s)", "loop_cpu_s", ".0f"),
+        ("ranks", "nprocs", "g"), ("70 ± 2° and crosses", lambda r: ", ".join(at_target(r)) or "-")))
 
 
 # ---------------------------------------------------------------------------- report
@@ -321,9 +301,6 @@ def main(argv=None):
                                  f"dx{dx * 1e3:g}mm-Gc{gc:g}")
                     r = run_case(wd, kernel, dx, loading, gc, nprocs=args.nprocs,
                                  reuse=args.reuse, dim=args.dim, tend=args.tend)
-                    (wd / "results.json").write_text(json.dumps(
-                        {k: v for k, v in r.items() if k not in ("damage_map", "trajectory")},
-                        default=str))
                     print(f"{wd.name}: fit {r.get('fit_t70_deg')} chord {r.get('chord_t70_deg')} "
                           f"v_i {r.get('v_interface')} open {r.get('t_open_us')} "
                           f"wall {r['wall_s']:.0f} s", flush=True)

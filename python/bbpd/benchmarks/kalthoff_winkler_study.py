@@ -8,8 +8,6 @@ import json
 import math
 from pathlib import Path
 
-import numpy as np
-
 from bbpd import csvfile
 from bbpd import jobs as jobmod
 from bbpd import readers
@@ -53,17 +51,10 @@ STUDY_KERNEL_DX = [(k, 1.0e-3) for k in kw.KERNELS] + [("gaussian", 0.5e-3)]
 
 # ---------------------------------------------------------------------------- running
 
-def case_vars(case, kernel, dx, tend=TEND):
-    """The -var arguments of one study run."""
-    out = {"kernel": kernel, "dx": repr(float(dx)), "tend": repr(float(tend))}
-    for k, v in CASES[case][1].items():
-        out[k] = repr(float(dx)) if v == "dx" else repr(float(v))
-    return out
-
-
 def run_case(workdir, kernel, dx, case, nprocs=1, tend=TEND):
     """Run one loading case in workdir and measure it (the job of the study and the report)."""
-    note = run_noted(kw.EXAMPLE, workdir, case_vars(case, kernel, dx, tend),
+    extra = {k: float(dx) if v == "dx" else float(v) for k, v in CASES[case][1].items()}
+    note = run_noted(kw.EXAMPLE, workdir, kw.variables(kernel, dx, tend=tend, **extra),
                      {"case": case, "kernel": kernel, "dx": dx}, nprocs)
     res = kw.analyse(workdir)
     res.update(case=case, wall_s=note["wall_s"])
@@ -80,23 +71,15 @@ def angle(res, definition):
     return res.get("initial_deg") if definition == "initial" else res.get(f"{definition}_t70_deg")
 
 
-def reaches_angle(res, definition):
-    a = angle(res, definition)
-    return a is not None and abs(a - ANGLE_TARGET_DEG) <= ANGLE_TOL_DEG
-
-
-def in_init_window(t):
-    return t is not None and INIT_WINDOW_US[0] <= t <= INIT_WINDOW_US[1]
-
-
 def hits(results):
     """{'angle': [(case, kernel, dx, definitions)] of the runs at 70 +- 2 deg, 'initiation':
     [(case, kernel, dx, readings)] in the paper's window, 'both': [(case, kernel, dx)]}"""
     out = {"angle": [], "initiation": [], "both": []}
     for (case, k, dx), r in sorted(results.items(), key=_order):
-        defs = [d for d in kw.ANGLE_DEFS if reaches_angle(r, d)]
+        defs = [d for d in kw.ANGLE_DEFS if (a := angle(r, d)) is not None
+                and abs(a - ANGLE_TARGET_DEG) <= ANGLE_TOL_DEG]
         inits = [n for n, key in (("first bond", "t_init_us"), ("damage band", "t_band_us"))
-                 if in_init_window(r[key])]
+                 if r[key] is not None and INIT_WINDOW_US[0] <= r[key] <= INIT_WINDOW_US[1]]
         out["angle"] += [(case, k, dx, defs)] if defs else []
         out["initiation"] += [(case, k, dx, inits)] if inits else []
         out["both"] += [(case, k, dx)] if defs and inits else []
@@ -164,18 +147,13 @@ CSV = kw.ROOT / "examples" / "kalthoff-winkler" / "results" / "study.csv"
 
 
 def write_csv(path, rows, command):
-    csvfile.write_table(path, [dict(zip(TABLE_HEADER, r)) for r in rows], TABLE_HEADER,
-                        [f"made by: {command}"], text=TABLE_HEADER)
+    csvfile.write_csv(path, [dict(zip(TABLE_HEADER, r)) for r in rows], [f"made by: {command}"],
+                      TABLE_HEADER, TABLE_HEADER)
 
 
 def read_csv(path=CSV):
-    rows = csvfile.read_table(path, text=TABLE_HEADER)
+    rows = csvfile.read_csv(path, TABLE_HEADER)[1]
     return [[r[c] for c in TABLE_HEADER] for r in rows], csvfile.provenance(path)
-
-
-def readme_table(path=CSV):
-    rows, made = read_csv(path)
-    return markdown.made_by([ln.partition(": ")[2] for ln in made]) + "\n\n" + md_table(rows)
 
 
 def cases_table():
@@ -203,11 +181,7 @@ def plot_damage_cases(results, kernel, dx, path):
     with plots.figure(path, 1, len(runs), figsize=(2.0 * len(runs) + 0.8, 4.2), squeeze=False,
                       dpi=130) as (fig, axes):
         for ax, (c, r) in zip(axes[0], runs):
-            m = r["damage_map"]
-            sc = ax.scatter(np.array(m["x"]) * 1e3, np.array(m["y"]) * 1e3, c=m["phi"],
-                            s=1.0 * (dx / 1e-3) ** 2, marker="s", linewidths=0, cmap="jet",
-                            vmin=0.0, vmax=0.6, rasterized=True)
-            ax.set_aspect("equal")
+            sc = kw.damage_panel(ax, r, 1.0)
             ax.set_title(c, fontsize=8)
             ax.tick_params(labelsize=6)
         fig.colorbar(sc, ax=list(axes[0]), label="damage", shrink=0.8)

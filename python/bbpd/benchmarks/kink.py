@@ -150,15 +150,15 @@ def rms(values):
 def verdict(rows, dist="2d", dx=COARSE[0], cases=None):
     """Numbers behind the README's sentence, from the mixed-mode rows of one grid (psi > 0: in
     pure Mode I every criterion says 0; cases: only these (kernel, psi, alpha)): RMS and mean
-    (measured - criterion) with its standard error, for all kernels and angles and per kernel
-    and crack angle; the grid's pull = mean |angle(alpha = 22.5) - angle(alpha = 0)| over
+    (measured - criterion) with its standard error, for all kernels and angles and per kernel;
+    the grid's pull = mean |angle(alpha = 22.5) - angle(alpha = 0)| over
     kernels and mixes; the kernel effect = the spread (max - min) of the angle across the
     kernels at one (mix, alpha)."""
     grid = [r for r in rows if r["dx"] == dx and r["ncross"] == NCROSS]
     key = f"angle_{dist}"
     mixed = [r for r in grid if r["psi"] > 0 and r[key] is not None
              and (cases is None or (r["kernel"], r["psi"], r["alpha"]) in cases)]
-    out = {"n": len(mixed), "rms": {}, "bias": {}, "se": {}, "rms_kernel": {}, "rms_alpha": {}}
+    out = {"n": len(mixed), "rms": {}, "bias": {}, "se": {}, "rms_kernel": {}}
     for c in CRITERIA:
         d = np.array([r[key] - r[c] for r in mixed])
         out["rms"][c] = rms(d)
@@ -166,37 +166,25 @@ def verdict(rows, dist="2d", dx=COARSE[0], cases=None):
         out["se"][c] = float(d.std(ddof=1) / math.sqrt(len(d))) if len(d) > 1 else math.nan
         for k in KERNELS:
             out["rms_kernel"][k, c] = rms([r[key] - r[c] for r in mixed if r["kernel"] == k])
-        for a in ALPHAS_DEG:
-            out["rms_alpha"][a, c] = rms([r[key] - r[c] for r in mixed if r["alpha"] == a])
     out["best"] = min(CRITERIA, key=lambda c: out["rms"][c])
     present = [k for k in KERNELS if out["rms_kernel"][k, CRITERIA[0]] is not None]
     out["best_kernel"] = {k: min(CRITERIA, key=lambda c: out["rms_kernel"][k, c]) for k in present}
-    # how far apart the criteria themselves are over the same runs
-    out["criteria_rms"] = {(a, b): rms([r[a] - r[b] for r in mixed])
-                           for a in CRITERIA for b in CRITERIA if a < b}
     by = {(r["kernel"], r["psi"], r["alpha"]): r[key] for r in mixed}
     pairs = [(k, p) for k in KERNELS for p in MIXES_DEG
              if (k, p, ALPHAS_DEG[1]) in by and (k, p, ALPHAS_DEG[0]) in by]
     pulls = [abs(by[k, p, ALPHAS_DEG[1]] - by[k, p, ALPHAS_DEG[0]]) for k, p in pairs]
-    out["pull_cases"] = {(k, p, a) for k, p in pairs for a in ALPHAS_DEG}
     out["pull_mean"] = float(np.mean(pulls)) if pulls else None
     out["pull_max"] = float(np.max(pulls)) if pulls else None
     groups = [(p, a) for p in MIXES_DEG for a in ALPHAS_DEG
               if all((k, p, a) in by for k in KERNELS)]
     spreads = [max(by[k, p, a] for k in KERNELS) - min(by[k, p, a] for k in KERNELS)
                for p, a in groups]
-    out["spread_cases"] = {(k, p, a) for p, a in groups for k in KERNELS}
     out["kernel_spread_mean"] = float(np.mean(spreads)) if spreads else None
     out["kernel_spread_max"] = float(np.max(spreads)) if spreads else None
     return out
 
 
 LOCK_DEG = 1.0     # a kink within this of a lattice direction counts as locked onto it
-
-
-def grid_offset(lab_deg):
-    """Distance (deg) of a lab-frame direction from the nearest multiple of 45 deg."""
-    return abs((lab_deg + 22.5) % 45.0 - 22.5)
 
 
 def admitted(v):
@@ -220,10 +208,11 @@ def row_of(res):
     return r
 
 
-def write_csv(rows, path, command):
+def write_csv(rows, path, provenance):
+    """provenance: the 'made by' and 'rows added by' lines (csvfile.continue_csv)"""
     path.parent.mkdir(parents=True, exist_ok=True)
     csvfile.write_csv(path, [{c: r.get(c) for c in COLUMNS} for r in rows], [
-        command, f"CPU: {cpu()}; nprocs MPI ranks per run (empty: one), on a shared machine "
+        *provenance, f"CPU: {cpu()}; nprocs MPI ranks per run (empty: one), on a shared machine "
         "(wall_s); angles in degrees (theta < 0 for K_II > 0), extension in horizons"])
 
 
@@ -312,7 +301,7 @@ def locked(rows):
     """The mixed-mode runs whose crack left the tip within LOCK_DEG of a grid direction (a
     multiple of 45 deg in the lattice frame) while more than 2 LOCK_DEG from every criterion"""
     return [r for r in rows if r["psi"] > 0 and r["angle_2d"] is not None
-            and grid_offset(r["angle_2d"] + r["alpha"]) <= LOCK_DEG
+            and abs((r["angle_2d"] + r["alpha"] + 22.5) % 45.0 - 22.5) <= LOCK_DEG
             and min(abs(r["angle_2d"] - r[c]) for c in CRITERIA) > 2 * LOCK_DEG]
 
 
@@ -390,18 +379,6 @@ def case_key(r):
             float(r["ncross"]))
 
 
-def merged(rows, path):
-    """rows, and the rows of the CSV at path that are not among them (same case_key)."""
-    mine = {case_key(r) for r in rows}
-    return [r for r in read_rows(path) if case_key(r) not in mine] + rows
-
-
-def first_line(path):
-    """The command in the first line of a CSV written by write_csv."""
-    with open(path) as fh:
-        return fh.readline().lstrip("# ").strip()
-
-
 def main(argv=None):
     ap = cli.parser(__doc__, "/tmp/kink", nprocs=1, kernels=KERNELS)
     ap.add_argument("--workers", type=int, default=2, help="runs at a time")
@@ -423,9 +400,10 @@ def main(argv=None):
             and not (args.fine_only and c[3] != FINE[0]) and c[0] in args.kernels]
     todo.sort(key=lambda c: (-c[3], c[5]))    # the coarse grid first, the ramp check last
     path = Path(args.results)
-    if args.add_missing and path.is_file():
-        have = {case_key(r) for r in read_rows(path)}
-        todo = [c for c in todo if (c[0], c[1], c[2], round(c[3] * 1e3, 9), c[5]) not in have]
+    earlier, old, made = csvfile.continue_csv(path if args.add_missing else None,
+                                              cli.command("kink", argv).strip(), read_rows)
+    have = {case_key(r) for r in old}
+    todo = [c for c in todo if (c[0], c[1], c[2], round(c[3] * 1e3, 9), c[5]) not in have]
     todo = todo[:args.max_runs]
     specs = jobs(todo, args.nprocs)
     results = run_jobs([sp.job for sp in specs], args.work, workers=args.workers)
@@ -433,11 +411,8 @@ def main(argv=None):
     rows = [row_of(results[sp.job.label]) for sp in done]
     if failed:
         print("FAILED:", failed)
-    command = cli.command("kink", argv)
-    if args.add_missing and path.is_file():
-        command = f"{first_line(path)}; rows added by {command.strip()}"
-        rows = merged(rows, path)
-    write_csv(rows, path, command.strip())
+    mine = {case_key(r) for r in rows}
+    write_csv([r for r in old if case_key(r) not in mine] + rows, path, [*earlier, made])
     if not args.add_missing:
         check = loading_check(Path(args.work) / "loading-check")
         print(f"J-integral check: {check}")

@@ -76,7 +76,7 @@ def _order(r):
     return (r["kernel"] != KERNEL, r["kernel"], -psi, alpha, r["R_over_delta"], r["m"])
 
 
-def table(rows, command=None):
+def table(rows):
     head = ("kernel", "psi", "alpha", "m", "R/delta", "dx (mm)", "atoms", "steps",
             "K at 1st break / K_c", "extension (delta)", "angle at 2 delta", "angle at 4 delta",
             "hoop stress", "hoop strain", "max G", "loop (s)", "ranks")
@@ -89,11 +89,7 @@ def table(rows, command=None):
     out += "\n\n" + RESOLUTION_NOTE
     if rows and all(r.get("cpu") for r in rows):
         out += "\n\n" + loop_times(rows)
-    made = [command] if isinstance(command, str) else list(command or [])
-    intro = (f"Made by `{made[0]}`" + (f"; rows added by {len(made) - 1} more commands, each named "
-                                       f"in the header of `{CSV.relative_to(kinkbench.ROOT)}`"
-                                       if len(made) > 1 else "") + ".") if made else ""
-    return intro + "\n\n" + out if made else out
+    return out
 
 
 RESOLUTION_NOTE = ("Angles ± the grid's resolution: half a spacing across the path at 2 or 4 "

@@ -145,11 +145,6 @@ def _between(v):
     return tuple(min(side, key=lambda c: abs(v["bias"][c])) for side in (more, less))
 
 
-def _nearest_mean(v):
-    """the criterion the mean angle of verdict v lies nearest"""
-    return min(NAMES, key=lambda c: abs(v["bias"][c]))
-
-
 def limits(rows):
     """The whole mixed-mode sweep followed across m, per kernel and R/delta with two or more
     complete sweeps, at each distance: a list of dicts with kernel, rd, dist, ms, v (each m's
@@ -194,7 +189,8 @@ def limits(rows):
                 state = "approaches"
             out.append(dict(kernel=kernel, rd=rd, dist=dist, ms=ms, v=v, state=state, near=near,
                             near_prev=near_prev, step=step, drifts=_drifts(step),
-                            between=_between(last), nearest_mean=_nearest_mean(last),
+                            between=_between(last),
+                            nearest_mean=min(NAMES, key=lambda c: abs(last["bias"][c])),
                             limit=best if state == "approaches" else None))
     return out
 

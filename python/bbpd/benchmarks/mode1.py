@@ -16,7 +16,7 @@ import numpy as np
 from bbpd import freund, metrics, readers
 from bbpd.csvfile import write_csv
 from bbpd.jobs import ROOT
-from bbpd.kernels import KERNELS
+from bbpd.kernels import COLORS, KERNELS
 from bbpd.markdown import cell
 from bbpd.markdown import table as md_table
 from bbpd.provenance import machine
@@ -209,48 +209,49 @@ TIP_STUDY = ((0.5, 1.0, 2.0), (0.5, 1.0, 3.0), (0.5, 2.0, 3.0), (0.5, 2.0, 4.0),
 
 
 def tip_study(work, dx=0.05, kernel="gaussian", nprocs=1):
-    """How K moves with the tip position and r1, r2 (README table)."""
-    print(f"tip study ({kernel}, dx = {dx}): tip x - a | r1 r2 (dx) | K_max/K_max,exact "
-          "(consistent) | peak L2 (consistent) | peak L2 (paper)")
-    out = []
+    """How K moves with the tip position and r1, r2 (README table): a row per TIP_STUDY case."""
+    exact, _ = reference("consistent")
+    rows = []
     for shift, r1, r2 in TIP_STUDY:
         res = run(Path(work) / f"tip_{shift}_{r1}_{r2}", kernel, dx, nprocs=nprocs,
                   tipshift=shift, r1=r1, r2=r2)
-        exact, t_c = reference("consistent")
-        w = res["t"] <= 3.0 * t_c
-        ratio = res["k_consistent"][w].max() / exact(res["t"][w]).max()
         c, p = res["consistent"], res["paper"]
-        print(f"{shift:+5.1f} dx | {r1:3.1f} {r2:3.1f} | {ratio:6.3f} | {c['peak']:6.2f} "
-              f"{c['l2']:6.2f} | {p['peak']:6.2f} {p['l2']:6.2f}")
-        out.append((shift, r1, r2, ratio, res))
-    return out
+        rows.append({"tipshift_dx": shift, "r1_dx": r1, "r2_dx": r2,
+                     "kmax_ratio": _kmax_ratio(res, "k_consistent", exact),
+                     "consistent_peak": c["peak"], "consistent_l2": c["l2"],
+                     "paper_peak": p["peak"], "paper_l2": p["l2"], "run_time_s": res["wall_time"]})
+        print(f"tip x - a {shift:+.1f} dx, r1 r2 {r1:g} {r2:g} dx: K_max/K_max,exact "
+              f"{rows[-1]['kmax_ratio']:.3f}, peak / L2 consistent {c['peak']:.2f} / {c['l2']:.2f}, "
+              f"paper {p['peak']:.2f} / {p['l2']:.2f}", flush=True)
+    return rows
 
 
-def write_tips_csv(path, study, command):
-    """tip_study's rows as CSV, with the command and machine that made them."""
-    rows = [{"tipshift_dx": shift, "r1_dx": r1, "r2_dx": r2, "kmax_ratio": ratio,
-             "consistent_peak": res["consistent"]["peak"], "consistent_l2": res["consistent"]["l2"],
-             "paper_peak": res["paper"]["peak"], "paper_l2": res["paper"]["l2"],
-             "run_time_s": res["wall_time"]} for shift, r1, r2, ratio, res in study]
-    write_csv(path, rows, [f"made by: {command} on {time.strftime('%Y-%m-%d %H:%M')}",
-                           "Gaussian kernel, dx = 0.05 m, plane/stress",
-                           f"machine: {machine()}"])
+RESOLUTION_COLORS = ("tab:purple", "tab:red", "tab:green", "tab:blue", "tab:brown")
 
 
 def figures(rows2, rows3, folder):
-    folder = Path(folder)
+    """Fig. 9 (the Gaussian's results by dx, rows2) and Fig. 10 (by kernel at TABLE3_DX, rows3):
+    K_I(t) against eq. 42 in both conventions; returns the paths written."""
     norm = SIGMA0 * np.sqrt(H)
     exact, t_c = reference("consistent")
     exact_p, _ = reference("paper")
-    tt = np.linspace(0.0, 3.0 * t_c, 400)
-    refs = [("eq. 42, BBPD constants", tt, exact(tt) / norm, "--", "black"),
-            ("eq. 42, nu = 0.3 (paper)", tt, exact_p(tt) / norm, "-.", "grey")]
-    for name, rows, label in (("fig9_resolutions.png", rows2, lambda k: f"dx = {k} m"),
-                              ("fig10_kernels.png", rows3, lambda k: k)):
+    tt = np.linspace(0.0, T_END, 600)
+    refs = [("eq. 42, BBPD constants (consistent)", tt * 1e3, exact(tt) / norm, "--", "black"),
+            ("eq. 42, paper's constants (nu = 0.3)", tt * 1e3, exact_p(tt) / norm, "-.", "grey")]
+    rows2 = dict(sorted(rows2.items(), reverse=True))
+    colors = {**dict(zip(rows2, RESOLUTION_COLORS * len(rows2))), **COLORS}
+    out = []
+    for name, rows, label, title in (
+            ("fig9_resolutions.png", rows2, lambda dx: f"dx = {dx:g} m",
+             "Fig. 9: Mode-I K_I(t), Gaussian kernel, m = 5, three grids"),
+            ("fig10_kernels.png", rows3, lambda k: k,
+             f"Fig. 10: Mode-I K_I(t), dx = {TABLE3_DX:g} m, m = 5, three kernels")):
         if rows:
-            plot_k(folder / name, [(label(k), r["t"], r["k_consistent"] / norm, None)
-                                   for k, r in rows.items()], refs, (0.0, 3.0 * t_c),
-                   name.split(".")[0], "t (s)", "K_I / (sigma0 sqrt(H))")
+            out.append(plot_k(Path(folder) / name, [
+                (f"{label(key)} (consistent L2 {r['consistent']['l2']:.2f} %)", r["t"] * 1e3,
+                 r["k_consistent"] / norm, colors[key]) for key, r in rows.items()],
+                refs, (0.0, 3.0 * t_c * 1e3), title, "t (ms)", r"$K_I/(\sigma_0\sqrt{H})$"))
+    return out
 
 
 def main(argv=None):
@@ -273,9 +274,12 @@ def main(argv=None):
     if rows3:
         print(table3([row(r) for r in rows3.values()]))
     if args.tips or args.tips_csv:
-        out = tip_study(args.work, nprocs=args.nprocs)
+        rows = tip_study(args.work, nprocs=args.nprocs)
         if args.tips_csv:
-            write_tips_csv(args.tips_csv, out, cli.command("mode1", argv).strip())
+            write_csv(args.tips_csv, rows, [f"made by: {cli.command('mode1', argv).strip()} on "
+                                            f"{time.strftime('%Y-%m-%d %H:%M')}",
+                                            "Gaussian kernel, dx = 0.05 m, plane/stress",
+                                            f"machine: {machine()}"])
     if args.figures:
         figures(rows2, rows3, args.figures)
 

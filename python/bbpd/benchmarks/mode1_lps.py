@@ -38,26 +38,19 @@ def read_rows(path=CSV):
     return csvfile.read_csv(path)[1]
 
 
-def _bond(bond_rows, kernel, dx):
-    for r in bond_rows:
-        if r["kernel"] == kernel and abs(r["dx_m"] - dx) < 1e-12:
-            return r
-    return None
-
-
-def table(rows, bond_rows, command=None):
-    def bond(r):
-        b = _bond(bond_rows, r["kernel"], r["dx_m"])
+def table(rows, bond_rows):
+    def bond(r):    # the bond-based run of the same kernel and grid
+        b = next((q for q in bond_rows if q["kernel"] == r["kernel"]
+                  and abs(q["dx_m"] - r["dx_m"]) < 1e-12), None)
         return ([f"{b['consistent_peak']:.2f} / {b['consistent_l2']:.2f}",
                  f"{b['j_peak']:.2f} / {b['j_l2']:.2f}"] if b else ["-", "-"])
-    out = md_table(
+    return md_table(
         ("kernel", "dx (m)", "LPS nu = 0.3, plane strain: DSIF peak / L2 (%)",
          "J-integral peak / L2 (%)", "bond-based plane stress (nu = 1/3), consistent: DSIF peak / "
          "L2 (%)", "J-integral peak / L2 (%)", "LPS loop (s)"),
         ([r["kernel"], f"{r['dx_m']:g}", f"{r['peak_pct']:.2f} / {r['l2_pct']:.2f}",
           f"{r['j_peak_pct']:.2f} / {r['j_l2_pct']:.2f}", *bond(r), f"{r['loop_s']:.1f}"]
          for r in sorted(rows, key=lambda r: (KERNELS.index(r["kernel"]), -r["dx_m"]))))
-    return f"Made by `{command}`.\n\n" + out if command else out
 
 
 def main(argv=None):

@@ -12,7 +12,6 @@ from bbpd import crack_motion, crack_tip, csvfile, freund, plots, readers
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import mode1
 from bbpd.kernels import COLORS, KERNELS
-from bbpd.markdown import made_by
 from bbpd.provenance import cpu
 from bbpd.runner import run_or_reuse
 from bbpd.benchmarks import cli
@@ -145,8 +144,9 @@ def run(workdir, kernel="gaussian", dx=0.05, G_c=G_C, dt=None, nprocs=1, t_end=T
 def write_csv(path, rows, provenance):
     """The results CSV: the commands that made its rows (csvfile.provenance lines), then one
     row per run, the loop time's CPU in a column (appended rows may come from another machine)."""
-    csvfile.write_table(path, rows, CSV_COLUMNS, list(provenance) + [
-        "timing: LAMMPS loop time, 1 rank, on the CPU of column cpu"], text=TEXT_COLUMNS)
+    csvfile.write_csv(path, rows, list(provenance) + [
+        "timing: LAMMPS loop time, 1 rank, on the CPU of column cpu"], CSV_COLUMNS, TEXT_COLUMNS,
+        nan="nan")
 
 
 def merge_rows(earlier, new):
@@ -160,15 +160,14 @@ def merge_rows(earlier, new):
 
 def write_histories(path, rows):
     """Tip histories of every run (for the figures): kernel, dx, t, l."""
-    csvfile.write_table(path, [{"kernel": r["kernel"], "dx": r["dx"], "t": t, "l": l} for r in rows
-                               for t, l in zip(r["t_tip"], r["l_pd"])], ("kernel", "dx", "t", "l"),
-                        text=("kernel",))
+    csvfile.write_csv(path, [{"kernel": r["kernel"], "dx": r["dx"], "t": t, "l": l} for r in rows
+                             for t, l in zip(r["t_tip"], r["l_pd"])], nan="nan")
 
 
 def read_histories(path):
     """{(kernel, dx): (t, l)} of write_histories' file"""
     hist = {}
-    for r in csvfile.read_table(path, text=("kernel",)):
+    for r in csvfile.read_csv(path, ("kernel",))[1]:
         hist.setdefault((r["kernel"], r["dx"]), []).append((r["t"], r["l"]))
     return {key: tuple(np.array(v).T) for key, v in hist.items()}
 
@@ -176,7 +175,7 @@ def read_histories(path):
 def read_rows(path, histories=None):
     """The CSV written by write_csv as a list of dicts (kernel and cpu strings, the rest floats),
     given histories (write_histories' file) with each run's tip history as t_tip, l_pd"""
-    rows = csvfile.read_table(path, text=TEXT_COLUMNS)
+    rows = csvfile.read_csv(path, TEXT_COLUMNS)[1]
     if histories:
         hist = read_histories(histories)
         for r in rows:
@@ -189,18 +188,14 @@ def cpu_markdown(rows):
     return csvfile.loop_times_note(rows, "cpu", lambda r: f"{r['kernel']} at dx = {r['dx']:g} m")
 
 
-def table_markdown(rows, command=None):
-    """The README table of a results CSV (rows: dicts with the CSV's columns); command: the
-    command that made it, or the CSV's provenance lines."""
+def table_markdown(rows):
+    """The README table of a results CSV (rows: dicts with the CSV's columns)."""
     head = ("| kernel | dx (m) | atoms | first bond: t_i (ms), error (%), J/G_c | "
             "tip moved: t_i (ms), error (%), J/G_c | extension at 3 t_c (m) | "
             "L2 of l(t), K_Ic form (%) | L2 of l(t), energy form (%) | v/c_R at "
             + ", ".join(f"{s:g}" for s in SPEED_TIMES)
             + " t_c | crack half-width at 3 t_c (delta) | loop time (s) |")
-    if isinstance(command, str):
-        command = [f"made by: {command}"]
-    lines = ([made_by([ln.partition(": ")[2] for ln in command]), ""] if command else []) + [
-        head, "|" + "---|" * (head.count("|") - 1)]
+    lines = [head, "|" + "---|" * (head.count("|") - 1)]
     prob = problem(rows[0]["Gc"]) if rows else problem()
     for r in rows:
         speeds = ", ".join(f"{r[f'v_{s:g}tc_over_cR']:.2f}" for s in SPEED_TIMES)

@@ -19,7 +19,7 @@ from bbpd.kernels import COLORS
 from bbpd import plots
 from bbpd.runner import LammpsError, run_or_reuse
 from bbpd.markdown import cell as f
-from bbpd.markdown import made_by
+from bbpd.markdown import table as md_table
 from bbpd.benchmarks import cli
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -141,14 +141,15 @@ def run(workdir, kernel="gaussian", Delta=2.0, dx=DX, m=M, H_over_delta=H_OVER_D
 
 def write_csv(path, rows, provenance):
     """provenance: the 'made by' and 'rows added by' lines (csvfile.continue_csv)"""
-    csvfile.write_table(path, rows, CSV_COLUMNS, list(provenance) + [
-        "timing: LAMMPS loop time; its ranks and CPU in column timing"], text=TEXT_COLUMNS)
+    csvfile.write_csv(path, rows, list(provenance) + [
+        "timing: LAMMPS loop time; its ranks and CPU in column timing"], CSV_COLUMNS, TEXT_COLUMNS,
+        nan="nan")
 
 
 def read_rows(path):
     """The CSV of write_csv as dicts (kernel, state and timing strings, crossed a bool, the rest
     floats)"""
-    return csvfile.read_table(path, text=TEXT_COLUMNS, flags=("crossed",))
+    return csvfile.read_csv(path, TEXT_COLUMNS, ("crossed",))[1]
 
 
 def timing_markdown(rows):
@@ -232,26 +233,23 @@ def collect(work):
 
 # --------------------------------------------------------------------------- README blocks
 
-def table_markdown(rows, command=None):
+def table_markdown(rows):
     """The README table of the strip runs (rows: dicts with the CSV's columns)."""
-    head = ("| kernel | m | H/delta | Delta (CCM) | Delta' = U'/G_c (model) | crossed | v_ss/c_R | "
-            "Gamma/G_c (bonds) | Phi/G_c (waves: behind + ahead) | closure (%) | "
-            "balance drift (% of bond energy) | atoms | loop time (s) |")
-    made = [command] if isinstance(command, str) else list(command or [])
-    lines = ([made_by(made), ""] if made else []) + [head, "|" + "---|" * (head.count("|") - 1)]
-    for r in rows:
+    def run(r):
         if r["crossed"]:
-            run = (f"yes | {r['v_ss_over_cR']:.3f} | {r['Gamma_over_Gc']:.3f} | "
-                   f"{r['Phi_over_Gc']:.3f} ({r['Phi_behind_over_Gc']:.3f} + {r['Phi_ahead_over_Gc']:.3f}) | "
-                   f"{r['closure_pct']:+.1f}")
-        elif not math.isnan(r["left_plane_over_H"]):
-            run = f"no ({r['state']} at a + {r['left_plane_over_H']:.2f} H) | | | | "
-        else:
-            run = f"no ({r['state']}) | | | | "
-        lines.append(f"| {r['kernel']} | {r['m']:g} | {r['H_over_delta']:g} | {r['Delta']:g} | "
-                     f"{r['Delta_model']:.3f} | {run} | {r['balance_pct']:.2f} | {int(r['atoms'])} | "
-                     f"{r['loop_s']:.0f} |")
-    return "\n".join(lines + ["", timing_markdown(rows)] if rows else lines)
+            return ["yes", f"{r['v_ss_over_cR']:.3f}", f"{r['Gamma_over_Gc']:.3f}",
+                    f"{r['Phi_over_Gc']:.3f} ({r['Phi_behind_over_Gc']:.3f} + "
+                    f"{r['Phi_ahead_over_Gc']:.3f})", f"{r['closure_pct']:+.1f}"]
+        where = "" if math.isnan(r["left_plane_over_H"]) else f" at a + {r['left_plane_over_H']:.2f} H"
+        return [f"no ({r['state']}{where})"] + [""] * 4
+    table = md_table(
+        ("kernel", "m", "H/delta", "Delta (CCM)", "Delta' = U'/G_c (model)", "crossed", "v_ss/c_R",
+         "Gamma/G_c (bonds)", "Phi/G_c (waves: behind + ahead)", "closure (%)",
+         "balance drift (% of bond energy)", "atoms", "loop time (s)"),
+        ([r["kernel"], f"{r['m']:g}", f"{r['H_over_delta']:g}", f"{r['Delta']:g}",
+          f"{r['Delta_model']:.3f}", *run(r), f"{r['balance_pct']:.2f}", int(r["atoms"]),
+          f"{r['loop_s']:.0f}"] for r in rows))
+    return table + "\n\n" + timing_markdown(rows) if rows else table
 
 
 def threshold(rows, kernel, m=M, H_over_delta=SWEEP_H_OVER_DELTA):

@@ -14,6 +14,7 @@ from bbpd import crack_motion, csvfile
 from bbpd.benchmarks import mode1_propagation as mp
 from bbpd.benchmarks import strip
 from bbpd.benchmarks import cli
+from bbpd.markdown import table as md_table
 
 ROOT = Path(__file__).resolve().parents[3]
 HISTORIES = ROOT / "examples" / "mode1-propagation" / "results" / "tip_histories.csv"
@@ -92,7 +93,7 @@ def closure_rows(strip_rows, hist):
 
 
 def write_csv(path, rows, command):
-    csvfile.write_table(path, rows, CSV_COLUMNS, (f"made by: {command}",))
+    csvfile.write_csv(path, rows, (f"made by: {command}",), CSV_COLUMNS, nan="nan")
 
 
 def main(argv=None):
@@ -113,16 +114,14 @@ def main(argv=None):
 
 
 
-def table_markdown(rows, command=None):
-    head = ("| kernel | dx (m) | law points | L2 of l(t), kinetic law (%) | the law at a taller strip's "
-            "speeds (%) | K_Ic form (%) | energy form (%) | extension at 3 t_c: PD, kinetic law, energy "
-            "form (m) |")
-    lines = ([f"Made by `{command}`.", ""] if command else []) + [head, "|" + "---|" * (head.count("|") - 1)]
-    for r in rows:
-        lines.append(f"| {r['kernel']} | {r['dx']:g} | {int(r['law_points'])} | {r['l2_kinetic_pct']:.1f} | "
-                     f"{_taller(r)} | {r['l2_toughness_pct']:.1f} | {r['l2_energy_pct']:.1f} | {r['ext_pd_3tc']:.2f}, "
-                     f"{r['ext_kinetic_3tc']:.2f}, {r['ext_energy_3tc']:.2f} |")
-    return "\n".join(lines)
+def table_markdown(rows):
+    return md_table(
+        ("kernel", "dx (m)", "law points", "L2 of l(t), kinetic law (%)", "the law at a taller "
+         "strip's speeds (%)", "K_Ic form (%)", "energy form (%)", "extension at 3 t_c: PD, "
+         "kinetic law, energy form (m)"),
+        ([r["kernel"], f"{r['dx']:g}", int(r["law_points"]), f"{r['l2_kinetic_pct']:.1f}", _taller(r),
+          f"{r['l2_toughness_pct']:.1f}", f"{r['l2_energy_pct']:.1f}", f"{r['ext_pd_3tc']:.2f}, "
+          f"{r['ext_kinetic_3tc']:.2f}, {r['ext_energy_3tc']:.2f}"] for r in rows))
 
 
 def _taller(r):
@@ -135,7 +134,7 @@ CLOSURE_GOAL_PCT = 5.0    # L2 of l(t) at the finest grid (issue's criterion)
 
 
 def read_rows(path):
-    return csvfile.read_table(path, text=("kernel",))
+    return csvfile.read_csv(path, ("kernel",))[1]
 
 
 def height_effect(r):

@@ -5,7 +5,6 @@ examples/strip-steady-crack, examples/crack-branching, the study, projectile, gr
 its benchmark module from the results it committed."""
 import json
 
-from bbpd import csvfile
 from bbpd.benchmarks import kalthoff_winkler_3d as kw3d
 from bbpd.benchmarks import kalthoff_winkler_deck as deck
 from bbpd.benchmarks import kalthoff_winkler_grid as grid
@@ -16,30 +15,23 @@ from bbpd.benchmarks import (branching, kink, kink_kalthoff_winkler, mode1_propa
                              strip_closure)
 from bbpd.jobs import ROOT
 
+from .paper import made
+
 PROPAGATION_CSV = ROOT / "examples" / "mode1-propagation" / "results" / "mode1_propagation.csv"
 PROJECTILE_CSV = ROOT / "examples" / "kalthoff-winkler" / "projectile.csv"
 STRIP_CSV = ROOT / "examples" / "strip-steady-crack" / "results" / "strip.csv"
 CLOSURE_CSV = ROOT / "examples" / "strip-steady-crack" / "results" / "closure.csv"
 
 
-def _made_by(path):
-    return csvfile.comment(path, "made by")
-
-
-def _commands(path):
-    """the commands of the CSV's provenance lines ('made by: X', 'rows added by: Y')"""
-    return [ln.split(": ", 1)[1] for ln in csvfile.provenance(path)]
-
-
 PROPAGATION = {
-    "mode1-propagation": lambda data: mode1_propagation.table_markdown(
-        mode1_propagation.read_rows(PROPAGATION_CSV), csvfile.provenance(PROPAGATION_CSV))}
+    "mode1-propagation": made(PROPAGATION_CSV, lambda data: mode1_propagation.table_markdown(
+        mode1_propagation.read_rows(PROPAGATION_CSV)))}
 KINK = {
     "kink": lambda data: kink.table(kink.read_rows(kink.RESULTS)),
     "kink-verdict": lambda data: kink.verdict_table(kink.read_rows(kink.RESULTS)),
     "kink-kw": lambda data: kink_kalthoff_winkler.table(
         json.loads(kink_kalthoff_winkler.SUMMARY.read_text())),
-    "kink-convergence": lambda data: kc.table(kc.read_rows(), _commands(kc.CSV)),
+    "kink-convergence": made(kc.CSV, lambda data: kc.table(kc.read_rows())),
     "kink-sequences": lambda data: kc.sequences_table(kc.read_rows()),
     "kink-disk": lambda data: kc.disk_table(kc.read_rows()),
     "kink-sweeps": lambda data: kc.sweeps_table(kc.read_rows()),
@@ -47,18 +39,18 @@ KINK = {
     "kink-kernels": lambda data: kc.kernels_table(kc.read_rows()),
     "kink-coverage": lambda data: kc.coverage_table(kc.read_rows())}
 STRIP = {
-    "strip-runs": lambda data: strip.table_markdown(strip.read_rows(STRIP_CSV), _commands(STRIP_CSV)),
+    "strip-runs": made(STRIP_CSV, lambda data: strip.table_markdown(strip.read_rows(STRIP_CSV))),
     "strip-work-precision": lambda data: strip.work_precision_markdown(strip.read_rows(STRIP_CSV)),
-    "strip-closure": lambda data: strip_closure.table_markdown(strip_closure.read_rows(CLOSURE_CSV),
-                                                              _made_by(CLOSURE_CSV)),
+    "strip-closure": made(CLOSURE_CSV, lambda data: strip_closure.table_markdown(
+        strip_closure.read_rows(CLOSURE_CSV))),
     "strip-law": lambda data: strip.law_table(strip.read_rows(STRIP_CSV))}
 BRANCHING = {
-    "branching": lambda data: branching.table(
-        branching.read_rows(), _made_by(branching.RESULTS), csvfile.comment(branching.RESULTS, "timing")),
+    "branching": made(branching.RESULTS, lambda data: branching.table(branching.read_rows()),
+                      timing=True),
     "branching-cost": lambda data: branching.cost_table(branching.read_rows())}
 KW = {
     "kw-projectile": lambda data: projectile.markdown(projectile.read_csv(PROJECTILE_CSV)),
-    "kw-study": lambda data: study.readme_table(),
+    "kw-study": made(study.CSV, lambda data: study.md_table(study.read_csv()[0])),
     "kw-grid-pull": lambda data: grid.markdown(*reversed(grid.read_rows(grid.CSV))),
-    "kw-deck": lambda data: deck.table(deck.read_rows()[1], _commands(deck.CSV)),
-    "kw-3d": lambda data: kw3d.table(kw3d.read_rows(), _made_by(kw3d.CSV))}
+    "kw-deck": made(deck.CSV, lambda data: deck.table(deck.read_rows()[1])),
+    "kw-3d": made(kw3d.CSV, lambda data: kw3d.table(kw3d.read_rows()))}

@@ -74,14 +74,6 @@ def scene_table(files):
             f"51³): {float(margin['bytes_per_bond']):.1f} bytes per bond.")
 
 
-def zen3_avx2(data):
-    return scene_table(ZEN3_FILES)
-
-
-def zen5_readme(data):
-    return scene_table(ZEN5_AUTO_FILES)
-
-
 # perf/lps_vs_peri.py --csv runs of the peri/lps cylinder, one file per CPU, in the doc's order,
 # with the CPU's vector ISA (the CSVs' isa column lists the paths the plugin build holds)
 LPS_FILES = ((RESULTS / "spr-lps-cylinder.csv", "AVX-512"), (RESULTS / "zen3-lps-cylinder.csv", "AVX2"))
@@ -184,22 +176,6 @@ def floor_table(prefix):
         kernel, floor, load = _floor(path)
         lines.append(f"| {p} | {kernel:.2f} | {floor:.2f} | {kernel / floor:.2f} | {load} |")
     return "\n".join(lines)
-
-
-def zen5_simd(data):
-    return simd_table("zen5")
-
-
-def zen5_floor(data):
-    return floor_table("zen5")
-
-
-def spr_simd(data):
-    return simd_table("spr")
-
-
-def spr_floor(data):
-    return floor_table("spr")
 
 
 # LAMMPS's bpm/peri benchmark deck, ours against peri/* and bond_style bpm/peri

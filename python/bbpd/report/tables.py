@@ -42,11 +42,6 @@ def run_time(res):
     return None
 
 
-def failed_row(res, ncols, lead):
-    """A table row for a failed run: the leading cells, then the error across the rest."""
-    return list(lead) + [failure_text(res)] + [""] * (ncols - len(lead) - 1)
-
-
 def finished(specs, results, arrays=()):
     """{(kernel, dx): result} of the finished runs among specs, its `arrays` as arrays."""
     return {(s.kernel, s.dx): _arrays(results[s.job.label], arrays) for s in specs

@@ -19,7 +19,7 @@ from bbpd import csvfile
 from bbpd import jobs as jobmod
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import KERNELS
-from .figures import _figure
+from .sections import _figure
 from bbpd.provenance import machine
 from .runs import ESTIMATE_S, bench_inputs, build_of_run, label_of
 from .tables import failed, md_table
