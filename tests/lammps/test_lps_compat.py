@@ -221,8 +221,8 @@ def test_compact_storage_gives_the_same_bits(lmp, tmp_path):
     for storage in ("", " bond/storage compact"):
         script = cylinder().replace("pair_style      bbpd/lps 3d", f"pair_style      bbpd/lps 3d{storage}")
         out = lmp(script + END_DUMP).output
-        # 8 bytes per bond end with compact storage (tag and partner index), 10 by default
-        assert f"{'8.0' if storage else '10.0'} per bond end" in out
+        # 6 bytes per bond end with compact storage (tag and partner offset), 8 by default
+        assert f"{'6.0' if storage else '8.0'} per bond end" in out
         states.append(end_state(tmp_path))
     assert states[0]["c_1"].mean() > 0.05
     for key in KEYS:
