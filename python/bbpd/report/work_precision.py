@@ -5,7 +5,6 @@ the report lacks and the timing repeats; section() writes the CSV, the figures a
 section.
 """
 
-import importlib
 import math
 import shutil
 from dataclasses import dataclass
@@ -128,8 +127,7 @@ def repeat_run(workdir, target, args, repeats, of=None):
     """Time target(**args) again, up to `repeats` times, while its loop time stays short:
     returns the loop times (s).  Only the times are kept; the outputs are deleted.
     of: the label of the report's run of the same arguments (only names it)."""
-    module, name = target.split(":")
-    fn = getattr(importlib.import_module(module), name)
+    fn = jobmod.function(target)
     times, build = [], {}
     for n in range(repeats):
         sub = Path(workdir) / f"repeat{n}"
