@@ -11,8 +11,8 @@ import numpy as np
 from bbpd.markdown import table
 
 
-def _num(v, nan=""):
-    """A cell: numbers to 6 significant digits, None as empty, NaN as `nan`."""
+def _num(v, nan="", digits=6):
+    """A cell: numbers to `digits` significant digits, None as empty, NaN as `nan`."""
     if v is None:
         return ""
     if isinstance(v, float) and math.isnan(v):
@@ -21,12 +21,12 @@ def _num(v, nan=""):
         return str(v)
     if isinstance(v, (int, np.integer)):
         return str(int(v))
-    return f"{float(v):.6g}"
+    return f"{float(v):.{digits}g}"
 
 
-def write_csv(path, rows, comments=(), columns=None, text=(), nan=""):
+def write_csv(path, rows, comments=(), columns=None, text=(), nan="", digits=6):
     """rows (dicts) in columns (default: the first row's keys), the comments first; a cell of
-    a `text` column is written as it is"""
+    a `text` column is written as it is, a number to `digits` significant digits"""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     columns = list(columns or rows[0])
@@ -36,7 +36,7 @@ def write_csv(path, rows, comments=(), columns=None, text=(), nan=""):
         w = csv.writer(fh, lineterminator="\n")
         w.writerow(columns)
         for r in rows:
-            w.writerow([r.get(c) if c in text else _num(r.get(c), nan) for c in columns])
+            w.writerow([r.get(c) if c in text else _num(r.get(c), nan, digits) for c in columns])
 
 
 def read_csv(path, text=(), flags=()):

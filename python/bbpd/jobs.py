@@ -94,11 +94,15 @@ def plugin_path():
     return ROOT / "build" / f"lammps-{version}" / "bbpdplugin.so"
 
 
-def _call(func, workdir, kwargs):
+def function(func):
+    """The function that a "module:function" name names."""
     module, name = func.split(":")
-    fn = getattr(importlib.import_module(module), name)
+    return getattr(importlib.import_module(module), name)
+
+
+def _call(func, workdir, kwargs):
     start = time.perf_counter()
-    result = fn(workdir=workdir, **kwargs)
+    result = function(func)(workdir=workdir, **kwargs)
     result.setdefault("wall_s", time.perf_counter() - start)
     return result
 

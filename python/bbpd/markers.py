@@ -36,8 +36,3 @@ def replace(path, text, render):
             return f".. bbpd:{kind} {name}\n\n{new}\n\n.. /bbpd:{kind}"
         return f"<!-- bbpd:{kind} {name} -->\n{new}\n<!-- /bbpd:{kind} -->"
     return pattern(path).sub(sub, text)
-
-
-def replace_block(path, text, name, body):
-    """text with the body of the block called name replaced by body, the other blocks kept."""
-    return replace(path, text, lambda kind, n: body if n == name else None)

@@ -6,7 +6,7 @@ grid, the atoms of a data file and a lattice. Imported by name (pytest.ini puts 
 the path): `from scenes import peri_preamble`.
 
 impact_plate() gives the lines of the steel plate several tests strike at 32 m/s.
-assert_forces_match() holds a dump's forces and pe/atom against bbpd.reference.Bonds.
+assert_forces_match() holds a dump's forces and pe/atom against refmodel.Bonds.
 kw_run() runs examples/kalthoff-winkler's input; drawn_kw_cracks() draws straight cracks on its
 plate for the post-processing alone.
 cylinder_dropin() runs the glass cylinder of LAMMPS's examples/peri with a peri/* style and
@@ -89,7 +89,7 @@ fix 2 all enforce2d
 
 def assert_forces_match(dump, bonds, y, rtol):
     """dump's fx fy fz within rtol of the largest force, and its c_pea within rtol of the largest
-    energy density, of bonds (a bbpd.reference.Bonds) at the positions y"""
+    energy density, of bonds (a refmodel.Bonds) at the positions y"""
     got = ref.read_dump(dump)
     f_lmp = np.stack([got["fx"], got["fy"], got["fz"]], axis=1)
     f_ref = bonds.force_density(y)

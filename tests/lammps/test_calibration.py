@@ -48,6 +48,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+import refmodel
 from scenes import peri_preamble
 
 KERNELS = ("constant", "triangular", "gaussian")
@@ -76,7 +77,7 @@ def deformations(dim):
 def block(dim, m):
     """Lattice with the centre atom farther than delta + dx from the surface."""
     n = 2 * m + 5    # centre at (m + 2) dx from every face
-    x0 = ref.square_lattice((n,) * dim, DX)
+    x0 = refmodel.square_lattice((n,) * dim, DX)
     centre = int(np.argmin(np.linalg.norm(x0 - x0.mean(axis=0), axis=1)))
     return x0, centre
 
@@ -138,11 +139,11 @@ def test_homogeneous_deformation_energy(lmp, tmp_path, model):
         box = [(x0[:, k].min() - pad, x0[:, k].max() + pad) for k in range(3)]
         if dim == 2:
             box[2] = (-0.5 * DX, 0.5 * DX)
-        ref.write_data(tmp_path / f"m{m}.data", x0, volume, DENSITY, box, types)
+        refmodel.write_data(tmp_path / f"m{m}.data", x0, volume, DENSITY, box, types)
         ys = {}
         for name, eps in strains.items():
             ys[name] = x0 + (x0 - x0[centre]) @ eps.T
-            ref.write_positions(tmp_path / f"m{m}_{name}.dump", ys[name], box)
+            refmodel.write_positions(tmp_path / f"m{m}_{name}.dump", ys[name], box)
         for kernel in KERNELS:
             script += section(kernel, model, m, f"m{m}.data",
                               [f"m{m}_{name}.dump" for name in strains], centre, two_types)

@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+import refmodel
 from scenes import peri_preamble
 
 DX = 1.0e-3
@@ -48,8 +49,8 @@ def pressed():
 
 
 def run_pair(lmp, tmp_path, distance_keyword="", two_bodies=""):
-    ref.write_data(tmp_path / "atoms.data", X0, VOLUMES, DENSITY, BOX)
-    ref.write_positions(tmp_path / "pressed.dump", pressed(), BOX)
+    refmodel.write_data(tmp_path / "atoms.data", X0, VOLUMES, DENSITY, BOX)
+    refmodel.write_positions(tmp_path / "pressed.dump", pressed(), BOX)
     data = "atoms.data extra/atom/types 1" if two_bodies else "atoms.data"
     script = peri_preamble(2, "f f p", data=data) + f"""\
 {"set atom 2 type 2" if two_bodies else ""}

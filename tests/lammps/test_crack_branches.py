@@ -18,6 +18,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+import refmodel
 from bbpd.crack_branches import branch_tips
 from bbpd.jobs import ROOT
 from bbpd.runner import run_lammps
@@ -137,7 +138,7 @@ def test_same_bits_whatever_the_atom_numbering(serial, tmp_path):
     x0 = read_reference(work / "ref.dump")[:, 1:3]
     order = np.random.default_rng(35).permutation(len(x0))
     positions = np.column_stack([x0[order], np.zeros(len(x0))])
-    ref.write_data(tmp_path / "plate.data", positions, DX**3, 2440.0,
+    refmodel.write_data(tmp_path / "plate.data", positions, DX**3, 2440.0,
                    [(-0.05, 0.05), (-0.02, 0.02), (-0.5, 0.5)], types=np.full(len(x0), 2))
     text = script()
     start = text.index("lattice ")

@@ -26,7 +26,7 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import breadth_first_order, dijkstra
 from scipy.spatial import cKDTree
 
-from bbpd import reference as ref
+import refmodel
 from bbpd.runner import run_lammps
 
 DX = 1.0e-3
@@ -219,7 +219,7 @@ def test_same_bits_whatever_the_atom_numbering(serial, tmp_path):
     x0 = frames[0][:, 1:3]
     order = np.random.default_rng(2026).permutation(len(x0))
     positions = np.column_stack([x0[order], np.zeros(len(x0))])
-    ref.write_data(tmp_path / "plate.data", positions, DX**3, DENSITY,
+    refmodel.write_data(tmp_path / "plate.data", positions, DX**3, DENSITY,
                    [(0.0, 0.06), (-0.015, 0.015), (-0.5, 0.5)])
     script = scene(dump=False)
     start, end = script.index("lattice "), script.index("set group all density")

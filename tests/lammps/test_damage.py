@@ -10,6 +10,7 @@ from eq. 17 on this body by far more than the tolerance.
 import numpy as np
 
 from bbpd import reference as ref
+import refmodel
 from scenes import peri_preamble
 
 DX = 1.0e-3
@@ -21,10 +22,10 @@ ATOL = 1.0e-14    # damage is a ratio of sums of O(1) terms
 
 
 def body(tmp_path, rng):
-    x0 = ref.square_lattice((14, 14), DX)
+    x0 = refmodel.square_lattice((14, 14), DX)
     volume = THICKNESS * DX**2 * rng.uniform(0.8, 1.0, len(x0))
     box = [(-5 * DX, 19 * DX), (-5 * DX, 19 * DX), (-0.5 * DX, 0.5 * DX)]
-    ref.write_data(tmp_path / "body.data", x0, volume, DENSITY, box)
+    refmodel.write_data(tmp_path / "body.data", x0, volume, DENSITY, box)
     # the pair style's spacing for C_v: the largest implied by an atom's volume
     spacing = np.sqrt(volume.max() / THICKNESS)
     return x0, volume, box, spacing
@@ -50,15 +51,15 @@ def scaled(segment, factor):
 
 def reference_bonds(x0, volume, spacing):
     c0 = ref.micromodulus("gaussian", "plane/stress", 190e9, DELTA, THICKNESS)
-    bonds = ref.Bonds(x0, volume, "gaussian", c0, DELTA, spacing)
+    bonds = refmodel.Bonds(x0, volume, "gaussian", c0, DELTA, spacing)
     # no bond passes within round-off of a notch end (where the plugin's tolerance decides)
     for seg in SEGMENTS:
         for flip in (False, True):
             seg_ = seg[::-1] if flip else seg
-            assert np.array_equal(bonds.crossing(ref.segment_crossing(*scaled(seg_, 1 - 1e-6))),
-                                  bonds.crossing(ref.segment_crossing(*scaled(seg_, 1 + 1e-6))))
+            near, far = (refmodel.segment_crossing(*scaled(seg_, f)) for f in (1 - 1e-6, 1 + 1e-6))
+            assert np.array_equal(bonds.crossing(near), bonds.crossing(far))
     for a, b in SEGMENTS:
-        bonds.cut(ref.segment_crossing(a, b))
+        bonds.cut(refmodel.segment_crossing(a, b))
     return bonds
 
 
@@ -92,7 +93,7 @@ def test_damage_after_bonds_break_in_a_run(lmp, tmp_path):
     y = x0.copy()
     band = (x0[:, 1] > 3 * DX) & (x0[:, 1] < 9 * DX)
     y[band, 0] *= 1.006
-    ref.write_positions(tmp_path / "current.dump", y, box)
+    refmodel.write_positions(tmp_path / "current.dump", y, box)
     out = lmp(script("run 0\nread_dump current.dump 0 x y box no replace yes\nrun 0\n"
                      "write_dump all custom d.dump id c_d modify format float %.17g\nrun 0\n")
               ).output

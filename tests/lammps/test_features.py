@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+import refmodel
 from bbpd.runner import LammpsError
 from scenes import peri_preamble, sibling
 
@@ -32,7 +33,7 @@ def preamble(dim=2, boundary=None, datafile="body.data"):
 
 
 def plate(nx=12, ny=12):
-    x0 = ref.square_lattice((nx, ny), DX)
+    x0 = refmodel.square_lattice((nx, ny), DX)
     box = [(-5 * DX, (nx + 5) * DX), (-5 * DX, (ny + 5) * DX), (-0.5 * DX, 0.5 * DX)]
     return x0, box
 
@@ -50,7 +51,7 @@ def test_bond_breaks_at_critical_stretch_in_1d(lmp, tmp_path, kernel):
     survives 0.999 s0 and breaks at 1.001 s0."""
     x0 = np.array([[0.0, 0.0, 0.0], [BAR_BOND, 0.0, 0.0]])
     box = [(-10 * DX, 10 * DX)] * 3
-    ref.write_data(tmp_path / "bar.data", x0, AREA * DX, DENSITY, box)
+    refmodel.write_data(tmp_path / "bar.data", x0, AREA * DX, DENSITY, box)
     c0 = ref.micromodulus(kernel, "1d", YOUNGS, BAR_HORIZON, AREA)
     s0 = ref.critical_stretch(kernel, "1d", c0, GC, BAR_HORIZON, AREA)
     script = (preamble(3, "f f f", "bar.data")
@@ -61,7 +62,7 @@ def test_bond_breaks_at_critical_stretch_in_1d(lmp, tmp_path, kernel):
     for n, factor in enumerate((0.999, 1.001)):
         y = x0.copy()
         y[1, 0] = BAR_BOND * (1.0 + factor * s0)
-        ref.write_positions(tmp_path / f"p{n}.dump", y, box)
+        refmodel.write_positions(tmp_path / f"p{n}.dump", y, box)
         script += f"read_dump p{n}.dump 0 x y z box no replace yes\nrun 0\n"
     out = lmp(script + "run 0\n").output
     c0_lmp, s0_lmp = (float(v) for v in REPORT.search(out).groups())
@@ -85,8 +86,8 @@ def perturbed(tmp_path, seed=3):
     rng = np.random.default_rng(seed)
     y = x0 + 1e-3 * DX * rng.uniform(-1.0, 1.0, x0.shape)
     y[:, 2] = 0.0
-    ref.write_data(tmp_path / "body.data", x0, VOLUME, DENSITY, box)
-    ref.write_positions(tmp_path / "current.dump", y, box)
+    refmodel.write_data(tmp_path / "body.data", x0, VOLUME, DENSITY, box)
+    refmodel.write_positions(tmp_path / "current.dump", y, box)
     return x0, y
 
 
@@ -104,10 +105,10 @@ def test_spacing_keyword_sets_the_volume_correction(lmp, tmp_path):
                             f" spacing {given!r}")).output
     assert f"grid spacing for the volume correction = {given:g} (given)" in out
     c0 = ref.micromodulus("gaussian", "plane/stress", YOUNGS, delta, THICKNESS)
-    bonds = ref.Bonds(x0, VOLUME, "gaussian", c0, delta, given)
+    bonds = refmodel.Bonds(x0, VOLUME, "gaussian", c0, delta, given)
     assert f"total bonds {len(bonds.i)} (0 broken)" in out
     f_ref = bonds.force_density(y)
-    wrong = ref.Bonds(x0, VOLUME, "gaussian", c0, delta, DX).force_density(y)
+    wrong = refmodel.Bonds(x0, VOLUME, "gaussian", c0, delta, DX).force_density(y)
     scale = np.abs(f_ref).max()
     assert np.abs(wrong - f_ref).max() > 1e-4 * scale    # the keyword matters here
     np.testing.assert_allclose(read_forces(tmp_path / "f.dump"), f_ref, rtol=0,
@@ -157,11 +158,11 @@ def test_notch_limited_to_a_group(lmp, tmp_path):
     """fix ID left bbpd/notch: a bond crossing the segment is cut if at least one of its
     atoms is in the group (doc/fix_bbpd_notch.rst)."""
     x0, box = plate()
-    ref.write_data(tmp_path / "body.data", x0, VOLUME, DENSITY, box)
+    refmodel.write_data(tmp_path / "body.data", x0, VOLUME, DENSITY, box)
     segment = ((-1.0 * DX, 5.5 * DX), (13.0 * DX, 5.5 * DX))
     c0 = ref.micromodulus("gaussian", "plane/stress", YOUNGS, 3.05 * DX, THICKNESS)
-    bonds = ref.Bonds(x0, VOLUME, "gaussian", c0, 3.05 * DX, DX)
-    cross = bonds.crossing(ref.segment_crossing(*segment))
+    bonds = refmodel.Bonds(x0, VOLUME, "gaussian", c0, 3.05 * DX, DX)
+    cross = bonds.crossing(refmodel.segment_crossing(*segment))
     in_group = x0[:, 0] < 4.5 * DX
     either = cross & (in_group[bonds.i] | in_group[bonds.j])
     both = cross & in_group[bonds.i] & in_group[bonds.j]
@@ -183,13 +184,13 @@ def test_atom_on_the_notch_line_is_on_the_positive_side(lmp, tmp_path, direction
     rows below; reversed, the other way round. The damage map is the reference's with that
     rule, and the rows at y = 4 dx and 6 dx differ accordingly."""
     x0, box = plate()
-    ref.write_data(tmp_path / "body.data", x0, VOLUME, DENSITY, box)
+    refmodel.write_data(tmp_path / "body.data", x0, VOLUME, DENSITY, box)
     a, b = (-1.0 * DX, 5.0 * DX), (13.0 * DX, 5.0 * DX)
     segment = (a, b) if direction == 1 else (b, a)
     n, damage = notch_count(lmp, tmp_path, segment)
     c0 = ref.micromodulus("gaussian", "plane/stress", YOUNGS, 3.05 * DX, THICKNESS)
-    bonds = ref.Bonds(x0, VOLUME, "gaussian", c0, 3.05 * DX, DX)
-    cut = bonds.crossing(ref.segment_crossing(*segment))
+    bonds = refmodel.Bonds(x0, VOLUME, "gaussian", c0, 3.05 * DX, DX)
+    cut = bonds.crossing(refmodel.segment_crossing(*segment))
     assert n == np.count_nonzero(cut)
     # explicitly: no bond from the row on the line to the positive side is cut
     row = np.isclose(x0[:, 1], 5.0 * DX)

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+import refmodel
 from scenes import assert_forces_match, peri_preamble
 
 KERNELS = ("constant", "triangular", "gaussian")
@@ -36,12 +37,12 @@ def notches(dim):
         segs = [((-1.0 * DX, 5.5 * DX), (5.3 * DX, 5.5 * DX)),    # edge crack between rows
                 ((7.2 * DX, 2.3 * DX), (9.7 * DX, 8.1 * DX))]      # inclined interior crack
         cmd = " ".join(f"segment {a[0]!r} {a[1]!r} {b[0]!r} {b[1]!r}" for a, b in segs)
-        return cmd, [ref.segment_crossing(a, b) for a, b in segs]
+        return cmd, [refmodel.segment_crossing(a, b) for a, b in segs]
     rects = [((-1.0 * DX, -1.0 * DX, 3.5 * DX), (4.3 * DX, 0.0, 0.0), (0.0, 8.0 * DX, 0.0)),
              ((4.6 * DX, 1.2 * DX, 0.3 * DX), (0.0, 3.1 * DX, 1.7 * DX),
               (0.0, -1.4 * DX, 4.2 * DX))]
     cmd = " ".join("rectangle " + " ".join(repr(v) for v in (*c, *a, *b)) for c, a, b in rects)
-    return cmd, [ref.rectangle_crossing(c, a, b) for c, a, b in rects]
+    return cmd, [refmodel.rectangle_crossing(c, a, b) for c, a, b in rects]
 
 
 def material(kernel, model):
@@ -64,7 +65,7 @@ def header(kernel, model, datafile, gc, delta, extra=""):
 
 def lattice_body(dim):
     """Lattice positions and a box with room around them."""
-    x0 = ref.square_lattice(lattice_shape(dim), DX)
+    x0 = refmodel.square_lattice(lattice_shape(dim), DX)
     pad = 5 * DX
     box = [(x0[:, k].min() - pad, x0[:, k].max() + pad) for k in range(3)]
     if dim == 2:
@@ -87,8 +88,8 @@ def test_virial_matches_reference(lmp, tmp_path, model):
     y[:, 0] *= 1.0 + 1.0e-4
     volume = THICKNESS * DX**2 if dim == 2 else DX**3
     delta, c0, _ = material("gaussian", model)
-    ref.write_data(tmp_path / "body.data", x0, volume, DENSITY, box)
-    ref.write_positions(tmp_path / "current.dump", y, box)
+    refmodel.write_data(tmp_path / "body.data", x0, volume, DENSITY, box)
+    refmodel.write_positions(tmp_path / "current.dump", y, box)
     coords = "x y z" if dim == 3 else "x y"
     script = ("plugin load bbpdplugin.so\n" + header("gaussian", model, "body.data", "none", delta)
               + "compute s all stress/atom NULL virial\n"
@@ -100,7 +101,7 @@ def test_virial_matches_reference(lmp, tmp_path, model):
     lmp(script)
     got = ref.read_dump(tmp_path / "virial.dump")
     stress = np.stack([got[f"c_s[{k}]"] for k in range(1, 7)], axis=1)
-    bonds = ref.Bonds(x0, volume, "gaussian", c0, delta, DX)
+    bonds = refmodel.Bonds(x0, volume, "gaussian", c0, delta, DX)
     expected = -bonds.virial_density(y)
     scale = np.abs(expected).max()
     assert np.abs(stress - expected).max() < FORCE_RTOL * scale
@@ -117,11 +118,11 @@ def test_forces_match_reference(lmp, tmp_path, kernel, model, nprocs):
         y[:, 2] = 0.0
     volume = THICKNESS * DX**2 if dim == 2 else DX**3
     delta, c0, gc = material(kernel, model)
-    ref.write_data(tmp_path / "body.data", x0, volume, DENSITY, box)
-    ref.write_positions(tmp_path / "current.dump", y, box)
+    refmodel.write_data(tmp_path / "body.data", x0, volume, DENSITY, box)
+    refmodel.write_positions(tmp_path / "current.dump", y, box)
     notch_cmd, crossings = notches(dim)
 
-    bonds = ref.Bonds(x0, volume, kernel, c0, delta, DX)
+    bonds = refmodel.Bonds(x0, volume, kernel, c0, delta, DX)
     ncut = sum(bonds.cut(c) for c in crossings)
     partial = np.count_nonzero(bonds.cv < 1.0)
     assert ncut > 50 and partial > 50    # the test exercises notches and partial volumes
@@ -153,9 +154,9 @@ def test_notch_cuts_bonds_across_periodic_boundary(lmp, tmp_path):
     """A notch next to a periodic boundary also cuts the bonds that wrap around it."""
     nx, ny = 12, 10
     length = nx * DX
-    x0 = ref.square_lattice((nx, ny), DX, origin=(0.5 * DX, 0.5 * DX, 0.0))
+    x0 = refmodel.square_lattice((nx, ny), DX, origin=(0.5 * DX, 0.5 * DX, 0.0))
     box = [(0.0, length), (-DX, (ny + 1) * DX), (-0.5 * DX, 0.5 * DX)]
-    ref.write_data(tmp_path / "strip.data", x0, THICKNESS * DX**2, DENSITY, box)
+    refmodel.write_data(tmp_path / "strip.data", x0, THICKNESS * DX**2, DENSITY, box)
     line_y = 0.5 * ny * DX    # between two rows
     a, b = (length - 1.3 * DX, line_y), (length - 0.2 * DX, line_y)
     delta, _, gc = material("constant", "plane/stress")
@@ -170,7 +171,7 @@ def test_notch_cuts_bonds_across_periodic_boundary(lmp, tmp_path):
     d[:, 0] -= length * np.round(d[:, 0] / length)
     family = np.linalg.norm(d, axis=1) < delta + 0.5 * DX
     i, j, d = i[family], j[family], d[family]
-    crosses = ref.segment_crossing(a, b)
+    crosses = refmodel.segment_crossing(a, b)
     ncut = np.count_nonzero(crosses(x0[i], x0[i] + d) | crosses(x0[j] - d, x0[j]))
     assert f" {ncut} bonds cut by 1 notch" in out
 
@@ -195,7 +196,7 @@ def test_momentum_conserved(lmp, tmp_path, kernel, model, nprocs):
     delta, c0, gc = material(kernel, model)
     vol0 = THICKNESS * DX**2 if dim == 2 else DX**3
     volume = vol0 * rng.uniform(0.9, 1.1, len(x0))
-    ref.write_data(tmp_path / "body.data", x0, volume, DENSITY, box)
+    refmodel.write_data(tmp_path / "body.data", x0, volume, DENSITY, box)
     v = VELOCITY * rng.uniform(-1.0, 1.0, x0.shape)
     for k, a in enumerate("xyz"):    # an atomfile variable holds one column
         (tmp_path / f"v{a}.txt").write_text(
@@ -203,7 +204,7 @@ def test_momentum_conserved(lmp, tmp_path, kernel, model, nprocs):
     # stable step sqrt(2 rho / sum_j c C_v V_j / xi) from the reference bonds; the spacing
     # for C_v is the largest implied by a volume, as in the pair style
     spacing = np.sqrt(volume.max() / THICKNESS) if dim == 2 else np.cbrt(volume.max())
-    bonds = ref.Bonds(x0, volume, kernel, c0, delta, spacing)
+    bonds = refmodel.Bonds(x0, volume, kernel, c0, delta, spacing)
     stiff = bonds.c * bonds.cv / bonds.xi
     sums = (np.bincount(bonds.i, stiff * volume[bonds.j], minlength=len(x0))
             + np.bincount(bonds.j, stiff * volume[bonds.i], minlength=len(x0)))

@@ -21,6 +21,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+import refmodel
 from scenes import peri_preamble
 
 KERNELS = ("constant", "triangular", "gaussian")
@@ -71,11 +72,12 @@ def test_bond_breaks_at_critical_stretch(lmp, tmp_path, model):
     box = [(-3.0 * HORIZON, 3.0 * HORIZON)] * 3
     if dim == 2:
         box[2] = (-0.5 * DX, 0.5 * DX)
-    ref.write_data(tmp_path / "two.data", x0, volume_of(dim), DENSITY, box)
+    refmodel.write_data(tmp_path / "two.data", x0, volume_of(dim), DENSITY, box)
     coords = "x y z" if dim == 3 else "x y"
 
     def stretched(name, s):
-        ref.write_positions(tmp_path / f"{name}.dump", np.array([x0[0], (1.0 + s) * bond]), box)
+        refmodel.write_positions(tmp_path / f"{name}.dump", np.array([x0[0], (1.0 + s) * bond]),
+                                 box)
         return f"read_dump {name}.dump 0 {coords} box no replace yes\nrun 0\n"
 
     geom = THICKNESS if dim == 2 else 1.0
@@ -133,7 +135,7 @@ def strip(m):
     """Lattice strip with a horizontal crack line between rows and room around the tips."""
     nx = 2 * (m + 2) + COLUMNS + 2
     ny = 2 * (m + 2)
-    x0 = ref.square_lattice((nx, ny), DX)
+    x0 = refmodel.square_lattice((nx, ny), DX)
     line_y = (ny // 2 - 0.5) * DX
     tip1 = (m + 2 + TIP_OFFSET) * DX
     return x0, line_y, tip1, tip1 + COLUMNS * DX
@@ -143,9 +145,9 @@ def lattice_breaking_energy(kernel, m, x0, segment_short, segment_long, s0):
     """Python: breaking work of the bonds cut by the long notch and not by the short one."""
     delta = m * DX
     c0 = ref.micromodulus(kernel, "plane/stress", YOUNGS, delta, THICKNESS)
-    bonds = ref.Bonds(x0, volume_of(2), kernel, c0, delta, DX)
-    extra = (bonds.crossing(ref.segment_crossing(*segment_long))
-             & ~bonds.crossing(ref.segment_crossing(*segment_short)))
+    bonds = refmodel.Bonds(x0, volume_of(2), kernel, c0, delta, DX)
+    extra = (bonds.crossing(refmodel.segment_crossing(*segment_long))
+             & ~bonds.crossing(refmodel.segment_crossing(*segment_short)))
     return bonds.breaking_energy(s0, extra)
 
 
@@ -156,8 +158,8 @@ def test_fracture_energy_of_straight_crack(lmp, tmp_path):
         x0, line_y, tip1, tip2 = strip(m)
         box = [(x0[:, k].min() - DX, x0[:, k].max() + DX) for k in (0, 1)]
         box.append((-0.5 * DX, 0.5 * DX))
-        ref.write_data(tmp_path / f"strip{m}.data", x0, volume_of(2), DENSITY, box)
-        ref.write_positions(tmp_path / f"strip{m}_expanded.dump", (1.0 + EXPANSION) * x0, box)
+        refmodel.write_data(tmp_path / f"strip{m}.data", x0, volume_of(2), DENSITY, box)
+        refmodel.write_positions(tmp_path / f"strip{m}_expanded.dump", (1.0 + EXPANSION) * x0, box)
         start = (x0[:, 0].min() - 2.0 * DX, line_y)    # edge notches: they start outside the strip
         segments = [(start, (tip, line_y)) for tip in (tip1, tip2)]
         for kernel in KERNELS:

@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+import refmodel
 from test_pmb_compat import (DELTA, DENSITY, DX, PERTURBATION, SEED, block, perturbed, run_forces,
                               short_range_pairs)
 
@@ -48,8 +49,8 @@ def test_forces_equal_peri_lps(lmp, tmp_path, boundary):
     x0, box = block(3, periodic)
     y = perturbed(x0, 3)
     assert short_range_pairs(x0, y) >= 3    # the short-range force is exercised
-    ref.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
-    ref.write_positions(tmp_path / "current.dump", y, box)
+    refmodel.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
+    refmodel.write_positions(tmp_path / "current.dump", y, box)
     out_lps, f_lps = run_forces(lmp, tmp_path, f"pair_style peri/lps\npair_coeff * * {NUMBERS}\n"
                                 + ENERGY, plugin=False, boundary=boundary)
     ours = f"pair_style bbpd/lps 3d\npair_coeff * * {NUMBERS}\n" + ENERGY
@@ -79,12 +80,12 @@ def test_periodic_difference_is_peri_lps_weighted_volume(lmp, tmp_path):
     differ by more than 1e-3 of the largest force, as peri/lps's weighted volume of an atom
     bonded across the boundary counts that bond with the raw distance."""
     n = 15
-    x0 = ref.square_lattice((n, n, n), DX)
+    x0 = refmodel.square_lattice((n, n, n), DX)
     box = [(x0[:, k].min() - 0.5 * DX, x0[:, k].max() + 0.5 * DX) for k in range(3)]
     rng = np.random.default_rng(SEED)
     y = x0 + PERTURBATION * DX * rng.uniform(-1.0, 1.0, x0.shape)
-    ref.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
-    ref.write_positions(tmp_path / "current.dump", y, box)
+    refmodel.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
+    refmodel.write_positions(tmp_path / "current.dump", y, box)
     _, f_lps = run_forces(lmp, tmp_path, f"pair_style peri/lps\npair_coeff * * {NUMBERS}\n",
                           plugin=False, boundary="p p p")
     _, f = run_forces(lmp, tmp_path, f"pair_style bbpd/lps 3d\npair_coeff * * {NUMBERS}\n",
@@ -104,8 +105,8 @@ def test_dilatation_is_needed(lmp, tmp_path):
     same K) misses the LPS state and is far from peri/lps's forces."""
     x0, box = block(3)
     y = perturbed(x0, 3)
-    ref.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
-    ref.write_positions(tmp_path / "current.dump", y, box)
+    refmodel.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
+    refmodel.write_positions(tmp_path / "current.dump", y, box)
     _, f_lps = run_forces(lmp, tmp_path, f"pair_style peri/lps\npair_coeff * * {NUMBERS}\n",
                           plugin=False)
     c = 18.0 * BULK / (np.pi * DELTA**4)

@@ -26,6 +26,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+import refmodel
 from scenes import assert_same_bits_every_way, peri_preamble
 
 KERNELS = ("constant", "triangular", "gaussian")
@@ -63,7 +64,7 @@ def deformations(dim):
 
 def block(dim, m, nmore=5):
     n = 2 * m + nmore
-    x0 = ref.square_lattice((n,) * dim, DX)
+    x0 = refmodel.square_lattice((n,) * dim, DX)
     centre = int(np.argmin(np.linalg.norm(x0 - x0.mean(axis=0), axis=1)))
     pad = (m + 1) * DX
     box = [(x0[:, k].min() - pad, x0[:, k].max() + pad) for k in range(3)]
@@ -86,12 +87,12 @@ def test_homogeneous_energy_density(lmp, tmp_path, model):
     dim = ref.DIMENSION[model]
     volume = THICKNESS * DX**2 if dim == 2 else DX**3
     x0, centre, box = block(dim, M)
-    ref.write_data(tmp_path / "body.data", x0, volume, DENSITY, box)
+    refmodel.write_data(tmp_path / "body.data", x0, volume, DENSITY, box)
     strains = deformations(dim)
     for name, eps in strains.items():
         e3 = np.zeros((3, 3))
         e3[:dim, :dim] = eps
-        ref.write_positions(tmp_path / f"{name}.dump", x0 + (x0 - x0[centre]) @ e3.T, box)
+        refmodel.write_positions(tmp_path / f"{name}.dump", x0 + (x0 - x0[centre]) @ e3.T, box)
     lo, hi = x0.min(axis=0) + HORIZON * 1.0001, x0.max(axis=0) - HORIZON * 1.0001
     zlo, zhi = (lo[2], hi[2]) if dim == 3 else (-1.0, 1.0)
     coords = "x y z" if dim == 3 else "x y"
@@ -132,9 +133,9 @@ def test_energy_check_can_fail(lmp, tmp_path):
     """The energy comparison can fail: a wrong Poisson's ratio (0.2 against 0.3) misses the
     classical energy of the dilatation by far more than 1 %."""
     x0, centre, box = block(3, 3)
-    ref.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
+    refmodel.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
     eps = STRAIN * np.eye(3)
-    ref.write_positions(tmp_path / "iso.dump", x0 + (x0 - x0[centre]) @ eps.T, box)
+    refmodel.write_positions(tmp_path / "iso.dump", x0 + (x0 - x0[centre]) @ eps.T, box)
     script = (peri_preamble(3, data="body.data") + lattice_line(3) + style_line("constant", "3d") +
               f"pair_coeff * * {YOUNGS!r} 0.2 none {3.015 * DX!r}\n"
               f"compute pea all pe/atom\ngroup c id {centre + 1}\ncompute ec c reduce sum c_pea\n"
@@ -161,7 +162,7 @@ def run_head(tmp_path, kernel, model, nprocs_grid=None):
     dim = ref.DIMENSION[model]
     volume = THICKNESS * DX**2 if dim == 2 else DX**3
     x0, centre, box = block(dim, 0, nmore=RUN_N)
-    ref.write_data(tmp_path / "run.data", x0, volume, DENSITY, box)
+    refmodel.write_data(tmp_path / "run.data", x0, volume, DENSITY, box)
     c = x0[centre]
     zvar = f"variable vz atom {EXPANSION_RATE!r}*(z-{c[2]!r})\n" if dim == 3 else ""
     vz = "v_vz" if dim == 3 else "NULL"
@@ -210,7 +211,7 @@ def test_breaks_above_s0_not_below(lmp, tmp_path, kernel, model):
     volume = THICKNESS * DX**2 if dim == 2 else DX**3
     x0, centre, box = block(dim, 0, nmore=7)
     box = [(lo * 1.2, hi * 1.2) for lo, hi in box] if dim == 3 else box
-    ref.write_data(tmp_path / "b.data", x0, volume, DENSITY, box)
+    refmodel.write_data(tmp_path / "b.data", x0, volume, DENSITY, box)
     nu = 0.3
     s0 = critical_stretch(kernel, model, nu, GC, RUN_HORIZON)
     coords = "x y z" if dim == 3 else "x y"
@@ -219,7 +220,7 @@ def test_breaks_above_s0_not_below(lmp, tmp_path, kernel, model):
     for f in factors:
         eps = np.zeros((3, 3))
         eps[np.diag_indices(dim)] = f * s0
-        ref.write_positions(tmp_path / f"s{f}.dump", x0 + (x0 - x0[centre]) @ eps.T, box)
+        refmodel.write_positions(tmp_path / f"s{f}.dump", x0 + (x0 - x0[centre]) @ eps.T, box)
         script += (peri_preamble(dim, data="b.data", plugin=False, clear=True) + lattice_line(dim) +
                    style_line(kernel, model) + f"pair_coeff * * {YOUNGS!r} {nu!r} {GC!r} {RUN_HORIZON!r}\n"
                    "compute dmg all bbpd/damage/atom\ncompute dmax all reduce max c_dmg\n"

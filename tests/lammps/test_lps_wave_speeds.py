@@ -18,6 +18,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+import refmodel
 from scenes import peri_preamble
 
 KERNELS = ("constant", "triangular", "gaussian")
@@ -68,12 +69,12 @@ def period(t, q):
 def wave_script(tmp_path, model, nu):
     """Input that runs every kernel on the displaced strip, one section after another."""
     L = NX * DX
-    x0 = ref.square_lattice((NX, NY), DX, origin=(0.5 * DX, 0.5 * DX, 0.0))
+    x0 = refmodel.square_lattice((NX, NY), DX, origin=(0.5 * DX, 0.5 * DX, 0.0))
     box = [(0.0, L), (0.0, NY * DX), (-0.5 * DX, 0.5 * DX)]
-    ref.write_data(tmp_path / "strip.data", x0, THICKNESS * DX**2, DENSITY, box)
+    refmodel.write_data(tmp_path / "strip.data", x0, THICKNESS * DX**2, DENSITY, box)
     k = 2.0 * math.pi / L
     u = AMPLITUDE * np.sin(k * x0[:, 0])
-    ref.write_positions(tmp_path / "wave.dump", x0 + np.stack([u, u, 0 * u], axis=1), box)
+    refmodel.write_positions(tmp_path / "wave.dump", x0 + np.stack([u, u, 0 * u], axis=1), box)
     cl, ct = classical_speeds(model, YOUNGS, nu, DENSITY)
     dt = DT_OVER_CROSSING * DX / cl
     steps = int(math.ceil(SHEAR_PERIODS * L / ct / dt))

@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+import refmodel
 from scenes import peri_preamble
 
 DX = 1.0e-3
@@ -32,7 +33,7 @@ THICKNESS = 1.0e-3    # of the 2D plate
 def block(dim=3, periodic=False):
     """The reference lattice and its box: padded, or (periodic) one period of the lattice,
     so that every atom has bonds across the boundary."""
-    x0 = ref.square_lattice((7, 7, 7) if dim == 3 else (12, 12), DX)
+    x0 = refmodel.square_lattice((7, 7, 7) if dim == 3 else (12, 12), DX)
     pad = 0.5 * DX if periodic else 5 * DX
     box = [(x0[:, k].min() - pad, x0[:, k].max() + pad) for k in range(3)]
     if dim == 2:
@@ -92,9 +93,9 @@ def test_forces_equal_peri_pmb(lmp, tmp_path, model):
     x0, box = block(dim, periodic)
     y = perturbed(x0, dim)
     assert short_range_pairs(x0, y) >= 3    # the short-range force is exercised
-    ref.write_data(tmp_path / "body.data", x0, DX**3 if dim == 3 else THICKNESS * DX**2,
+    refmodel.write_data(tmp_path / "body.data", x0, DX**3 if dim == 3 else THICKNESS * DX**2,
                    DENSITY, box)
-    ref.write_positions(tmp_path / "current.dump", y, box)
+    refmodel.write_positions(tmp_path / "current.dump", y, box)
     numbers = f"{C_PMB!r} {DELTA!r} {S00_ELASTIC!r} {ALPHA!r}"
 
     _, f_pmb = run_forces(lmp, tmp_path, f"pair_style peri/pmb\npair_coeff * * {numbers}\n",
@@ -120,8 +121,8 @@ def test_short_range_force_is_needed(lmp, tmp_path):
     """The same comparison fails without the short-range force (the test can fail)."""
     x0, box = block()
     y = perturbed(x0)
-    ref.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
-    ref.write_positions(tmp_path / "current.dump", y, box)
+    refmodel.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
+    refmodel.write_positions(tmp_path / "current.dump", y, box)
     numbers = f"{C_PMB!r} {DELTA!r} {S00_ELASTIC!r} {ALPHA!r}"
     _, f_pmb = run_forces(lmp, tmp_path, f"pair_style peri/pmb\npair_coeff * * {numbers}\n",
                           plugin=False)

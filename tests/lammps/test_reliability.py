@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+import refmodel
 from bbpd.runner import LammpsError
 from scenes import impact_plate, peri_preamble
 
@@ -107,7 +108,7 @@ def straddling_pairs(tmp_path, seed=12, alpha=False):
         # place the right atom so that the exact stretch is s0
         moved.append((2 * k + 2, a + length - (-d0) * (1.0 + S0)))
     box = [(lo, hi), (-2 * DX, PAIRS * 5 * DX), (-0.5 * DX, 0.5 * DX)]
-    ref.write_data(tmp_path / "pairs.data", np.array(x0), DX * DX * DX, RHO, box)
+    refmodel.write_data(tmp_path / "pairs.data", np.array(x0), DX * DX * DX, RHO, box)
     sets = "".join(f"set atom {t} x {x!r}\n" for t, x in moved)
     # with alpha the setup of a run re-evaluates the step before without breaking (pair_bbpd.rst):
     # the bonds are first tested at step 1, after a step too short to move an atom by one ulp

@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+import refmodel
 from bbpd.benchmarks import stability as st
 from bbpd.runner import LammpsError
 from scenes import peri_preamble
@@ -59,7 +60,7 @@ def per_atom_bound(x0, kernel, m, density=RHO, cuts=()):
     """min_i sqrt(2 rho_i / sum_j c C_v V_j / xi) over atoms with bonds (NumPy, eq. 26)."""
     delta = m * DX
     c0 = ref.micromodulus(kernel, "plane/stress", E, delta, H)
-    bonds = ref.Bonds(x0, VOLUME, kernel, c0, delta, DX)
+    bonds = refmodel.Bonds(x0, VOLUME, kernel, c0, delta, DX)
     for crosses in cuts:
         bonds.cut(crosses)
     a = bonds.intact
@@ -241,10 +242,10 @@ def test_perturbed_lattice(lmp, tmp_path):
     """12 x 12 lattice with every atom moved at random by up to 10 % of dx: the printed bound
     is the minimum over atoms of NumPy's per-atom value, and the run is stable at 0.9 of it."""
     rng = np.random.default_rng(20260704)
-    x0 = ref.square_lattice((12, 12), DX)
+    x0 = refmodel.square_lattice((12, 12), DX)
     x0[:, :2] += rng.uniform(-0.1, 0.1, size=(len(x0), 2)) * DX
     box = [(-2 * DX, 14 * DX), (-2 * DX, 14 * DX), (-0.5 * DX, 0.5 * DX)]
-    ref.write_data(tmp_path / "plate.data", x0, VOLUME, RHO, box)
+    refmodel.write_data(tmp_path / "plate.data", x0, VOLUME, RHO, box)
     script = (peri_preamble(2, data="plate.data") + pair("gaussian", 3)
               + """variable vx atom random(-1,1,3)
 variable vy atom random(-1,1,4)
@@ -358,7 +359,7 @@ dump_modify d sort id format float %.17g
     x0 = np.column_stack([final["x"] - final["c_disp[1]"], final["y"] - final["c_disp[2]"],
                           np.zeros(len(final["x"]))])
     x0 = np.round(x0 / DX) * DX    # the lattice sites, exactly
-    cuts = [ref.segment_crossing((a * DX, b * DX), (c * DX, d * DX)) for a, b, c, d in pieces]
+    cuts = [refmodel.segment_crossing((a * DX, b * DX), (c * DX, d * DX)) for a, b, c, d in pieces]
     expected, sums = per_atom_bound(x0, "gaussian", 3, cuts=cuts)
     assert st.printed_bound(out)[0] == pytest.approx(expected, rel=BOUND_RTOL)
     inside = (np.abs(x0[:, 0] / DX - 0.5 * (lo + hi)) <= 0.5 * (hi - lo) + 0.1) & \
@@ -415,7 +416,7 @@ BOND0 = 2.0**-10    # m: a binary fraction, so the driven atom lands exactly on 
 def two_atom_body(tmp_path, second=(BOND0, 0.0)):
     x0 = np.array([[0.0, 0.0, 0.0], [second[0], second[1], 0.0]])
     box = [(-4 * DX, 4 * DX), (-4 * DX, 4 * DX), (-0.5 * DX, 0.5 * DX)]
-    ref.write_data(tmp_path / "two.data", x0, VOLUME, RHO, box)
+    refmodel.write_data(tmp_path / "two.data", x0, VOLUME, RHO, box)
     return (peri_preamble(2, "f f p", data="two.data") + pair("gaussian", 3)
             + "fix 2d all enforce2d\nthermo_style custom step pe ke\n")
 

@@ -9,6 +9,7 @@ passes their pair's s0), momentum over a dynamic run with two densities and brea
 import numpy as np
 
 from bbpd import reference as ref
+import refmodel
 from scenes import assert_forces_match, peri_preamble
 
 DX = 1.0e-3
@@ -39,8 +40,8 @@ def gc_for(E, delta, s0):
     return s0**2 / per_gc
 
 
-class TypedBonds(ref.Bonds):
-    """ref.Bonds with per-type-pair c0, horizon and s0."""
+class TypedBonds(refmodel.Bonds):
+    """refmodel.Bonds with per-type-pair c0, horizon and s0."""
 
     def __init__(self, x0, types, volume):
         deltas = {p: m * DX for p, (_, m, _) in MATERIALS.items()}
@@ -67,7 +68,7 @@ class TypedBonds(ref.Bonds):
 
 def two_type_lattice():
     """14 x 12 lattice, left half type 1, right half type 2 (an interface of mixed bonds)."""
-    x0 = ref.square_lattice((14, 12), DX)
+    x0 = refmodel.square_lattice((14, 12), DX)
     types = np.where(x0[:, 0] < 6.5 * DX, 1, 2)
     pad = 5 * DX
     box = [(x0[:, 0].min() - pad, x0[:, 0].max() + pad),
@@ -87,7 +88,7 @@ def header(datafile, stretch=None):
 
 
 def write_data(path, x0, types, volume, box):
-    """Data file with per-type densities (ref.write_data has one density)."""
+    """Data file with per-type densities (refmodel.write_data has one density)."""
     volume = np.broadcast_to(np.asarray(volume, dtype=float), (len(x0),))
     lines = ["BBPD two-type lattice", "", f"{len(x0)} atoms", "2 atom types", ""]
     lines += [f"{lo!r} {hi!r} {a}lo {a}hi" for (lo, hi), a in zip(box, "xyz")]
@@ -105,7 +106,7 @@ def test_two_types_forces_match_reference(lmp, tmp_path):
     y = x0 + 1.0e-3 * DX * rng.uniform(-1.0, 1.0, x0.shape)
     y[:, 2] = 0.0
     write_data(tmp_path / "body.data", x0, types, VOLUME, box)
-    ref.write_positions(tmp_path / "current.dump", y, box)
+    refmodel.write_positions(tmp_path / "current.dump", y, box)
     bonds = TypedBonds(x0, types, VOLUME)
     assert np.count_nonzero(bonds.mixed) > 100
     script = (header("body.data")
@@ -131,7 +132,7 @@ def test_each_type_pair_breaks_at_its_own_critical_stretch(lmp, tmp_path):
     y = x0.copy()
     y[:, 0] *= 1.0 + STRAIN
     write_data(tmp_path / "body.data", x0, types, VOLUME, box)
-    ref.write_positions(tmp_path / "current.dump", y, box)
+    refmodel.write_positions(tmp_path / "current.dump", y, box)
     bonds = TypedBonds(x0, types, VOLUME)
     _, _, s = bonds.stretch(y)
     breaks = s > bonds.s0

@@ -19,6 +19,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+import refmodel
 from test_bad_input import BASE_3D, check_error_exit, run_case, script
 from test_lps_compat import END_DUMP, KEYS, end_state
 from test_pmb_compat import DELTA, DENSITY, DX, block, perturbed, short_range_pairs
@@ -90,8 +91,8 @@ def block_files(tmp_path):
     x0, box = block(3)
     y = perturbed(x0, 3)
     assert short_range_pairs(x0, y) >= 3    # the short-range force is exercised
-    ref.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
-    ref.write_positions(tmp_path / "current.dump", y, box)
+    refmodel.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box)
+    refmodel.write_positions(tmp_path / "current.dump", y, box)
     return tmp_path
 
 
@@ -153,8 +154,8 @@ def test_two_types_equal_peri(lmp, tmp_path, family):
     y = x0 + 1.0e-3 * DX * rng.uniform(-1.0, 1.0, x0.shape)
     assert short_range_pairs(x0, y) == 0
     types = np.where(x0[:, 0] > x0[:, 0].mean(), 2, 1)
-    ref.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box, types=types)
-    ref.write_positions(tmp_path / "current.dump", y, box)
+    refmodel.write_data(tmp_path / "body.data", x0, DX**3, DENSITY, box, types=types)
+    refmodel.write_positions(tmp_path / "current.dump", y, box)
     base = f"{BULK!r} {SHEAR!r} {DELTA!r} {S00_ELASTIC!r} {ALPHA!r}"
     other = f"{2 * BULK!r} {0.5 * SHEAR!r} {DELTA!r} {S00_ELASTIC!r} {ALPHA!r}"
     own = {"ves": (f"{LAMBDA} {TAU!r}", f"0.8 {3 * TAU!r}"), "eps": (f"{YIELD}", f"{3 * YIELD}")}[family]

@@ -26,6 +26,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+import refmodel
 from scenes import assert_same_bits_every_way, peri_preamble
 
 DX = 1.0e-3
@@ -47,7 +48,7 @@ CLASSICAL_TOLERANCE = 0.03
 
 
 def block(dim, n=2 * M + 5):
-    x0 = ref.square_lattice((n,) * dim, DX)
+    x0 = refmodel.square_lattice((n,) * dim, DX)
     pad = (M + 1) * DX
     box = [(x0[:, k].min() - pad, x0[:, k].max() + pad) for k in range(3)]
     if dim == 2:
@@ -59,7 +60,8 @@ def head(tmp_path, style, model, coeffs):
     """a block at rest in the reference state (bonds and weighted volumes made by run 0)"""
     dim = ref.DIMENSION[model]
     x0, box = block(dim)
-    ref.write_data(tmp_path / "body.data", x0, THICKNESS * DX**2 if dim == 2 else DX**3, DENSITY, box)
+    refmodel.write_data(tmp_path / "body.data", x0, THICKNESS * DX**2 if dim == 2 else DX**3,
+                        DENSITY, box)
     thick = f" thickness {THICKNESS!r}" if dim == 2 else ""
     lo, hi = x0.min(axis=0) + HORIZON * 1.0001, x0.max(axis=0) - HORIZON * 1.0001
     zlo, zhi = (lo[2], hi[2]) if dim == 3 else (-1.0, 1.0)
@@ -77,7 +79,7 @@ def sheared(tmp_path, x0, box, dim):
     """pure shear eps_12 = eps_21 = STRAIN about the block's centre, as a dump to read"""
     eps = np.zeros((3, 3))
     eps[0, 1] = eps[1, 0] = STRAIN
-    ref.write_positions(tmp_path / "shear.dump", x0 + (x0 - x0.mean(axis=0)) @ eps.T, box)
+    refmodel.write_positions(tmp_path / "shear.dump", x0 + (x0 - x0.mean(axis=0)) @ eps.T, box)
     return f"read_dump shear.dump 0 {'x y z' if dim == 3 else 'x y'} box no replace yes\n"
 
 
@@ -95,7 +97,7 @@ def test_lambda_zero_has_the_energy_of_the_kernel_lps(lmp, tmp_path, kernel, mod
     for style, coeffs in ((f"bbpd/ves/{kernel}", kernel_coeffs(0.0)),
                           (f"bbpd/lps/{kernel}", f"{YOUNGS!r} {NU!r} none {HORIZON!r}")):
         script, x0, box = head(tmp_path, style, model, coeffs)
-        ref.write_positions(tmp_path / "strain.dump", x0 + (x0 - x0.mean(axis=0)) @ eps.T, box)
+        refmodel.write_positions(tmp_path / "strain.dump", x0 + (x0 - x0.mean(axis=0)) @ eps.T, box)
         lmp(script + f"read_dump strain.dump 0 {'x y z' if dim == 3 else 'x y'} box no replace "
             "yes\nrun 0\nwrite_dump all custom end.dump id c_pea modify sort id format float %.17g\n")
         energies.append(np.asarray(ref.read_dump(tmp_path / "end.dump")["c_pea"]))
@@ -158,11 +160,12 @@ EXPANSION_RATE = 2.0e4    # 1/s: the bonds reach s0 within the run (test_lps_ker
 @pytest.mark.parametrize("kernel,model", (("gaussian", "3d"), ("triangular", "plane/stress")))
 def test_same_bits_on_1_and_2_ranks_and_restart(lmp, tmp_path, kernel, model):
     dim = ref.DIMENSION[model]
-    x0 = ref.square_lattice((RUN_N,) * dim, DX)
+    x0 = refmodel.square_lattice((RUN_N,) * dim, DX)
     box = [(x0[:, k].min() - DX, x0[:, k].max() + DX) for k in range(3)]
     if dim == 2:
         box[2] = (-0.5 * DX, 0.5 * DX)
-    ref.write_data(tmp_path / "run.data", x0, THICKNESS * DX**2 if dim == 2 else DX**3, DENSITY, box)
+    refmodel.write_data(tmp_path / "run.data", x0, THICKNESS * DX**2 if dim == 2 else DX**3,
+                        DENSITY, box)
     c = x0.mean(axis=0)
     thick = f" thickness {THICKNESS!r}" if dim == 2 else ""
     lattice = f"lattice {'sc' if dim == 3 else 'sq'} {DX!r}\n"
@@ -194,7 +197,7 @@ def test_same_bits_on_1_and_2_ranks_and_restart(lmp, tmp_path, kernel, model):
 ))
 def test_bad_coefficients_end_in_an_error(lmp, tmp_path, coeffs, message):
     x0, box = block(3, n=4)
-    ref.write_data(tmp_path / "b.data", x0, DX**3, DENSITY, box)
+    refmodel.write_data(tmp_path / "b.data", x0, DX**3, DENSITY, box)
     out = lmp(peri_preamble(3, data="b.data") + f"pair_style bbpd/ves/gaussian 3d\n"
               f"pair_coeff * * {coeffs}\n", check=False)
     assert out.returncode != 0

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from bbpd import reference as ref
+import refmodel
 from scenes import peri_preamble
 
 DX = 1.0e-3
@@ -23,7 +24,7 @@ RTOL = 1.0e-11                         # of the largest component: summation ord
 
 def body(dim):
     shape = (12, 10) if dim == 2 else (7, 6, 5)
-    x0 = ref.square_lattice(shape, DX)
+    x0 = refmodel.square_lattice(shape, DX)
     pad = 4 * DX
     box = [(x0[:, k].min() - pad, x0[:, k].max() + pad) for k in range(3)]
     if dim == 2:
@@ -46,8 +47,8 @@ def test_pressure_matches_reference(lmp, tmp_path, model, variant, nprocs):
     types = np.ones(len(x0), dtype=int)
     if variant == "types":
         types[x0[:, 0] > 4.5 * DX] = 2
-    ref.write_data(tmp_path / "body.data", x0, volume, 8000.0, box, types=types)
-    ref.write_positions(tmp_path / "current.dump", y, box)
+    refmodel.write_data(tmp_path / "body.data", x0, volume, 8000.0, box, types=types)
+    refmodel.write_positions(tmp_path / "current.dump", y, box)
     thick = f" thickness {THICKNESS!r}" if dim == 2 else ""
     storage = " bond/storage compact" if variant == "compact" else ""
     coeffs = f"pair_coeff * * 200e9 none {DELTA!r}\n"
@@ -67,7 +68,7 @@ def test_pressure_matches_reference(lmp, tmp_path, model, variant, nprocs):
               "run 0\n")
     out = lmp(script, nprocs=nprocs).output
     c0 = ref.micromodulus("gaussian", model, 200e9, DELTA, THICKNESS if dim == 2 else 1.0)
-    bonds = ref.Bonds(x0, volume, "gaussian", c0, DELTA, DX)
+    bonds = refmodel.Bonds(x0, volume, "gaussian", c0, DELTA, DX)
     virial = bonds.virial_density(y).sum(axis=0)
     size = 1.0
     for k in range(dim):

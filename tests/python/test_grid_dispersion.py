@@ -3,7 +3,7 @@
 The long-wave limit of the dynamic matrix D(k) / k^2 holds the grid's elastic constants; the
 calibration tests (tests/lammps/test_calibration.py) tie the same lattice sum, read as an
 energy, to the pair style. Here the speeds are checked against that energy, computed from the
-bonds of a deformed block (bbpd.reference.Bonds, another formula), and against the continuum
+bonds of a deformed block (refmodel.Bonds, another formula), and against the continuum
 as the horizon holds more spacings.
 """
 import math
@@ -13,6 +13,7 @@ import pytest
 
 from bbpd import freund
 from bbpd import reference as ref
+import refmodel
 
 E, RHO, DX = 72.0e9, 2440.0, 1.0e-3
 STRAIN = 1.0e-6
@@ -23,10 +24,10 @@ ENERGY_RTOL = 1.0e-5
 def centre_energy(kernel, m, strain):
     """Energy density of the centre atom of a square block under u = strain . x."""
     n = 2 * m + 5
-    x0 = ref.square_lattice((n, n), DX)
+    x0 = refmodel.square_lattice((n, n), DX)
     centre = int(np.argmin(np.linalg.norm(x0 - x0.mean(axis=0), axis=1)))
     delta = m * DX
-    bonds = ref.Bonds(x0, DX**2, kernel, ref.micromodulus(kernel, "plane/stress", E, delta),
+    bonds = refmodel.Bonds(x0, DX**2, kernel, ref.micromodulus(kernel, "plane/stress", E, delta),
                       delta, DX)
     return float(bonds.energy_density(x0 + x0 @ strain.T)[centre])
 

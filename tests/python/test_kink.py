@@ -208,7 +208,7 @@ def test_readme_markers_are_replaced_in_place():
     from bbpd import markers
     text = ("a\n<!-- bbpd:table kink -->\nold1\n<!-- /bbpd:table -->\nb\n"
             "<!-- bbpd:table kink-kw -->\nold2\n<!-- /bbpd:table -->\nc\n")
-    out = markers.replace_block("README.md", text, "kink-kw", "new2")
-    out = markers.replace_block("README.md", out, "kink", "new1")
+    new = {"kink": "new1", "kink-kw": "new2"}
+    out = markers.replace("README.md", text, lambda kind, name: new.get(name))
     assert out == text.replace("old1", "new1").replace("old2", "new2")
-    assert markers.replace_block("README.md", out, "kink", "new1") == out
+    assert markers.replace("README.md", out, lambda kind, name: new.get(name)) == out

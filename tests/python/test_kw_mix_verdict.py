@@ -6,8 +6,8 @@ import json
 import pytest
 
 from bbpd.benchmarks import kalthoff_winkler_grid as grid
-from bbpd.benchmarks import kalthoff_winkler_projectile as projectile
 from bbpd.benchmarks import kink_kalthoff_winkler
+from bbpd import csvfile
 from bbpd.jobs import ROOT
 
 FIRST, BAND = (m for m, _, _, _ in grid.MIXES)
@@ -66,8 +66,8 @@ def test_the_committed_runs_give_the_readme_summary():
     experiment's 70 deg lies nearest hoop strain at the first bond's mix, hoop stress at the
     band's"""
     rec = json.loads(kink_kalthoff_winkler.SUMMARY.read_text())
-    proj = projectile.read_csv(ROOT / "examples" / "kalthoff-winkler" / "projectile.csv")
-    fine, ang = grid.fine_angles(proj, grid.read_rows(grid.CSV)[1])
+    proj = csvfile.read_csv(ROOT / "examples" / "kalthoff-winkler" / "projectile.csv")[1]
+    fine, ang = grid.fine_angles(proj, csvfile.read_csv(grid.CSV)[1])
     assert fine == 1.0
     assert (round(min(ang["fit"]), 1), round(max(ang["fit"]), 1)) == (61.1, 67.1)
     assert (round(min(ang["chord"]), 1), round(max(ang["chord"]), 1)) == (62.3, 71.0)
@@ -88,7 +88,7 @@ def test_the_committed_pulls_give_the_readme_line():
     """examples/kalthoff-winkler/README.md under the pull table: 17 of 24 pulls beyond two
     standard errors, the largest +9.7 deg (constant, prescribed, 2 mm, initial), off-grid
     standard deviations 1.0-8.9 deg"""
-    p = grid.pull(grid.read_rows(grid.CSV)[1])
+    p = grid.pull(csvfile.read_csv(grid.CSV)[1])
     assert len(p) == 24 and sum(grid.significant(q) for q in p.values()) == 17
     key, big = max(p.items(), key=lambda kq: abs(kq[1]["pull"]))
     assert key == ("prescribed", "constant", 2.0, "initial") and round(big["pull"], 1) == 9.7

@@ -41,19 +41,6 @@ def test_the_scene_table_takes_each_scene_from_the_last_file():
     assert "18.0 bytes per bond" in table and "family 26 model 2" in table
 
 
-def test_a_kernel_measured_again_keeps_its_earlier_row(tmp_path, monkeypatch):
-    for path in perf.RESULTS.glob("spr-*"):
-        shutil.copy(path, tmp_path / path.name)
-    # the avx512 kernel's earlier measurement: its portable figures, say
-    shutil.copy(tmp_path / "spr-simd-portable.csv", tmp_path / f"spr-simd-avx512-{perf.BEFORE}.csv")
-    shutil.copy(tmp_path / "spr-row-floor-portable.csv", tmp_path / f"spr-row-floor-avx512-{perf.BEFORE}.csv")
-    monkeypatch.setattr(perf, "RESULTS", tmp_path)
-    table = perf.simd_table("spr")
-    assert f"| avx512 ({perf.BEFORE_LABEL}) | 7.50 / 84.31 | 11.2 |" in table
-    assert "**16.6**" in table    # the earlier row is never the best
-    assert f"| avx512 ({perf.BEFORE_LABEL}) | 138.53 | 136.23 | 1.02 |" in perf.floor_table("spr")
-
-
 def test_the_zen5_lines_of_doc_performance_follow_the_csvs():
     """doc/performance.md, Zen 5, by hand: auto ran AVX2 on every scene; AVX2 has the shortest
     loop of the forced paths on plate and block; peri/pmb's plate time spans the range the page

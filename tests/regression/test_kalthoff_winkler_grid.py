@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 from scipy.spatial import cKDTree
 
-from bbpd import readers
+from bbpd import csvfile, readers
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_grid as kwg
 from scenes import kw_run
@@ -165,7 +165,7 @@ def test_a_grid_pull_case_gives_its_committed_row(tmp_path, grid, loading, dx):
     deterministic); its two cracks differ, which on the square grid they cannot (mirror
     images); and the damage stays in crack bands (with the projectile and a contact distance
     above the perturbed grid's closest spacing the plate shattered)."""
-    _, rows = kwg.read_rows()
+    _, rows = csvfile.read_csv(kwg.CSV)
 
     def find(g):
         return next(r for r in rows if r["grid"] == g and r["loading"] == loading

@@ -28,13 +28,12 @@ probe) times the opening then, beside the grips' reaction. Against the bisection
 to TIGHT_RES, in results/center_crack_dynamic.csv.
 """
 import argparse
-import csv
 import math
 import re
 import time
 from pathlib import Path
 
-from bbpd import provenance
+from bbpd import csvfile, provenance
 
 from bbpd.benchmarks.plate_hole import E, HERE, KERNELS, run_lammps
 
@@ -157,14 +156,6 @@ def dynamic(kernel, delta, m, ramp, row, out):
             "wall_s": time.perf_counter() - start, "cpu": provenance.cpu()}
 
 
-def write_rows(rows, name):
-    with open(HERE / "results" / name, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        for row in rows:
-            w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in row.items()})
-
-
 def dynamic_study(kernel, delta, m, ramps, out, name):
     """results/NAME: the bisections to REL_RES and TIGHT_RES, then one dynamic ramp per ramp"""
     rows, tight = [], None
@@ -178,7 +169,7 @@ def dynamic_study(kernel, delta, m, ramps, out, name):
     for ramp in ramps:
         rows.append(dynamic(kernel, delta, m, ramp, tight, out))
         rows[0]["vs_relax"] = rows[0]["sigma_MPa"] / tight["sigma_c_MPa"] - 1.0
-        write_rows(rows, name)
+        csvfile.write_csv(HERE / "results" / name, rows, nan="nan")
         r = rows[-1]
         print(f"{kernel} delta {delta * 1e3:g} mm ramp {ramp:g} transits: u = {r['u_um']:.5f} um, "
               f"sigma = {r['sigma_MPa']:.4f} MPa ({100 * r['vs_relax']:+.2f} % of relax, "
@@ -217,7 +208,7 @@ def main(argv=None):
                   f" MPa [{r['sigma_lo_MPa']:.4f}, {r['sigma_hi_MPa']:.4f}] vs LEFM "
                   f"{r['sigma_lefm_MPa']:.4f} ({100 * r['error']:+.1f} %), {r['atoms']} atoms, "
                   f"{r['trials']} trials", flush=True)
-            write_rows(rows, args.csv)
+            csvfile.write_csv(HERE / "results" / args.csv, rows, nan="nan")
     print(f"wrote {HERE / 'results' / args.csv}")
 
 

@@ -33,11 +33,10 @@ body, which a relaxation damps) and the bonds' energy above the critical stretch
 first break the two parts are measured apart (breaking_split, *_initiation_split.csv).
 """
 import argparse
-import csv
 import re
 from pathlib import Path
 
-from bbpd import provenance
+from bbpd import csvfile, provenance
 from bbpd.benchmarks.center_crack import H_T, W, kernel_vars, sigma_lefm, trial
 from bbpd.benchmarks.plate_hole import HERE, run_lammps
 
@@ -162,14 +161,9 @@ def main(argv=None):
                                  first=args.first)
     cpu = provenance.cpu()
     out = HERE / "results" / args.csv
-    with open(out, "w", newline="") as f:
-        cols = ["kernel", "delta_mm", "m", "atoms", "u_lefm_m", "du_over_u_lefm"] + list(steps[0]) + ["cpu"]
-        wr = csv.DictWriter(f, fieldnames=cols)
-        wr.writeheader()
-        for s in steps:
-            row = {"kernel": args.kernel, "delta_mm": args.delta * 1e3, "m": args.m, "atoms": atoms,
-                   "u_lefm_m": u_lefm, "du_over_u_lefm": args.du, **s, "cpu": cpu}
-            wr.writerow({k: (f"{v:.8g}" if isinstance(v, float) else v) for k, v in row.items()})
+    csvfile.write_csv(out, [{"kernel": args.kernel, "delta_mm": args.delta * 1e3, "m": args.m,
+                             "atoms": atoms, "u_lefm_m": u_lefm, "du_over_u_lefm": args.du, **s,
+                             "cpu": cpu} for s in steps], nan="nan", digits=8)
     for s in steps:
         print(f"u {s['u_m'] * 1e6:.4f} um  F {s['load_N']:8.4f} N  broken {s['broken']:5d}  "
               f"U {s['U_J']:.4e}  B {s['B_J']:.4e}  W {s['W_J']:.4e}  gap {100 * s['gap']:+.2f} %  "
@@ -179,13 +173,8 @@ def main(argv=None):
     first = next(s for s in steps if s["broken"] > 0)
     events, totals = breaking_split(args.kernel, args.delta, args.m, first["u_m"], args.out)
     split = out.with_name(out.stem + "_initiation_split.csv")
-    with open(split, "w", newline="") as f:
-        wr = csv.DictWriter(f, fieldnames=["u_m"] + list(events[0]) + ["cpu"])
-        wr.writeheader()
-        for e in events:
-            wr.writerow({"u_m": f"{first['u_m']:.8g}", **{k: (f"{v:.8g}" if isinstance(v, float)
-                                                            else v) for k, v in e.items()},
-                         "cpu": cpu})
+    csvfile.write_csv(split, [{"u_m": first["u_m"], **e, "cpu": cpu} for e in events], nan="nan",
+                      digits=8)
     print("initiation: " + ", ".join(f"{k} {v:.6g}" for k, v in totals.items()))
     print(f"u_LEFM {u_lefm:.6g} m, {atoms} atoms, {cpu}; wrote {out}")
 

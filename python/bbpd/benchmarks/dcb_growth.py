@@ -13,11 +13,10 @@ on) the driver reports B over the energy the grips put in and the body did not k
 of the release that the broken bonds book at their critical stretch.
 """
 import argparse
-import csv
 import re
 from pathlib import Path
 
-from bbpd import provenance
+from bbpd import csvfile, provenance
 from bbpd.benchmarks.center_crack_growth import account
 from bbpd.benchmarks.plate_hole import HERE, run_lammps
 
@@ -61,12 +60,8 @@ def main(argv=None):
     rows, totals, atoms = path(args.out, args.dx, args.m, args.u, args.du, args.steps)
     cpu = provenance.cpu()
     out = HERE / "results" / args.csv
-    with open(out, "w", newline="") as f:
-        wr = csv.DictWriter(f, fieldnames=["dx_mm", "m", "atoms"] + list(rows[0]) + ["cpu"])
-        wr.writeheader()
-        for r in rows:
-            wr.writerow({k: (f"{v:.8g}" if isinstance(v, float) else v) for k, v in
-                         {"dx_mm": args.dx * 1e3, "m": args.m, "atoms": atoms, **r, "cpu": cpu}.items()})
+    csvfile.write_csv(out, [{"dx_mm": args.dx * 1e3, "m": args.m, "atoms": atoms, **r, "cpu": cpu}
+                            for r in rows], nan="nan", digits=8)
     for r in rows:
         print(f"u {r['u_m'] * 1e6:6.2f} um  F {r['load_N']:.4f} N  broken {r['broken']:4d}  "
               f"released {r['released_J']:.3e}  dB {r['dB_J']:.3e}  gap {100 * r['gap']:+.2f} %  "

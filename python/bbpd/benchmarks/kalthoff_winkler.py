@@ -306,8 +306,7 @@ def analyse(workdir):
     res["damage_map"] = {"x": x.tolist(), "y": y.tolist(), "phi": phi.tolist()}
     res["symmetry_phi"] = mirror_damage_difference(x, y, phi, dx, g["Ly"])
     for key in ("angle_{}_deg", "speed_{}"):
-        vals = [res[key.format(s)] for s in ("lo", "hi") if res[key.format(s)] is not None]
-        res[key.replace("_{}", "")] = float(np.mean(vals)) if vals else None
+        res[key.replace("_{}", "")] = mean_or_none([res[key.format(s)] for s in ("lo", "hi")])
     far_clusters = far_damage(x, y, phi, s0["c_dmg"], cr, g)
     res["far_damage"] = far_clusters
     res["far_damage_other"] = sum(c["atoms"] for c in far_clusters if not c["far_edge"])

@@ -277,10 +277,6 @@ def write(rows, path, command=COMMAND, workers=1):
     write_csv(path, rows, comments)
 
 
-def read_rows(path=CSV):
-    return read_csv(path)
-
-
 def main(argv=None):
     ap = cli.parser(__doc__, "/tmp/kw-grid", csv=True)
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time (single-rank each)")
@@ -292,7 +288,7 @@ def main(argv=None):
     rows = collect(specs, results)
     if args.csv:
         write(rows, args.csv, workers=args.jobs)
-        _, rows = read_rows(args.csv)
+        _, rows = read_csv(args.csv)
     print(markdown(rows))
 
 

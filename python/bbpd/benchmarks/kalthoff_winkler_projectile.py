@@ -190,15 +190,6 @@ def row(r):
             "loop_cpu_s": r["loop_cpu_s"], "nprocs": r["nprocs"]}
 
 
-def write_csv(rows, path):
-    csvfile.write_csv(path, rows, columns=COLUMNS)
-
-
-def read_csv(path):
-    """The rows of write_csv: numbers as floats, empty cells None."""
-    return csvfile.read_csv(path)[1]
-
-
 def at_target(r):
     """the angle definitions by which a run's crack lies within 70 +- 2 deg, if its cracks cross
     the plate (else none)"""
@@ -313,8 +304,8 @@ def main(argv=None):
     rows.sort(key=lambda r: (r["setup"], order[r["loading"]], kw.KERNELS.index(r["kernel"]),
                              -r["dx_mm"], -r["Gc"]))
     if args.csv:
-        write_csv(rows, args.csv)
-        print(markdown(read_csv(args.csv)))
+        csvfile.write_csv(args.csv, rows, columns=COLUMNS)
+        print(markdown(csvfile.read_csv(args.csv)[1]))
     if args.figures:
         figs = Path(args.figures)
         for p in sorted(work.glob("projectile-*-Gc69000/case.json")):

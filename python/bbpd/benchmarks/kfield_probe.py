@@ -17,7 +17,8 @@ import math
 
 import numpy as np
 
-from bbpd.benchmarks.center_crack import A, E, GC, HERE, LPS_NU, write_rows
+from bbpd import csvfile
+from bbpd.benchmarks.center_crack import A, E, GC, HERE, LPS_NU
 
 NU = 1.0 / 3.0                      # bond-based plane stress (and LPS_NU)
 KAPPA, MU = (3.0 - NU) / (1.0 + NU), E / (2.0 * (1.0 + NU))
@@ -141,7 +142,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--csv", default="kfield_probe.csv", help="file name under results/")
     args = ap.parse_args(argv)
-    write_rows(rows(), args.csv)
+    csvfile.write_csv(HERE / "results" / args.csv, rows(), nan="nan")
     for kernel, v in verdict(csv.DictReader(open(HERE / "results" / args.csv))).items():
         print(kernel, {k: round(x, 4) if isinstance(x, float) else x for k, x in v.items()})
 

@@ -201,19 +201,11 @@ COLUMNS = ("kernel", "dx_mm", "m", "alpha", "psi", "ncross", "K_init_over_Kc", "
            "wall_s")
 
 
-def row_of(res):
-    r = dict(res)
-    r["dx_mm"] = res["dx"] * 1e3
-    r["m"] = round(res["delta"] / res["dx"])
-    return r
-
-
 def write_csv(rows, path, provenance):
     """provenance: the 'made by' and 'rows added by' lines (csvfile.continue_csv)"""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    csvfile.write_csv(path, [{c: r.get(c) for c in COLUMNS} for r in rows], [
+    csvfile.write_csv(path, rows, [
         *provenance, f"CPU: {cpu()}; nprocs MPI ranks per run (empty: one), on a shared machine "
-        "(wall_s); angles in degrees (theta < 0 for K_II > 0), extension in horizons"])
+        "(wall_s); angles in degrees (theta < 0 for K_II > 0), extension in horizons"], COLUMNS)
 
 
 def read_rows(path):
@@ -408,7 +400,8 @@ def main(argv=None):
     specs = jobs(todo, args.nprocs)
     results = run_jobs([sp.job for sp in specs], args.work, workers=args.workers)
     done, failed = jobmod.finished(specs, results)
-    rows = [row_of(results[sp.job.label]) for sp in done]
+    rows = [{**res, "dx_mm": res["dx"] * 1e3, "m": round(res["delta"] / res["dx"])}
+            for res in (results[sp.job.label] for sp in done)]
     if failed:
         print("FAILED:", failed)
     mine = {case_key(r) for r in rows}

@@ -25,13 +25,13 @@ Photoelasticity, 1952; Pilkey & Pilkey, Peterson's Stress Concentration Factors,
 sec. 4.3.1), on the gross stress sigma = load / (W h).
 """
 import argparse
-import csv
 import functools
 import re
 from pathlib import Path
 
 import numpy as np
 
+from bbpd import csvfile
 from bbpd.runner import run_lammps
 
 HERE = Path(__file__).resolve().parents[3] / "examples" / "quasi-static"    # inputs, results
@@ -159,12 +159,7 @@ def run_case(kernel, delta, m, out):
 
 
 def write(rows, out):
-    out.parent.mkdir(exist_ok=True)
-    with open(out, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
+    csvfile.write_csv(out, rows, nan="nan")
     print(f"wrote {out}")
 
 

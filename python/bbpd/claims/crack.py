@@ -13,6 +13,7 @@ from bbpd.benchmarks import kalthoff_winkler_study as study
 from bbpd.benchmarks import kink_convergence as kc
 from bbpd.benchmarks import (branching, kink, kink_kalthoff_winkler, mode1_propagation, strip,
                              strip_closure)
+from bbpd import csvfile
 from bbpd.jobs import ROOT
 
 from .paper import made
@@ -49,8 +50,8 @@ BRANCHING = {
                       timing=True),
     "branching-cost": lambda data: branching.cost_table(branching.read_rows())}
 KW = {
-    "kw-projectile": lambda data: projectile.markdown(projectile.read_csv(PROJECTILE_CSV)),
+    "kw-projectile": lambda data: projectile.markdown(csvfile.read_csv(PROJECTILE_CSV)[1]),
     "kw-study": made(study.CSV, lambda data: study.md_table(study.read_csv()[0])),
-    "kw-grid-pull": lambda data: grid.markdown(*reversed(grid.read_rows(grid.CSV))),
+    "kw-grid-pull": lambda data: grid.markdown(*reversed(csvfile.read_csv(grid.CSV))),
     "kw-deck": made(deck.CSV, lambda data: deck.table(deck.read_rows()[1])),
     "kw-3d": made(kw3d.CSV, lambda data: kw3d.table(kw3d.read_rows()))}

@@ -114,9 +114,6 @@ def lps_cylinder(data):
 SIMD_PATHS = ("auto", "avx512", "avx2", "portable")
 FLOOR_PATHS = ("avx512", "avx2", "portable")
 SIMD_SCENES = (("plate 2D", "plate"), ("block 3D", "block"))
-# a path measured again after a change of its kernel keeps the earlier CSVs under this suffix
-BEFORE = "gathers"
-BEFORE_LABEL = "before: 8-wide gathers"
 
 
 def _scene(rows, prefix):
@@ -130,11 +127,6 @@ def _ratio(r):
 def _simd_runs(prefix):
     """{simd keyword: rows of its pair_vs_pmb.py CSV}"""
     return {p: _rows(RESULTS / f"{prefix}-simd-{p}.csv") for p in SIMD_PATHS}
-
-
-def _earlier(prefix, kind, paths):
-    """{path: its earlier CSV} for the paths measured again (kind: 'simd' or 'row-floor')"""
-    return {p: path for p in paths if (path := RESULTS / f"{prefix}-{kind}-{p}-{BEFORE}.csv").exists()}
 
 
 def _floor(path):
@@ -151,9 +143,7 @@ def simd_table(prefix):
     best = {s: max(SIMD_PATHS, key=lambda p: _ratio(_scene(runs[p], s))) for s, _ in SIMD_SCENES}
     lines = ["| `simd` | plate 2D: ours / `peri/pmb` (ms/step) | ratio | block 3D 41^3: ours / "
              "`peri/pmb` (ms/step) | ratio | path run | load |", "|---|---|---|---|---|---|---|"]
-    before = {f"{p} ({BEFORE_LABEL})": _rows(path)
-              for p, path in _earlier(prefix, "simd", SIMD_PATHS).items()}
-    for p, rows in {**runs, **before}.items():
+    for p, rows in runs.items():
         cells = []
         for s, _ in SIMD_SCENES:
             r = _scene(rows, s)
@@ -169,11 +159,8 @@ def floor_table(prefix):
     """Per path the 3D block held still: the kernel's pair time against its floor (no_memory)."""
     lines = ["| path (3D block held still, `perf/row_floor.py`) | kernel ms/step | floor "
              "(`no_memory`) ms/step | ratio | load |", "|---|---|---|---|---|"]
-    files = [(p, RESULTS / f"{prefix}-row-floor-{p}.csv") for p in FLOOR_PATHS]
-    files += [(f"{p} ({BEFORE_LABEL})", path)
-              for p, path in _earlier(prefix, "row-floor", FLOOR_PATHS).items()]
-    for p, path in files:
-        kernel, floor, load = _floor(path)
+    for p in FLOOR_PATHS:
+        kernel, floor, load = _floor(RESULTS / f"{prefix}-row-floor-{p}.csv")
         lines.append(f"| {p} | {kernel:.2f} | {floor:.2f} | {kernel / floor:.2f} | {load} |")
     return "\n".join(lines)
 

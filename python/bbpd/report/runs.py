@@ -4,7 +4,6 @@
 Job functions are named "bbpd.report:run_job" and "bbpd.report:dispersion_run" (the package
 re-exports them): the names are part of each run's cache key, so finished runs stay reusable.
 """
-import importlib
 import json
 import os
 import threading
@@ -64,8 +63,7 @@ def run_job(workdir, target, args, label):
     """What every job runs (in a worker process): target(workdir=..., **args), announced when
     it starts and, while it runs, every HEARTBEAT_S; adds the LAMMPS and plugin versions its
     log reports, so that reused results say which build made them."""
-    module, name = target.split(":")
-    fn = getattr(importlib.import_module(module), name)
+    fn = jobmod.function(target)
     expected = json.loads(os.environ.get(ESTIMATES_ENV, "{}")).get(label)
     print(f"  start  {label}" + (f" (about {jobmod._fmt(expected)})" if expected else ""),
           flush=True)

@@ -5,7 +5,6 @@ the report lacks and the timing repeats; section() writes the CSV, the figures a
 section.
 """
 
-import importlib
 import math
 import shutil
 from dataclasses import dataclass
@@ -128,8 +127,7 @@ def repeat_run(workdir, target, args, repeats, of=None):
     """Time target(**args) again, up to `repeats` times, while its loop time stays short:
     returns the loop times (s).  Only the times are kept; the outputs are deleted.
     of: the label of the report's run of the same arguments (only names it)."""
-    module, name = target.split(":")
-    fn = getattr(importlib.import_module(module), name)
+    fn = jobmod.function(target)
     times, build = [], {}
     for n in range(repeats):
         sub = Path(workdir) / f"repeat{n}"
@@ -291,18 +289,6 @@ def quasi_static_rows(path=QUASI_STATIC_CSV):
     return out
 
 
-def write_csv(path, table):
-    """table: rows() dicts -> CSV with CSV_COLUMNS (resolution: dx in m)."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    csvfile.write_csv(path, table, columns=CSV_COLUMNS)
-    return path
-
-
-def read_csv(path):
-    return csvfile.read_csv(path)[1]
-
-
 # --------------------------------------------------------------------------- cost of a target
 
 def cost_to_reach(table, benchmark, metric, target):
@@ -407,7 +393,8 @@ def section(specs, results, figdir, notes):
     figdir = Path(figdir)
     runs, samples = collect(specs, results)
     table = rows(runs, notes) + quasi_static_rows()
-    csv_path = write_csv(figdir / "csv" / CSV_NAME, table)
+    csv_path = figdir / "csv" / CSV_NAME    # resolution: dx in m
+    csvfile.write_csv(csv_path, table, columns=CSV_COLUMNS)
     figs = []
     for bench in BENCHMARKS:
         if not any(r["benchmark"] == bench for r in table):
