@@ -322,8 +322,11 @@ namespace LPS {
   {
     Group4 g;
     if (full) {
-      const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
-                        partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
+      // the partners as a vector first, then in memory for the scalar loads (four scalar stores
+      // read back as one vector would stall the load on store forwarding)
+      g.j1 = load_partners(bj, _mm_set1_epi32(-1), i, k);
+      alignas(16) int j[4];
+      _mm_store_si128(reinterpret_cast<__m128i *>(j), g.j1);
       __m256d x, y, z;
       load_positions(xx, j, x, y, z);
       g.dx = _mm256_sub_pd(x, xi);
@@ -332,7 +335,6 @@ namespace LPS {
       load_values_full(vals, bj, i, k, g.xi0, g.wv);
       load_states4(states, j, g.tom, g.inv_m);
       g.m = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-      g.j1 = _mm_loadu_si128(reinterpret_cast<const __m128i *>(j));
     } else {
       const TailGroup4 t(xx, bj, i, n, k, xi, yi, zi);
       g.m = t.m;
