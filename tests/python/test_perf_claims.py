@@ -120,3 +120,18 @@ def test_no_style_got_slower_with_the_families():
     for i in inputs:
         assert best[(i, "new")] <= best[(i, "base")], i
         assert f"{best[(i, 'base')]:.3f} -> {best[(i, 'new')]:.3f}" in text, i
+
+
+def test_the_3d_plate_lines_of_doc_performance_follow_the_csvs():
+    """doc/performance.md's 3D plate: pair time, ns per bond end and bytes per bond from
+    spr-plate3d.csv; ns per bond end and setup per size from spr-scaling-3d.csv"""
+    text = " ".join((perf.ROOT / "doc" / "performance.md").read_text().split())
+    plate = perf._rows(perf.RESULTS / "spr-plate3d.csv")[0]
+    pair_ms = float(plate["ours_pair_ms"])
+    assert f"{pair_ms:.1f} ms of pair time per step" in text
+    assert f"**{pair_ms * 1e6 / (2 * int(plate['bonds'])):.2f} ns per bond end**" in text
+    assert f"**{float(plate['bytes_per_bond']):.1f} bytes per bond** of bond storage" in text
+    assert f"**{float(plate['memory_per_bond']):.1f} per bond** for the bonds" in text
+    small, large = perf._rows(perf.RESULTS / "spr-scaling-3d.csv")
+    assert f"{float(large['ns_per_bond_end']):.2f} ns per bond end and a setup of {large['setup_s']} s" in text
+    assert f"at {int(small['atoms']):,} atoms {float(small['ns_per_bond_end']):.2f} ns and {small['setup_s']} s" in text
