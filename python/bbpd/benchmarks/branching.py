@@ -298,23 +298,14 @@ REPORT_SETUP = ("Plate 100 x 40 mm, notch from the left edge to the centre along
                 "examples/crack-branching/README.md." % C_R)
 
 
-def summary_text(rows):
-    """REPORT.md's lines under the table (which has each run's fork, speeds, angle and tips): the
-    runs whose crack did not grow from its tip, and the experiments' terminal speed"""
-    jumped = [f"{r['kernel']} at {r['sigma_MPa']:g} MPa" for r in rows if not grown(r)]
-    return ([f"No crack growth to measure, the mid-line breaks when the loading waves meet: "
-             f"{', '.join(jumped)}."] if jumped else []) + [
-        f"Experiments on glass: terminal speed about {EXPERIMENT_SPEED_OVER_CR:g} c_R."]
-
-
 def section(specs, results, figdir, notes):
     """The section of REPORT.md (bbpd.report.document.write_report) from the report's branching runs."""
     def figures(rows):
         maps = {f"{r['kernel']} {r['sigma_MPa']:g} MPa m = {r['m']:g}": r["workdir"] for r in rows
                 if Path(r.get("workdir", "")).joinpath("damage.dump").exists()}
         return [damage_maps(maps, Path(figdir) / ("branching_" + FIGURE)).name] if maps else []
-    return jobmod.section(REPORT_TITLE, REPORT_SETUP, specs, results, table, summary_text,
-                          figures, notes)
+    return jobmod.section(REPORT_TITLE, REPORT_SETUP, specs, results, table, lambda rows: [
+        f"Experiments on glass: terminal speed about {EXPERIMENT_SPEED_OVER_CR:g} c_R."], figures, notes)
 
 
 def main(argv=None):

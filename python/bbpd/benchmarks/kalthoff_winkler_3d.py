@@ -142,12 +142,6 @@ def against_2d(rows):
     return pairs, (res[-1]["fit_deg"] - res[0]["fit_deg"] if len(res) >= 2 else None)
 
 
-def summary(rows):
-    """REPORT.md's line under the 3D table (the table has each run's angles beside the 2D ones)"""
-    refine = against_2d(rows)[1]
-    return [] if refine is None else [f"Refining delta moves the mid-plane fit angle by {refine:+.1f}°."]
-
-
 # ---------------------------------------------------------------------------- report
 
 REPORT_TITLE = "Kalthoff-Winkler in 3D, resolved through the plate's thickness"
@@ -170,7 +164,7 @@ def section(specs, results, figdir, notes):
     return jobmod.section(
         REPORT_TITLE, f"The 9 mm plate struck by the projectile, Gaussian kernel, m = {M:g}, beside "
         "the 2D plate of the same grid; see examples/kalthoff-winkler/README.md.",
-        specs, results, table, summary,
+        specs, results, table,
         not_run=f"Not run by default ({len(jobs())} runs, about 1.4 h on one core): "
         "`tools/reproduce --full` runs them; the last measured table is in "
         "examples/kalthoff-winkler/README.md, '3D plate resolved through its thickness'.")
@@ -199,7 +193,7 @@ def main(argv=None):
     if a.csv:
         csvfile.write_csv(a.csv, rows, comments=[f"made by: {cli.command('kalthoff_winkler_3d', argv)}",
                                                  f"timing: LAMMPS loop time, {cpu()}, shared"])
-    print(table(rows), *summary(rows), sep="\n")
+    print(table(rows))
     return 0
 
 

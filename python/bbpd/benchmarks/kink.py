@@ -322,21 +322,26 @@ def verdict_table(rows):
     return md_table(head, out)
 
 
+def whole_sweep(rows):
+    """Every kernel and crack direction of the coarse sweep ran: the verdict needs them all."""
+    coarse = [r for r in rows if r["ncross"] == NCROSS and r["dx"] == COARSE[0]]
+    return (len({r["kernel"] for r in coarse}), len({r["alpha"] for r in coarse})) == FULL_COVERAGE
+
+
+# REPORT.md's lines under the tables: the runs locked onto a grid direction, and, without the
+# whole coarse sweep, where the verdict is
+LOCKED = ("On a grid direction (within {0:g} deg of a multiple of 45 deg in the lattice frame, "
+          "more than {1:g} deg from every criterion): {2}.")
+TOO_FEW = ("Too few runs for a verdict between the criteria: `tools/reproduce --full` runs the "
+           "whole sweep, whose verdict is in examples/kink-mixed-mode/README.md.")
+
+
 def summary_text(rows):
-    """REPORT.md's lines under the tables: the runs locked onto a grid direction, and whether
-    the runs are the whole coarse sweep (the README's verdict needs it)."""
-    main = [r for r in rows if r["ncross"] == NCROSS]
-    stuck = locked(main)
-    text = [f"On a grid direction (within {LOCK_DEG:g} deg of a multiple of 45 deg in the lattice "
-            f"frame, more than {2 * LOCK_DEG:g} deg from every criterion): " + "; ".join(
-                f"{r['kernel']} dx {r['dx'] * 1e3:g} mm, crack {r['alpha']:g} deg, psi "
-                f"{r['psi']:g} deg: {r['angle_2d']:.1f} deg" for r in stuck) + "."] if stuck else []
-    coarse = [r for r in main if r["dx"] == COARSE[0]]
-    if (len({r["kernel"] for r in coarse}), len({r["alpha"] for r in coarse})) != FULL_COVERAGE:
-        text.append("Too few runs for a verdict between the criteria: `tools/reproduce --full` "
-                    "runs the whole sweep, whose verdict is in "
-                    "examples/kink-mixed-mode/README.md.")
-    return text
+    stuck = "; ".join(f"{r['kernel']} dx {r['dx'] * 1e3:g} mm, crack {r['alpha']:g} deg, psi "
+                      f"{r['psi']:g} deg: {r['angle_2d']:.1f} deg"
+                      for r in locked([r for r in rows if r["ncross"] == NCROSS]))
+    return ([LOCKED.format(LOCK_DEG, 2 * LOCK_DEG, stuck)] if stuck else []) + (
+        [] if whole_sweep(rows) else [TOO_FEW])
 
 
 def section(specs, results, figdir, notes):

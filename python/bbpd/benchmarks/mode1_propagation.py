@@ -295,18 +295,9 @@ REPORT_SETUP = ("The stationary Mode-I plate with fracture on: G_c = 2 J/m^2 at 
                 "see examples/mode1-propagation/README.md.")
 
 
-def summary_text(rows):
-    """REPORT.md's line under the table (which has each run's initiation, J and extension): the
-    kernel with the smallest L2 error of l(t) against the K_Ic form on the finest grid"""
-    finest = [r for r in rows if r["dx"] == min(q["dx"] for q in rows)]
-    best = min(finest, key=lambda r: r["l2_toughness_pct"])
-    return [f"Smallest L2 error of l(t) against the K_Ic form at dx = {best['dx']:g} m: "
-            f"{best['l2_toughness_pct']:.1f} % ({best['kernel']})."]
-
-
 def section(specs, results, figdir, notes):
     """The section of REPORT.md (bbpd.report.document.write_report) from the report's runs."""
-    return jobmod.section(REPORT_TITLE, REPORT_SETUP, specs, results, table_markdown, summary_text,
+    return jobmod.section(REPORT_TITLE, REPORT_SETUP, specs, results, table_markdown, None,
                           lambda rows: figures_of_rows(rows, figdir, prefix="mode1_propagation_"),
                           notes)
 

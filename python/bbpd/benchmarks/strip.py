@@ -342,18 +342,6 @@ def _case(r):
     return f"{r['kernel']} m = {r['m']:g}, H/delta = {r['H_over_delta']:g}, Delta = {r['Delta']:g}"
 
 
-def closure_line(rows):
-    """REPORT.md's line under the strip's tables (law_table has the thresholds, speeds and runs
-    that did not run steadily): the energy closure over the runs that crossed"""
-    c = energy_closure(rows)
-    if not c:
-        return ""
-    return (f"Closure Gamma + Phi = U' over the {c['n']} runs that crossed: within "
-            f"{abs(c['worst']['closure_pct']):.1f} % ({_case(c['worst'])}); energy balance "
-            f"drift at most {c['drift']:.2f} % of the broken-bond energy (all runs: "
-            f"{c['drift_all']['balance_pct']:.2f} %, {_case(c['drift_all'])}).")
-
-
 def _where(r):
     """', off the plane at a + 1.49 H' of a branched run that measured it, else ''"""
     x = r.get("left_plane_over_H", float("nan"))
@@ -397,7 +385,7 @@ def section(specs, results, figdir, notes):
         "strip 8 H long with a seed crack H long, pre-stretched between fixed grips to U' = Delta "
         "G_c; steady speed, bond and wave energies over the middle of the strip. See "
         "examples/strip-steady-crack/README.md.", specs, results,
-        lambda rows: table_markdown(rows) + "\n\n" + law_table(rows), lambda rows: [closure_line(rows)])
+        lambda rows: table_markdown(rows) + "\n\n" + law_table(rows))
 
 
 def figure(rows, path, H_over_delta=SWEEP_H_OVER_DELTA):

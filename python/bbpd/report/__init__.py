@@ -15,7 +15,7 @@ and the builds and machine that made them. Its modules' layers: doc/architecture
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import KERNELS
 
-from .sections import mode2_j, ranking
+from .sections import mode2_j
 from .runs import dispersion_run, make_spec, run_job
 
-__all__ = ["Job", "Spec", "KERNELS", "mode2_j", "ranking", "dispersion_run", "make_spec", "run_job"]
+__all__ = ["Job", "Spec", "KERNELS", "mode2_j", "dispersion_run", "make_spec", "run_job"]

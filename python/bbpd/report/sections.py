@@ -24,60 +24,14 @@ NEGATIVE_VG = -1.0e-3      # measured v_g/v below this counts as negative (the r
 # "the excess is in the extrapolation" (and 1 minus it for "in the field")
 MODE2_FIELD_SHARE = 0.25
 
-DISPERSION = ("Largest deviation of the measured ridge from the relation LAMMPS integrates (eq. 31 "
-              "with C_v and the velocity-Verlet shift), k dx {k0:g}-{k1:g}: {dev:.1e} ({worst}). "
-              "Negative group velocity measured: {measured}; eq. 31 as printed: {printed} (the "
-              "paper's Fig. 6); with C_v: {cv}.")
-MODE1 = ("Table 3, L2 errors (consistent constants) rank {ours}; the paper's {paper}.")
-MODE1_J = ("K_I from the J-integral (annulus 0.5-1.5 m), peak errors {j[0]:.2f}-{j[1]:.2f} %; "
-           "displacement extrapolation {d[0]:.2f}-{d[1]:.2f} %.")
-MODE2 = ("K_II/K_II,ref at the end of the window by extrapolation (tip on the first intact "
-         "column, r1 = dx, r2 = 2 dx): {ratio[0]:.3f}-{ratio[1]:.3f}.")
-MODE2_J = ("From the J-integral (annulus 5-12.5 mm): {j[0]:.3f}-{j[1]:.3f}; the excess lives in "
-           "the {where}.")
-KW_ORDER = ("dx = {dx:g} mm: the damage band leaves the tips in the order {order}; the paper's "
-            "initiation: {paper}.")
-KW_SYMMETRY = "Mirror symmetry of the two cracks: tip mismatch <= {tip:.1g} mm."
-
-
-def ranking(values):
-    """Names ordered by value, None (failed) left out: 'a < b < c'."""
-    ok = [(v, k) for k, v in values.items() if v is not None]
-    return " < ".join(k for _, k in sorted(ok))
-
-
-def _names(kernels):
-    return ", ".join(kernels) or "none"
-
-
-def _span(values):
-    return min(values), max(values)
-
-
-def dispersion_text(numbers, table):
-    """numbers: dispersion.table's; table: dispersion.analytic_table's."""
-    min_vg, dev = numbers["min_vg"], numbers["dev"]
-    if not dev:
-        return []
-    worst = max(dev, key=dev.get)
-    negative = {c: _names([k for k in KERNELS if table[k][c]["group_negative"]])
-                for c in ("discrete", "discrete_cv")}
-    return [DISPERSION.format(
-        k0=dispersion.KDX_RANGE[0], k1=dispersion.KDX_RANGE[1], dev=dev[worst], worst=worst,
-        measured=_names([k for k, g in min_vg.items() if g is not None and g < NEGATIVE_VG]),
-        printed=negative["discrete"], cv=negative["discrete_cv"])]
-
-
-def mode1_text(ok, rows3_ok):
-    """ok: every finished run by (kernel, dx); rows3_ok: Table 3's by kernel."""
-    text = [MODE1.format(ours=ranking({k: r["consistent"]["l2"] for k, r in rows3_ok.items()}),
-                         paper=ranking({k: mode1.PAPER_TABLE3[k][1] for k in rows3_ok}))
-            ] if rows3_ok else []
-    withj = [key for key, r in ok.items() if "jintegral" in r]
-    if withj:
-        text.append(MODE1_J.format(j=_span([ok[k]["jintegral"]["consistent"]["peak"] for k in withj]),
-                                   d=_span([ok[k]["consistent"]["peak"] for k in withj])))
-    return text
+# the lines under the tables: hand-written, the runs' numbers and verdicts filled in (what a
+# table beside them already shows is not repeated)
+DISPERSION = ("Negative group velocity (min v_g/v in the table; the paper's Fig. 6): measured "
+              "for {measured}; eq. 31 as printed gives it for {printed}, with C_v for {cv}.")
+MODE2_J = ("Where the excess of K_II at the window end lives (the two ratios in the J-integral "
+           "table): the {where}.")
+KW_PICTURES = ("The row of pictures: the damage of the {k} run at {dx:g} mm at {n} times, drawn "
+               "during the run by LAMMPS's dump image (the input's variable images).")
 
 
 def mode2_j(ok):
@@ -97,31 +51,6 @@ def mode2_j(ok):
     peaks = {dx: {k: r["jintegral"]["peak"] for (k, d), r in withj.items() if d == dx}
              for dx in sorted({d for _, d in withj}, reverse=True)}
     return dict(dsif=rd, j=rj, share=share, where=where, peaks=peaks)
-
-
-def mode2_text(ok):
-    """ok: (kernel, dx) -> finished result."""
-    if not ok:
-        return []
-    j = mode2_j(ok)
-    return ([MODE2.format(ratio=_span([r["k_end"] / r["k_end_exact"] for r in ok.values()]))]
-            + ([MODE2_J.format(j=_span(j["j"].values()), where=j["where"])] if j else []))
-
-
-def kw_text(ok):
-    """ok: (kernel, dx) -> finished result. What the table does not show: the order in which
-    the damage band leaves the tips against the paper's initiation order, per dx, and the
-    mirror symmetry of the two cracks."""
-    text = []
-    for dx in sorted({dx for _, dx in ok}, reverse=True):
-        same = {k: r for (k, d), r in ok.items() if d == dx}
-        if len(same) > 1:
-            text.append(KW_ORDER.format(
-                dx=dx * 1e3, order=ranking({k: r["t_band_us"] for k, r in same.items()}),
-                paper=ranking({k: kalthoff_winkler.PAPER_INITIATION_US[k] for k in same})))
-    if ok:
-        text.append(KW_SYMMETRY.format(tip=max(r["symmetry_tip_mm"] for r in ok.values())))
-    return text
 
 
 # --------------------------------------------------------------------------- figures
@@ -212,7 +141,13 @@ def dispersion_section(specs, results, figdir, notes):
     runs = tables.dispersion_runs(specs, results)
     table, paper, cv = tables.dispersion_csv(runs, figdir)
     header, rows, numbers = dispersion.table(runs, table)
-    text = dispersion_text(numbers, table)
+
+    def names(negative):
+        return ", ".join(k for k in KERNELS if negative(k)) or "none"
+    text = [DISPERSION.format(
+        measured=names(lambda k: (numbers["min_vg"].get(k) or 0.0) < NEGATIVE_VG),
+        printed=names(lambda k: table[k]["discrete"]["group_negative"]),
+        cv=names(lambda k: table[k]["discrete_cv"]["group_negative"]))] if numbers["dev"] else []
     figs = _figures(lambda: dispersion.plot_figures(runs, paper, cv, figdir),
                             "dispersion figures", notes)    # Figs. 4-6
     return _section("dispersion", _tables([("", md_table(header, rows))], specs, results), text,
@@ -222,14 +157,13 @@ def dispersion_section(specs, results, figdir, notes):
 def mode1_section(specs, results, figdir, notes):
     ok = tables.finished(specs, results, ("t", "k_paper", "k_consistent", "k_ii"))
     rows3_ok = {k: ok[k, MODE1_TABLE3_DX] for k in KERNELS if (k, MODE1_TABLE3_DX) in ok}
-    text = mode1_text(ok, rows3_ok)
     figs = _figures(lambda: mode1.figures(
         {dx: r for (k, dx), r in ok.items() if k == "gaussian"}, rows3_ok, figdir), "Figs. 9-10", notes)
     rows = [mode1.row(r) for r in ok.values()]
     table = _tables([("Table 2, Gaussian kernel", mode1.table2(rows)),
                      (f"Table 3, dx = {MODE1_TABLE3_DX:g} m", mode1.table3(rows)),
                      ("K_I from the J-integral", mode1.jtable(rows))], specs, results)
-    return _section("mode1", table, text, figs)
+    return _section("mode1", table, [], figs)
 
 
 def mode2_section(specs, results, figdir, notes):
@@ -237,20 +171,17 @@ def mode2_section(specs, results, figdir, notes):
     rows = [mode2.row(r) for r in ok.values()]
     table = _tables([("", mode2.table(rows)), ("K_II from the J-integral", mode2.jtable(rows))],
                     specs, results)
-    return _section("mode2", table, mode2_text(ok), mode2_figures(ok, figdir, notes))
+    j = mode2_j(ok)
+    return _section("mode2", table, [MODE2_J.format(where=j["where"])] if j else [],
+                    mode2_figures(ok, figdir, notes))
 
 
 def kw_section(specs, results, figdir, notes):
     ok = tables.finished(specs, results)
-    text = kw_text(ok)
     figs = _figures(lambda: kalthoff_winkler.figures(list(ok.values()), figdir),
                             "Kalthoff-Winkler figures", notes)
-    for (k, dx), r in sorted(ok.items()):
-        if f"growth_{k}_dx{dx * 1e3:g}mm.png" in figs:
-            text.append(f"The row of pictures is the damage of the {k} run at {dx * 1e3:g} mm "
-                        f"at {len(r['snapshots'])} times, drawn during the run by LAMMPS's "
-                        "dump image (the input's variable images; the other runs leave it "
-                        "off).")
+    text = [KW_PICTURES.format(k=k, dx=dx * 1e3, n=len(r["snapshots"]))
+            for (k, dx), r in sorted(ok.items()) if f"growth_{k}_dx{dx * 1e3:g}mm.png" in figs]
     table = _tables([("", kalthoff_winkler.table([kalthoff_winkler.row(r) for r in ok.values()]))],
                     specs, results)
     return _section("kw", table, text, figs)

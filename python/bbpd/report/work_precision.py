@@ -360,6 +360,18 @@ TITLES = {"mode1": "Mode I: K_I against Freund (consistent constants)",
                           "relaxed bisection and dynamic ramps"}
 
 
+SETUP = ("Error against run time for every benchmark, one line per kernel through its resolutions "
+         "(Mode I and II: per K extraction method; both methods come from the same run, so they "
+         "share its time). Run time: the LAMMPS loop time of the single-rank run (\"Loop time of "
+         "X on 1 procs\": the time steps, without start-up and setup), the median of {repeats} "
+         "timings for runs expected under {below:g} s (timings per run: {counts}); the runs share "
+         "the cores with each other and with anything else on the machine. Dispersion: a ring of "
+         "fixed length {ring:g} m and fixed horizon {delta:g} mm (m = delta/dx in the table), "
+         "error |c/c_29 - 1| at the wavelength {wl:g} mm (k delta = {kd:.2f}). Kalthoff-Winkler: "
+         "initiation = the damage band leaves the tip. Quasi-static initiation: {qs}, committed "
+         "(wall time of the whole LAMMPS runs). Machine: {machine}. All points: {csv}.")
+
+
 def collect(specs, results):
     """Finished runs and their run times: ([(benchmark, kernel, dx, result, wall_s)],
     {label: number of timings}, [failed labels])."""
@@ -404,24 +416,11 @@ def section(specs, results, figdir, notes):
                                      lambda dx: _fmt_dx(bench, dx)), path, notes)
     reach = reach_table(table)
     text = ["The cost of reaching each target error:\n\n" + reach] if reach else []
-    counts = sorted(set(samples.values()))
-    setup = ("Error against run time for every benchmark, one line per kernel through its "
-             "resolutions (Mode I and II: per K extraction method; both methods come from the "
-             "same run, so they share its time). Run time: the LAMMPS loop time of the "
-             "single-rank run (\"Loop time of X on 1 procs\": the time steps, without start-up "
-             f"and setup), the median of {TIMING_REPEATS} timings for runs expected under "
-             f"{REPEAT_BELOW_S:g} s (timings per run: {', '.join(map(str, counts)) or '-'}); "
-             "the runs share the cores with each other and with anything else on the machine. "
-             "Dispersion: a ring of fixed length "
-             f"{RING_LENGTH:g} m and fixed horizon {DISPERSION_DELTA * 1e3:g} mm at m = "
-             "delta/dx = " + ", ".join(f"{m:g}" for m in sorted(
-                 {round(DISPERSION_DELTA / r[2]) for r in runs if r[0] == 'dispersion'}))
-             + f", error |c/c_29 - 1| at the wavelength {WAVELENGTH * 1e3:g} mm (k delta = "
-             f"{2 * math.pi * DISPERSION_DELTA / WAVELENGTH:.2f}). Kalthoff-Winkler: "
-             "initiation = the damage band leaves the tip. Quasi-static initiation: "
-             f"{QUASI_STATIC_CSV.name}, committed (wall time of the whole LAMMPS runs). "
-             "Machine: " + machine()
-             + f". All points: {csv_path.parent.name}/{csv_path.name}.")
+    setup = SETUP.format(repeats=TIMING_REPEATS, below=REPEAT_BELOW_S,
+                         counts=", ".join(map(str, sorted(set(samples.values())))) or "-",
+                         ring=RING_LENGTH, delta=DISPERSION_DELTA * 1e3, wl=WAVELENGTH * 1e3,
+                         kd=2 * math.pi * DISPERSION_DELTA / WAVELENGTH, qs=QUASI_STATIC_CSV.name,
+                         machine=machine(), csv=f"{csv_path.parent.name}/{csv_path.name}")
     return {"title": "Error against run time (work-precision diagrams)", "setup": setup,
             "table": summary_table(table), "text": " ".join(text), "figures": figs}
 
