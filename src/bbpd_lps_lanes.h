@@ -309,6 +309,17 @@ namespace LPS {
         _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz)));
   }
 
+  // partner indices of the full group k..k+3
+  inline __m128i full_partners4(const int *bj, int, int k)
+  {
+    return _mm_loadu_si128(reinterpret_cast<const __m128i *>(bj + k));
+  }
+  inline __m128i full_partners4(const PartnerOffset *bj, int i, int k)
+  {
+    const __m128i d = _mm_cvtepi16_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i *>(bj + k)));
+    return _mm_add_epi32(d, _mm_set1_epi32(i));
+  }
+
   /* bonds k..k+3 of atom i as for_each_group4 hands them out: a full group (plain loads) or the
      masked tail (gathers); their lanes m, partners, differences, values and partner states */
   struct Group4 {
@@ -322,11 +333,11 @@ namespace LPS {
   {
     Group4 g;
     if (full) {
-      // the partners as a vector first, then in memory for the scalar loads (four scalar stores
-      // read back as one vector would stall the load on store forwarding)
-      g.j1 = load_partners(bj, _mm_set1_epi32(-1), i, k);
-      alignas(16) int j[4];
-      _mm_store_si128(reinterpret_cast<__m128i *>(j), g.j1);
+      const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
+                        partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
+      // the partners as a vector read from the row itself: j's four scalar stores read back as
+      // one vector would stall the load on store forwarding
+      g.j1 = full_partners4(bj, i, k);
       __m256d x, y, z;
       load_positions(xx, j, x, y, z);
       g.dx = _mm256_sub_pd(x, xi);
