@@ -135,3 +135,6 @@ def test_the_3d_plate_lines_of_doc_performance_follow_the_csvs():
     small, large = perf._rows(perf.RESULTS / "spr-scaling-3d.csv")
     assert f"{float(large['ns_per_bond_end']):.2f} ns per bond end and a setup of {large['setup_s']} s" in text
     assert f"at {int(small['atoms']):,} atoms {float(small['ns_per_bond_end']):.2f} ns and {small['setup_s']} s" in text
+    two = perf._rows(perf.RESULTS / "spr-scaling-3d-np2.csv")[0]
+    assert two["nprocs"] == "2" and two["atoms"] == large["atoms"]
+    assert f"set up in **{two['setup_s']} s** and step in {float(two['pair_ms_per_step']):.1f} ms" in text
