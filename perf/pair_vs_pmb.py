@@ -124,14 +124,16 @@ run {steps}
 """
 # the large 3D plate (see the module doc): its own material, ours only (peri/pmb would need
 # hours for its 77 million bonds)
-PLATE3D = """
+# the lines up to the lattice, shared with perf/scaling.py's 3D plates
+PLATE3D_PREAMBLE = """
 plugin load bbpdplugin.so
 units si
 boundary s s s
 atom_style peri
 atom_modify map array
 lattice sc {dx} origin 0.5 0.5 0.5
-region plate block 0 400 0 160 0 8
+"""
+PLATE3D = PLATE3D_PREAMBLE + """region plate block 0 400 0 160 0 8
 create_box 2 plate
 create_atoms 1 region plate
 region nofail block INF INF $(4*{dx}) $(156*{dx}) INF INF side out units box

@@ -24,7 +24,7 @@ from math import sqrt
 from pathlib import Path
 
 from bbpd.runner import run_lammps
-from pair_vs_pmb import build_isa, cpu_model, cpu_numbers, load_average
+from pair_vs_pmb import PLATE3D_PREAMBLE, build_isa, cpu_model, cpu_numbers, load_average
 
 SCRIPT = """
 plugin load bbpdplugin.so
@@ -52,14 +52,7 @@ thermo {steps}
 
 
 # a 3D glass plate 8 atoms thick, elastic, the same few steps
-SCRIPT_3D = """
-plugin load bbpdplugin.so
-units si
-boundary s s s
-atom_style peri
-atom_modify map array
-lattice sc {dx} origin 0.5 0.5 0.5
-region box block 0 {nx} 0 {ny} 0 8
+SCRIPT_3D = PLATE3D_PREAMBLE + """region box block 0 {nx} 0 {ny} 0 8
 create_box 1 box
 create_atoms 1 box
 set group all density 2440

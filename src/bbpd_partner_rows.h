@@ -27,7 +27,6 @@ template <class Tag> class PartnerRows {
  public:
   Tag *operator[](int i) { return pool.data() + slots[i].start; }
   const Tag *operator[](int i) const { return pool.data() + slots[i].start; }
-  int capacity(int i) const { return slots[i].cap; }
 
   // at least n slots; the rows of the slots kept are untouched
   void grow(int n)
