@@ -216,9 +216,9 @@ namespace LPS {
       const __m512d t_ok = _mm512_maskz_mov_pd(ok, t.v);
       const __m512d fpl = vselect(Vec8(b.r) > Vec8(zero), Vec8(t_ok) / Vec8(b.r), Vec8(zero)).v;
       sums.add(m, b, fpl, _mm512_maskz_mov_pd(ok, energy.v));
-      sums.check(m, b, j1, c, smin_all);
+      sums.check(m, b);
     }
-    return sums.store(out, snew);
+    return sums.store(out, snew, c) && past_avx512(xx, i, bj, vals, n, c, smin_all);
   }
 #define lps_history_norm_simd BBPD::LPS::history_norm_avx512
 #define lps_history_force_simd BBPD::LPS::history_force_avx512
@@ -332,13 +332,11 @@ namespace LPS {
       const __m256d fpl = vselect(Vec4(r) > Vec4(zero), Vec4(t_ok) / Vec4(r), Vec4(zero)).v;
       constexpr int H = decltype(half)::value;
       sums.template add<H, true>(g.m, g.dx, g.dy, g.dz, fpl, _mm256_and_pd(ok, energy.v));
-      const __m256d smin_j =
-          CHECK ? _mm256_mask_i32gather_pd(_mm256_set1_pd(c.smin_i), smin_all, g.j1, g.m, 8) : zero;
-      sums.template check<true>(g.m, e, g.xi0, smin_j, c);
+      sums.template check<true>(g.m, e, g.xi0);
     };
     for_each_group4(n, [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, k, true); },
                     [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, k, false); });
-    return sums.store(out, snew);
+    return sums.store(out, snew, c) && past_avx2(xx, i, bj, vals, n, states, c, smin_all);
   }
 #define lps_history_norm_simd BBPD::LPS::history_norm_avx2
 #define lps_history_force_simd BBPD::LPS::history_force_avx2

@@ -11,7 +11,10 @@
    (double, Vec4, Vec8: bbpd_simd.h) and the AVX2 and AVX-512 kernels do the portable loop's
    operations in its order, so all paths give the same bits. The current bond length is
    computed in each pass (a square root per bond end is cheaper than 8 bytes written and read
-   again per bond end).
+   again per bond end). The SIMD force passes keep the row's smallest and largest stretch and
+   test each bond against its critical stretch only when the largest reaches the row's floor
+   (RowCoefficients::s0_floor): a gather of the partners' smallest stretches per 4 bonds cost
+   about 5 % of an LPS step on the bpm/peri deck (AVX2, Sapphire Rapids).
 ------------------------------------------------------------------------- */
 
 #ifndef BBPD_LPS_LANES_H
@@ -39,7 +42,20 @@ namespace LPS {
     double theta_third_i;               // theta_i / d
     double s00, alpha, smin_i;          // the Silling-Askari rule (one s00 and alpha)
     double margin;                      // periodic box: a stretch this close to s0 is re-checked
+    // no bond of the row has a smaller critical stretch (critical_stretch_floor): the SIMD
+    // force passes test each bond only when the row's largest stretch reaches it
+    double s0_floor = -std::numeric_limits<double>::infinity();
   };
+
+  /* a lower bound of the critical stretch s0 = s00 - alpha max(smin_i, smin_j) of every bond of
+     atom i whose partner's smallest stretch smin_j is at most smin_cap: with alpha >= 0, s0 falls
+     as smin_j rises, and rounding keeps that order (each operation is monotonic); else
+     -infinity, which has every bond tested */
+  inline double critical_stretch_floor(double s00, double alpha, double smin_i, double smin_cap)
+  {
+    if (!(alpha >= 0.0)) return -std::numeric_limits<double>::infinity();
+    return StretchRule::critical_stretch(s00, alpha, smin_i, smin_cap);
+  }
 
   // the elongation of peri/lps over any width: round-off elongations are zero
   struct Elongation {
@@ -208,6 +224,25 @@ namespace LPS {
     return lane_total(lane);
   }
 
+  // the smallest and the largest of 8 lanes, through memory (GCC 12 warns of the undefined
+  // register that _mm512_reduce_min_pd, _mm512_extractf64x4_pd and the like start from)
+  inline double lane_min8(__m512d v)
+  {
+    alignas(64) double l[LANES];
+    _mm512_store_pd(l, v);
+    const __m256d a = _mm256_min_pd(_mm256_load_pd(l), _mm256_load_pd(l + 4));
+    const __m128d b = _mm_min_pd(_mm256_castpd256_pd128(a), _mm256_extractf128_pd(a, 1));
+    return std::min(_mm_cvtsd_f64(b), _mm_cvtsd_f64(_mm_unpackhi_pd(b, b)));
+  }
+  inline double lane_max8(__m512d v)
+  {
+    alignas(64) double l[LANES];
+    _mm512_store_pd(l, v);
+    const __m256d a = _mm256_max_pd(_mm256_load_pd(l), _mm256_load_pd(l + 4));
+    const __m128d b = _mm_max_pd(_mm256_castpd256_pd128(a), _mm256_extractf128_pd(a, 1));
+    return std::max(_mm_cvtsd_f64(b), _mm_cvtsd_f64(_mm_unpackhi_pd(b, b)));
+  }
+
   /* the sums of a force pass in 8 lanes and, with CHECK, its breaking test: the LPS rows and
      the history rows (bbpd_lps_history_lanes.h) add their bonds' forces here (inlined into the
      kernels: GCC left add() a call per group, 5 % of a VES step) */
@@ -217,7 +252,7 @@ namespace LPS {
     __m512d vir[6] = {_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd(),
                       _mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()};
     __m512d vmin = _mm512_set1_pd(std::numeric_limits<double>::max());
-    __mmask8 past = 0;
+    __m512d vmax = _mm512_set1_pd(std::numeric_limits<double>::lowest());
     // the bonds of lanes m (b) with force per length fpl and energy terms 'energy'
     BBPD_GROUPS_INLINE void add(__mmask8 m, const BondLanes &b, __m512d fpl, __m512d energy)
     {
@@ -233,19 +268,17 @@ namespace LPS {
                                       _mm512_mul_pd(_mm512_mul_pd(fpl, d[pa[v]]), d[pb[v]]));
       }
     }
-    // their stretches against the critical stretches with partners j1 (smallest stretches smin)
-    BBPD_GROUPS_INLINE void check(__mmask8 m, const BondLanes &b, __m256i j1, const RowCoefficients &c, const double *smin)
+    // their smallest and largest stretches (the breaking test: past_avx512)
+    BBPD_GROUPS_INLINE void check(__mmask8 m, const BondLanes &b)
     {
       if (!CHECK) return;
-      const __m512d smin_i = _mm512_set1_pd(c.smin_i);
       const Vec8 s = StretchRule::stretch(Vec8(b.elong), Vec8(_mm512_mask_mov_pd(_mm512_set1_pd(1.0), m, b.xi0)));
       vmin = _mm512_mask_min_pd(vmin, m, s.v, vmin);
-      const Vec8 s0 = StretchRule::critical_stretch(Vec8(c.s00), Vec8(c.alpha), Vec8(smin_i),
-                                                    Vec8(_mm512_mask_i32gather_pd(smin_i, m, j1, smin, 8)));
-      past |= m & StretchRule::past_critical(s, s0, Vec8(c.margin));
+      vmax = _mm512_mask_max_pd(vmax, m, s.v, vmax);
     }
-    // the lanes into out, the smallest stretch into snew; whether a bond is past breaking
-    bool store(ForceLanes &out, double *snew) const
+    // the lanes into out, the smallest stretch into snew; whether a bond may be past breaking
+    // (the largest stretch reaches c.s0_floor)
+    bool store(ForceLanes &out, double *snew, const RowCoefficients &c) const
     {
       _mm512_storeu_pd(out.fx, fx);
       _mm512_storeu_pd(out.fy, fy);
@@ -254,10 +287,33 @@ namespace LPS {
         _mm512_storeu_pd(out.tally.eng, eng);
         for (int v = 0; v < 6; v++) _mm512_storeu_pd(out.tally.vir[v], vir[v]);
       }
-      if (CHECK) *snew = _mm512_reduce_min_pd(vmin);
-      return past != 0;
+      if (!CHECK) return false;
+      *snew = lane_min8(vmin);
+      return lane_max8(vmax) + c.margin > c.s0_floor;
     }
   };
+
+  /* the breaking test of each bond of the row: past its critical stretch with partner j (smallest
+     stretch smin_all[j]) or within c.margin of it (the check of force_row_portable); the force
+     passes run it when a row's largest stretch reaches its floor */
+  template <class Idx, class Values>
+  inline bool past_avx512(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                          const RowCoefficients &c, const double *smin_all)
+  {
+    const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
+                  zi = _mm512_set1_pd(xx[3 * i + 2]), smin_i = _mm512_set1_pd(c.smin_i);
+    __mmask8 past = 0;
+    for (int k = 0; k < n; k += LANES) {
+      const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
+      const __m256i j1 = load_partners(bj, m, i, k);
+      const BondLanes b = bond_lanes<Elongation>(xx, xi, yi, zi, j1, m, vals, k);
+      const Vec8 s = StretchRule::stretch(Vec8(b.elong), Vec8(_mm512_mask_mov_pd(_mm512_set1_pd(1.0), m, b.xi0)));
+      const Vec8 s0 = StretchRule::critical_stretch(Vec8(c.s00), Vec8(c.alpha), Vec8(smin_i),
+                                                    Vec8(_mm512_mask_i32gather_pd(smin_i, m, j1, smin_all, 8)));
+      past |= m & StretchRule::past_critical(s, s0, Vec8(c.margin));
+    }
+    return past != 0;
+  }
 
   /* the force pass, 8 lanes (force_row_portable's operations; one s00 and alpha) */
   template <int EV, int CHECK, class Idx, class Values>
@@ -279,12 +335,13 @@ namespace LPS {
           ? force_per_length(c, Vec8(b.coef), Vec8(b.xi0), Vec8(b.elong), Vec8(b.r), Vec8(tom), Vec8(inv_m)).v
           : zero;
       sums.add(m, b, fpl, energy_term(c, Vec8(b.coef), Vec8(b.xi0), Vec8(b.elong)).v);
-      sums.check(m, b, j1, c, smin_all);
+      sums.check(m, b);
     }
-    return sums.store(out, snew);
+    return sums.store(out, snew, c) && past_avx512(xx, i, bj, vals, n, c, smin_all);
   }
 #define lps_dilatation_simd BBPD::LPS::dilatation_sum_avx512
 #define lps_force_simd BBPD::LPS::force_row_avx512
+#define lps_past_simd BBPD::LPS::past_avx512
 #endif
 
 #ifdef BBPD_AVX2
@@ -398,7 +455,8 @@ namespace LPS {
      breaking test: ForceSums8 of 4 lanes at a time (the same bits) */
   template <int EV, int CHECK> struct ForceSums4x2 {
     __m256d fx[2], fy[2], fz[2], eng[2], vir[6][2];
-    __m256d vmin = _mm256_set1_pd(std::numeric_limits<double>::max()), past = _mm256_setzero_pd();
+    __m256d vmin = _mm256_set1_pd(std::numeric_limits<double>::max()),
+            vmax = _mm256_set1_pd(std::numeric_limits<double>::lowest());
     ForceSums4x2()
     {
       for (int h = 0; h < 2; h++) {
@@ -421,17 +479,15 @@ namespace LPS {
           vir[v][H] = lps_add<MASKED>(vir[v][H], _mm256_mul_pd(_mm256_mul_pd(fpl, d[pa[v]]), d[pb[v]]), m);
       }
     }
-    // the breaking test of their elongations e (reference lengths xi0, partners' smin_j)
-    template <bool MASKED>
-    BBPD_GROUPS_INLINE void check(__m256d m, __m256d e, __m256d xi0, __m256d smin_j, const RowCoefficients &c)
+    // the smallest and largest stretches of their elongations e (reference lengths xi0)
+    template <bool MASKED> BBPD_GROUPS_INLINE void check(__m256d m, __m256d e, __m256d xi0)
     {
       if (!CHECK) return;
       const Vec4 s = StretchRule::stretch(Vec4(e), Vec4(MASKED ? _mm256_blendv_pd(_mm256_set1_pd(1.0), xi0, m) : xi0));
       vmin = MASKED ? _mm256_blendv_pd(vmin, _mm256_min_pd(s.v, vmin), m) : _mm256_min_pd(s.v, vmin);
-      const Vec4 s0 = StretchRule::critical_stretch(Vec4(c.s00), Vec4(c.alpha), Vec4(c.smin_i), Vec4(smin_j));
-      past = _mm256_or_pd(past, _mm256_and_pd(m, StretchRule::past_critical(s, s0, Vec4(c.margin)).v));
+      vmax = MASKED ? _mm256_blendv_pd(vmax, _mm256_max_pd(s.v, vmax), m) : _mm256_max_pd(s.v, vmax);
     }
-    bool store(ForceLanes &out, double *snew) const
+    bool store(ForceLanes &out, double *snew, const RowCoefficients &c) const
     {
       for (int h = 0; h < 2; h++) {
         _mm256_storeu_pd(out.fx + 4 * h, fx[h]);
@@ -442,13 +498,34 @@ namespace LPS {
           for (int v = 0; v < 6; v++) _mm256_storeu_pd(out.tally.vir[v] + 4 * h, vir[v][h]);
         }
       }
-      if (CHECK) {
-        const __m128d m2 = _mm_min_pd(_mm256_castpd256_pd128(vmin), _mm256_extractf128_pd(vmin, 1));
-        *snew = std::min(_mm_cvtsd_f64(m2), _mm_cvtsd_f64(_mm_unpackhi_pd(m2, m2)));
-      }
-      return _mm256_movemask_pd(past) != 0;
+      if (!CHECK) return false;
+      const __m128d m2 = _mm_min_pd(_mm256_castpd256_pd128(vmin), _mm256_extractf128_pd(vmin, 1));
+      *snew = std::min(_mm_cvtsd_f64(m2), _mm_cvtsd_f64(_mm_unpackhi_pd(m2, m2)));
+      const __m128d x2 = _mm_max_pd(_mm256_castpd256_pd128(vmax), _mm256_extractf128_pd(vmax, 1));
+      return std::max(_mm_cvtsd_f64(x2), _mm_cvtsd_f64(_mm_unpackhi_pd(x2, x2))) + c.margin > c.s0_floor;
     }
   };
+
+  /* the breaking test of each bond of the row in 4-wide groups, as past_avx512 */
+  template <class Idx, class Values>
+  inline bool past_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
+                        const AtomState *states, const RowCoefficients &c, const double *smin_all)
+  {
+    const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
+                  zi = _mm256_set1_pd(xx[3 * i + 2]), smin_i = _mm256_set1_pd(c.smin_i);
+    __m256d past = _mm256_setzero_pd();
+    auto group = [&](int k, bool full) BBPD_GROUPS_INLINE {
+      const Group4 g = group4(xx, bj, i, n, k, full, xi, yi, zi, vals, states);
+      const __m256d e = Elongation::elongation(Vec4(lengths4(g.dx, g.dy, g.dz)), Vec4(g.xi0)).v;
+      const Vec4 s = StretchRule::stretch(Vec4(e), Vec4(_mm256_blendv_pd(_mm256_set1_pd(1.0), g.xi0, g.m)));
+      const __m256d smin_j = _mm256_mask_i32gather_pd(smin_i, smin_all, g.j1, g.m, 8);
+      const Vec4 s0 = StretchRule::critical_stretch(Vec4(c.s00), Vec4(c.alpha), Vec4(smin_i), Vec4(smin_j));
+      past = _mm256_or_pd(past, _mm256_and_pd(g.m, StretchRule::past_critical(s, s0, Vec4(c.margin)).v));
+    };
+    for_each_group4(n, [&](auto, int k) BBPD_GROUPS_INLINE { group(k, true); },
+                    [&](auto, int k) BBPD_GROUPS_INLINE { group(k, false); });
+    return _mm256_movemask_pd(past) != 0;
+  }
 
   /* the force pass in two 4-wide halves, as the AVX-512 kernel */
   template <int EV, int CHECK, class Idx, class Values>
@@ -462,7 +539,7 @@ namespace LPS {
     const bool has_m = c.inv_m_i > 0.0;
     ForceSums4x2<EV, CHECK> sums;
     auto add = [&](auto half, auto masked_c, __m256d m, __m256d dx, __m256d dy, __m256d dz,
-                   __m256d xi0, __m256d wv, __m256d tom, __m256d inv_m, __m256d smin_j) BBPD_GROUPS_INLINE {
+                   __m256d xi0, __m256d wv, __m256d tom, __m256d inv_m) BBPD_GROUPS_INLINE {
       constexpr int H = decltype(half)::value;
       constexpr bool MASKED = decltype(masked_c)::value;
       const __m256d r = lengths4(dx, dy, dz);
@@ -471,20 +548,19 @@ namespace LPS {
           ? force_per_length(c, Vec4(wv), Vec4(xi0), Vec4(e), Vec4(r), Vec4(tom), Vec4(inv_m)).v
           : zero;
       sums.template add<H, MASKED>(m, dx, dy, dz, fpl, energy_term(c, Vec4(wv), Vec4(xi0), Vec4(e)).v);
-      sums.template check<MASKED>(m, e, xi0, smin_j, c);
+      sums.template check<MASKED>(m, e, xi0);
     };
     auto group = [&](auto half, auto masked, int k) BBPD_GROUPS_INLINE {
       const Group4 g = group4(xx, bj, i, n, k, !decltype(masked)::value, xi, yi, zi, vals, states);
-      const __m256d smin_j =
-          CHECK ? _mm256_mask_i32gather_pd(_mm256_set1_pd(c.smin_i), smin_all, g.j1, g.m, 8) : zero;
-      add(half, masked, g.m, g.dx, g.dy, g.dz, g.xi0, g.wv, g.tom, g.inv_m, smin_j);
+      add(half, masked, g.m, g.dx, g.dy, g.dz, g.xi0, g.wv, g.tom, g.inv_m);
     };
     for_each_group4(n, [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, std::false_type(), k); },
                     [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, std::true_type(), k); });
-    return sums.store(out, snew);
+    return sums.store(out, snew, c) && past_avx2(xx, i, bj, vals, n, states, c, smin_all);
   }
 #define lps_dilatation_simd BBPD::LPS::dilatation_sum_avx2
 #define lps_force_simd BBPD::LPS::force_row_avx2
+#define lps_past_simd BBPD::LPS::past_avx2
 #endif
 
 }    // namespace LPS

@@ -535,6 +535,10 @@ bool PairBBPDLPS::begin_state()
     atom_states[i] = LPS::atom_state(theta[i], m[i]);
   }
   comm->forward_comm(this);
+  // the largest smallest stretch of the atoms a row can reach, ghosts included (the rows'
+  // critical stretch floors)
+  smin_cap = std::numeric_limits<double>::lowest();
+  for (int i = 0; i < atom->nlocal + atom->nghost; i++) smin_cap = std::max(smin_cap, atom->s0[i]);
   return replay;
 }
 

@@ -84,6 +84,8 @@ class PairBBPDLPS : public PairBBPD {
 
  protected:
   SillingAskariState silling_askari;    // smin of this step and fix bbpd/alpha
+  // the largest smin of the local and ghost atoms at this step (the rows' critical stretch floors)
+  double smin_cap = 0.0;
   double lattice_constant;              // lc of the lattice command, as in peri/pmb
   double **bulk, **shear;           // K and G of peri/lps, per type pair (2D: kappa' and G)
   double dimension;                 // d of the LPS (3; 2 for the 2D models of the kernel styles)

@@ -204,7 +204,7 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
     const int n = p.bonds->nbond[i];
     const LPS::HistoryCoefficients c{{mod.dilatational, mod.deviatoric, si.theta_over_m, si.inv_m,
                                       theta_third_i, this->sa.s00_one, this->sa.alpha_one, smin_i,
-                                      this->margin},
+                                      this->margin, this->s0_floor},
                                      LPS::split_dilatational(mod)};
     constexpr int EV = EVFLAG != 0, CH = CHECK, CO = COMMIT;
     LPS::ForceLanes lanes;

@@ -70,6 +70,7 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
   BBPD::LPS::Moduli mod;                  // i's type
   BBPD::LPS::AtomState si;
   double theta_i, theta_third_i, smin_i;
+  double s0_floor;        // no bond of the row breaks below it (RowCoefficients)
   double tally[7];        // the row's energy and virial
   double fb[3];           // the forces of the bonds it breaks
   int nlost;              // how many bonds it breaks
@@ -81,6 +82,7 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
       sa(sa_), margin(margin_), mod(p.moduli_of_type(p.atom->type[i])),
       si(p.atom_states[i]), theta_i(p.lps_state->dilatation[i]),
       theta_third_i(BBPD::LPS::third(theta_i, p.dimension)), smin_i(p.atom->s0[i]),
+      s0_floor(BBPD::LPS::critical_stretch_floor(sa.s00_one, sa.alpha_one, smin_i, p.smin_cap)),
       fb{0.0, 0.0, 0.0}, nlost(0), snew(std::numeric_limits<double>::max())
   {
   }
@@ -102,7 +104,8 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
   {
     const double *xx = p.atom->x[0];
     const BBPD::LPS::RowCoefficients c{mod.dilatational, mod.deviatoric, si.theta_over_m, si.inv_m,
-                                       theta_third_i, sa.s00_one, sa.alpha_one, smin_i, margin};
+                                       theta_third_i, sa.s00_one, sa.alpha_one, smin_i, margin,
+                                       s0_floor};
     const int n = p.bonds->nbond[i];
     BBPD::LPS::ForceLanes lanes;
     const bool past = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {

@@ -12,8 +12,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -63,11 +65,17 @@ Scene scene(int nbonds, unsigned seed)
   return s;
 }
 
-LPS::RowCoefficients coefficients(const Scene &s, double margin = 0.0)
+// the largest smallest stretch of the scene's atoms (what the pair style hands the floor)
+double smin_cap(const Scene &s) { return *std::max_element(s.smin.begin(), s.smin.end()); }
+
+// the row's coefficients with s00 and the floor of its critical stretches that s00 gives
+LPS::RowCoefficients coefficients(const Scene &s, double margin = 0.0, double s00 = 0.012)
 {
   const LPS::Moduli mod = LPS::moduli(K, G);
+  const double alpha = 0.25;
   return {mod.dilatational, mod.deviatoric, s.states[0].theta_over_m, s.states[0].inv_m,
-          LPS::third(0.7e-3), 0.012, 0.25, s.smin[0], margin};
+          LPS::third(0.7e-3), s00, alpha, s.smin[0], margin,
+          LPS::critical_stretch_floor(s00, alpha, s.smin[0], smin_cap(s))};
 }
 
 bool same_bits(const double *a, const double *b, int n)
@@ -212,12 +220,65 @@ TEST(LpsLanes, SimdCheckSeesTheMargin)
     const double s0 = LPS::StretchRule::critical_stretch(0.0, c.alpha, c.smin_i, s.smin[k + 1]);
     largest = std::max(largest, st - s0);    // s00 at which bond k is at its critical stretch
   }
-  c.s00 = largest + 1e-6;
+  c = coefficients(s, 0.0, largest + 1e-6);
   EXPECT_FALSE((lps_force_simd<0, 1>(s.x.data(), 0, s.partner.data(), vals, s.n(), s.states.data(),
                                      c, s.smin.data(), &snew, lanes)));
   c.margin = 2e-6;
   EXPECT_TRUE((lps_force_simd<0, 1>(s.x.data(), 0, s.partner.data(), vals, s.n(), s.states.data(),
                                     c, s.smin.data(), &snew, lanes)));
+}
+
+TEST(LpsLanes, SimdCheckTestsEachBondOnlyAtTheFloor)
+{
+  // s00 between the row's largest stretch and that plus the floor's slack: the floor (from the
+  // scene's largest smin) is reached, each bond's own critical stretch is not: nothing past
+  const Scene s = scene(122, 4);
+  const BBPD::PerBondValues vals{s.xi0.data(), s.wv.data()};
+  double largest = -1e300, need = -1e300;
+  for (int k = 0; k < s.n(); k++) {
+    const double *xj = &s.x[3 * s.partner[k]];
+    const double r = std::sqrt(xj[0] * xj[0] + xj[1] * xj[1] + xj[2] * xj[2]);
+    const double st = LPS::elongation(r, s.xi0[k]) / s.xi0[k];
+    largest = std::max(largest, st);
+    need = std::max(need, st - LPS::StretchRule::critical_stretch(0.0, 0.25, s.smin[0], s.smin[k + 1]));
+  }
+  const double s00 = need + 1e-7;    // every bond's s0 just above its stretch
+  LPS::RowCoefficients c = coefficients(s, 0.0, s00);
+  ASSERT_GE(largest, c.s0_floor);    // the floor is reached
+  LPS::ForceLanes a, b;
+  double sa = 0.0, sb = 0.0;
+  EXPECT_FALSE((portable<0, 1>(s, s.partner.data(), c, &sa, a)));
+  EXPECT_FALSE((lps_force_simd<0, 1>(s.x.data(), 0, s.partner.data(), vals, s.n(), s.states.data(),
+                                     c, s.smin.data(), &sb, b)));
+  EXPECT_EQ(sa, sb);
+  // just below: past, in the portable loop and past the floor in the kernel
+  c = coefficients(s, 0.0, need - 1e-7);
+  EXPECT_TRUE((portable<0, 1>(s, s.partner.data(), c, &sa, a)));
+  EXPECT_TRUE((lps_force_simd<0, 1>(s.x.data(), 0, s.partner.data(), vals, s.n(), s.states.data(),
+                                    c, s.smin.data(), &sb, b)));
+  // a floor above a bond's critical stretch (a cap below a partner's smin) hides the bond: the
+  // kernel trusts its floor, so the pair style must hand it the largest smin of every partner
+  c.s0_floor = largest + 1.0;
+  EXPECT_FALSE((lps_force_simd<0, 1>(s.x.data(), 0, s.partner.data(), vals, s.n(), s.states.data(),
+                                     c, s.smin.data(), &sb, b)));
+  // no floor (-infinity): every bond tested
+  c.s0_floor = -std::numeric_limits<double>::infinity();
+  EXPECT_TRUE((lps_force_simd<0, 1>(s.x.data(), 0, s.partner.data(), vals, s.n(), s.states.data(),
+                                    c, s.smin.data(), &sb, b)));
+}
+
+TEST(LpsLanes, CriticalStretchFloorIsBelowEveryBondsCriticalStretch)
+{
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> u(-1e-2, 1e-2);
+  for (int t = 0; t < 10000; t++) {
+    const double s00 = 1e-3 + std::fabs(u(gen)), alpha = 0.25 + 10.0 * std::fabs(u(gen));
+    const double smin_i = u(gen), smin_j = u(gen), cap = smin_j + std::fabs(u(gen)) * (t % 2);
+    ASSERT_LE(LPS::critical_stretch_floor(s00, alpha, smin_i, cap),
+              LPS::StretchRule::critical_stretch(s00, alpha, smin_i, smin_j));
+  }
+  // a negative alpha: no floor
+  EXPECT_EQ(LPS::critical_stretch_floor(1e-3, -0.25, 0.0, 1.0), -std::numeric_limits<double>::infinity());
 }
 #endif
 
