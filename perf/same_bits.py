@@ -44,6 +44,8 @@ TOTALS = "thermo_style custom step pe ke press\nthermo_modify format float %.17g
 def _test_module(name):
     """a file of tests/lammps as a module (the scenes are its inputs), registered under its
     name, so that the test files that import it by name (pytest.ini's pythonpath) find it"""
+    if str(TESTS) not in sys.path:    # their helpers (refmodel.py), as pytest.ini puts it there
+        sys.path.insert(0, str(TESTS))
     if name not in sys.modules:
         spec = importlib.util.spec_from_file_location(name, TESTS / f"{name}.py")
         sys.modules[name] = importlib.util.module_from_spec(spec)
@@ -118,7 +120,7 @@ def _scenes():
             lk.run_head(folder, kernel, model)
         with tempfile.TemporaryDirectory() as tmp:
             script = lk.run_head(Path(tmp), kernel, model)
-        return [(script + f"fix 1 all nve\nrun {lk.RUN_STEPS}\n" + lk.RUN_DUMP, n, data)]
+        return [(script + f"fix 1 all nve\nrun {lk.RUN_STEPS}\n" + _test_module("scenes").END_DUMP, n, data)]
 
     storage = st.SCENE.format
     two_types = storage(kernel="gaussian", storage="compact").replace(
