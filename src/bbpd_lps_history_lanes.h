@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
    BBPD: the rows of the LPS families with a deviatoric history (VES, EPS: bbpd_ves.h,
-   bbpd_eps.h) in lanes, with no LAMMPS dependency: the norm pass (EPS) and the force pass of
+   bbpd_eps.h) in lanes, with no LAMMPS dependency: the norm pass (EPS, fused with the force
+   pass of its elastic plan in the SIMD kernels) and the force pass of
    bbpd_lps_history_row.h with bond k in lane k % LANES, as the LPS rows of bbpd_lps_lanes.h,
    so that the AVX2 and AVX-512 kernels give the portable loop's bits. A bond end's history is
    read from, and with COMMIT (ROLL) written back to, hist + BOND_HISTORY * slot[k] in every
@@ -89,6 +90,25 @@ namespace LPS {
     return force_pass_portable<EV, CHECK>(xx, i, bj, vals, n, bond, s0_of, c.margin, snew, out);
   }
 
+  /* the first evaluation of a step of a family with a norm (EPS): the norm pass, which rolls
+     the history (*norm_sum: its sum), then the force pass of the elastic plan, committed, with
+     the breaking check. A row whose norm makes it plastic is summed again with its plan
+     (history_force_*, COMMIT), which reads the rolled history: on the deck no row is plastic,
+     and the SIMD kernels (history_norm_force_avx2, _avx512) do both passes' work in one pass
+     over the row with these bits. */
+  template <class F, int EV, class Idx, class Values, class S0>
+  inline bool history_norm_force_portable(const double *xx, int i, const Idx *bj, const Values &vals,
+                                          int n, const AtomState *states, const F &fam,
+                                          const HistoryCoefficients &c, const int *slot,
+                                          double *hist, S0 s0_of, double *snew, ForceLanes &out,
+                                          double *norm_sum)
+  {
+    *norm_sum = history_norm_portable<F, true>(xx, i, bj, vals, n, states, c.theta_third_i, fam, slot, hist);
+    const typename F::Plan elastic{};    // not plastic
+    return history_force_portable<F, EV, 1, 1>(xx, i, bj, vals, n, states, fam, elastic, c, slot,
+                                               hist, s0_of, snew, out);
+  }
+
   /* A row none of whose partners was lost keeps its bonds in partner slots 0..n-1: the
      history of bonds k, k+1, ... is then consecutive, BOND_HISTORY doubles each, and the vector
      paths load and store it whole instead of gathering and scattering it lane by lane (the
@@ -154,37 +174,6 @@ namespace LPS {
     _mm512_mask_i32scatter_pd(hist + 1, m, hi, h1, 8);
   }
 
-  /* the norm pass, 8 lanes */
-  template <class F, bool ROLL, class Idx, class Values>
-  inline double history_norm_avx512(const double *xx, int i, const Idx *bj, const Values &vals,
-                                    int n, const AtomState *states, double theta_third_i,
-                                    const F &fam, const int *slot, double *hist)
-  {
-    const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
-                  zi = _mm512_set1_pd(xx[3 * i + 2]), zero = _mm512_setzero_pd(),
-                  inv_m_i = _mm512_set1_pd(states[i].inv_m);
-    const bool dense = dense_slots(slot, n);
-    __m512d acc = zero;
-    for (int k = 0; k < n; k += LANES) {
-      const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
-      const __m256i j1 = load_partners(bj, m, i, k);
-      const BondLanes b = bond_lanes<Elongation>(xx, xi, yi, zi, j1, m, vals, k);
-      __m512d tom, inv_m;
-      load_states(states, j1, m, tom, inv_m);
-      __m512d a, c;
-      read_history8<F>(slot, hist, k, m, dense, a, c);
-      Vec8 h0(a), h1(c);
-      const Vec8 ed = Vec8(b.elong) - Vec8(theta_third_i) * Vec8(b.xi0);
-      const Vec8 term = fam.template norm_term_v<ROLL>(Vec8(b.coef), influence_v(Vec8(b.xi0)), ed,
-                                                       Vec8(inv_m_i) + Vec8(inv_m), h0, h1);
-      if (ROLL) write_history8<F>(slot, hist, k, m, dense, h0.v, h1.v);
-      acc = _mm512_mask_add_pd(acc, m, acc, term.v);
-    }
-    alignas(64) double lane[LANES];
-    _mm512_store_pd(lane, acc);
-    return lane_total(lane);
-  }
-
   /* the force pass, 8 lanes (one s00 and alpha) */
   template <class F, int EV, int CHECK, int COMMIT, class Idx, class Values>
   inline bool history_force_avx512(const double *xx, int i, const Idx *bj, const Values &vals,
@@ -220,7 +209,52 @@ namespace LPS {
     }
     return sums.store(out, snew, c) && past_avx512(xx, i, bj, vals, n, c, smin_all);
   }
-#define lps_history_norm_simd BBPD::LPS::history_norm_avx512
+  /* history_norm_force_portable in one pass, 8 lanes: every bond end's history read and rolled
+     (the norm pass's), its norm term, and the elastic plan's force state, whose commit is
+     written where the bond has a force */
+  template <class F, int EV, class Idx, class Values>
+  inline bool history_norm_force_avx512(const double *xx, int i, const Idx *bj, const Values &vals,
+                                        int n, const AtomState *states, const F &fam,
+                                        const HistoryCoefficients &c, const int *slot, double *hist,
+                                        const double *smin_all, double *snew, ForceLanes &out,
+                                        double *norm_sum)
+  {
+    const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
+                  zi = _mm512_set1_pd(xx[3 * i + 2]), zero = _mm512_setzero_pd();
+    const __mmask8 row_ok = c.inv_m_i > 0.0 ? (__mmask8) 0xFF : (__mmask8) 0;
+    const bool dense = dense_slots(slot, n);
+    const typename F::Plan elastic{};
+    ForceSums8<EV, 1> sums;
+    __m512d nacc = zero;
+    for (int k = 0; k < n; k += LANES) {
+      const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
+      const __m256i j1 = load_partners(bj, m, i, k);
+      const BondLanes b = bond_lanes<Elongation>(xx, xi, yi, zi, j1, m, vals, k);
+      __m512d tom, inv_m;
+      load_states(states, j1, m, tom, inv_m);
+      const __mmask8 ok = m & row_ok & _mm512_cmp_pd_mask(inv_m, zero, _CMP_GT_OQ);
+      __m512d ha, hb;
+      read_history8<F>(slot, hist, k, m, dense, ha, hb);
+      Vec8 h0(ha), h1(hb);
+      const Vec8 ed = Vec8(b.elong) - Vec8(c.theta_third_i) * Vec8(b.xi0);
+      const Vec8 term = fam.template norm_term_v<true>(Vec8(b.coef), influence_v(Vec8(b.xi0)), ed,
+                                                       Vec8(c.inv_m_i) + Vec8(inv_m), h0, h1);
+      nacc = _mm512_mask_add_pd(nacc, m, nacc, term.v);
+      Vec8 f0 = h0, f1 = h1, energy(0.0);
+      const Vec8 t = history_force_v<F, true>(fam, elastic, c, Vec8(b.coef), Vec8(b.xi0),
+                                              Vec8(b.elong), Vec8(tom), Vec8(inv_m), f0, f1, energy);
+      write_history8<F>(slot, hist, k, m, dense, h0.v, _mm512_mask_mov_pd(h1.v, ok, f1.v));
+      const __m512d t_ok = _mm512_maskz_mov_pd(ok, t.v);
+      const __m512d fpl = vselect(Vec8(b.r) > Vec8(zero), Vec8(t_ok) / Vec8(b.r), Vec8(zero)).v;
+      sums.add(m, b, fpl, _mm512_maskz_mov_pd(ok, energy.v));
+      sums.check(m, b);
+    }
+    alignas(64) double lane[LANES];
+    _mm512_store_pd(lane, nacc);
+    *norm_sum = lane_total(lane);
+    return sums.store(out, snew, c) && past_avx512(xx, i, bj, vals, n, c, smin_all);
+  }
+#define lps_history_norm_force_simd BBPD::LPS::history_norm_force_avx512
 #define lps_history_force_simd BBPD::LPS::history_force_avx512
 #endif
 
@@ -272,38 +306,6 @@ namespace LPS {
       }
   }
 
-  template <class F, bool ROLL, class Idx, class Values>
-  inline double history_norm_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
-                                  const AtomState *states, double theta_third_i, const F &fam,
-                                  const int *slot, double *hist)
-  {
-    const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
-                  zi = _mm256_set1_pd(xx[3 * i + 2]);
-    const Vec4 inv_m_i(states[i].inv_m), third(theta_third_i);
-    const bool dense = dense_slots(slot, n);
-    __m256d acc[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()};
-    auto group = [&](auto half, int k, bool full) BBPD_GROUPS_INLINE {
-      const Group4 g = group4(xx, bj, i, n, k, full, xi, yi, zi, vals, states);
-      const int lanes = _mm256_movemask_pd(g.m);
-      __m256d a, b;
-      read_history4<F>(slot, hist, k, lanes, dense, a, b);
-      Vec4 h0(a), h1(b);
-      const Vec4 e = Elongation::elongation(Vec4(lengths4(g.dx, g.dy, g.dz)), Vec4(g.xi0));
-      const Vec4 ed = e - third * Vec4(g.xi0);
-      const Vec4 term = fam.template norm_term_v<ROLL>(Vec4(g.wv), influence_v(Vec4(g.xi0)), ed,
-                                                       inv_m_i + Vec4(g.inv_m), h0, h1);
-      if (ROLL) write_history4<F>(slot, hist, k, lanes, dense, h0.v, h1.v);
-      constexpr int H = decltype(half)::value;
-      acc[H] = lps_add<true>(acc[H], term.v, g.m);
-    };
-    for_each_group4(n, [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, k, true); },
-                    [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, k, false); });
-    alignas(32) double lane[LANES];
-    _mm256_store_pd(lane, acc[0]);
-    _mm256_store_pd(lane + 4, acc[1]);
-    return lane_total(lane);
-  }
-
   template <class F, int EV, int CHECK, int COMMIT, class Idx, class Values>
   inline bool history_force_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                                  const AtomState *states, const F &fam,
@@ -338,7 +340,54 @@ namespace LPS {
                     [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, k, false); });
     return sums.store(out, snew, c) && past_avx2(xx, i, bj, vals, n, states, c, smin_all);
   }
-#define lps_history_norm_simd BBPD::LPS::history_norm_avx2
+  /* history_norm_force_avx512 in 4-wide groups (lanes 0-3, 4-7 of the 8-wide sums) */
+  template <class F, int EV, class Idx, class Values>
+  inline bool history_norm_force_avx2(const double *xx, int i, const Idx *bj, const Values &vals,
+                                      int n, const AtomState *states, const F &fam,
+                                      const HistoryCoefficients &c, const int *slot, double *hist,
+                                      const double *smin_all, double *snew, ForceLanes &out,
+                                      double *norm_sum)
+  {
+    const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
+                  zi = _mm256_set1_pd(xx[3 * i + 2]), zero = _mm256_setzero_pd();
+    const Vec4 inv_m_i(c.inv_m_i), third(c.theta_third_i);
+    const bool has_m = c.inv_m_i > 0.0;
+    const bool dense = dense_slots(slot, n);
+    const typename F::Plan elastic{};
+    ForceSums4x2<EV, 1> sums;
+    __m256d nacc[2] = {zero, zero};
+    auto group = [&](auto half, int k, bool full) BBPD_GROUPS_INLINE {
+      constexpr int H = decltype(half)::value;
+      const Group4 g = group4(xx, bj, i, n, k, full, xi, yi, zi, vals, states);
+      const __m256d ok = has_m ? _mm256_and_pd(g.m, _mm256_cmp_pd(g.inv_m, zero, _CMP_GT_OQ)) : zero;
+      const int lanes = _mm256_movemask_pd(g.m);
+      __m256d a, b;
+      read_history4<F>(slot, hist, k, lanes, dense, a, b);
+      Vec4 h0(a), h1(b);
+      const __m256d r = lengths4(g.dx, g.dy, g.dz);
+      const __m256d e = Elongation::elongation(Vec4(r), Vec4(g.xi0)).v;
+      const Vec4 ed = Vec4(e) - third * Vec4(g.xi0);
+      const Vec4 term = fam.template norm_term_v<true>(Vec4(g.wv), influence_v(Vec4(g.xi0)), ed,
+                                                       inv_m_i + Vec4(g.inv_m), h0, h1);
+      nacc[H] = lps_add<true>(nacc[H], term.v, g.m);
+      Vec4 f0 = h0, f1 = h1, energy(0.0);
+      const Vec4 t = history_force_v<F, true>(fam, elastic, c, Vec4(g.wv), Vec4(g.xi0), Vec4(e),
+                                              Vec4(g.tom), Vec4(g.inv_m), f0, f1, energy);
+      write_history4<F>(slot, hist, k, lanes, dense, h0.v, _mm256_blendv_pd(h1.v, f1.v, ok));
+      const __m256d t_ok = _mm256_and_pd(ok, t.v);
+      const __m256d fpl = vselect(Vec4(r) > Vec4(zero), Vec4(t_ok) / Vec4(r), Vec4(zero)).v;
+      sums.template add<H, true>(g.m, g.dx, g.dy, g.dz, fpl, _mm256_and_pd(ok, energy.v));
+      sums.template check<true>(g.m, e, g.xi0);
+    };
+    for_each_group4(n, [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, k, true); },
+                    [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, k, false); });
+    alignas(32) double lane[LANES];
+    _mm256_store_pd(lane, nacc[0]);
+    _mm256_store_pd(lane + 4, nacc[1]);
+    *norm_sum = lane_total(lane);
+    return sums.store(out, snew, c) && past_avx2(xx, i, bj, vals, n, states, c, smin_all);
+  }
+#define lps_history_norm_force_simd BBPD::LPS::history_norm_force_avx2
 #define lps_history_force_simd BBPD::LPS::history_force_avx2
 #endif
 

@@ -28,12 +28,15 @@ bool BBPD_ROW_PATH::lps_force(const double *xx, int i, const Idx *bj, const Valu
   return lps_force_simd<EV, CHECK>(xx, i, bj, vals, n, states, c, smin, snew, out);
 }
 
-template <class F, bool ROLL, class Idx, class Values>
-double BBPD_ROW_PATH::lps_history_norm(const double *xx, int i, const Idx *bj, const Values &vals,
-                                       int n, const LPS::AtomState *states, double theta_third_i,
-                                       const F &fam, const int *slot, double *hist)
+template <class F, int EV, class Idx, class Values>
+bool BBPD_ROW_PATH::lps_history_norm_force(const double *xx, int i, const Idx *bj,
+                                           const Values &vals, int n, const LPS::AtomState *states,
+                                           const F &fam, const LPS::HistoryCoefficients &c,
+                                           const int *slot, double *hist, const double *smin,
+                                           double *snew, LPS::ForceLanes &out, double *norm_sum)
 {
-  return lps_history_norm_simd<F, ROLL>(xx, i, bj, vals, n, states, theta_third_i, fam, slot, hist);
+  return lps_history_norm_force_simd<F, EV>(xx, i, bj, vals, n, states, fam, c, slot, hist, smin,
+                                            snew, out, norm_sum);
 }
 
 template <class F, int EV, int CHECK, int COMMIT, class Idx, class Values>
@@ -62,12 +65,14 @@ BBPD_FOR_LAYOUTS(BBPD_LPS_FORCE, 1, 0)
 BBPD_FOR_LAYOUTS(BBPD_LPS_FORCE, 1, 1)
 #undef BBPD_LPS_FORCE
 #undef BBPD_LPS_DILATATION
-// the families with history: EPS's norm pass (ROLL: the first evaluation of a step), and the
-// force pass of both with (CHECK, COMMIT) = (0, 0) and (1, 1), as their rows call them
-#define BBPD_LPS_HISTORY_NORM(F, ROLL, IDX, VALUES)                                          \
-  template double BBPD_ROW_PATH::lps_history_norm<F, ROLL, IDX, VALUES>(                     \
-      const double *, int, const IDX *, const VALUES &, int, const LPS::AtomState *, double, \
-      const F &, const int *, double *);
+// the families with history: EPS's norm and force pass in one (the first evaluation of a
+// step), and the force pass of both with (CHECK, COMMIT) = (0, 0) and (1, 1), as their rows
+// call them
+#define BBPD_LPS_HISTORY_NORM_FORCE(F, EV, IDX, VALUES)                                      \
+  template bool BBPD_ROW_PATH::lps_history_norm_force<F, EV, IDX, VALUES>(                   \
+      const double *, int, const IDX *, const VALUES &, int, const LPS::AtomState *,         \
+      const F &, const LPS::HistoryCoefficients &, const int *, double *, const double *,    \
+      double *, LPS::ForceLanes &, double *);
 #define BBPD_LPS_HISTORY_FORCE(F, EV, SWITCH, IDX, VALUES)                                   \
   template bool BBPD_ROW_PATH::lps_history_force<F, EV, SWITCH, SWITCH, IDX, VALUES>(        \
       const double *, int, const IDX *, const VALUES &, int, const LPS::AtomState *,         \
@@ -75,7 +80,8 @@ BBPD_FOR_LAYOUTS(BBPD_LPS_FORCE, 1, 1)
       double *, const double *, double *, LPS::ForceLanes &);
 #define BBPD_LPS_HISTORY_FORCE_0(F, EV, IDX, VALUES) BBPD_LPS_HISTORY_FORCE(F, EV, 0, IDX, VALUES)
 #define BBPD_LPS_HISTORY_FORCE_1(F, EV, IDX, VALUES) BBPD_LPS_HISTORY_FORCE(F, EV, 1, IDX, VALUES)
-BBPD_FOR_LAYOUTS(BBPD_LPS_HISTORY_NORM, EPS::Family, true)
+BBPD_FOR_LAYOUTS(BBPD_LPS_HISTORY_NORM_FORCE, EPS::Family, 0)
+BBPD_FOR_LAYOUTS(BBPD_LPS_HISTORY_NORM_FORCE, EPS::Family, 1)
 BBPD_FOR_LAYOUTS(BBPD_LPS_HISTORY_FORCE_0, VES::Family, 0)
 BBPD_FOR_LAYOUTS(BBPD_LPS_HISTORY_FORCE_0, VES::Family, 1)
 BBPD_FOR_LAYOUTS(BBPD_LPS_HISTORY_FORCE_1, VES::Family, 0)
@@ -87,6 +93,6 @@ BBPD_FOR_LAYOUTS(BBPD_LPS_HISTORY_FORCE_1, EPS::Family, 1)
 #undef BBPD_LPS_HISTORY_FORCE_1
 #undef BBPD_LPS_HISTORY_FORCE_0
 #undef BBPD_LPS_HISTORY_FORCE
-#undef BBPD_LPS_HISTORY_NORM
+#undef BBPD_LPS_HISTORY_NORM_FORCE
 
 #endif

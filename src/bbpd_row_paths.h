@@ -78,10 +78,12 @@ struct BBPD_PATH_HIDDEN Avx2Path {
   static bool lps_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                         const LPS::AtomState *states, const LPS::RowCoefficients &c,
                         const double *smin, double *snew, LPS::ForceLanes &out);
-  template <class F, bool ROLL, class Idx, class Values>
-  static double lps_history_norm(const double *xx, int i, const Idx *bj, const Values &vals, int n,
-                                 const LPS::AtomState *states, double theta_third_i, const F &fam,
-                                 const int *slot, double *hist);
+  template <class F, int EV, class Idx, class Values>
+  static bool lps_history_norm_force(const double *xx, int i, const Idx *bj, const Values &vals,
+                                     int n, const LPS::AtomState *states, const F &fam,
+                                     const LPS::HistoryCoefficients &c, const int *slot,
+                                     double *hist, const double *smin, double *snew,
+                                     LPS::ForceLanes &out, double *norm_sum);
   template <class F, int EV, int CHECK, int COMMIT, class Idx, class Values>
   static bool lps_history_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                                 const LPS::AtomState *states, const F &fam,
@@ -105,10 +107,12 @@ struct BBPD_PATH_HIDDEN Avx512Path {
   static bool lps_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                         const LPS::AtomState *states, const LPS::RowCoefficients &c,
                         const double *smin, double *snew, LPS::ForceLanes &out);
-  template <class F, bool ROLL, class Idx, class Values>
-  static double lps_history_norm(const double *xx, int i, const Idx *bj, const Values &vals, int n,
-                                 const LPS::AtomState *states, double theta_third_i, const F &fam,
-                                 const int *slot, double *hist);
+  template <class F, int EV, class Idx, class Values>
+  static bool lps_history_norm_force(const double *xx, int i, const Idx *bj, const Values &vals,
+                                     int n, const LPS::AtomState *states, const F &fam,
+                                     const LPS::HistoryCoefficients &c, const int *slot,
+                                     double *hist, const double *smin, double *snew,
+                                     LPS::ForceLanes &out, double *norm_sum);
   template <class F, int EV, int CHECK, int COMMIT, class Idx, class Values>
   static bool lps_history_force(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                                 const LPS::AtomState *states, const F &fam,

@@ -168,30 +168,58 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
   {
   }
 
-  // what the family decides over the row before its bonds (EPS: elastic or plastic; the
-  // first evaluation of a step rolls the history and keeps the norm for a second one)
-  void make_plan()
+  LPS::HistoryCoefficients coefficients() const
   {
-    if constexpr (F::NEEDS_NORM) {
-      double norm = atom_hist[F::NORM];
-      if (!replay) {
-        const double *xx = p.atom->x[0];
-        const int n = p.bonds->nbond[i];
-        const double sum = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
-          return BBPD::on_path(p.simd_path, [&](auto path) {
-            return decltype(path)::template lps_history_norm<F, true>(xx, i, bj, vals, n, p.atom_states,
-                                                                      theta_third_i, fam, slot, hist);
-          }, [&] {
-            return LPS::history_norm_portable<F, true>(xx, i, bj, vals, n, p.atom_states,
-                                                       theta_third_i, fam, slot, hist);
-          });
-        });
-        norm = std::sqrt(sum);
-        atom_hist[F::NORM] = norm;
-      }
-      plan = fam.plan(norm);
-      if (!replay && plan.plastic) atom_hist[F::LAMBDA] += plan.delta_lambda;
+    return {{mod.dilatational, mod.deviatoric, si.theta_over_m, si.inv_m, theta_third_i,
+             this->sa.s00_one, this->sa.alpha_one, smin_i, this->margin, this->s0_floor},
+            LPS::split_dilatational(mod)};
+  }
+  // the row's force lanes into f and its tallies: atom i's deviatoric energy (half of it, as
+  // peri/ves and peri/eps) and half the virial
+  void take_lanes(const LPS::ForceLanes &lanes, double *f)
+  {
+    BBPD::lane_sum(lanes.fx, lanes.fy, lanes.fz, f);
+    if (EVFLAG) {
+      tally[0] = p.deviatoric_share *
+          LPS::deviatoric_energy_of(mod, si.inv_m, BBPD::lane_total(lanes.tally.eng));
+      for (int v = 0; v < 6; v++)
+        tally[1 + v] = -BondModel::virial_share(1.0, BBPD::lane_total(lanes.tally.vir[v]), 1.0);
     }
+  }
+
+  /* the first evaluation of a step of a family with a norm (EPS): the norm (which rolls the
+     history), the plan it gives, and the row's force with the breaking check; one pass over the
+     row for an elastic row (history_norm_force of bbpd_lps_history_lanes.h), the force pass again
+     for a plastic one. The norm is kept for a second evaluation of the step. */
+  bool norm_and_sum(double *f)
+  {
+    const double *xx = p.atom->x[0];
+    const int n = p.bonds->nbond[i];
+    const LPS::HistoryCoefficients c = coefficients();
+    constexpr int EV = EVFLAG != 0;
+    LPS::ForceLanes lanes;
+    double sum = 0.0;
+    const bool past = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
+      auto portable = [&] {
+        return LPS::history_norm_force_portable<F, EV>(xx, i, bj, vals, n, p.atom_states, fam, c, slot,
+                                                       hist, [&](int j) { return this->s0_with(j); },
+                                                       &snew, lanes, &sum);
+      };
+      if (this->sa.multi) return portable();
+      return BBPD::on_path(p.simd_path, [&](auto path) {
+        return decltype(path)::template lps_history_norm_force<F, EV>(
+            xx, i, bj, vals, n, p.atom_states, fam, c, slot, hist, p.atom->s0, &snew, lanes, &sum);
+      }, portable);
+    });
+    const double norm = std::sqrt(sum);
+    atom_hist[F::NORM] = norm;
+    plan = fam.plan(norm);
+    if (!plan.plastic) {
+      take_lanes(lanes, f);
+      return past;
+    }
+    atom_hist[F::LAMBDA] += plan.delta_lambda;
+    return row_sum<true, true>(f);
   }
 
   // the row's force into f and its tallies (bbpd_lps_history_lanes.h, on the pair style's path;
@@ -202,10 +230,7 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
   {
     const double *xx = p.atom->x[0];
     const int n = p.bonds->nbond[i];
-    const LPS::HistoryCoefficients c{{mod.dilatational, mod.deviatoric, si.theta_over_m, si.inv_m,
-                                      theta_third_i, this->sa.s00_one, this->sa.alpha_one, smin_i,
-                                      this->margin, this->s0_floor},
-                                     LPS::split_dilatational(mod)};
+    const LPS::HistoryCoefficients c = coefficients();
     constexpr int EV = EVFLAG != 0, CH = CHECK, CO = COMMIT;
     LPS::ForceLanes lanes;
     const bool past = p.bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
@@ -220,26 +245,23 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
             xx, i, bj, vals, n, p.atom_states, fam, plan, c, slot, hist, p.atom->s0, &snew, lanes);
       }, portable);
     });
-    BBPD::lane_sum(lanes.fx, lanes.fy, lanes.fz, f);
-    // atom i's deviatoric energy (half of it, as peri/ves and peri/eps) and half the virial
-    if (EVFLAG) {
-      tally[0] = p.deviatoric_share *
-          LPS::deviatoric_energy_of(mod, si.inv_m, BBPD::lane_total(lanes.tally.eng));
-      for (int v = 0; v < 6; v++)
-        tally[1 + v] = -BondModel::virial_share(1.0, BBPD::lane_total(lanes.tally.vir[v]), 1.0);
-    }
+    take_lanes(lanes, f);
     return past;
   }
   bool sum_and_check(double *fi)
   {
-    make_plan();
-    if (replay) {
+    if (replay) {    // the plan of the step's first evaluation (EPS: from the norm it kept)
+      if constexpr (F::NEEDS_NORM) plan = fam.plan(atom_hist[F::NORM]);
       p.silling_askari.smin_new[i] = smin_i;
       row_sum<false, false>(fi);
       return false;
     }
     const bool had_bonds = p.bonds->nbond[i] > 0;
-    const bool broken = row_sum<true, true>(fi);
+    bool broken;
+    if constexpr (F::NEEDS_NORM)
+      broken = norm_and_sum(fi);
+    else
+      broken = row_sum<true, true>(fi);
     p.silling_askari.smin_new[i] = had_bonds ? snew : BBPD::PMB::NO_BOND_STRETCH;
     return broken;
   }

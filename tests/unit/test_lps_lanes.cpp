@@ -364,21 +364,47 @@ TEST(LpsLanes, HistoryKernelsGiveThePortableBits)
     expect_history_bits<EPS::Family, 0, 0>(eps, plan);
     expect_history_bits<EPS::Family, 1, 1>(eps, plan);
   }
-  // the norm pass, rolling the history
-  for (int n : {1, 5, 8, 13, 122})
-  for (bool dense : {false, true}) {
-    const Scene t = scene(n, 300 + n);
+  // the first evaluation of an EPS step: the norm pass (rolling the history) and the elastic
+  // plan's force pass in one pass over the row (history_norm_force)
+  for (int n : {0, 1, 5, 8, 13, 121, 122})
+  for (bool dense : {false, true})
+  for (bool ev : {false, true}) {
+    Scene t = scene(n, 300 + n);
+    if (dense && n > 2) t.states[t.partner[2]] = LPS::atom_state(0.0, 0.0);    // rolled, no force
+    const LPS::HistoryCoefficients c = history_coefficients(t, 1e-12);
     const BBPD::PerBondValues vals{t.xi0.data(), t.wv.data()};
     const std::vector<int> slot = slots(n, dense);
     std::vector<double> ha = history(n, n), hb = ha;
-    const double na = LPS::history_norm_portable<EPS::Family, true>(
-        t.x.data(), 0, t.partner.data(), vals, n, t.states.data(), 1e-4, eps, slot.data(), ha.data());
-    const double nb = lps_history_norm_simd<EPS::Family, true>(
-        t.x.data(), 0, t.partner.data(), vals, n, t.states.data(), 1e-4, eps, slot.data(), hb.data());
+    auto s0_of = [&](int j) {
+      return LPS::StretchRule::critical_stretch(c.s00, c.alpha, c.smin_i, t.smin[j]);
+    };
+    LPS::ForceLanes a, b;
+    double sa = 0.0, sb = 0.0, na = 0.0, nb = 0.0;
+    bool pa, pb;
+    if (ev) {
+      pa = LPS::history_norm_force_portable<EPS::Family, 1>(t.x.data(), 0, t.partner.data(), vals, n,
+                                                            t.states.data(), eps, c, slot.data(),
+                                                            ha.data(), s0_of, &sa, a, &na);
+      pb = lps_history_norm_force_simd<EPS::Family, 1>(t.x.data(), 0, t.offset.data(), vals, n,
+                                                       t.states.data(), eps, c, slot.data(), hb.data(),
+                                                       t.smin.data(), &sb, b, &nb);
+    } else {
+      pa = LPS::history_norm_force_portable<EPS::Family, 0>(t.x.data(), 0, t.partner.data(), vals, n,
+                                                            t.states.data(), eps, c, slot.data(),
+                                                            ha.data(), s0_of, &sa, a, &na);
+      pb = lps_history_norm_force_simd<EPS::Family, 0>(t.x.data(), 0, t.offset.data(), vals, n,
+                                                       t.states.data(), eps, c, slot.data(), hb.data(),
+                                                       t.smin.data(), &sb, b, &nb);
+    }
     EXPECT_EQ(na, nb) << "n = " << n;
-    EXPECT_GT(na, 0.0);
+    if (n > 0) {
+      EXPECT_GT(na, 0.0);
+    }
+    EXPECT_TRUE(same_lanes(a, b, ev)) << "n = " << n << " dense " << dense;
     EXPECT_TRUE(same_bits(ha.data(), hb.data(), static_cast<int>(ha.size())))
         << "n = " << n << " dense " << dense;
+    EXPECT_EQ(pa, pb) << "n = " << n;
+    EXPECT_EQ(sa, sb) << "n = " << n;
   }
 }
 #endif
