@@ -16,6 +16,7 @@ import numpy as np
 from bbpd import freund, metrics, readers
 from bbpd.csvfile import write_csv
 from bbpd.jobs import ROOT
+from bbpd.reference import POISSON
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.markdown import cell
 from bbpd.markdown import table as md_table
@@ -42,7 +43,6 @@ PAPER_TABLE2 = {0.1: (9.82, 17.70), 0.05: (0.21, 2.86), 0.025: (0.17, 2.74)}
 PAPER_TABLE3 = {"constant": (14.20, 15.48), "triangular": (5.99, 6.56), "gaussian": (0.21, 2.86)}
 
 CONVENTIONS = ("paper", "consistent")
-IMPLIED_NU = {"plane/stress": 1.0 / 3.0, "plane/strain": 0.25}
 
 
 def default_dt(dx):
@@ -58,7 +58,7 @@ def reference(convention, model="plane/stress", E=E, rho=RHO, H=H, sigma0=SIGMA0
     if convention == "paper":
         nu_eq, c_d = NU_PAPER, freund.dilatational_wave_speed(E, NU_PAPER, rho, freund.PLANE_STRAIN)
     elif convention == "consistent":
-        nu = IMPLIED_NU[model] if nu is None else nu
+        nu = POISSON[model] if nu is None else nu
         if model == "plane/stress":
             nu_eq = freund.equivalent_plane_stress_poisson(nu)
             c_d = freund.dilatational_wave_speed(E, nu, rho, freund.PLANE_STRESS)

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import crack_motion, crack_tip, csvfile, freund, plots, readers
+from bbpd import crack_motion, crack_tip, csvfile, freund, plots, readers, reference
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import mode1
 from bbpd.kernels import COLORS, KERNELS
@@ -21,7 +21,7 @@ EXAMPLE = ROOT / "examples" / "mode1-propagation" / "in.mode1-propagation"
 
 E, RHO, H, T_D, SIGMA0 = mode1.E, mode1.RHO, mode1.H, mode1.T_D, mode1.SIGMA0
 A = 5.0                     # initial tip, m
-NU = mode1.IMPLIED_NU["plane/stress"]
+NU = reference.POISSON["plane/stress"]
 G_C = 2.0                   # J/m^2 at sigma0 = 1 MPa: t_i = 1.70 t_c, theory runs 0.77-0.98 m
 M = 5.0                     # delta/dx
 T_END = 1.2e-3              # run length, > 3 t_c = 1.10e-3 s

@@ -11,6 +11,7 @@ import scipy.sparse as sparse
 
 from bbpd import freund, metrics, readers
 from bbpd.jobs import ROOT
+from bbpd.reference import POISSON
 from bbpd.kernels import KERNELS
 from bbpd.markdown import cell
 from bbpd.markdown import table as md_table
@@ -31,7 +32,6 @@ TAU = 1.0e6             # any value: the model is linear (in.mode2 uses the same
 LOADED_EDGES = 2        # +tau on the top edge, -tau on the bottom edge
 DT_REF, DX_REF = 5.0e-8, 0.5e-3    # ~0.48 of the velocity-Verlet limit; scaled with dx
 T_END = 12.0e-6
-IMPLIED_NU = {"plane/stress": 1.0 / 3.0, "plane/strain": 0.25}
 
 
 def default_dt(dx):
@@ -39,7 +39,7 @@ def default_dt(dx):
 
 
 def wave_speeds(model="plane/strain"):
-    nu = IMPLIED_NU[model]
+    nu = POISSON[model]
     cond = freund.PLANE_STRESS if model == "plane/stress" else freund.PLANE_STRAIN
     return freund.shear_wave_speed(E, nu, RHO), freund.dilatational_wave_speed(E, nu, RHO, cond)
 

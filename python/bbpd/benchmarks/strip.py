@@ -310,21 +310,20 @@ def law_table(rows, Delta=2.0):
     steady speed at Delta over the strip's heights, the last change in height and whether it
     converged (height_convergence), the runs at Delta that did not run steadily, and the grid's
     own c_R over c_R"""
-    lines = ["| kernel | m | Delta_c (arrests / crosses) | v_ss/c_R at Delta = 2, H/delta = "
-             + ", ".join(f"{h:g}" for h in HEIGHTS) + " | last change in H, converged | not steady at "
-             "Delta = 2 (H/delta) | grid's c_R / c_R |", "|" + "---|" * 7]
+    out = []
     for k in sorted({r["kernel"] for r in rows}):
         for m in sorted({r["m"] for r in rows if r["kernel"] == k}):
             lo, hi = threshold(rows, k, m)
-            speeds = [(h, v) for h in HEIGHTS if (v := speed_at(rows, k, m, h, Delta))]
-            conv = height_convergence(speeds)
+            conv = height_convergence([(h, v) for h in HEIGHTS if (v := speed_at(rows, k, m, h, Delta))])
             lost = [r for r in rows if (r["kernel"], r["m"], r["Delta"]) == (k, m, Delta) and not r["crossed"]]
-            lines.append(f"| {k} | {m:g} | {f(lo, 'g')} / {f(hi, 'g')} | "
-                         + ", ".join(f(speed_at(rows, k, m, h, Delta) or None, ".3f") for h in HEIGHTS)
-                         + " | " + (f"{conv['last']:+.4f}, {'yes' if conv['converged'] else 'no'}" if conv else "-")
-                         + " | " + (", ".join(f"{r['H_over_delta']:g} {r['state']}{_where(r)}" for r in lost) or "-")
-                         + f" | {grid_rayleigh_ratio(k, m):.3f} |")
-    return "\n".join(lines)
+            out.append([k, f"{m:g}", f"{f(lo, 'g')} / {f(hi, 'g')}",
+                        ", ".join(f(speed_at(rows, k, m, h, Delta) or None, ".3f") for h in HEIGHTS),
+                        f"{conv['last']:+.4f}, {'yes' if conv['converged'] else 'no'}" if conv else "-",
+                        ", ".join(f"{r['H_over_delta']:g} {r['state']}{_where(r)}" for r in lost) or "-",
+                        f"{grid_rayleigh_ratio(k, m):.3f}"])
+    return md_table(["kernel", "m", "Delta_c (arrests / crosses)", "v_ss/c_R at Delta = 2, H/delta = "
+                     + ", ".join(f"{h:g}" for h in HEIGHTS), "last change in H, converged",
+                     "not steady at Delta = 2 (H/delta)", "grid's c_R / c_R"], out)
 
 
 def energy_closure(rows):
@@ -423,20 +422,18 @@ def figure(rows, path, H_over_delta=SWEEP_H_OVER_DELTA):
 def work_precision_markdown(rows, Delta=2.0, m=M):
     """Error of v_ss against run time: each kernel's runs at (Delta, m) by strip height, the
     error the difference from its tallest strip (which therefore has none)."""
-    head = "| kernel | H/delta | atoms | loop time (s) | v_ss/c_R | difference from the tallest strip (c_R) |"
-    lines, shown = [head, "|---|---|---|---|---|---|"], []
+    out, shown = [], []
     for k in sorted({r["kernel"] for r in rows}):
         sel = sorted((r for r in rows if r["kernel"] == k and r["m"] == m and r["Delta"] == Delta
                       and r["crossed"]), key=lambda r: r["H_over_delta"])
-        if len(sel) < 2:
-            continue
-        ref = sel[-1]["v_ss_over_cR"]
-        for r in sel:
-            diff = "(reference)" if r is sel[-1] else f"{r['v_ss_over_cR'] - ref:+.3f}"
-            lines.append(f"| {k} | {r['H_over_delta']:g} | {int(r['atoms'])} | {r['loop_s']:.0f} | "
-                         f"{r['v_ss_over_cR']:.3f} | {diff} |")
-            shown.append(r)
-    return "\n".join(lines + ["", timing_markdown(shown)] if shown else lines)
+        if len(sel) > 1:
+            out += [[k, f"{r['H_over_delta']:g}", int(r["atoms"]), f"{r['loop_s']:.0f}",
+                     f"{r['v_ss_over_cR']:.3f}", "(reference)" if r is sel[-1] else
+                     f"{r['v_ss_over_cR'] - sel[-1]['v_ss_over_cR']:+.3f}"] for r in sel]
+            shown += sel
+    table = md_table(["kernel", "H/delta", "atoms", "loop time (s)", "v_ss/c_R",
+                      "difference from the tallest strip (c_R)"], out)
+    return table + "\n\n" + timing_markdown(shown) if shown else table
 
 
 if __name__ == "__main__":
