@@ -298,6 +298,21 @@ REPORT_SETUP = ("Plate 100 x 40 mm, notch from the left edge to the centre along
                 "examples/crack-branching/README.md." % C_R)
 
 
+# the report's runs: the Gaussian kernel at sigma = 2 MPa, delta = 1 mm, m = 4 (45 s); --full
+# adds DEFAULT_RUNS; one single-rank run's wall time (s) by m
+REPORT_RUNS = ("gaussian-s2-m4",)
+ESTIMATE_S = {4: 60.0, 3: 25.0}
+
+
+def jobs(full=False):
+    """The report's branching runs as bbpd.report specs."""
+    inputs = (EXAMPLE, Path(__file__), Path(readers.__file__), Path(freund.__file__),
+              Path(__file__).with_name("mode1_propagation.py"))
+    return jobmod.report_specs("branching", "bbpd.benchmarks.branching:job", inputs, (
+        (RUNS[n][0], RUNS[n][1] / RUNS[n][2], f"crack branching {n}", {"name": n},
+         ESTIMATE_S.get(RUNS[n][2], 400.0)) for n in (DEFAULT_RUNS if full else REPORT_RUNS)))
+
+
 def section(specs, results, figdir, notes):
     """The section of REPORT.md (bbpd.report.document.write_report) from the report's branching runs."""
     def figures(rows):

@@ -43,9 +43,6 @@ MODE1PROP_DX_FULL = (0.1, 0.05, 0.025)
 # rows at the five mixes (the cheapest set that draws the angle against the mix); --full runs
 # the sweep of examples/kink-mixed-mode (bbpd.benchmarks.kink.cases)
 KINK_DEFAULT = ("gaussian", 0.0)     # kernel, crack angle to the grid's rows (deg)
-# crack branching: by default the Gaussian kernel at sigma = 2 MPa, delta = 1 mm, m = 4 (45 s);
-# --full the sweep of examples/crack-branching (bbpd.benchmarks.branching.DEFAULT_RUNS)
-BRANCHING_DEFAULT = ("gaussian-s2-m4",)
 
 # Expected wall time of each single-rank run here, 2 at a time on 2 shared cores (s); only
 # the time-left estimate and the job order (longest first) use them.
@@ -55,7 +52,6 @@ ESTIMATE_S = {
     ("mode2", 1.0e-3): 2.0, ("mode2", 0.5e-3): 8.0, ("mode2", 0.25e-3): 30.0,
     ("kw", 2.0e-3): 8.0, ("kw", 1.0e-3): 75.0, ("kw", 0.5e-3): 200.0, ("kw", 0.25e-3): 1200.0,
     ("mode1prop", 0.1): 3.0, ("mode1prop", 0.05): 15.0, ("mode1prop", 0.025): 160.0,
-    ("branching", 4): 60.0, ("branching", 3): 25.0,
 }
 
 
@@ -132,15 +128,11 @@ def bench_inputs(bench):
                           BENCH / "mode1_propagation.py", BENCH / "mode1.py",
                           ROOT / "python" / "bbpd" / "crack_motion.py",
                           ROOT / "python" / "bbpd" / "crack_tip.py", FREUND_PY,
-                          READERS_PY),
-            "branching": (branching.EXAMPLE, BENCH / "branching.py", READERS_PY, FREUND_PY,
-                          BENCH / "mode1_propagation.py")}[bench]
+                          READERS_PY)}[bench]
 
 
 def label_of(bench, kernel, dx, args):
     """The run's name in the log and the report (part of its cache key)."""
-    if bench == "branching":
-        return f"crack branching {args['name']}"
     return {"dispersion": f"dispersion {kernel}",
             "mode1": f"Mode I {kernel} dx = {dx:g} m",
             "mode2": f"Mode II {kernel} dx = {dx * 1e3:g} mm",
@@ -191,7 +183,7 @@ def benchmark_specs(full=False, study=None):
     specs += kalthoff_winkler_projectile.jobs(full=study)
     specs += kink_specs(study)
     specs += strip.jobs(full=study)    # the strip: Gaussian on a short strip; --full the sweep
-    specs += branching_specs(study)
+    specs += branching.jobs(full=study)    # crack branching: the Gaussian at 2 MPa; --full the sweep
     specs += quasi_static.jobs(full=full)    # examples/quasi-static (fix bbpd/relax)
     if study:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
         specs += kalthoff_winkler_study.jobs()
@@ -207,14 +199,3 @@ def kink_specs(full=False):
     kernel, alpha = KINK_DEFAULT
     return kink.jobs([c for c in kink.cases() if full or (c[0], c[2], c[3], c[5]) ==
                       (kernel, alpha, kink.COARSE[0], kink.NCROSS)])
-
-
-def branching_specs(full=False):
-    """The branching runs: BRANCHING_DEFAULT, or with full=True the example's sweep."""
-    inputs = bench_inputs("branching")
-    specs = []
-    for name in (branching.DEFAULT_RUNS if full else BRANCHING_DEFAULT):
-        kernel, delta, m, _ = branching.RUNS[name]
-        specs.append(make_spec("branching", kernel, delta / m, "bbpd.benchmarks.branching:job",
-                               {"name": name}, inputs, ESTIMATE_S.get(("branching", m), 400.0)))
-    return specs

@@ -18,7 +18,7 @@ from bbpd import csvfile
 from bbpd import jobs as jobmod
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import KERNELS
-from .sections import _figure
+from .sections import figure_names
 from bbpd.provenance import machine
 from .runs import ESTIMATE_S, bench_inputs, build_of_run, label_of
 from .tables import failed, md_table
@@ -406,8 +406,8 @@ def section(specs, results, figdir, notes):
         if not any(r["benchmark"] == bench for r in table):
             continue
         path = figdir / f"work_precision_{bench}.png"
-        figs += _figure(lambda: plot(path, table, bench, TITLES[bench],
-                                     lambda dx: _fmt_dx(bench, dx)), path, notes)
+        figs += figure_names(lambda: [plot(path, table, bench, TITLES[bench],
+                                           lambda dx: _fmt_dx(bench, dx))], f"figure {path.name}", notes)
     reach = reach_table(table)
     text = ["The cost of reaching each target error:\n\n" + reach] if reach else []
     setup = SETUP.format(repeats=TIMING_REPEATS, below=REPEAT_BELOW_S,
