@@ -221,12 +221,7 @@ def table_markdown(rows):
 FIGURE_NAMES = ("crack_extension.png", "crack_speed.png", "work_precision.png")
 
 
-def figures(histories_csv, results_csv, folder, prefix=""):
-    """The figures of the example from its CSVs (see figures_of_rows)."""
-    return figures_of_rows(read_rows(results_csv, histories_csv), folder, prefix)
-
-
-def figures_of_rows(rows, folder, prefix=""):
+def figures(rows, folder, prefix=""):
     """l(t) and v(t) of every run (rows with kernel, dx, Gc, t_tip, l_pd) with the theory in
     both forms of the equation of motion, and the work-precision figure; returns the names."""
     prob = problem(rows[0]["Gc"])
@@ -298,7 +293,7 @@ REPORT_SETUP = ("The stationary Mode-I plate with fracture on: G_c = 2 J/m^2 at 
 def section(specs, results, figdir, notes):
     """The section of REPORT.md (bbpd.report.document.write_report) from the report's runs."""
     return jobmod.section(REPORT_TITLE, REPORT_SETUP, specs, results, table_markdown, None,
-                          lambda rows: figures_of_rows(rows, figdir, prefix="mode1_propagation_"),
+                          lambda rows: figures(rows, figdir, prefix="mode1_propagation_"),
                           notes)
 
 
@@ -330,7 +325,7 @@ def main(argv=None):
         write_csv(args.csv, rows, provenance + [this])
         write_histories(histories, rows)
         if args.figures:
-            figures(Path(args.csv).with_name("tip_histories.csv"), args.csv, args.figures)
+            figures(read_rows(args.csv, histories), args.figures)
 
 
 if __name__ == "__main__":

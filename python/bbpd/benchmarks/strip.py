@@ -4,6 +4,7 @@ from examples/strip-steady-crack/in.strip (examples/strip-steady-crack/README.md
 measure and has the commands).
 """
 
+import itertools
 import math
 import re
 import subprocess
@@ -182,24 +183,20 @@ def main(argv=None):
     if a.collect:
         rows = collect(a.work)
         a.kernels = []
-    for kernel in a.kernels:
-        for m in a.m:
-            for hd in a.H_over_delta:
-                for D in a.Delta:
-                    wd = Path(a.work) / f"{kernel}-m{m:g}-H{hd:g}-D{D:g}"
-                    try:
-                        r = run(wd, kernel, D, DX * M / m, m, hd, nprocs=a.nprocs, reuse=a.reuse)
-                    except (LammpsError, subprocess.TimeoutExpired) as exc:    # one failed run must not end the sweep
-                        print(f"{wd.name}: FAILED: {exc}", flush=True)
-                        continue
-                    print(f"{kernel} m {m:g} H/delta {hd:g} Delta {D:g} (model {r['Delta_model']:.3f}): "
-                          f"crossed {r['crossed']} v_ss/c_R {r['v_ss_over_cR']:.3f} Gamma/Gc "
-                          f"{r['Gamma_over_Gc']:.3f} Phi/Gc {r['Phi_over_Gc']:.3f} closure "
-                          f"{r['closure_pct']:.2f} % balance {r['balance_pct']:.3f} % loop {r['loop_s']:.1f} s",
-                          flush=True)
-                    rows = [q for q in rows if not (q["kernel"] == kernel and q["m"] == m and
-                                                    q["H_over_delta"] == hd and q["Delta"] == D)]
-                    rows.append(r)
+    for kernel, m, hd, D in itertools.product(a.kernels, a.m, a.H_over_delta, a.Delta):
+        wd = Path(a.work) / f"{kernel}-m{m:g}-H{hd:g}-D{D:g}"
+        try:
+            r = run(wd, kernel, D, DX * M / m, m, hd, nprocs=a.nprocs, reuse=a.reuse)
+        except (LammpsError, subprocess.TimeoutExpired) as exc:    # one failed run must not end the sweep
+            print(f"{wd.name}: FAILED: {exc}", flush=True)
+            continue
+        print(f"{kernel} m {m:g} H/delta {hd:g} Delta {D:g} (model {r['Delta_model']:.3f}): "
+              f"crossed {r['crossed']} v_ss/c_R {r['v_ss_over_cR']:.3f} Gamma/Gc "
+              f"{r['Gamma_over_Gc']:.3f} Phi/Gc {r['Phi_over_Gc']:.3f} closure "
+              f"{r['closure_pct']:.2f} % balance {r['balance_pct']:.3f} % loop {r['loop_s']:.1f} s",
+              flush=True)
+        rows = [q for q in rows if (q["kernel"], q["m"], q["H_over_delta"], q["Delta"]) != (kernel, m, hd, D)]
+        rows.append(r)
     rows.sort(key=lambda r: (r["kernel"], r["m"], r["H_over_delta"], r["Delta"]))
     if a.csv:
         write_csv(a.csv, rows, [*earlier, made])
