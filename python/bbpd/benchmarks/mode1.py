@@ -198,12 +198,6 @@ def jtable(rows):
     return md_table(header, cells)
 
 
-def paper_table(work, cases, nprocs=1, model="plane/stress"):
-    """Run cases {key: (kernel, dx)}; returns {key: result}."""
-    return {key: run(Path(work) / f"{kernel}_{dx}", kernel, dx, model, nprocs=nprocs)
-            for key, (kernel, dx) in cases.items()}
-
-
 TIP_STUDY = ((0.5, 1.0, 2.0), (0.5, 1.0, 3.0), (0.5, 2.0, 3.0), (0.5, 2.0, 4.0),
              (-0.5, 1.0, 2.0), (0.0, 0.5, 1.5), (0.0, 1.5, 2.5), (0.0, 2.5, 4.5))
 
@@ -265,10 +259,11 @@ def main(argv=None):
                     help="write the tip study to PATH as CSV (the README's table is generated "
                          "from examples/mode1-semi-infinite/results/tips.csv)")
     args = ap.parse_args(argv)
-    rows2 = paper_table(args.work, {dx: ("gaussian", dx) for dx in args.dx}, args.nprocs,
-                        args.model) if args.table2 else {}
-    rows3 = paper_table(args.work, {k: (k, TABLE3_DX) for k in KERNELS}, args.nprocs,
-                        args.model) if args.table3 else {}
+    def runs(cases):    # {key: run} of {key: (kernel, dx)}
+        return {key: run(Path(args.work) / f"{k}_{dx}", k, dx, args.model, nprocs=args.nprocs)
+                for key, (k, dx) in cases.items()}
+    rows2 = runs({dx: ("gaussian", dx) for dx in args.dx}) if args.table2 else {}
+    rows3 = runs({k: (k, TABLE3_DX) for k in KERNELS}) if args.table3 else {}
     if rows2:
         print(table2([row(r) for r in rows2.values()]))
     if rows3:

@@ -12,6 +12,7 @@ from bbpd import crack_motion, crack_tip, csvfile, freund, plots, readers, refer
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import mode1
 from bbpd.kernels import COLORS, KERNELS
+from bbpd.markdown import table as md_table
 from bbpd.provenance import cpu
 from bbpd.runner import run_or_reuse
 from bbpd.benchmarks import cli
@@ -190,32 +191,25 @@ def cpu_markdown(rows):
 
 def table_markdown(rows):
     """The README table of a results CSV (rows: dicts with the CSV's columns)."""
-    head = ("| kernel | dx (m) | atoms | first bond: t_i (ms), error (%), J/G_c | "
-            "tip moved: t_i (ms), error (%), J/G_c | extension at 3 t_c (m) | "
-            "L2 of l(t), K_Ic form (%) | L2 of l(t), energy form (%) | v/c_R at "
-            + ", ".join(f"{s:g}" for s in SPEED_TIMES)
-            + " t_c | crack half-width at 3 t_c (delta) | loop time (s) |")
-    lines = [head, "|" + "---|" * (head.count("|") - 1)]
     prob = problem(rows[0]["Gc"]) if rows else problem()
-    for r in rows:
-        speeds = ", ".join(f"{r[f'v_{s:g}tc_over_cR']:.2f}" for s in SPEED_TIMES)
-        lines.append(f"| {r['kernel']} | {r['dx']:g} | {int(r['atoms'])} | "
-                     f"{1e3 * r['ti_pd']:.4f}, {r['ti_err_pct']:+.1f}, "
-                     f"{r['J_at_ti_over_Gc']:.2f} | {1e3 * r['ti_tip_pd']:.4f}, "
-                     f"{r['ti_tip_err_pct']:+.1f}, {r['J_at_ti_tip_over_Gc']:.2f} | "
-                     f"{r['ext_pd_3tc']:.2f} | {r['l2_toughness_pct']:.1f} | "
-                     f"{r['l2_energy_pct']:.1f} | {speeds} | {r['width_3tc_over_delta']:.2f} | "
-                     f"{r['loop_s']:.1f} |")
-    v_th = {c: [prob.tip_position(np.array([s * prob.t_c]), c)[1][0] / prob.c_r
-                for s in SPEED_TIMES] for c in crack_motion.CRITERIA}
+    out = [[r["kernel"], f"{r['dx']:g}", int(r["atoms"]),
+            f"{1e3 * r['ti_pd']:.4f}, {r['ti_err_pct']:+.1f}, {r['J_at_ti_over_Gc']:.2f}",
+            f"{1e3 * r['ti_tip_pd']:.4f}, {r['ti_tip_err_pct']:+.1f}, {r['J_at_ti_tip_over_Gc']:.2f}",
+            f"{r['ext_pd_3tc']:.2f}", f"{r['l2_toughness_pct']:.1f}", f"{r['l2_energy_pct']:.1f}",
+            ", ".join(f"{r[f'v_{s:g}tc_over_cR']:.2f}" for s in SPEED_TIMES),
+            f"{r['width_3tc_over_delta']:.2f}", f"{r['loop_s']:.1f}"] for r in rows]
     t_i = f"{1e3 * prob.initiation_time():.4f}, 0, 1"
     for crit, name in (("toughness", "K_Ic form"), ("energy", "energy form")):
         ext = prob.tip_position(np.array([prob.t_end]), crit)[0][0] - A
-        lines.append(f"| theory, {name} | | | {t_i} | {t_i} | {ext:.2f} | | | "
-                     + ", ".join(f"{v:.2f}" for v in v_th[crit]) + " | | |")
-    if rows and all("cpu" in r for r in rows):
-        lines += ["", cpu_markdown(rows)]
-    return "\n".join(lines)
+        v_th = [prob.tip_position(np.array([s * prob.t_c]), crit)[1][0] / prob.c_r for s in SPEED_TIMES]
+        out.append([f"theory, {name}", "", "", t_i, t_i, f"{ext:.2f}", "", "",
+                    ", ".join(f"{v:.2f}" for v in v_th), "", ""])
+    table = md_table(["kernel", "dx (m)", "atoms", "first bond: t_i (ms), error (%), J/G_c",
+                      "tip moved: t_i (ms), error (%), J/G_c", "extension at 3 t_c (m)",
+                      "L2 of l(t), K_Ic form (%)", "L2 of l(t), energy form (%)",
+                      "v/c_R at " + ", ".join(f"{s:g}" for s in SPEED_TIMES) + " t_c",
+                      "crack half-width at 3 t_c (delta)", "loop time (s)"], out)
+    return table + "\n\n" + cpu_markdown(rows) if rows and all("cpu" in r for r in rows) else table
 
 
 FIGURE_NAMES = ("crack_extension.png", "crack_speed.png", "work_precision.png")

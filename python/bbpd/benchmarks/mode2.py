@@ -241,12 +241,6 @@ def jtable(rows):
                              for r in _sorted(rows)])
 
 
-def runs(work, kernels=KERNELS, dxs=(1.0e-3, 0.5e-3), td=0.0, nprocs=1):
-    """Run every kernel at every dx; returns {(kernel, dx): result}."""
-    return {(kernel, dx): run(Path(work) / f"{kernel}_{dx}", kernel, dx, td=td, nprocs=nprocs)
-            for dx in dxs for kernel in kernels}
-
-
 def figure(rows, path, td=0.0):
     w = window()
     tt = np.linspace(0.0, T_END, 400)
@@ -273,7 +267,8 @@ def main(argv=None):
                   f"{np.interp(win[1], t, k) / exact(win[1]):.4f}; peak, L2 error (%) "
                   f"{100 * metrics.peak_relative_error(t, k, exact, win):.2f} "
                   f"{100 * metrics.l2_relative_error(t, k, exact, win):.2f}")
-    rows = runs(args.work, args.kernels, args.dx, args.td, args.nprocs)
+    rows = {(k, dx): run(Path(args.work) / f"{k}_{dx}", k, dx, td=args.td, nprocs=args.nprocs)
+            for dx in args.dx for k in args.kernels}
     print(table([row(r) for r in rows.values()]))
     print(jtable([row(r) for r in rows.values()]))
     if args.figures and rows:
