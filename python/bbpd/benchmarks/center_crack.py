@@ -160,19 +160,14 @@ def main(argv=None):
     ap.add_argument("--dynamic", help="instead: comma-separated ramps in transit times, on the "
                     "first kernel and case (default the first of CASES)")
     args = ap.parse_args(argv)
+    cases = ([(float(c.split(":")[0]), int(c.split(":")[1])) for c in args.cases.split(",")]
+             if args.cases else CASES + (FULL_EXTRA if args.full else ()))
+    kernels = [f"lps/{k}" if args.lps else k for k in args.kernels.split(",")]
     if args.dynamic:
-        delta, m = CASES[0]
-        if args.cases:
-            delta, m = float(args.cases.split(":")[0]), int(args.cases.split(":")[1].split(",")[0])
-        kernel = args.kernels.split(",")[0]
-        return dynamic_study(f"lps/{kernel}" if args.lps else kernel, delta, m,
-                             [float(r) for r in args.dynamic.split(",")], args.out, args.csv)
+        return dynamic_study(kernels[0], *cases[0], [float(r) for r in args.dynamic.split(",")],
+                             args.out, args.csv)
     rows = []
-    for kernel in args.kernels.split(","):
-        kernel = f"lps/{kernel}" if args.lps else kernel
-        cases = CASES + (FULL_EXTRA if args.full else ())
-        if args.cases:
-            cases = [(float(c.split(":")[0]), int(c.split(":")[1])) for c in args.cases.split(",")]
+    for kernel in kernels:
         for delta, m in cases:
             rows.append(initiation(kernel, delta, m, args.out))
             r = rows[-1]

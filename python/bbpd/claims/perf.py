@@ -3,6 +3,7 @@
 import csv
 
 from bbpd.jobs import ROOT
+from bbpd.markdown import table as md_table
 
 RESULTS = ROOT / "perf" / "results"
 # later files win: the plate and block measured again at a lower load, the memory after the
@@ -141,28 +142,24 @@ def simd_table(prefix):
     the path that ran and the load; the best ratio of each scene in bold."""
     runs = _simd_runs(prefix)
     best = {s: max(SIMD_PATHS, key=lambda p: _ratio(_scene(runs[p], s))) for s, _ in SIMD_SCENES}
-    lines = ["| `simd` | plate 2D: ours / `peri/pmb` (ms/step) | ratio | block 3D 41^3: ours / "
-             "`peri/pmb` (ms/step) | ratio | path run | load |", "|---|---|---|---|---|---|---|"]
+    out = []
     for p, rows in runs.items():
-        cells = []
+        cells = [p]
         for s, _ in SIMD_SCENES:
-            r = _scene(rows, s)
-            ratio = f"{_ratio(r):.1f}"
-            cells.append(f"{_ms(r['ours_loop_ms'])} / {_ms(r['pmb_loop_ms'])} | "
-                         + (f"**{ratio}**" if best[s] == p else ratio))
-        ran = ", ".join(_scene(rows, s)["path"] for s, _ in SIMD_SCENES)
-        lines.append(f"| {p} | {' | '.join(cells)} | {ran} | {_loads(rows)} |")
-    return "\n".join(lines)
+            r, ratio = _scene(rows, s), f"{_ratio(_scene(rows, s)):.1f}"
+            cells += [f"{_ms(r['ours_loop_ms'])} / {_ms(r['pmb_loop_ms'])}",
+                      f"**{ratio}**" if best[s] == p else ratio]
+        out.append(cells + [", ".join(_scene(rows, s)["path"] for s, _ in SIMD_SCENES), _loads(rows)])
+    return md_table(["`simd`", "plate 2D: ours / `peri/pmb` (ms/step)", "ratio",
+                     "block 3D 41^3: ours / `peri/pmb` (ms/step)", "ratio", "path run", "load"], out)
 
 
 def floor_table(prefix):
     """Per path the 3D block held still: the kernel's pair time against its floor (no_memory)."""
-    lines = ["| path (3D block held still, `perf/row_floor.py`) | kernel ms/step | floor "
-             "(`no_memory`) ms/step | ratio | load |", "|---|---|---|---|---|"]
-    for p in FLOOR_PATHS:
-        kernel, floor, load = _floor(RESULTS / f"{prefix}-row-floor-{p}.csv")
-        lines.append(f"| {p} | {kernel:.2f} | {floor:.2f} | {kernel / floor:.2f} | {load} |")
-    return "\n".join(lines)
+    floors = {p: _floor(RESULTS / f"{prefix}-row-floor-{p}.csv") for p in FLOOR_PATHS}
+    return md_table(["path (3D block held still, `perf/row_floor.py`)", "kernel ms/step",
+                     "floor (`no_memory`) ms/step", "ratio", "load"],
+                    [[p, f"{k:.2f}", f"{f:.2f}", f"{k / f:.2f}", load] for p, (k, f, load) in floors.items()])
 
 
 # LAMMPS's bpm/peri benchmark deck, ours against peri/* and bond_style bpm/peri

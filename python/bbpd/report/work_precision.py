@@ -422,16 +422,12 @@ def section(specs, results, figdir, notes):
 def summary_table(table):
     """Markdown: one row per benchmark, kernel, method and metric: error (run time) per
     resolution, coarsest first."""
-    keys = []
-    for r in table:
-        key = (r["benchmark"], r["kernel"], r["method"], r["error_metric"])
-        if key not in keys:
-            keys.append(key)
+    def key(r):
+        return r["benchmark"], r["kernel"], r["method"], r["error_metric"]
     body = []
-    for bench, kernel, method, metric in keys:
+    for bench, kernel, method, metric in dict.fromkeys(map(key, table)):    # in the table's order
         pts = sorted(((r["resolution"], r["error"], r["wall_s"]) for r in table
-                      if (r["benchmark"], r["kernel"], r["method"], r["error_metric"])
-                      == (bench, kernel, method, metric)), reverse=True)
+                      if key(r) == (bench, kernel, method, metric)), reverse=True)
         body.append([bench, kernel, METHOD_LABEL[method], metric,
                      "; ".join(f"{_fmt_dx(bench, dx)}: {_fmt_err(metric, e)} ({_fmt_s(w)})"
                                for dx, e, w in pts)])
