@@ -232,11 +232,7 @@ def damage_maps(workdirs, path, times_us=MAP_TIMES_US):
                 xy = np.array([pos[int(i)] for i in cols["id"]]) * 1e3
                 ax.scatter(xy[:, 0], xy[:, 1], c=cols["c_damage"], s=0.3, cmap="inferno_r",
                            vmin=0.0, vmax=0.6, marker="s", linewidths=0)
-                ax.set_xlim(-50, 50)
-                ax.set_ylim(-20, 20)
-                ax.set_aspect("equal")
-                ax.set_xticks([])
-                ax.set_yticks([])
+                ax.set(xlim=(-50, 50), ylim=(-20, 20), aspect="equal", xticks=[], yticks=[])
                 ax.set_title(f"{label}, t = {step * dt * 1e6:.0f} µs", fontsize=7)
     return Path(path)
 

@@ -300,8 +300,7 @@ def plot_figures(results, paper, cv, figdir):
                                       f"time step {', '.join(dts)} s", **dt_style))
                 handles.append(Line2D([], [], color="black", marker="o", linestyle="none",
                                       markerfacecolor="none", label="measured (LAMMPS + FFT)"))
-            ax.set_xlabel(r"wave number $k$ (1/m)")
-            ax.set_ylabel(ylabel)
+            ax.set(xlabel=r"wave number $k$ (1/m)", ylabel=ylabel)
             ax.set_title(f"{title} (m = {PAPER_M}, $\\delta$ = {PAPER_DELTA * 1e3:g} mm"
                          + (f", v = {v:g} m/s)" if what == "omega" else ")"))
             top = ax.secondary_xaxis("top", functions=(lambda k: k * dx, lambda q: q / dx))

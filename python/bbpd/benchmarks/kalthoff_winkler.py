@@ -403,8 +403,7 @@ def plot_damage_map(res, path):
     """Damage at the end of the run on the reference configuration (paper Fig. 14)."""
     with plots.figure(path, figsize=(3.6, 6.0)) as (fig, ax):
         fig.colorbar(damage_panel(ax, res, 4.0), ax=ax, label="damage")
-        ax.set_xlabel("x (mm)")
-        ax.set_ylabel("y (mm)")
+        ax.set(xlabel="x (mm)", ylabel="y (mm)")
         ax.set_title(f"{res['kernel']}, dx = {res['dx'] * 1e3:g} mm, "
                      f"t = {res['nsteps'] * res['dt'] * 1e6:.0f} us", fontsize=9)
     return path
@@ -430,11 +429,8 @@ def plot_paths(runs, path, title, fontsize=7):
             ax.plot([g["a"] * 1e3, (g["a"] + length * math.cos(ang)) * 1e3],
                     [y0 * 1e3, (y0 + sign * length * math.sin(ang)) * 1e3], "k--", linewidth=1.0,
                     label="70 deg (experiment)" if sign < 0 else None)
-        ax.set_aspect("equal")
-        ax.set_xlim(-5, g["Lx"] * 1e3 + 5)
-        ax.set_ylim(-5, g["Ly"] * 1e3 + 5)
-        ax.set_xlabel("x (mm)")
-        ax.set_ylabel("y (mm)")
+        ax.set(aspect="equal", xlim=(-5, g["Lx"] * 1e3 + 5), ylim=(-5, g["Ly"] * 1e3 + 5),
+               xlabel="x (mm)", ylabel="y (mm)")
         ax.legend(fontsize=fontsize - 1, loc="center left")
         ax.set_title(title, fontsize=fontsize + 1)
     return path

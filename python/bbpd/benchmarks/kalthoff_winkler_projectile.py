@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import csvfile
+from bbpd import csvfile, readers
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as study
@@ -91,11 +91,8 @@ def measure_contact(d, dt):
 def loop_cpu(text):
     """CPU seconds of the run's loop, all ranks: LAMMPS's loop (wall) time x its CPU use.
     On a shared machine the wall time follows the load; the CPU time much less."""
-    loop = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs", text)
-    use = re.search(r"([0-9.]+)% CPU use with (\d+) MPI tasks", text)
-    if not (loop and use):
-        return None
-    return float(loop[1]) * float(use[1]) / 100.0 * int(use[2])
+    loop, use = readers.loop_time(text)[0], re.search(r"([0-9.]+)% CPU use with (\d+) MPI tasks", text)
+    return None if loop is None or use is None else loop * float(use[1]) / 100.0 * int(use[2])
 
 
 def analyse(workdir):

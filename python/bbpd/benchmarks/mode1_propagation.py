@@ -241,9 +241,7 @@ def figures(rows, folder, prefix=""):
             ax_v.plot(tv / t_c, np.array(v) / prob.c_r, style, color=color, label=label)
         for ax, ylabel in ((ax_l, "crack extension l - a (m)"), (ax_v, "crack speed v / c_R")):
             ax.axvline(prob.t_end / t_c, color="k", lw=0.8, ls=":")
-            ax.set_xlabel("t / t_c")
-            ax.set_ylabel(ylabel)
-            ax.set_xlim(1.0, 3.2)
+            ax.set(xlabel="t / t_c", ylabel=ylabel, xlim=(1.0, 3.2))
             ax.legend(fontsize=7, ncol=2)
         ax_v.set_ylim(0.0, 1.05)
         ax_v.set_title(f"v: slope of l(t) over +-{SPEED_HALF_WINDOW:g} t_c", fontsize=9)

@@ -404,13 +404,10 @@ def figure(rows, path, H_over_delta=SWEEP_H_OVER_DELTA):
                 a2.plot([r["v_ss_over_cR"] for r in run], [r["Gamma_over_Gc"] for r in run], ls=ls,
                         marker="o", color=COLORS[k], label=f"{k}, m = {m:g}")
         a1.axvline(1.0, color="0.6", lw=0.8)
-        a1.set_xlabel("Delta' = U'/G_c (model)")
-        a1.set_ylabel("v_ss / c_R")
-        a1.set_title(f"steady speed (H = {H_over_delta:g} delta; 0: arrested)")
+        a1.set(xlabel="Delta' = U'/G_c (model)", ylabel="v_ss / c_R",
+               title=f"steady speed (H = {H_over_delta:g} delta; 0: arrested)")
         a2.axhline(1.0, color="0.6", lw=0.8)
-        a2.set_xlabel("v_ss / c_R")
-        a2.set_ylabel("Gamma / G_c")
-        a2.set_title("energy the broken bonds take")
+        a2.set(xlabel="v_ss / c_R", ylabel="Gamma / G_c", title="energy the broken bonds take")
         for a in (a1, a2):
             a.grid(alpha=0.3)
             a.legend(fontsize=7)

@@ -171,8 +171,7 @@ BPM_MODELS = ("pmb", "lps", "ves", "eps")
 def vs_bpm(data):
     """doc/performance.md's table of perf/vs_bpm.py: per CPU, rank count and model the minimum
     loop time of each variant over the rounds, and the ratios of peri/* and bpm/peri to ours."""
-    lines = ["| CPU, path, load | ranks | model | `peri/*` (s) | `bpm/peri` (s) | ours (s) | "
-             "`peri/*` / ours | `bpm/peri` / ours |", "|" + "---|" * 8]
+    out = []
     for path in VS_BPM_FILES:
         rows = _rows(path)
         r0 = rows[0]
@@ -189,10 +188,10 @@ def vs_bpm(data):
                         best[r["variant"]] = min(best.get(r["variant"], t), t)
                 if not best:
                     continue
-                cell = {v: f"{best[v]:.2f}" if v in best else "-" for v in ("legacy", "bpm", "ours")}
-                ratio = {v: f"{best[v] / best['ours']:.2f}×" if v in best and "ours" in best else "-"
-                         for v in ("legacy", "bpm")}
-                lines.append(f"| {where} | {ranks} | {model} | {cell['legacy']} | {cell['bpm']} | "
-                             f"{cell['ours']} | {ratio['legacy']} | {ratio['bpm']} |")
+                out.append([where, ranks, model]
+                            + [f"{best[v]:.2f}" if v in best else "-" for v in ("legacy", "bpm", "ours")]
+                            + [f"{best[v] / best['ours']:.2f}×" if v in best and "ours" in best else "-"
+                               for v in ("legacy", "bpm")])
                 where = ""
-    return "\n".join(lines)
+    return md_table(["CPU, path, load", "ranks", "model", "`peri/*` (s)", "`bpm/peri` (s)", "ours (s)",
+                     "`peri/*` / ours", "`bpm/peri` / ours"], out)
