@@ -45,18 +45,14 @@ def scene_table(files):
         for r in _rows(path):
             rows[r["scene"]] = r
             source[r["scene"]] = path.name
-    lines = ["| scene | ours | peri/pmb | ratio |", "|---|---|---|---|"]
-    used = []
+    table, used = [], []
     for prefix, name, unit in SCENES:
-        scene = next(s for s in rows if s.startswith(prefix))
-        r = rows[scene]
-        used.append(scene)
+        used.append(next(s for s in rows if s.startswith(prefix)))
+        r = rows[used[-1]]
         ours, pmb = float(r["ours_loop_ms"]), float(r["pmb_loop_ms"])
-        if unit == "s":
-            cells = f"{ours:.2f} s | {pmb:.2f} s"
-        else:
-            cells = f"{_ms(r['ours_loop_ms'])} ms/step | {_ms(r['pmb_loop_ms'])} ms/step"
-        lines.append(f"| {name} | {cells} | {pmb / ours:.1f}× |")
+        table.append([name, *([f"{ours:.2f} s", f"{pmb:.2f} s"] if unit == "s" else
+                              [f"{_ms(r[k])} ms/step" for k in ("ours_loop_ms", "pmb_loop_ms")]),
+                      f"{pmb / ours:.1f}×"])
     margin_scene = next(s for s in rows if s.startswith(MARGIN))
     used.append(margin_scene)
     margin = rows[margin_scene]
@@ -71,7 +67,7 @@ def scene_table(files):
             f"path, one core, load {_loads([rows[s] for s in used])}, {runs}, {r0['date'][:10]}; "
             + ", ".join(f"`perf/results/{f}`" for f in sorted({source[s] for s in used}, key=names.index))
             + ":")
-    return (head + "\n\n" + "\n".join(lines) + "\n\nMemory at the margin (max RSS, block 41³ → "
+    return (head + "\n\n" + md_table(["scene", "ours", "peri/pmb", "ratio"], table) + "\n\nMemory at the margin (max RSS, block 41³ → "
             f"51³): {float(margin['bytes_per_bond']):.1f} bytes per bond.")
 
 
@@ -83,10 +79,7 @@ LPS_FILES = ((RESULTS / "spr-lps-cylinder.csv", "AVX-512"), (RESULTS / "zen3-lps
 def lps_cylinder(data):
     """doc/performance.md's bbpd/lps against peri/lps: per CPU the minimum loop and processor
     times of the rounds, their ratios, and LAMMPS's memory per rank where the CSV has it."""
-    head = ("| CPU | vector ISA | `peri/lps` loop, min (s) | `bbpd/lps` loop, min (s) | loop ratio "
-            "(rounds) | processor time ratio | memory per rank: `peri/lps` / `bbpd/lps` (MB) | "
-            "bytes per bond |")
-    lines = [head, "|" + "---|" * 8]
+    out = []
     for path, isa in LPS_FILES:
         rows = _rows(path)
         by = {s: [r for r in rows if r["style"] == s] for s in ("peri/lps", "bbpd/lps")}
@@ -98,15 +91,17 @@ def lps_cylinder(data):
         if r0.get("memory_mb"):
             mem = {s: float(rs[0]["memory_mb"]) for s, rs in by.items()}
             per_bond = {s: mem[s] * 1e6 / float(rs[0]["bonds"]) for s, rs in by.items()}
-            memory = (f"{mem['peri/lps']:.2f} / {mem['bbpd/lps']:.2f} | "
-                      f"{per_bond['peri/lps']:.1f} / {per_bond['bbpd/lps']:.1f}")
+            memory = [f"{mem['peri/lps']:.2f} / {mem['bbpd/lps']:.2f}",
+                      f"{per_bond['peri/lps']:.1f} / {per_bond['bbpd/lps']:.1f}"]
         else:
-            memory = "not recorded | "
-        lines.append(f"| {r0['cpu']} (family {r0['family']} model {r0['model']}) | "
-                     f"{isa} | {loop['peri/lps']:.2f} | "
-                     f"{loop['bbpd/lps']:.2f} | **{loop['peri/lps'] / loop['bbpd/lps']:.2f}** "
-                     f"({rounds}) | {cpu['peri/lps'] / cpu['bbpd/lps']:.2f} | {memory} |")
-    return "\n".join(lines)
+            memory = ["not recorded", ""]
+        out.append([f"{r0['cpu']} (family {r0['family']} model {r0['model']})", isa,
+                    f"{loop['peri/lps']:.2f}", f"{loop['bbpd/lps']:.2f}",
+                    f"**{loop['peri/lps'] / loop['bbpd/lps']:.2f}** ({rounds})",
+                    f"{cpu['peri/lps'] / cpu['bbpd/lps']:.2f}", *memory])
+    return md_table(["CPU", "vector ISA", "`peri/lps` loop, min (s)", "`bbpd/lps` loop, min (s)",
+                     "loop ratio (rounds)", "processor time ratio",
+                     "memory per rank: `peri/lps` / `bbpd/lps` (MB)", "bytes per bond"], out)
 
 
 # One CPU's run-time SIMD choice (doc/performance.md): perf/pair_vs_pmb.py --simd PATH and
