@@ -85,10 +85,8 @@ def measure(t, vec, tips, dx):
     """The numbers of one run from the tip outputs: t (s), vec (tip.dat values per output),
     tips ({index of output: rows})."""
     ext, ntips = vec[:, 2], vec[:, 6]
-    res = {"t_init_us": float("nan"), "t_split_us": float("nan"), "t_seen_us": float("nan"),
-           "x_split_mm": float("nan"), "y_split_mm": float("nan"), "angle_deg": float("nan"),
-           "v_pre": float("nan"), "v_mean": float("nan"), "mirror_x_dx": float("nan"),
-           "mirror_y_dx": float("nan")}
+    res = dict.fromkeys(("t_split_us", "t_seen_us", "x_split_mm", "y_split_mm", "angle_deg",
+                         "v_pre", "v_mean", "mirror_x_dx", "mirror_y_dx"), float("nan"))
     grown = np.flatnonzero(ext > 0.0)
     t_init = float(t[grown[0]]) if grown.size else float("nan")
     res["t_init_us"] = 1e6 * t_init
