@@ -30,6 +30,8 @@ import math
 import numpy as np
 from scipy.optimize import minimize_scalar
 
+from bbpd import dsif
+
 PLANE_STRESS = "plane/stress"
 PLANE_STRAIN = "plane/strain"
 PLANES = (PLANE_STRESS, PLANE_STRAIN)
@@ -150,15 +152,10 @@ def kolosov(nu, plane):
 
 def williams_displacement(x, y, KI, KII, mu, nu, plane):
     """Leading-term displacement (u_x, u_y) at (x, y) in the crack-tip frame (tip at the
-    origin, crack along -x): u = K/(2 mu) sqrt(r/(2 pi)) f(theta, kappa)."""
-    kappa = kolosov(nu, plane)
+    origin, crack along -x): bbpd.dsif.williams_displacement at r, theta of (x, y)."""
     x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
-    r, t = np.hypot(x, y), np.arctan2(y, x)
-    a = np.sqrt(r / (2.0 * math.pi)) / (2.0 * mu)
-    c, s = np.cos(t / 2), np.sin(t / 2)
-    ux = a * (KI * c * (kappa - 1 + 2 * s**2) + KII * s * (kappa + 1 + 2 * c**2))
-    uy = a * (KI * s * (kappa + 1 - 2 * c**2) - KII * c * (kappa - 1 - 2 * s**2))
-    return ux, uy
+    return dsif.williams_displacement(KI, KII, np.hypot(x, y), np.arctan2(y, x), mu,
+                                      kolosov(nu, plane))
 
 
 def mixity_angle(KI, KII):

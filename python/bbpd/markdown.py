@@ -6,11 +6,13 @@ import math
 
 def cell(v, spec=".2f"):
     """v formatted by spec (a number written as text is read first); '-' where it is missing
-    (None, an empty CSV cell, NaN)"""
+    (None, an empty CSV cell, NaN); a value that rounds to zero without its sign (a straight
+    crack measured at -1e-15 deg is 0.0, not -0.0)"""
     if v is None or v == "":
         return "-"
     v = float(v) if isinstance(v, str) else v
-    return "-" if isinstance(v, float) and math.isnan(v) else format(v, spec)
+    text = "-" if isinstance(v, float) and math.isnan(v) else format(v, spec)
+    return text[1:] if text[:1] == "-" and text[1:] and not text[1:].strip("0.") else text
 
 
 def made_by(commands):

@@ -39,8 +39,7 @@ def plot_k(path, series, refs, window, title, xlabel, ylabel):
         for n, x in enumerate(x for x in window if x > 0):
             ax.axvline(x, color="grey", linestyle=":", linewidth=1.0,
                        label="window of the comparison" if n == 0 else None)
-        ax.set_xlabel(xlabel)
-        ax.set_ylabel(ylabel)
+        ax.set(xlabel=xlabel, ylabel=ylabel)
         ax.set_title(title, fontsize=10)
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8, loc="upper left")

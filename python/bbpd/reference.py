@@ -149,6 +149,5 @@ def classical_energy_density(model, E, strain):
         e11, e22, e12 = eps[0, 0], eps[1, 1], eps[0, 1]
         return E / (2.0 * (1.0 - nu**2)) * (e11**2 + e22**2 + 2.0 * nu * e11 * e22
                                              + 2.0 * (1.0 - nu) * e12**2)
-    lam = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
-    mu = E / (2.0 * (1.0 + nu))
+    lam, mu = lame_moduli(model, E, nu)
     return 0.5 * lam * np.trace(eps) ** 2 + mu * np.sum(eps * eps)

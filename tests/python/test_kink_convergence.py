@@ -6,6 +6,7 @@ import pytest
 
 from bbpd.benchmarks import kink_convergence as kc
 from bbpd.benchmarks import kink_limit as kl
+from bbpd.markdown import cell
 
 
 def row(m, rd, a2, a4, kernel="gaussian"):
@@ -111,8 +112,8 @@ def test_each_run_names_the_cpu_that_timed_it():
 
 
 def test_a_straight_crack_reads_zero_not_minus_zero():
-    assert kc._f(-1e-15) == "0.0" and kc._f(-0.04) == "0.0" and kc._f(-0.06) == "-0.1"
-    assert kc._f(None) == "-"
+    assert cell(-1e-15, ".1f") == "0.0" and cell(-0.04, ".1f") == "0.0" and cell(-0.06, ".1f") == "-0.1"
+    assert cell(None, ".1f") == "-" and cell(-1e-15, "+.2f") == "0.00" and cell(-2.0, "g") == "-2"
 
 
 def test_the_figure_draws_every_mix_with_its_error_bars(tmp_path):

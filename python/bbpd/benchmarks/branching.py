@@ -13,6 +13,7 @@ from bbpd import crack_tip, csvfile, freund, plots, readers
 from bbpd import jobs as jobmod
 from bbpd.provenance import cpu
 from bbpd.kernels import KERNELS
+from bbpd.markdown import table as md_table
 from bbpd.runner import run_or_reuse
 from bbpd.benchmarks import cli
 
@@ -84,10 +85,8 @@ def measure(t, vec, tips, dx):
     """The numbers of one run from the tip outputs: t (s), vec (tip.dat values per output),
     tips ({index of output: rows})."""
     ext, ntips = vec[:, 2], vec[:, 6]
-    res = {"t_init_us": float("nan"), "t_split_us": float("nan"), "t_seen_us": float("nan"),
-           "x_split_mm": float("nan"), "y_split_mm": float("nan"), "angle_deg": float("nan"),
-           "v_pre": float("nan"), "v_mean": float("nan"), "mirror_x_dx": float("nan"),
-           "mirror_y_dx": float("nan")}
+    res = dict.fromkeys(("t_split_us", "t_seen_us", "x_split_mm", "y_split_mm", "angle_deg",
+                         "v_pre", "v_mean", "mirror_x_dx", "mirror_y_dx"), float("nan"))
     grown = np.flatnonzero(ext > 0.0)
     t_init = float(t[grown[0]]) if grown.size else float("nan")
     res["t_init_us"] = 1e6 * t_init
@@ -132,13 +131,8 @@ def measure(t, vec, tips, dx):
 
 def run(name, workdir, reuse=False, nprocs=1):
     """Run one entry of RUNS in workdir (reuse: measure an earlier run's outputs) and
-    measure it."""
+    measure it (the report's job)."""
     return run_case(workdir, *RUNS[name], name=name, reuse=reuse, nprocs=nprocs)
-
-
-def job(workdir, name):
-    """One entry of RUNS for bbpd.jobs (the report)."""
-    return run(name, workdir)
 
 
 def run_case(workdir, kernel, delta, m, sigma, name=None, reuse=False, nprocs=1):
@@ -189,11 +183,7 @@ def grown(r):
 
 def table(rows):
     """The README table of the results CSV (a run whose crack jumped: no split or speed)."""
-    head = ("| kernel | δ (mm) | m | σ (MPa) | atoms | t_init (µs) | v before split (m/s), "
-            "/c_R | mean v to split, /c_R | first split: t (µs), seen (µs), x (mm), y (mm) | "
-            "branch angle (°) | v at end, /c_R | tips, splits at end | mirror: tips (dx), "
-            "damage (%) | v_max/c_R | loop (s) |")
-    lines = [head, "|" + "---|" * (head.count("|") - 1)]
+    out = []
     for r in rows:
         cells = [r["kernel"], f"{r['delta_mm']:g}", f"{r['m']:g}", f"{r['sigma_MPa']:g}",
                  f"{int(r['atoms'])}", _f(r["t_init_us"], ".2f")]
@@ -210,9 +200,12 @@ def table(rows):
         else:
             cells += ["mid-line broken by the loading waves: no crack growth to measure"] + \
                      ["–"] * 5 + [f"–, {_f(100 * r['mirror_damage_frac'], '.1f')}"]
-        cells += [_f(r["v_max_over_cR"], ".2f"), _f(r["loop_s"], ".0f")]
-        lines.append("| " + " | ".join(cells) + " |")
-    return "\n".join(lines)
+        out.append(cells + [_f(r["v_max_over_cR"], ".2f"), _f(r["loop_s"], ".0f")])
+    return md_table(("kernel", "δ (mm)", "m", "σ (MPa)", "atoms", "t_init (µs)",
+                     "v before split (m/s), /c_R", "mean v to split, /c_R",
+                     "first split: t (µs), seen (µs), x (mm), y (mm)", "branch angle (°)",
+                     "v at end, /c_R", "tips, splits at end", "mirror: tips (dx), damage (%)",
+                     "v_max/c_R", "loop (s)"), out)
 
 
 FIGURE = "damage_maps.png"
@@ -237,11 +230,7 @@ def damage_maps(workdirs, path, times_us=MAP_TIMES_US):
                 xy = np.array([pos[int(i)] for i in cols["id"]]) * 1e3
                 ax.scatter(xy[:, 0], xy[:, 1], c=cols["c_damage"], s=0.3, cmap="inferno_r",
                            vmin=0.0, vmax=0.6, marker="s", linewidths=0)
-                ax.set_xlim(-50, 50)
-                ax.set_ylim(-20, 20)
-                ax.set_aspect("equal")
-                ax.set_xticks([])
-                ax.set_yticks([])
+                ax.set(xlim=(-50, 50), ylim=(-20, 20), aspect="equal", xticks=[], yticks=[])
                 ax.set_title(f"{label}, t = {step * dt * 1e6:.0f} µs", fontsize=7)
     return Path(path)
 
@@ -272,19 +261,15 @@ def cost_table(rows):
     """Work against precision at 2 MPa: per kernel and resolution, the loop time and the
     distance of the split (x, t) from that of the kernel's finest run (not an error: the
     finest run is not converged, see the findings)."""
-    by = {r["run"]: r for r in rows}
-    lines = ["| kernel | resolution | atoms | loop (s) | x_split − finest (mm) | "
-             "t_split − finest (µs) |", "|---|---|---|---|---|---|"]
+    by, out = {r["run"]: r for r in rows}, []
     for k in KERNELS:
         runs = [by[n] for n in (f"{k}-s2-m3", f"{k}-s2-m4", f"{k}-s2-m4-d0.5") if n in by]
-        if not runs:
-            continue
-        finest = min(runs, key=lambda r: r["dx_mm"])
-        for r in runs:
-            lines.append(f"| {k} | δ = {r['delta_mm']:g} mm, m = {r['m']:g} | {int(r['atoms'])} | "
-                         f"{r['loop_s']:.0f} | {r['x_split_mm'] - finest['x_split_mm']:+.2f} | "
-                         f"{r['t_split_us'] - finest['t_split_us']:+.2f} |")
-    return "\n".join(lines)
+        finest = min(runs, key=lambda r: r["dx_mm"], default=None)
+        out += [[k, f"δ = {r['delta_mm']:g} mm, m = {r['m']:g}", int(r["atoms"]), f"{r['loop_s']:.0f}",
+                 f"{r['x_split_mm'] - finest['x_split_mm']:+.2f}",
+                 f"{r['t_split_us'] - finest['t_split_us']:+.2f}"] for r in runs]
+    return md_table(["kernel", "resolution", "atoms", "loop (s)", "x_split − finest (mm)",
+                     "t_split − finest (µs)"], out)
 
 
 # --------------------------------------------------------------------------- report
@@ -296,6 +281,21 @@ REPORT_SETUP = ("Plate 100 x 40 mm, notch from the left edge to the centre along
                 "along them, 43 us; tips, splits and speeds from compute bbpd/crack/tip with "
                 "branches yes; c_R = %.0f m/s (the model's, nu = 1/3); see "
                 "examples/crack-branching/README.md." % C_R)
+
+
+# the report's runs: the Gaussian kernel at sigma = 2 MPa, delta = 1 mm, m = 4 (45 s); --full
+# adds DEFAULT_RUNS; one single-rank run's wall time (s) by m
+REPORT_RUNS = ("gaussian-s2-m4",)
+ESTIMATE_S = {4: 60.0, 3: 25.0}
+
+
+def jobs(full=False):
+    """The report's branching runs as bbpd.report specs."""
+    inputs = (EXAMPLE, Path(__file__), Path(readers.__file__), Path(freund.__file__),
+              Path(__file__).with_name("mode1_propagation.py"))
+    return jobmod.report_specs("branching", "bbpd.benchmarks.branching:run", inputs, (
+        (RUNS[n][0], RUNS[n][1] / RUNS[n][2], f"crack branching {n}", {"name": n},
+         ESTIMATE_S.get(RUNS[n][2], 400.0)) for n in (DEFAULT_RUNS if full else REPORT_RUNS)))
 
 
 def section(specs, results, figdir, notes):

@@ -1,31 +1,12 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Crack initiation in a centre-cracked plate under displacement-controlled tension: in.center-crack
-relaxed by fix bbpd/relax, the far-field stress at which the pre-crack starts to grow against LEFM.
+relaxed by fix bbpd/relax, the far-field stress at which the pre-crack starts to grow against LEFM
+(Tada's finite-width factor), the grip opening bisected with one LAMMPS run of one load step per
+trial; --dynamic RAMPS: the same initiation from explicit dynamics, the grips opened to the LEFM
+opening over RAMP transit times. examples/quasi-static/README.md ("Crack initiation in a
+centre-cracked plate") has the reference, the bisection, the kernels and the commands.
 
     tools/python -m bbpd.benchmarks.center_crack [--full] [--kernels K1,K2] [--csv NAME]
-
-Kernels: the bond-based constant, triangular, gaussian (pair_style bbpd/KERNEL, nu = 1/3) and
-pmb (bbpd/pmb, kernel_vars), the state-based lps/constant, lps/triangular, lps/gaussian (pair_style bbpd/lps/KERNEL
-plane/stress, pair_coeff E nu Gc delta with nu = LPS_NU, the bond-based value, so that the two
-families model the same plate).
-
-LEFM (plane stress): the crack grows when K_I = sigma sqrt(pi a) F(a/b) reaches
-K_Ic = sqrt(E G_c), with a the half crack length, b = W/2 the half width and Tada's finite-width
-factor F = (1 - 0.025 (a/b)^2 + 0.06 (a/b)^4) sqrt(sec(pi a / (2 b))), 0.1 % for any a/b
-(Tada, Paris & Irwin, The Stress Analysis of Cracks Handbook, 3rd ed., 2000, Part II: the centre
-crack in a strip under remote tension; Feddersen's sqrt(sec) alone is 0.25 % higher at a/b = 0.4).
-
-The initiation load is bisected in the grip opening u: one LAMMPS run per trial, one load step
-from the reference state to u (the body is linear elastic until a bond breaks, so the converged
-state at u does not depend on the path), and the trial answers whether bonds break in the
-converged state. sigma_c lies between the stress of the highest trial without a broken bond and
-the stiffness times the lowest opening with one; the bisection stops when they differ by REL_RES.
-
---dynamic RAMPS: the same initiation from explicit dynamics (in.center-crack -var solver dynamic):
-the grips open at a constant rate that reaches the LEFM opening after RAMP transit times, and the
-run stops at the first broken bond; its load is the plate's elastic stiffness (from the relaxed
-probe) times the opening then, beside the grips' reaction. Against the bisection to REL_RES and
-to TIGHT_RES, in results/center_crack_dynamic.csv.
 """
 import argparse
 import math
@@ -65,7 +46,8 @@ def kernel_vars(kernel, delta):
 
 
 def tada_factor(a_over_b):
-    """finite-width factor of a centre crack in a strip under remote tension (Tada)"""
+    """finite-width factor of a centre crack in a strip under remote tension, 0.1 % for any a/b
+    (Tada, Paris & Irwin, The Stress Analysis of Cracks Handbook, 3rd ed., 2000, Part II)"""
     r = a_over_b
     return (1.0 - 0.025 * r ** 2 + 0.06 * r ** 4) * math.sqrt(1.0 / math.cos(math.pi * r / 2))
 
@@ -103,25 +85,15 @@ def initiation(kernel, delta, m, out, rel_res=REL_RES):
     iters = CAP_FACTOR * first["iterations"] + 100
     lo, hi, trials, wall, its = None, None, 1, first["wall_s"], first["iterations"]
     u = FIRST_GUESS * s_lefm / k
-    while lo is None or hi is None:
-        r = trial(kernel, delta, m, u, out, iters)
-        trials, wall, its = trials + 1, wall + r["wall_s"], its + r["iterations"]
-        if r["broken"]:
-            hi, at_hi = u, r
-            u /= STEP
-        else:
-            lo, s_lo = u, r["stress"]
-            u *= STEP
-        if lo is not None and hi is not None:
-            break
-    while hi / lo - 1.0 > rel_res:
-        u = 0.5 * (lo + hi)
+    # widen by STEP until a trial breaks bonds and one does not, then bisect
+    while lo is None or hi is None or hi / lo - 1.0 > rel_res:
         r = trial(kernel, delta, m, u, out, iters)
         trials, wall, its = trials + 1, wall + r["wall_s"], its + r["iterations"]
         if r["broken"]:
             hi, at_hi = u, r
         else:
             lo, s_lo = u, r["stress"]
+        u = u / STEP if lo is None else u * STEP if hi is None else 0.5 * (lo + hi)
     s_hi = s_lo * hi / lo
     s_c = 0.5 * (s_lo + s_hi)
     return {"kernel": kernel, "delta_mm": delta * 1e3, "m": m, "atoms": first["atoms"],
@@ -188,19 +160,14 @@ def main(argv=None):
     ap.add_argument("--dynamic", help="instead: comma-separated ramps in transit times, on the "
                     "first kernel and case (default the first of CASES)")
     args = ap.parse_args(argv)
+    cases = ([(float(c.split(":")[0]), int(c.split(":")[1])) for c in args.cases.split(",")]
+             if args.cases else CASES + (FULL_EXTRA if args.full else ()))
+    kernels = [f"lps/{k}" if args.lps else k for k in args.kernels.split(",")]
     if args.dynamic:
-        delta, m = CASES[0]
-        if args.cases:
-            delta, m = float(args.cases.split(":")[0]), int(args.cases.split(":")[1].split(",")[0])
-        kernel = args.kernels.split(",")[0]
-        return dynamic_study(f"lps/{kernel}" if args.lps else kernel, delta, m,
-                             [float(r) for r in args.dynamic.split(",")], args.out, args.csv)
+        return dynamic_study(kernels[0], *cases[0], [float(r) for r in args.dynamic.split(",")],
+                             args.out, args.csv)
     rows = []
-    for kernel in args.kernels.split(","):
-        kernel = f"lps/{kernel}" if args.lps else kernel
-        cases = CASES + (FULL_EXTRA if args.full else ())
-        if args.cases:
-            cases = [(float(c.split(":")[0]), int(c.split(":")[1])) for c in args.cases.split(",")]
+    for kernel in kernels:
         for delta, m in cases:
             rows.append(initiation(kernel, delta, m, args.out))
             r = rows[-1]

@@ -1,36 +1,13 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Load-displacement through crack growth and the energy account of the centre-cracked plate:
 in.center-crack with fix bbpd/relax, the grips opened step by step from below initiation until
-the plate comes apart.
+the plate comes apart; per load step the opening, the grips' reaction, the elastic and
+broken-bond energies, the work done on the body and what the account W = U + B + D leaves
+(examples/quasi-static/README.md, "Load-displacement through crack growth, and the energy
+account", derives the work and the account and has the commands).
 
     tools/python -m bbpd.benchmarks.center_crack_growth [--kernel K] [--delta D] [--m M]
         [--du FRACTION] [--csv NAME]
-
-Per load step (one LAMMPS run of the loop in in.center-crack) the driver reads the opening u,
-the reaction force F of the grips (the mean of the two: fix setforce's totals), the elastic
-energy U and the broken-bond energy B (compute bbpd/energy), the residual relative to its
-reference, the iterations, relaxations and bonds broken, the crack tip and the wall time.
-
-The work in. Between the converged states of two load steps the bonds are held, so the body is
-linear elastic with the bonds that the last state left, from a stress-free reference: its
-stiffness is the secant k = F/u of that state, and while the grips open from u_{k-1} to u_k the
-load rises along it. Bonds break only at fixed opening, where the grips do no work. So the work
-done on the body is exactly
-
-    W = sum_k 1/2 k_{k-1} (u_k^2 - u_{k-1}^2),   k_{k-1} = F_{k-1} / u_{k-1},
-
-the trapezoid rule over each load step with the load before breaking at its end (F_{k-1}
-u_k / u_{k-1}), not the converged load after breaking (a trapezoid over the converged points,
-W_trap, misses the triangle of each load drop; it is written for comparison). The elastic
-energy before the bonds of load step k break is likewise U_k^- = 1/2 k_{k-1} u_k^2 (Clapeyron;
-checked: U = 1/2 F u in every converged state, column clapeyron).
-
-The account. W = U + B + D: what the broken bonds carry away (B, the energy of each bond at its
-critical stretch, compute bbpd/energy) and what the body keeps (U) leave D, the energy released
-at fixed opening beyond B: the relaxation after bonds broke (the kinetic energy of a dynamic
-body, which a relaxation damps) and the bonds' energy above the critical stretch when they broke
-(a load step overshoots it). Per load step D_k = (U_k^- - U_k) - (B_k - B_{k-1}); at the
-first break the two parts are measured apart (breaking_split, *_initiation_split.csv).
 """
 import argparse
 import re
@@ -105,7 +82,11 @@ def breaking_split(kernel, delta, m, u, out):
 
 
 def account(steps):
-    """add the work, the energy released at fixed opening and the account to each load step"""
+    """add the work, the energy released at fixed opening and the account to each load step:
+    the bonds are held between two converged states, so the load rises along the secant
+    k_{k-1} = F_{k-1}/u_{k-1} and W = sum_k 1/2 k_{k-1} (u_k^2 - u_{k-1}^2) (W_trap: the
+    trapezoid over the converged points, for comparison); U_k^- = 1/2 k_{k-1} u_k^2 before the
+    bonds of step k break, D_k = (U_k^- - U_k) - (B_k - B_{k-1})"""
     w = w_trap = d = 0.0
     prev = None
     for s in steps:

@@ -17,13 +17,11 @@ import re
 from pathlib import Path
 
 from bbpd import csvfile, provenance
-from bbpd.benchmarks.center_crack_growth import account
+from bbpd.benchmarks.center_crack_growth import RELAX, account
 from bbpd.benchmarks.plate_hole import HERE, run_lammps
 
 LINE = re.compile(r"DCB: u (\S+) broken (\d+) F (\S+) U (\S+) B (\S+) iterations (\d+) "
                   r"converged (\d) step (\d+)")
-RELAX = re.compile(r"^bbpd/relax: load step (\d+) (?:converged|NOT converged) at step \d+: .*, "
-                   r"([0-9.e+-]+) s$", re.M)
 
 
 def path(out, dx=0.5e-3, m=4, u=10e-6, du=0.5e-6, steps=24, kernel="gaussian"):

@@ -248,7 +248,7 @@ def measured_group_velocity(meas):
     return np.gradient(meas["omega"], meas["k"])
 
 
-def plot_figures(results, paper, cv, figdir, v=None):
+def plot_figures(results, paper, cv, figdir):
     """Figs. 4-6 (omega, phase and group velocity vs k; m = 5, delta = 1 mm) for the three
     kernels: continuous (eq. 29), discrete as printed (eq. 31), discrete with C_v, and, where a
     run exists, discrete with C_v and the run's time step (what LAMMPS integrates) with the
@@ -256,8 +256,7 @@ def plot_figures(results, paper, cv, figdir, v=None):
     figdir = Path(figdir)
     figdir.mkdir(parents=True, exist_ok=True)
     runs = [r["info"] for r in results.values()]
-    if v is None:
-        v = math.sqrt(runs[0]["E"] / runs[0]["rho"]) if runs else 1.0
+    v = math.sqrt(runs[0]["E"] / runs[0]["rho"]) if runs else 1.0    # the runs' wave speed
     dx = PAPER_DELTA / PAPER_M
     relations = ((paper, "continuous", ":", "continuous (eq. 29)"),
                  (paper, "discrete", "--", "discrete (eq. 31 as printed)"),
@@ -301,8 +300,7 @@ def plot_figures(results, paper, cv, figdir, v=None):
                                       f"time step {', '.join(dts)} s", **dt_style))
                 handles.append(Line2D([], [], color="black", marker="o", linestyle="none",
                                       markerfacecolor="none", label="measured (LAMMPS + FFT)"))
-            ax.set_xlabel(r"wave number $k$ (1/m)")
-            ax.set_ylabel(ylabel)
+            ax.set(xlabel=r"wave number $k$ (1/m)", ylabel=ylabel)
             ax.set_title(f"{title} (m = {PAPER_M}, $\\delta$ = {PAPER_DELTA * 1e3:g} mm"
                          + (f", v = {v:g} m/s)" if what == "omega" else ")"))
             top = ax.secondary_xaxis("top", functions=(lambda k: k * dx, lambda q: q / dx))

@@ -62,9 +62,7 @@ def read_log(path):
         raise RuntimeError(f"{path}: no 'KW:' line; was it written by in.kalthoff_winkler?")
     info = dict(kernel=m[1], dx=float(m[2]), delta=float(m[3]), dt=float(m[4]), nsteps=int(m[5]),
                 Lx=float(m[6]), Ly=float(m[7]), ylo=float(m[8]), yhi=float(m[9]), a=float(m[10]))
-    setup = readers.pair_setup(text)
-    info["critical_stretch"] = setup["critical_stretch"]
-    info["dt_bound"] = setup["dt_bound"]
+    info.update(readers.pair_setup(text))    # s0, the time step's bound and its fraction
     info["loop_s"], info["nprocs"] = readers.loop_time(text)
     # in 3D the atoms inside the experiment's slot are deleted once dx is below its width:
     # the notch's flank atoms then lie up to slot/2 + dx from the notch line, not dx
@@ -107,7 +105,7 @@ def notch_cracks(x, y, phi, g):
         linked = np.zeros_like(crack)
         linked[idx[np.isin(labels, list(seeds))]] = True
         out[side] = linked & outer & (x > g["a"])
-        out[side + "_flank"] = linked & (x <= g["a"]) & (np.abs(y - yn) < g.get("flank", g["dx"]) + g["dx"])
+        out[side + "_flank"] = linked & (x <= g["a"]) & (np.abs(y - yn) < band + g["dx"])
     return out
 
 
@@ -247,11 +245,10 @@ def analyse(workdir):
         res[f"t_band_{side}_us"] = float(steps[band[0]] * dt * 1e6) if len(band) else None
     s_any = first_rise(steps, dall)
     res["t_first_break_us"] = None if s_any is None else s_any * dt * 1e6
-    inits = [res[f"t_init_{s}_us"] for s in ("lo", "hi") if res[f"t_init_{s}_us"] is not None]
-    res["t_init_us"] = min(inits) if inits else None
-    bands = [res[f"t_band_{s}_us"] for s in ("lo", "hi") if res[f"t_band_{s}_us"] is not None]
-    res["t_band_us"] = min(bands) if bands else None
-    res["first_break_at_tip"] = (res["t_first_break_us"] is not None and bool(inits)
+    for kind in ("init", "band"):    # the earlier tip's
+        res[f"t_{kind}_us"] = min((t for s in ("lo", "hi") if (t := res[f"t_{kind}_{s}_us"]) is not None),
+                                  default=None)
+    res["first_break_at_tip"] = (None not in (res["t_first_break_us"], res["t_init_us"])
                                  and abs(res["t_init_us"] - res["t_first_break_us"]) < 0.5 * dt * 1e6)
 
     # crack-tip trajectories from the damage snapshots, and the far-edge crack: new damage at
@@ -406,8 +403,7 @@ def plot_damage_map(res, path):
     """Damage at the end of the run on the reference configuration (paper Fig. 14)."""
     with plots.figure(path, figsize=(3.6, 6.0)) as (fig, ax):
         fig.colorbar(damage_panel(ax, res, 4.0), ax=ax, label="damage")
-        ax.set_xlabel("x (mm)")
-        ax.set_ylabel("y (mm)")
+        ax.set(xlabel="x (mm)", ylabel="y (mm)")
         ax.set_title(f"{res['kernel']}, dx = {res['dx'] * 1e3:g} mm, "
                      f"t = {res['nsteps'] * res['dt'] * 1e6:.0f} us", fontsize=9)
     return path
@@ -433,11 +429,8 @@ def plot_paths(runs, path, title, fontsize=7):
             ax.plot([g["a"] * 1e3, (g["a"] + length * math.cos(ang)) * 1e3],
                     [y0 * 1e3, (y0 + sign * length * math.sin(ang)) * 1e3], "k--", linewidth=1.0,
                     label="70 deg (experiment)" if sign < 0 else None)
-        ax.set_aspect("equal")
-        ax.set_xlim(-5, g["Lx"] * 1e3 + 5)
-        ax.set_ylim(-5, g["Ly"] * 1e3 + 5)
-        ax.set_xlabel("x (mm)")
-        ax.set_ylabel("y (mm)")
+        ax.set(aspect="equal", xlim=(-5, g["Lx"] * 1e3 + 5), ylim=(-5, g["Ly"] * 1e3 + 5),
+               xlabel="x (mm)", ylabel="y (mm)")
         ax.legend(fontsize=fontsize - 1, loc="center left")
         ax.set_title(title, fontsize=fontsize + 1)
     return path

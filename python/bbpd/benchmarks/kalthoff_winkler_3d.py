@@ -88,11 +88,10 @@ def measure(workdir, setup, dx, m):
            "nprocs": NPROCS if setup == "3d" else 1,
            "crack_stops": projectile.row(r)["crack_stops"]}
     row.update(log_figures(log))
-    if setup == "3d":
-        g = {k: r[k] for k in ("dx", "delta", "a", "ylo", "yhi", "Lx", "Ly", "dt", "flank")}
-        faces = face_angles(workdir, g, kw.T_EVAL_US)
-        row["fit_face_lo_deg"] = kw.mean_or_none([faces["lo"][sd]["fit"] for sd in ("lo", "hi")])
-        row["fit_face_hi_deg"] = kw.mean_or_none([faces["hi"][sd]["fit"] for sd in ("lo", "hi")])
+    if setup == "3d":    # r holds the run's geometry (kw.read_log)
+        faces = face_angles(workdir, r, kw.T_EVAL_US)
+        for f in ("lo", "hi"):
+            row[f"fit_face_{f}_deg"] = kw.mean_or_none([faces[f][sd]["fit"] for sd in ("lo", "hi")])
         row["chord_face_deg"] = kw.mean_or_none([faces[f][sd]["chord"] for f in ("lo", "hi")
                                                     for sd in ("lo", "hi")])
     return {c: row[c] for c in COLUMNS}

@@ -4,6 +4,7 @@ loading, bond-based and on bbpd/lps/KERNEL (DECKS), with the loading study's ang
 (examples/kalthoff-winkler/README.md, "The standard deck", has the commands).
 """
 
+import itertools
 import sys
 from pathlib import Path
 
@@ -173,15 +174,12 @@ def main(argv=None):
     a = ap.parse_args(argv)
     earlier, rows, made = csvfile.continue_csv(a.csv if a.append else None,
                                                cli.command("kalthoff_winkler_deck", argv))
-    for dx in a.dx:
-        for deck in a.decks:
-            for k in a.kernels:
-                wd = Path(a.work) / f"{deck}-{k}-dx{dx * 1e3:g}mm"
-                r = run_case(wd, deck, k, dx, a.nprocs, a.reuse)
-                print(f"{deck} {k} {dx * 1e3:g} mm: initial {_f(r['initial_deg'], '.1f')} fit "
-                      f"{_f(r['fit_deg'], '.1f')} chord {_f(r['chord_deg'], '.1f')} "
-                      f"stops {r['crack_stops']} loop CPU {_f(r['loop_cpu_s'], '.0f')} s", flush=True)
-                rows.append(r)
+    for dx, deck, k in itertools.product(a.dx, a.decks, a.kernels):
+        r = run_case(Path(a.work) / f"{deck}-{k}-dx{dx * 1e3:g}mm", deck, k, dx, a.nprocs, a.reuse)
+        print(f"{deck} {k} {dx * 1e3:g} mm: initial {_f(r['initial_deg'], '.1f')} fit "
+              f"{_f(r['fit_deg'], '.1f')} chord {_f(r['chord_deg'], '.1f')} "
+              f"stops {r['crack_stops']} loop CPU {_f(r['loop_cpu_s'], '.0f')} s", flush=True)
+        rows.append(r)
     if a.csv:
         csvfile.write_csv(a.csv, rows, comments=[*earlier, made,
                                                  f"timing: LAMMPS loop CPU time, {cpu()}"])

@@ -5,6 +5,7 @@ projectile.dat (examples/kalthoff-winkler/README.md, "Projectile and toughness",
 and has the commands).
 """
 
+import itertools
 import json
 import math
 import re
@@ -12,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import csvfile
+from bbpd import csvfile, readers
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kalthoff_winkler_study as study
@@ -90,11 +91,8 @@ def measure_contact(d, dt):
 def loop_cpu(text):
     """CPU seconds of the run's loop, all ranks: LAMMPS's loop (wall) time x its CPU use.
     On a shared machine the wall time follows the load; the CPU time much less."""
-    loop = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs", text)
-    use = re.search(r"([0-9.]+)% CPU use with (\d+) MPI tasks", text)
-    if not (loop and use):
-        return None
-    return float(loop[1]) * float(use[1]) / 100.0 * int(use[2])
+    loop, use = readers.loop_time(text)[0], re.search(r"([0-9.]+)% CPU use with (\d+) MPI tasks", text)
+    return None if loop is None or use is None else loop * float(use[1]) / 100.0 * int(use[2])
 
 
 def analyse(workdir):
@@ -279,17 +277,13 @@ def main(argv=None):
     ap.add_argument("--tend", type=float, default=TEND)
     args = ap.parse_args(argv)
     work = Path(args.work)
-    for dx in args.dx:
-        for kernel in args.kernels:
-            for loading in args.loadings:
-                for gc in args.gc:
-                    wd = work / (f"{'3d-' if args.dim == 3 else ''}{loading}-{kernel}-"
-                                 f"dx{dx * 1e3:g}mm-Gc{gc:g}")
-                    r = run_case(wd, kernel, dx, loading, gc, nprocs=args.nprocs,
-                                 reuse=args.reuse, dim=args.dim, tend=args.tend)
-                    print(f"{wd.name}: fit {r.get('fit_t70_deg')} chord {r.get('chord_t70_deg')} "
-                          f"v_i {r.get('v_interface')} open {r.get('t_open_us')} "
-                          f"wall {r['wall_s']:.0f} s", flush=True)
+    for dx, kernel, loading, gc in itertools.product(args.dx, args.kernels, args.loadings, args.gc):
+        wd = work / f"{'3d-' if args.dim == 3 else ''}{loading}-{kernel}-dx{dx * 1e3:g}mm-Gc{gc:g}"
+        r = run_case(wd, kernel, dx, loading, gc, nprocs=args.nprocs, reuse=args.reuse,
+                     dim=args.dim, tend=args.tend)
+        print(f"{wd.name}: fit {r.get('fit_t70_deg')} chord {r.get('chord_t70_deg')} "
+              f"v_i {r.get('v_interface')} open {r.get('t_open_us')} wall {r['wall_s']:.0f} s",
+              flush=True)
     order = {"prescribed": 0, "projectile": 1}
     rows = []
     for p in sorted(work.glob("*/case.json")):
@@ -305,20 +299,15 @@ def main(argv=None):
         figs = Path(args.figures)
         for p in sorted(work.glob("projectile-*-Gc69000/case.json")):
             plot_contact(p.parent, figs / f"projectile_contact_{p.parent.name.split('-', 1)[1]}.png")
-        for kernel in kw.KERNELS:
-            for dx in (2e-3, 1e-3):
-                tag = f"{kernel}-dx{dx * 1e3:g}mm"
-                dirs, names = [], []
-                for loading in ("prescribed", "projectile"):
-                    for name, gc in GC_VALUES.items():
-                        wd = work / f"{loading}-{tag}-Gc{gc:g}"
-                        if (wd / "case.json").is_file():
-                            dirs.append(wd)
-                            names.append(f"{loading}, Gc {gc:g}")
-                if len(dirs) > 1:
-                    kw.plot_paths([(n, kw.analyse(d), "-", None) for n, d in zip(names, dirs)],
-                                  figs / f"projectile_paths_{tag}.png",
-                                  f"crack-tip paths, {kernel}, dx = {dx * 1e3:g} mm")
+        for kernel, dx in itertools.product(kw.KERNELS, (2e-3, 1e-3)):
+            tag = f"{kernel}-dx{dx * 1e3:g}mm"
+            runs = [(f"{loading}, Gc {gc:g}", wd) for loading in ("prescribed", "projectile")
+                    for gc in GC_VALUES.values()
+                    if ((wd := work / f"{loading}-{tag}-Gc{gc:g}") / "case.json").is_file()]
+            if len(runs) > 1:
+                kw.plot_paths([(n, kw.analyse(d), "-", None) for n, d in runs],
+                              figs / f"projectile_paths_{tag}.png",
+                              f"crack-tip paths, {kernel}, dx = {dx * 1e3:g} mm")
 
 
 if __name__ == "__main__":

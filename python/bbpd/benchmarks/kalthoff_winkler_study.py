@@ -139,10 +139,6 @@ def stops(r):
     return f"running ({r.get('length_end_mm', 0.0):.0f} mm)"
 
 
-def md_table(rows, header=TABLE_HEADER):
-    return markdown.table(header, rows)
-
-
 CSV = kw.ROOT / "examples" / "kalthoff-winkler" / "results" / "study.csv"
 
 
@@ -160,8 +156,8 @@ def cases_table():
     rows = [[name, desc, f"{v.get('v0', 32.0):g}", f"{v.get('tramp', 0.0) * 1e6:g}",
              f"{v['thold'] * 1e6:.1f}" if "thold" in v else "held",
              "dx" if v.get("layer") == "dx" else "delta = 5 dx"] for name, (desc, v) in CASES.items()]
-    return md_table(rows, ["case", "loading", "v0 (m/s)", "ramp (us)", "released at (us)",
-                           "layer"])
+    return markdown.table(["case", "loading", "v0 (m/s)", "ramp (us)", "released at (us)", "layer"],
+                          rows)
 
 
 def plot_paths_case(results, case, path):
@@ -232,8 +228,8 @@ def section(specs, results, figdir, notes):
         f"projectile contact time t_c = 2 L / c_bar = {T_CONTACT * 1e6:.1f} us (L = 50 mm), "
         f"Rayleigh speed c_R = {kw.C_R:.0f} m/s; the measures are defined in "
         "examples/kalthoff-winkler/README.md, 'Loading study'.",
-        specs, results, lambda rows: md_table(table_rows(done)), lambda rows: conclusion(done),
-        lambda rows: figures(done, figdir), notes,
+        specs, results, lambda rows: markdown.table(TABLE_HEADER, table_rows(done)),
+        lambda rows: conclusion(done), lambda rows: figures(done, figdir), notes,
         not_run="Not run by default (32 runs, about 1 h of single-core run time): "
         "`tools/reproduce --full` runs it; the last measured table is in "
         "examples/kalthoff-winkler/README.md, 'Loading study'.")
@@ -258,7 +254,7 @@ def main_study(work, figdir, workers=1, log=print, reuse_only=False, csv=None, c
     figdir = Path(figdir)
     figdir.mkdir(parents=True, exist_ok=True)
     figures(done, figdir)
-    text = md_table(table_rows(done)) + "\n\n" + "\n".join(f"- {s}" for s in conclusion(done))
+    text = markdown.table(TABLE_HEADER, table_rows(done)) + "\n\n" + "\n".join(f"- {s}" for s in conclusion(done))
     (Path(work) / "study.md").write_text(cases_table() + "\n\n" + text + "\n")
     if csv:
         write_csv(csv, table_rows(done), command)

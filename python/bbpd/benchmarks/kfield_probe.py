@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 
-from bbpd import csvfile
+from bbpd import csvfile, dsif, reference
 from bbpd.benchmarks.center_crack import A, E, GC, HERE, LPS_NU
 
 NU = 1.0 / 3.0                      # bond-based plane stress (and LPS_NU)
@@ -31,15 +31,8 @@ TOL_EXPLAIN = 0.03    # the probe explains a kernel's initiation to this (README
 
 
 def moment(kernel, n):
-    """M_n = int_0^1 W(r) r^n dr (src/bbpd_kernel.h)"""
-    name, a = kernel.split("/")[-1], 4.0    # Gaussian: W = exp(-a r^2)
-    if name in ("constant", "pmb"):
-        return 1.0 / (n + 1)
-    if name == "triangular":
-        return 1.0 / ((n + 1.0) * (n + 2.0))
-    if n < 2:
-        return (0.5 * math.sqrt(math.pi / a) * math.erf(math.sqrt(a)), (1.0 - math.exp(-a)) / (2.0 * a))[n]
-    return -math.exp(-a) / (2.0 * a) + (n - 1) / (2.0 * a) * moment(kernel, n - 2)
+    """M_n = int_0^1 W(r) r^n dr of the kernel (pmb's: the constant one)"""
+    return reference.moment(kernel.split("/")[-1].replace("pmb", "constant"), n)
 
 
 def s0(kernel, delta):
@@ -53,9 +46,7 @@ def s0(kernel, delta):
 
 def williams(x, y, k):
     """(u_x, u_y) of the mode-I leading term at K_I = k, plane stress, tip at 0, crack at x < 0"""
-    t, f = np.arctan2(y, x), k / (2.0 * MU) * np.sqrt(np.hypot(x, y) / (2.0 * np.pi))
-    return (f * np.cos(t / 2) * (KAPPA - 1.0 + 2.0 * np.sin(t / 2) ** 2),
-            f * np.sin(t / 2) * (KAPPA + 1.0 - 2.0 * np.cos(t / 2) ** 2))
+    return dsif.williams_displacement(k, 0.0, np.hypot(x, y), np.arctan2(y, x), MU, KAPPA)
 
 
 def bonds(m, reach=3):

@@ -15,6 +15,7 @@ from bbpd.provenance import cpu
 from bbpd.kernels import KERNELS
 from bbpd.runner import run_lammps
 from bbpd import plots
+from bbpd.markdown import cell
 from bbpd.markdown import table as md_table
 from bbpd.benchmarks import cli
 from bbpd.benchmarks.kink_limit import (ALPHA, HORIZONS, KERNEL, NAMES, PSI, coverage, disk_moves,
@@ -60,15 +61,7 @@ def run_case(workdir, m, r_over_delta, nprocs=1, reuse=False, kernel=KERNEL, psi
 def _angle(r, dist):
     """'angle +- resolution' for the table"""
     a = r[f"angle_{dist}"]
-    return "-" if a is None else f"{_f(a)} ± {resolution_deg(r['m'], dist):.1f}"
-
-
-def _f(v, spec=".1f"):
-    if v is None:
-        return "-"
-    text = format(v, spec)
-    # a straight crack measured as -1e-15 deg is 0.0, not -0.0
-    return text[1:] if text.startswith("-") and float(text) == 0.0 else text
+    return "-" if a is None else f"{cell(a, '.1f')} ± {resolution_deg(r['m'], dist):.1f}"
 
 
 def _order(r):
@@ -82,10 +75,10 @@ def table(rows):
             "hoop stress", "hoop strain", "max G", "loop (s)", "ranks")
     out = md_table(head, ([
         r["kernel"], *(f"{v:g}" for v in mix_of(r)), f"{r['m']:g}", f"{r['R_over_delta']:g}",
-        f"{r['dx_mm']:.3g}", _f(r["atoms"], ".0f"), _f(r["steps"], ".0f"),
-        _f(r["K_init_over_Kc"], ".3f"), _f(r["extension_over_delta"], ".1f"), _angle(r, "2d"),
-        _angle(r, "4d"), _f(r["hoop_stress"]), _f(r["hoop_strain"]), _f(r["energy"]),
-        _f(r["loop_s"], ".0f"), _f(r["nprocs"], ".0f")] for r in sorted(rows, key=_order)))
+        f"{r['dx_mm']:.3g}", cell(r["atoms"], ".0f"), cell(r["steps"], ".0f"),
+        cell(r["K_init_over_Kc"], ".3f"), cell(r["extension_over_delta"], ".1f"), _angle(r, "2d"),
+        _angle(r, "4d"), *(cell(r[c], ".1f") for c in ("hoop_stress", "hoop_strain", "energy")),
+        cell(r["loop_s"], ".0f"), cell(r["nprocs"], ".0f")] for r in sorted(rows, key=_order)))
     out += "\n\n" + RESOLUTION_NOTE
     if rows and all(r.get("cpu") for r in rows):
         out += "\n\n" + loop_times(rows)
@@ -117,7 +110,7 @@ def sequences_table(rows):
         ("kernel", "psi", "alpha", "at", "R/delta", "m", "angle (deg)", "nearest at the finest m: "
          "offset ± bar (deg)", "last step (deg)", "settled (<= 1 deg)", "step beyond both bars"),
         ([s["kernel"], f"{s['psi']:g}", f"{s['alpha']:g}", s["dist"], f"{s['rd']:g}",
-          ", ".join(f"{m:g}" for m in s["ms"]), ", ".join(_f(a) for a in s["angles"]),
+          ", ".join(f"{m:g}" for m in s["ms"]), ", ".join(cell(a, ".1f") for a in s["angles"]),
           f"{NAMES.get(s['nearest'], 'all three agree')}: {_signed(s['offset'])} ± {s['bar']:.1f}",
           _signed(s["step"]), _yes(s["settled"]), _yes(s["beyond_bars"])] for s in sequences(rows)))
 
@@ -303,8 +296,8 @@ def main(argv=None):
     for m, rd in cases:
         start = time.perf_counter()
         r = run_case(a.work, m, rd, a.nprocs, a.reuse, a.kernel, a.psi, a.alpha)
-        print(f"psi {a.psi:g} alpha {a.alpha:g} m {m:g} R/delta {rd:g}: angle {_f(r['angle_2d'])} / {_f(r['angle_4d'])} deg "
-              f"(2 / 4 delta), loop {_f(r['loop_s'], '.0f')} s, wall "
+        print(f"psi {a.psi:g} alpha {a.alpha:g} m {m:g} R/delta {rd:g}: angle {cell(r['angle_2d'], '.1f')} / {cell(r['angle_4d'], '.1f')} deg "
+              f"(2 / 4 delta), loop {cell(r['loop_s'], '.0f')} s, wall "
               f"{time.perf_counter() - start:.0f} s", flush=True)
         rows.append(r)
         if a.csv:    # after every run: a stopped sweep keeps what it measured

@@ -13,6 +13,7 @@ import numpy as np
 from bbpd import kink
 from bbpd.benchmarks import kalthoff_winkler as kw
 from bbpd.benchmarks import kink as kinktest
+from bbpd.markdown import table as md_table
 from bbpd.runner import run_lammps
 from bbpd.benchmarks import cli
 
@@ -86,21 +87,18 @@ SUMMARY = kinktest.FOLDER / "results" / "kalthoff_winkler_mix.json"
 def table(r):
     """README table: the mix before initiation and the angles, Kalthoff-Winkler's and predicted
     (positive = towards the outer side, the experiment's convention)."""
-    head = ("| kernel | dx (mm) | first break at tip (us) | K_I, K_II before it (MPa m^1/2) | "
-            "psi (deg) | psi when the damage band leaves (deg) | KW angle (deg) | "
-            "kink test at 2 / 4 delta (deg) | hoop stress | hoop strain | max G (HPU) | "
-            "the three at the band's mix | experiment |")
-    row = ("| " + " | ".join([
-        r["kernel"], f"{r['dx'] * 1e3:g}", f"{r['t_init_us']:.2f}",
-        f"{r['KI'] / 1e6:.1f}, {r['KII'] / 1e6:.1f}", f"{r['psi']:.1f}",
-        kw.fmt(r.get("psi_band"), ".1f") + (f" ({r['t_band_mix_us']:.1f} us)" if r.get("psi_band") else ""),
-        kw.fmt(r["angle_deg"], ".1f"),
-        f"{-r['kinktest_2d']:.1f} / {-r['kinktest_4d']:.1f}", f"{-r['hoop_stress']:.1f}",
-        f"{-r['hoop_strain']:.1f}", f"{-r['energy']:.1f}",
-        f"{-r['hoop_stress_band']:.1f}, {-r['hoop_strain_band']:.1f}, {-r['energy_band']:.1f}",
-        f"{kw.EXPERIMENT_ANGLE_DEG:.0f}"])
-        + " |")
-    return "\n".join([head, "|" + "---|" * (head.count(" | ") + 1), row])
+    return md_table(
+        ("kernel", "dx (mm)", "first break at tip (us)", "K_I, K_II before it (MPa m^1/2)",
+         "psi (deg)", "psi when the damage band leaves (deg)", "KW angle (deg)",
+         "kink test at 2 / 4 delta (deg)", "hoop stress", "hoop strain", "max G (HPU)",
+         "the three at the band's mix", "experiment"),
+        [[r["kernel"], f"{r['dx'] * 1e3:g}", f"{r['t_init_us']:.2f}",
+          f"{r['KI'] / 1e6:.1f}, {r['KII'] / 1e6:.1f}", f"{r['psi']:.1f}",
+          kw.fmt(r.get("psi_band"), ".1f") + (f" ({r['t_band_mix_us']:.1f} us)" if r.get("psi_band") else ""),
+          kw.fmt(r["angle_deg"], ".1f"), f"{-r['kinktest_2d']:.1f} / {-r['kinktest_4d']:.1f}",
+          f"{-r['hoop_stress']:.1f}", f"{-r['hoop_strain']:.1f}", f"{-r['energy']:.1f}",
+          f"{-r['hoop_stress_band']:.1f}, {-r['hoop_strain_band']:.1f}, {-r['energy_band']:.1f}",
+          f"{kw.EXPERIMENT_ANGLE_DEG:.0f}"]])
 
 
 def main(argv=None):

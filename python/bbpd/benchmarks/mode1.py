@@ -16,6 +16,7 @@ import numpy as np
 from bbpd import freund, metrics, readers
 from bbpd.csvfile import write_csv
 from bbpd.jobs import ROOT
+from bbpd.reference import POISSON
 from bbpd.kernels import COLORS, KERNELS
 from bbpd.markdown import cell
 from bbpd.markdown import table as md_table
@@ -42,7 +43,6 @@ PAPER_TABLE2 = {0.1: (9.82, 17.70), 0.05: (0.21, 2.86), 0.025: (0.17, 2.74)}
 PAPER_TABLE3 = {"constant": (14.20, 15.48), "triangular": (5.99, 6.56), "gaussian": (0.21, 2.86)}
 
 CONVENTIONS = ("paper", "consistent")
-IMPLIED_NU = {"plane/stress": 1.0 / 3.0, "plane/strain": 0.25}
 
 
 def default_dt(dx):
@@ -58,7 +58,7 @@ def reference(convention, model="plane/stress", E=E, rho=RHO, H=H, sigma0=SIGMA0
     if convention == "paper":
         nu_eq, c_d = NU_PAPER, freund.dilatational_wave_speed(E, NU_PAPER, rho, freund.PLANE_STRAIN)
     elif convention == "consistent":
-        nu = IMPLIED_NU[model] if nu is None else nu
+        nu = POISSON[model] if nu is None else nu
         if model == "plane/stress":
             nu_eq = freund.equivalent_plane_stress_poisson(nu)
             c_d = freund.dilatational_wave_speed(E, nu, rho, freund.PLANE_STRESS)
@@ -198,12 +198,6 @@ def jtable(rows):
     return md_table(header, cells)
 
 
-def paper_table(work, cases, nprocs=1, model="plane/stress"):
-    """Run cases {key: (kernel, dx)}; returns {key: result}."""
-    return {key: run(Path(work) / f"{kernel}_{dx}", kernel, dx, model, nprocs=nprocs)
-            for key, (kernel, dx) in cases.items()}
-
-
 TIP_STUDY = ((0.5, 1.0, 2.0), (0.5, 1.0, 3.0), (0.5, 2.0, 3.0), (0.5, 2.0, 4.0),
              (-0.5, 1.0, 2.0), (0.0, 0.5, 1.5), (0.0, 1.5, 2.5), (0.0, 2.5, 4.5))
 
@@ -265,10 +259,11 @@ def main(argv=None):
                     help="write the tip study to PATH as CSV (the README's table is generated "
                          "from examples/mode1-semi-infinite/results/tips.csv)")
     args = ap.parse_args(argv)
-    rows2 = paper_table(args.work, {dx: ("gaussian", dx) for dx in args.dx}, args.nprocs,
-                        args.model) if args.table2 else {}
-    rows3 = paper_table(args.work, {k: (k, TABLE3_DX) for k in KERNELS}, args.nprocs,
-                        args.model) if args.table3 else {}
+    def runs(cases):    # {key: run} of {key: (kernel, dx)}
+        return {key: run(Path(args.work) / f"{k}_{dx}", k, dx, args.model, nprocs=args.nprocs)
+                for key, (k, dx) in cases.items()}
+    rows2 = runs({dx: ("gaussian", dx) for dx in args.dx}) if args.table2 else {}
+    rows3 = runs({k: (k, TABLE3_DX) for k in KERNELS}) if args.table3 else {}
     if rows2:
         print(table2([row(r) for r in rows2.values()]))
     if rows3:

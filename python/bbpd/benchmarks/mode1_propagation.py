@@ -8,10 +8,11 @@ from pathlib import Path
 
 import numpy as np
 
-from bbpd import crack_motion, crack_tip, csvfile, freund, plots, readers
+from bbpd import crack_motion, crack_tip, csvfile, freund, plots, readers, reference
 from bbpd import jobs as jobmod
 from bbpd.benchmarks import mode1
 from bbpd.kernels import COLORS, KERNELS
+from bbpd.markdown import table as md_table
 from bbpd.provenance import cpu
 from bbpd.runner import run_or_reuse
 from bbpd.benchmarks import cli
@@ -21,7 +22,7 @@ EXAMPLE = ROOT / "examples" / "mode1-propagation" / "in.mode1-propagation"
 
 E, RHO, H, T_D, SIGMA0 = mode1.E, mode1.RHO, mode1.H, mode1.T_D, mode1.SIGMA0
 A = 5.0                     # initial tip, m
-NU = mode1.IMPLIED_NU["plane/stress"]
+NU = reference.POISSON["plane/stress"]
 G_C = 2.0                   # J/m^2 at sigma0 = 1 MPa: t_i = 1.70 t_c, theory runs 0.77-0.98 m
 M = 5.0                     # delta/dx
 T_END = 1.2e-3              # run length, > 3 t_c = 1.10e-3 s
@@ -190,43 +191,31 @@ def cpu_markdown(rows):
 
 def table_markdown(rows):
     """The README table of a results CSV (rows: dicts with the CSV's columns)."""
-    head = ("| kernel | dx (m) | atoms | first bond: t_i (ms), error (%), J/G_c | "
-            "tip moved: t_i (ms), error (%), J/G_c | extension at 3 t_c (m) | "
-            "L2 of l(t), K_Ic form (%) | L2 of l(t), energy form (%) | v/c_R at "
-            + ", ".join(f"{s:g}" for s in SPEED_TIMES)
-            + " t_c | crack half-width at 3 t_c (delta) | loop time (s) |")
-    lines = [head, "|" + "---|" * (head.count("|") - 1)]
     prob = problem(rows[0]["Gc"]) if rows else problem()
-    for r in rows:
-        speeds = ", ".join(f"{r[f'v_{s:g}tc_over_cR']:.2f}" for s in SPEED_TIMES)
-        lines.append(f"| {r['kernel']} | {r['dx']:g} | {int(r['atoms'])} | "
-                     f"{1e3 * r['ti_pd']:.4f}, {r['ti_err_pct']:+.1f}, "
-                     f"{r['J_at_ti_over_Gc']:.2f} | {1e3 * r['ti_tip_pd']:.4f}, "
-                     f"{r['ti_tip_err_pct']:+.1f}, {r['J_at_ti_tip_over_Gc']:.2f} | "
-                     f"{r['ext_pd_3tc']:.2f} | {r['l2_toughness_pct']:.1f} | "
-                     f"{r['l2_energy_pct']:.1f} | {speeds} | {r['width_3tc_over_delta']:.2f} | "
-                     f"{r['loop_s']:.1f} |")
-    v_th = {c: [prob.tip_position(np.array([s * prob.t_c]), c)[1][0] / prob.c_r
-                for s in SPEED_TIMES] for c in crack_motion.CRITERIA}
+    out = [[r["kernel"], f"{r['dx']:g}", int(r["atoms"]),
+            f"{1e3 * r['ti_pd']:.4f}, {r['ti_err_pct']:+.1f}, {r['J_at_ti_over_Gc']:.2f}",
+            f"{1e3 * r['ti_tip_pd']:.4f}, {r['ti_tip_err_pct']:+.1f}, {r['J_at_ti_tip_over_Gc']:.2f}",
+            f"{r['ext_pd_3tc']:.2f}", f"{r['l2_toughness_pct']:.1f}", f"{r['l2_energy_pct']:.1f}",
+            ", ".join(f"{r[f'v_{s:g}tc_over_cR']:.2f}" for s in SPEED_TIMES),
+            f"{r['width_3tc_over_delta']:.2f}", f"{r['loop_s']:.1f}"] for r in rows]
     t_i = f"{1e3 * prob.initiation_time():.4f}, 0, 1"
     for crit, name in (("toughness", "K_Ic form"), ("energy", "energy form")):
         ext = prob.tip_position(np.array([prob.t_end]), crit)[0][0] - A
-        lines.append(f"| theory, {name} | | | {t_i} | {t_i} | {ext:.2f} | | | "
-                     + ", ".join(f"{v:.2f}" for v in v_th[crit]) + " | | |")
-    if rows and all("cpu" in r for r in rows):
-        lines += ["", cpu_markdown(rows)]
-    return "\n".join(lines)
+        v_th = [prob.tip_position(np.array([s * prob.t_c]), crit)[1][0] / prob.c_r for s in SPEED_TIMES]
+        out.append([f"theory, {name}", "", "", t_i, t_i, f"{ext:.2f}", "", "",
+                    ", ".join(f"{v:.2f}" for v in v_th), "", ""])
+    table = md_table(["kernel", "dx (m)", "atoms", "first bond: t_i (ms), error (%), J/G_c",
+                      "tip moved: t_i (ms), error (%), J/G_c", "extension at 3 t_c (m)",
+                      "L2 of l(t), K_Ic form (%)", "L2 of l(t), energy form (%)",
+                      "v/c_R at " + ", ".join(f"{s:g}" for s in SPEED_TIMES) + " t_c",
+                      "crack half-width at 3 t_c (delta)", "loop time (s)"], out)
+    return table + "\n\n" + cpu_markdown(rows) if rows and all("cpu" in r for r in rows) else table
 
 
 FIGURE_NAMES = ("crack_extension.png", "crack_speed.png", "work_precision.png")
 
 
-def figures(histories_csv, results_csv, folder, prefix=""):
-    """The figures of the example from its CSVs (see figures_of_rows)."""
-    return figures_of_rows(read_rows(results_csv, histories_csv), folder, prefix)
-
-
-def figures_of_rows(rows, folder, prefix=""):
+def figures(rows, folder, prefix=""):
     """l(t) and v(t) of every run (rows with kernel, dx, Gc, t_tip, l_pd) with the theory in
     both forms of the equation of motion, and the work-precision figure; returns the names."""
     prob = problem(rows[0]["Gc"])
@@ -252,9 +241,7 @@ def figures_of_rows(rows, folder, prefix=""):
             ax_v.plot(tv / t_c, np.array(v) / prob.c_r, style, color=color, label=label)
         for ax, ylabel in ((ax_l, "crack extension l - a (m)"), (ax_v, "crack speed v / c_R")):
             ax.axvline(prob.t_end / t_c, color="k", lw=0.8, ls=":")
-            ax.set_xlabel("t / t_c")
-            ax.set_ylabel(ylabel)
-            ax.set_xlim(1.0, 3.2)
+            ax.set(xlabel="t / t_c", ylabel=ylabel, xlim=(1.0, 3.2))
             ax.legend(fontsize=7, ncol=2)
         ax_v.set_ylim(0.0, 1.05)
         ax_v.set_title(f"v: slope of l(t) over +-{SPEED_HALF_WINDOW:g} t_c", fontsize=9)
@@ -298,7 +285,7 @@ REPORT_SETUP = ("The stationary Mode-I plate with fracture on: G_c = 2 J/m^2 at 
 def section(specs, results, figdir, notes):
     """The section of REPORT.md (bbpd.report.document.write_report) from the report's runs."""
     return jobmod.section(REPORT_TITLE, REPORT_SETUP, specs, results, table_markdown, None,
-                          lambda rows: figures_of_rows(rows, figdir, prefix="mode1_propagation_"),
+                          lambda rows: figures(rows, figdir, prefix="mode1_propagation_"),
                           notes)
 
 
@@ -330,7 +317,7 @@ def main(argv=None):
         write_csv(args.csv, rows, provenance + [this])
         write_histories(histories, rows)
         if args.figures:
-            figures(Path(args.csv).with_name("tip_histories.csv"), args.csv, args.figures)
+            figures(read_rows(args.csv, histories), args.figures)
 
 
 if __name__ == "__main__":

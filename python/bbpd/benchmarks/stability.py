@@ -167,30 +167,24 @@ def run_point(workdir, kernel, m, ratio, steps=STEPS, side=None, periodic=True, 
 
 def bisect(workdir, kernel, m, log=print):
     """Largest stable r = dt/Y, to RTOL; returns (lo, hi, Y printed, runs)."""
+    points = []
+
+    def stable(r):
+        points.append(run_point(workdir, kernel, m, r))
+        return points[-1]["stable"]
     lo, hi = BRACKET
-    runs = 0
-    point = run_point(workdir, kernel, m, lo)
-    runs += 1
-    while not point["stable"]:    # the bound itself unstable: a finding, keep going down
+    while not stable(lo):    # the bound itself unstable: a finding, keep going down
         if lo < 1.0e-3:
-            raise RuntimeError(f"{kernel} m={m}: unstable down to {lo} Y: {point}")
+            raise RuntimeError(f"{kernel} m={m}: unstable down to {lo} Y: {points[-1]}")
         hi, lo = lo, lo / 2.0
-        point = run_point(workdir, kernel, m, lo)
-        runs += 1
-    bound = point["bound"]
-    while run_point(workdir, kernel, m, hi)["stable"]:
+    bound = points[-1]["bound"]
+    while stable(hi):
         lo, hi = hi, 2.0 * hi
-        runs += 1
-    runs += 1
     while (hi - lo) / lo > RTOL:
         mid = 0.5 * (lo + hi)
-        if run_point(workdir, kernel, m, mid)["stable"]:
-            lo = mid
-        else:
-            hi = mid
-        runs += 1
-    log(f"  {kernel:10s} m={m:2d}: stable up to {lo:.4f} Y, unstable at {hi:.4f} Y ({runs} runs)")
-    return lo, hi, bound, runs
+        lo, hi = (mid, hi) if stable(mid) else (lo, mid)
+    log(f"  {kernel:10s} m={m:2d}: stable up to {lo:.4f} Y, unstable at {hi:.4f} Y ({len(points)} runs)")
+    return lo, hi, bound, len(points)
 
 
 def stability_map(workdir, log=print):

@@ -4,6 +4,7 @@ from examples/strip-steady-crack/in.strip (examples/strip-steady-crack/README.md
 measure and has the commands).
 """
 
+import itertools
 import math
 import re
 import subprocess
@@ -182,24 +183,20 @@ def main(argv=None):
     if a.collect:
         rows = collect(a.work)
         a.kernels = []
-    for kernel in a.kernels:
-        for m in a.m:
-            for hd in a.H_over_delta:
-                for D in a.Delta:
-                    wd = Path(a.work) / f"{kernel}-m{m:g}-H{hd:g}-D{D:g}"
-                    try:
-                        r = run(wd, kernel, D, DX * M / m, m, hd, nprocs=a.nprocs, reuse=a.reuse)
-                    except (LammpsError, subprocess.TimeoutExpired) as exc:    # one failed run must not end the sweep
-                        print(f"{wd.name}: FAILED: {exc}", flush=True)
-                        continue
-                    print(f"{kernel} m {m:g} H/delta {hd:g} Delta {D:g} (model {r['Delta_model']:.3f}): "
-                          f"crossed {r['crossed']} v_ss/c_R {r['v_ss_over_cR']:.3f} Gamma/Gc "
-                          f"{r['Gamma_over_Gc']:.3f} Phi/Gc {r['Phi_over_Gc']:.3f} closure "
-                          f"{r['closure_pct']:.2f} % balance {r['balance_pct']:.3f} % loop {r['loop_s']:.1f} s",
-                          flush=True)
-                    rows = [q for q in rows if not (q["kernel"] == kernel and q["m"] == m and
-                                                    q["H_over_delta"] == hd and q["Delta"] == D)]
-                    rows.append(r)
+    for kernel, m, hd, D in itertools.product(a.kernels, a.m, a.H_over_delta, a.Delta):
+        wd = Path(a.work) / f"{kernel}-m{m:g}-H{hd:g}-D{D:g}"
+        try:
+            r = run(wd, kernel, D, DX * M / m, m, hd, nprocs=a.nprocs, reuse=a.reuse)
+        except (LammpsError, subprocess.TimeoutExpired) as exc:    # one failed run must not end the sweep
+            print(f"{wd.name}: FAILED: {exc}", flush=True)
+            continue
+        print(f"{kernel} m {m:g} H/delta {hd:g} Delta {D:g} (model {r['Delta_model']:.3f}): "
+              f"crossed {r['crossed']} v_ss/c_R {r['v_ss_over_cR']:.3f} Gamma/Gc "
+              f"{r['Gamma_over_Gc']:.3f} Phi/Gc {r['Phi_over_Gc']:.3f} closure "
+              f"{r['closure_pct']:.2f} % balance {r['balance_pct']:.3f} % loop {r['loop_s']:.1f} s",
+              flush=True)
+        rows = [q for q in rows if (q["kernel"], q["m"], q["H_over_delta"], q["Delta"]) != (kernel, m, hd, D)]
+        rows.append(r)
     rows.sort(key=lambda r: (r["kernel"], r["m"], r["H_over_delta"], r["Delta"]))
     if a.csv:
         write_csv(a.csv, rows, [*earlier, made])
@@ -310,21 +307,20 @@ def law_table(rows, Delta=2.0):
     steady speed at Delta over the strip's heights, the last change in height and whether it
     converged (height_convergence), the runs at Delta that did not run steadily, and the grid's
     own c_R over c_R"""
-    lines = ["| kernel | m | Delta_c (arrests / crosses) | v_ss/c_R at Delta = 2, H/delta = "
-             + ", ".join(f"{h:g}" for h in HEIGHTS) + " | last change in H, converged | not steady at "
-             "Delta = 2 (H/delta) | grid's c_R / c_R |", "|" + "---|" * 7]
+    out = []
     for k in sorted({r["kernel"] for r in rows}):
         for m in sorted({r["m"] for r in rows if r["kernel"] == k}):
             lo, hi = threshold(rows, k, m)
-            speeds = [(h, v) for h in HEIGHTS if (v := speed_at(rows, k, m, h, Delta))]
-            conv = height_convergence(speeds)
+            conv = height_convergence([(h, v) for h in HEIGHTS if (v := speed_at(rows, k, m, h, Delta))])
             lost = [r for r in rows if (r["kernel"], r["m"], r["Delta"]) == (k, m, Delta) and not r["crossed"]]
-            lines.append(f"| {k} | {m:g} | {f(lo, 'g')} / {f(hi, 'g')} | "
-                         + ", ".join(f(speed_at(rows, k, m, h, Delta) or None, ".3f") for h in HEIGHTS)
-                         + " | " + (f"{conv['last']:+.4f}, {'yes' if conv['converged'] else 'no'}" if conv else "-")
-                         + " | " + (", ".join(f"{r['H_over_delta']:g} {r['state']}{_where(r)}" for r in lost) or "-")
-                         + f" | {grid_rayleigh_ratio(k, m):.3f} |")
-    return "\n".join(lines)
+            out.append([k, f"{m:g}", f"{f(lo, 'g')} / {f(hi, 'g')}",
+                        ", ".join(f(speed_at(rows, k, m, h, Delta) or None, ".3f") for h in HEIGHTS),
+                        f"{conv['last']:+.4f}, {'yes' if conv['converged'] else 'no'}" if conv else "-",
+                        ", ".join(f"{r['H_over_delta']:g} {r['state']}{_where(r)}" for r in lost) or "-",
+                        f"{grid_rayleigh_ratio(k, m):.3f}"])
+    return md_table(["kernel", "m", "Delta_c (arrests / crosses)", "v_ss/c_R at Delta = 2, H/delta = "
+                     + ", ".join(f"{h:g}" for h in HEIGHTS), "last change in H, converged",
+                     "not steady at Delta = 2 (H/delta)", "grid's c_R / c_R"], out)
 
 
 def energy_closure(rows):
@@ -408,13 +404,10 @@ def figure(rows, path, H_over_delta=SWEEP_H_OVER_DELTA):
                 a2.plot([r["v_ss_over_cR"] for r in run], [r["Gamma_over_Gc"] for r in run], ls=ls,
                         marker="o", color=COLORS[k], label=f"{k}, m = {m:g}")
         a1.axvline(1.0, color="0.6", lw=0.8)
-        a1.set_xlabel("Delta' = U'/G_c (model)")
-        a1.set_ylabel("v_ss / c_R")
-        a1.set_title(f"steady speed (H = {H_over_delta:g} delta; 0: arrested)")
+        a1.set(xlabel="Delta' = U'/G_c (model)", ylabel="v_ss / c_R",
+               title=f"steady speed (H = {H_over_delta:g} delta; 0: arrested)")
         a2.axhline(1.0, color="0.6", lw=0.8)
-        a2.set_xlabel("v_ss / c_R")
-        a2.set_ylabel("Gamma / G_c")
-        a2.set_title("energy the broken bonds take")
+        a2.set(xlabel="v_ss / c_R", ylabel="Gamma / G_c", title="energy the broken bonds take")
         for a in (a1, a2):
             a.grid(alpha=0.3)
             a.legend(fontsize=7)
@@ -423,20 +416,18 @@ def figure(rows, path, H_over_delta=SWEEP_H_OVER_DELTA):
 def work_precision_markdown(rows, Delta=2.0, m=M):
     """Error of v_ss against run time: each kernel's runs at (Delta, m) by strip height, the
     error the difference from its tallest strip (which therefore has none)."""
-    head = "| kernel | H/delta | atoms | loop time (s) | v_ss/c_R | difference from the tallest strip (c_R) |"
-    lines, shown = [head, "|---|---|---|---|---|---|"], []
+    out, shown = [], []
     for k in sorted({r["kernel"] for r in rows}):
         sel = sorted((r for r in rows if r["kernel"] == k and r["m"] == m and r["Delta"] == Delta
                       and r["crossed"]), key=lambda r: r["H_over_delta"])
-        if len(sel) < 2:
-            continue
-        ref = sel[-1]["v_ss_over_cR"]
-        for r in sel:
-            diff = "(reference)" if r is sel[-1] else f"{r['v_ss_over_cR'] - ref:+.3f}"
-            lines.append(f"| {k} | {r['H_over_delta']:g} | {int(r['atoms'])} | {r['loop_s']:.0f} | "
-                         f"{r['v_ss_over_cR']:.3f} | {diff} |")
-            shown.append(r)
-    return "\n".join(lines + ["", timing_markdown(shown)] if shown else lines)
+        if len(sel) > 1:
+            out += [[k, f"{r['H_over_delta']:g}", int(r["atoms"]), f"{r['loop_s']:.0f}",
+                     f"{r['v_ss_over_cR']:.3f}", "(reference)" if r is sel[-1] else
+                     f"{r['v_ss_over_cR'] - sel[-1]['v_ss_over_cR']:+.3f}"] for r in sel]
+            shown += sel
+    table = md_table(["kernel", "H/delta", "atoms", "loop time (s)", "v_ss/c_R",
+                      "difference from the tallest strip (c_R)"], out)
+    return table + "\n\n" + timing_markdown(shown) if shown else table
 
 
 if __name__ == "__main__":

@@ -15,6 +15,7 @@ from bbpd.benchmarks import (branching, kink, kink_kalthoff_winkler, mode1_propa
                              strip_closure)
 from bbpd import csvfile
 from bbpd.jobs import ROOT
+from bbpd.markdown import table as md_table
 
 from .paper import made
 
@@ -51,7 +52,7 @@ BRANCHING = {
     "branching-cost": lambda data: branching.cost_table(branching.read_rows())}
 KW = {
     "kw-projectile": lambda data: projectile.markdown(csvfile.read_csv(PROJECTILE_CSV)[1]),
-    "kw-study": made(study.CSV, lambda data: study.md_table(study.read_csv()[0])),
+    "kw-study": made(study.CSV, lambda data: md_table(study.TABLE_HEADER, study.read_csv()[0])),
     "kw-grid-pull": lambda data: grid.markdown(*reversed(csvfile.read_csv(grid.CSV))),
     "kw-deck": made(deck.CSV, lambda data: deck.table(deck.read_rows()[1])),
     "kw-3d": made(kw3d.CSV, lambda data: kw3d.table(kw3d.read_rows()))}

@@ -82,14 +82,8 @@ def with_run_note(table, name):
     """render(data): table(rows of the reference `name`) and the note under a table of one
     single-rank run per row"""
     return lambda data: table(data.rows(name)) + (
-        f"\n\nFrom {data.source(name)}; run time: one single-rank run, two at a time on "
-        f"{data.cpu(name)} (cores shared with other jobs).")
-
-
-def kw_table(data):
-    return kw_bench.table(data.rows(KW)) + (
-        f"\n\nFrom {data.source(KW)}. Run time: one single-rank run, two at a time on "
-        f"{data.cpu(KW)} (cores shared with other jobs). Every other number is deterministic.")
+        f"\n\nFrom {data.source(name)}. Run time: one single-rank run, two at a time on "
+        f"{data.cpu(name)} (cores shared with other jobs). Every other number is deterministic.")
 
 
 def tips_table(data):

@@ -3,6 +3,7 @@
 import csv
 
 from bbpd.jobs import ROOT
+from bbpd.markdown import table as md_table
 
 RESULTS = ROOT / "perf" / "results"
 # later files win: the plate and block measured again at a lower load, the memory after the
@@ -44,18 +45,14 @@ def scene_table(files):
         for r in _rows(path):
             rows[r["scene"]] = r
             source[r["scene"]] = path.name
-    lines = ["| scene | ours | peri/pmb | ratio |", "|---|---|---|---|"]
-    used = []
+    table, used = [], []
     for prefix, name, unit in SCENES:
-        scene = next(s for s in rows if s.startswith(prefix))
-        r = rows[scene]
-        used.append(scene)
+        used.append(next(s for s in rows if s.startswith(prefix)))
+        r = rows[used[-1]]
         ours, pmb = float(r["ours_loop_ms"]), float(r["pmb_loop_ms"])
-        if unit == "s":
-            cells = f"{ours:.2f} s | {pmb:.2f} s"
-        else:
-            cells = f"{_ms(r['ours_loop_ms'])} ms/step | {_ms(r['pmb_loop_ms'])} ms/step"
-        lines.append(f"| {name} | {cells} | {pmb / ours:.1f}× |")
+        table.append([name, *([f"{ours:.2f} s", f"{pmb:.2f} s"] if unit == "s" else
+                              [f"{_ms(r[k])} ms/step" for k in ("ours_loop_ms", "pmb_loop_ms")]),
+                      f"{pmb / ours:.1f}×"])
     margin_scene = next(s for s in rows if s.startswith(MARGIN))
     used.append(margin_scene)
     margin = rows[margin_scene]
@@ -70,7 +67,7 @@ def scene_table(files):
             f"path, one core, load {_loads([rows[s] for s in used])}, {runs}, {r0['date'][:10]}; "
             + ", ".join(f"`perf/results/{f}`" for f in sorted({source[s] for s in used}, key=names.index))
             + ":")
-    return (head + "\n\n" + "\n".join(lines) + "\n\nMemory at the margin (max RSS, block 41³ → "
+    return (head + "\n\n" + md_table(["scene", "ours", "peri/pmb", "ratio"], table) + "\n\nMemory at the margin (max RSS, block 41³ → "
             f"51³): {float(margin['bytes_per_bond']):.1f} bytes per bond.")
 
 
@@ -82,10 +79,7 @@ LPS_FILES = ((RESULTS / "spr-lps-cylinder.csv", "AVX-512"), (RESULTS / "zen3-lps
 def lps_cylinder(data):
     """doc/performance.md's bbpd/lps against peri/lps: per CPU the minimum loop and processor
     times of the rounds, their ratios, and LAMMPS's memory per rank where the CSV has it."""
-    head = ("| CPU | vector ISA | `peri/lps` loop, min (s) | `bbpd/lps` loop, min (s) | loop ratio "
-            "(rounds) | processor time ratio | memory per rank: `peri/lps` / `bbpd/lps` (MB) | "
-            "bytes per bond |")
-    lines = [head, "|" + "---|" * 8]
+    out = []
     for path, isa in LPS_FILES:
         rows = _rows(path)
         by = {s: [r for r in rows if r["style"] == s] for s in ("peri/lps", "bbpd/lps")}
@@ -97,15 +91,17 @@ def lps_cylinder(data):
         if r0.get("memory_mb"):
             mem = {s: float(rs[0]["memory_mb"]) for s, rs in by.items()}
             per_bond = {s: mem[s] * 1e6 / float(rs[0]["bonds"]) for s, rs in by.items()}
-            memory = (f"{mem['peri/lps']:.2f} / {mem['bbpd/lps']:.2f} | "
-                      f"{per_bond['peri/lps']:.1f} / {per_bond['bbpd/lps']:.1f}")
+            memory = [f"{mem['peri/lps']:.2f} / {mem['bbpd/lps']:.2f}",
+                      f"{per_bond['peri/lps']:.1f} / {per_bond['bbpd/lps']:.1f}"]
         else:
-            memory = "not recorded | "
-        lines.append(f"| {r0['cpu']} (family {r0['family']} model {r0['model']}) | "
-                     f"{isa} | {loop['peri/lps']:.2f} | "
-                     f"{loop['bbpd/lps']:.2f} | **{loop['peri/lps'] / loop['bbpd/lps']:.2f}** "
-                     f"({rounds}) | {cpu['peri/lps'] / cpu['bbpd/lps']:.2f} | {memory} |")
-    return "\n".join(lines)
+            memory = ["not recorded", ""]
+        out.append([f"{r0['cpu']} (family {r0['family']} model {r0['model']})", isa,
+                    f"{loop['peri/lps']:.2f}", f"{loop['bbpd/lps']:.2f}",
+                    f"**{loop['peri/lps'] / loop['bbpd/lps']:.2f}** ({rounds})",
+                    f"{cpu['peri/lps'] / cpu['bbpd/lps']:.2f}", *memory])
+    return md_table(["CPU", "vector ISA", "`peri/lps` loop, min (s)", "`bbpd/lps` loop, min (s)",
+                     "loop ratio (rounds)", "processor time ratio",
+                     "memory per rank: `peri/lps` / `bbpd/lps` (MB)", "bytes per bond"], out)
 
 
 # One CPU's run-time SIMD choice (doc/performance.md): perf/pair_vs_pmb.py --simd PATH and
@@ -141,28 +137,24 @@ def simd_table(prefix):
     the path that ran and the load; the best ratio of each scene in bold."""
     runs = _simd_runs(prefix)
     best = {s: max(SIMD_PATHS, key=lambda p: _ratio(_scene(runs[p], s))) for s, _ in SIMD_SCENES}
-    lines = ["| `simd` | plate 2D: ours / `peri/pmb` (ms/step) | ratio | block 3D 41^3: ours / "
-             "`peri/pmb` (ms/step) | ratio | path run | load |", "|---|---|---|---|---|---|---|"]
+    out = []
     for p, rows in runs.items():
-        cells = []
+        cells = [p]
         for s, _ in SIMD_SCENES:
-            r = _scene(rows, s)
-            ratio = f"{_ratio(r):.1f}"
-            cells.append(f"{_ms(r['ours_loop_ms'])} / {_ms(r['pmb_loop_ms'])} | "
-                         + (f"**{ratio}**" if best[s] == p else ratio))
-        ran = ", ".join(_scene(rows, s)["path"] for s, _ in SIMD_SCENES)
-        lines.append(f"| {p} | {' | '.join(cells)} | {ran} | {_loads(rows)} |")
-    return "\n".join(lines)
+            r, ratio = _scene(rows, s), f"{_ratio(_scene(rows, s)):.1f}"
+            cells += [f"{_ms(r['ours_loop_ms'])} / {_ms(r['pmb_loop_ms'])}",
+                      f"**{ratio}**" if best[s] == p else ratio]
+        out.append(cells + [", ".join(_scene(rows, s)["path"] for s, _ in SIMD_SCENES), _loads(rows)])
+    return md_table(["`simd`", "plate 2D: ours / `peri/pmb` (ms/step)", "ratio",
+                     "block 3D 41^3: ours / `peri/pmb` (ms/step)", "ratio", "path run", "load"], out)
 
 
 def floor_table(prefix):
     """Per path the 3D block held still: the kernel's pair time against its floor (no_memory)."""
-    lines = ["| path (3D block held still, `perf/row_floor.py`) | kernel ms/step | floor "
-             "(`no_memory`) ms/step | ratio | load |", "|---|---|---|---|---|"]
-    for p in FLOOR_PATHS:
-        kernel, floor, load = _floor(RESULTS / f"{prefix}-row-floor-{p}.csv")
-        lines.append(f"| {p} | {kernel:.2f} | {floor:.2f} | {kernel / floor:.2f} | {load} |")
-    return "\n".join(lines)
+    floors = {p: _floor(RESULTS / f"{prefix}-row-floor-{p}.csv") for p in FLOOR_PATHS}
+    return md_table(["path (3D block held still, `perf/row_floor.py`)", "kernel ms/step",
+                     "floor (`no_memory`) ms/step", "ratio", "load"],
+                    [[p, f"{k:.2f}", f"{f:.2f}", f"{k / f:.2f}", load] for p, (k, f, load) in floors.items()])
 
 
 # LAMMPS's bpm/peri benchmark deck, ours against peri/* and bond_style bpm/peri
@@ -174,8 +166,7 @@ BPM_MODELS = ("pmb", "lps", "ves", "eps")
 def vs_bpm(data):
     """doc/performance.md's table of perf/vs_bpm.py: per CPU, rank count and model the minimum
     loop time of each variant over the rounds, and the ratios of peri/* and bpm/peri to ours."""
-    lines = ["| CPU, path, load | ranks | model | `peri/*` (s) | `bpm/peri` (s) | ours (s) | "
-             "`peri/*` / ours | `bpm/peri` / ours |", "|" + "---|" * 8]
+    out = []
     for path in VS_BPM_FILES:
         rows = _rows(path)
         r0 = rows[0]
@@ -192,10 +183,10 @@ def vs_bpm(data):
                         best[r["variant"]] = min(best.get(r["variant"], t), t)
                 if not best:
                     continue
-                cell = {v: f"{best[v]:.2f}" if v in best else "-" for v in ("legacy", "bpm", "ours")}
-                ratio = {v: f"{best[v] / best['ours']:.2f}×" if v in best and "ours" in best else "-"
-                         for v in ("legacy", "bpm")}
-                lines.append(f"| {where} | {ranks} | {model} | {cell['legacy']} | {cell['bpm']} | "
-                             f"{cell['ours']} | {ratio['legacy']} | {ratio['bpm']} |")
+                out.append([where, ranks, model]
+                            + [f"{best[v]:.2f}" if v in best else "-" for v in ("legacy", "bpm", "ours")]
+                            + [f"{best[v] / best['ours']:.2f}×" if v in best and "ours" in best else "-"
+                               for v in ("legacy", "bpm")])
                 where = ""
-    return "\n".join(lines)
+    return md_table(["CPU, path, load", "ranks", "model", "`peri/*` (s)", "`bpm/peri` (s)", "ours (s)",
+                     "`peri/*` / ours", "`bpm/peri` / ours"], out)

@@ -43,19 +43,15 @@ MODE1PROP_DX_FULL = (0.1, 0.05, 0.025)
 # rows at the five mixes (the cheapest set that draws the angle against the mix); --full runs
 # the sweep of examples/kink-mixed-mode (bbpd.benchmarks.kink.cases)
 KINK_DEFAULT = ("gaussian", 0.0)     # kernel, crack angle to the grid's rows (deg)
-# crack branching: by default the Gaussian kernel at sigma = 2 MPa, delta = 1 mm, m = 4 (45 s);
-# --full the sweep of examples/crack-branching (bbpd.benchmarks.branching.DEFAULT_RUNS)
-BRANCHING_DEFAULT = ("gaussian-s2-m4",)
 
 # Expected wall time of each single-rank run here, 2 at a time on 2 shared cores (s); only
 # the time-left estimate and the job order (longest first) use them.
 ESTIMATE_S = {
     "dispersion": 6.0,
-    ("mode1", 0.1): 2.0, ("mode1", 0.05): 6.0, ("mode1", 0.025): 60.0,
+    ("mode1", 0.1): 2.0, ("mode1", 0.05): 6.0, ("mode1", 0.025): 60.0, ("mode1", 0.0125): 300.0,
     ("mode2", 1.0e-3): 2.0, ("mode2", 0.5e-3): 8.0, ("mode2", 0.25e-3): 30.0,
     ("kw", 2.0e-3): 8.0, ("kw", 1.0e-3): 75.0, ("kw", 0.5e-3): 200.0, ("kw", 0.25e-3): 1200.0,
     ("mode1prop", 0.1): 3.0, ("mode1prop", 0.05): 15.0, ("mode1prop", 0.025): 160.0,
-    ("branching", 4): 60.0, ("branching", 3): 25.0,
 }
 
 
@@ -132,15 +128,11 @@ def bench_inputs(bench):
                           BENCH / "mode1_propagation.py", BENCH / "mode1.py",
                           ROOT / "python" / "bbpd" / "crack_motion.py",
                           ROOT / "python" / "bbpd" / "crack_tip.py", FREUND_PY,
-                          READERS_PY),
-            "branching": (branching.EXAMPLE, BENCH / "branching.py", READERS_PY, FREUND_PY,
-                          BENCH / "mode1_propagation.py")}[bench]
+                          READERS_PY)}[bench]
 
 
 def label_of(bench, kernel, dx, args):
     """The run's name in the log and the report (part of its cache key)."""
-    if bench == "branching":
-        return f"crack branching {args['name']}"
     return {"dispersion": f"dispersion {kernel}",
             "mode1": f"Mode I {kernel} dx = {dx:g} m",
             "mode2": f"Mode II {kernel} dx = {dx * 1e3:g} mm",
@@ -155,11 +147,17 @@ def make_spec(bench, kernel, dx, target, args, inputs, estimate):
                               inputs, estimate)
 
 
-def _every_kernel(bench, dxs, target, estimate_s):
-    """a single-rank run of target for every kernel at every dx"""
-    inputs = bench_inputs(bench)
-    return [make_spec(bench, k, dx, target, {"kernel": k, "dx": dx, "nprocs": 1}, inputs,
-                      ESTIMATE_S.get((bench, dx), estimate_s)) for dx in dxs for k in KERNELS]
+def _runs(bench, cases, target, estimate_s):
+    """a single-rank run of target for every (kernel, dx) of cases (the KW_GROWTH run of the
+    Kalthoff-Winkler plate draws its damage pictures)"""
+    inputs, specs = bench_inputs(bench), []
+    for k, dx in cases:
+        args = {"kernel": k, "dx": dx, "nprocs": 1}
+        if bench == "kw" and (k, dx) == KW_GROWTH:
+            args["images"] = True
+        specs.append(make_spec(bench, k, dx, target, args, inputs,
+                               ESTIMATE_S.get((bench, dx), estimate_s)))
+    return specs
 
 
 def benchmark_specs(full=False, study=None):
@@ -167,42 +165,25 @@ def benchmark_specs(full=False, study=None):
     full=True, with the loading study unless study=False (make.job_list adds the
     work-precision runs)."""
     study = full if study is None else study
-    specs = []
-    disp_in = bench_inputs("dispersion")
-    for k in KERNELS:
-        specs.append(make_spec("dispersion", k, 0.2e-3, "bbpd.report:dispersion_run",
-                               {"kernel": k}, disp_in, ESTIMATE_S["dispersion"]))
-
-    m1_in = bench_inputs("mode1")
+    specs = [make_spec("dispersion", k, 0.2e-3, "bbpd.report:dispersion_run", {"kernel": k},
+                       bench_inputs("dispersion"), ESTIMATE_S["dispersion"]) for k in KERNELS]
     mode1 = [("gaussian", dx) for dx in MODE1_TABLE2_DX]
     mode1 += [(k, MODE1_TABLE3_DX) for k in KERNELS if (k, MODE1_TABLE3_DX) not in mode1]
-    for k, dx in mode1:
-        specs.append(make_spec("mode1", k, dx, "bbpd.benchmarks.mode1:run",
-                               {"kernel": k, "dx": dx, "nprocs": 1}, m1_in,
-                               ESTIMATE_S.get(("mode1", dx), 60.0)))
-
-    specs += _every_kernel("mode2", MODE2_DX_FULL if full else MODE2_DX,
-                           "bbpd.benchmarks.mode2:run", 60.0)
-
-    kw_in = bench_inputs("kw")
+    specs += _runs("mode1", mode1, "bbpd.benchmarks.mode1:run", 60.0)
+    specs += _runs("mode2", [(k, dx) for dx in (MODE2_DX_FULL if full else MODE2_DX)
+                             for k in KERNELS], "bbpd.benchmarks.mode2:run", 60.0)
     kw = [(k, dx) for dx in KW_DX for k in KERNELS]
-    if full:
-        kw += [("gaussian", dx) for dx in KW_GAUSSIAN_DX_FULL]
-    if study:    # where the Gaussian angle converges (examples/kalthoff-winkler/README.md)
-        kw += [("gaussian", dx) for dx in KW_GAUSSIAN_DX_STUDY]
-    for k, dx in kw:
-        args = {"kernel": k, "dx": dx, "nprocs": 1}
-        if (k, dx) == KW_GROWTH:
-            args["images"] = True
-        specs.append(make_spec("kw", k, dx, "bbpd.benchmarks.kalthoff_winkler:run", args,
-                               kw_in, ESTIMATE_S.get(("kw", dx), 600.0)))
-    specs += _every_kernel("mode1prop", MODE1PROP_DX_FULL if study else MODE1PROP_DX,
-                           "bbpd.benchmarks.mode1_propagation:run", 160.0)
+    kw += [("gaussian", dx) for dx in KW_GAUSSIAN_DX_FULL if full]
+    # where the Gaussian angle converges (examples/kalthoff-winkler/README.md)
+    kw += [("gaussian", dx) for dx in KW_GAUSSIAN_DX_STUDY if study]
+    specs += _runs("kw", kw, "bbpd.benchmarks.kalthoff_winkler:run", 600.0)
+    specs += _runs("mode1prop", [(k, dx) for dx in (MODE1PROP_DX_FULL if study else MODE1PROP_DX)
+                                 for k in KERNELS], "bbpd.benchmarks.mode1_propagation:run", 160.0)
     # the experiment's projectile: the Gaussian at 2 mm; --full adds the other kernels and 1 mm
     specs += kalthoff_winkler_projectile.jobs(full=study)
     specs += kink_specs(study)
     specs += strip.jobs(full=study)    # the strip: Gaussian on a short strip; --full the sweep
-    specs += branching_specs(study)
+    specs += branching.jobs(full=study)    # crack branching: the Gaussian at 2 MPa; --full the sweep
     specs += quasi_static.jobs(full=full)    # examples/quasi-static (fix bbpd/relax)
     if study:    # the Kalthoff-Winkler loading study (32 runs, about 1 h of single-core run time)
         specs += kalthoff_winkler_study.jobs()
@@ -218,14 +199,3 @@ def kink_specs(full=False):
     kernel, alpha = KINK_DEFAULT
     return kink.jobs([c for c in kink.cases() if full or (c[0], c[2], c[3], c[5]) ==
                       (kernel, alpha, kink.COARSE[0], kink.NCROSS)])
-
-
-def branching_specs(full=False):
-    """The branching runs: BRANCHING_DEFAULT, or with full=True the example's sweep."""
-    inputs = bench_inputs("branching")
-    specs = []
-    for name in (branching.DEFAULT_RUNS if full else BRANCHING_DEFAULT):
-        kernel, delta, m, _ = branching.RUNS[name]
-        specs.append(make_spec("branching", kernel, delta / m, "bbpd.benchmarks.branching:job",
-                               {"name": name}, inputs, ESTIMATE_S.get(("branching", m), 400.0)))
-    return specs

@@ -55,7 +55,7 @@ def mode2_j(ok):
 
 # --------------------------------------------------------------------------- figures
 
-def _figures(make, what, notes):
+def figure_names(make, what, notes):
     """The names of the figures make() draws (it returns their paths), or [] with a note in the
     report: a failure does not stop it."""
     try:
@@ -63,11 +63,6 @@ def _figures(make, what, notes):
     except Exception as exc:  # the report must still be written
         notes.append(f"{what} not made: {type(exc).__name__}: {exc}")
         return []
-
-
-def _figure(make, path, notes):
-    """[the name of the figure make() draws at path], or [] with a note in the report"""
-    return _figures(lambda: (make(), [path])[1], f"figure {Path(path).name}", notes)
 
 
 def mode2_figures(ok, figdir, notes):
@@ -89,9 +84,10 @@ def mode2_figures(ok, figdir, notes):
                       for (k, d), r in ok.items() if d == dx and col in r]
             if series:
                 path = figdir / f"fig12_{name}_dx{dx * 1e3:g}mm.png"
-                figs += _figure(lambda: plot_k(path, series, refs, window,
-                                               title.format(f"{dx * 1e3:g}"), "t (us)",
-                                               r"$K_{II}/(\tau\sqrt{\pi a})$"), path, notes)
+                figs += figure_names(lambda: [plot_k(path, series, refs, window,
+                                                     title.format(f"{dx * 1e3:g}"), "t (us)",
+                                                     r"$K_{II}/(\tau\sqrt{\pi a})$")],
+                                     f"figure {path.name}", notes)
     return figs
 
 
@@ -148,8 +144,8 @@ def dispersion_section(specs, results, figdir, notes):
         measured=names(lambda k: (numbers["min_vg"].get(k) or 0.0) < NEGATIVE_VG),
         printed=names(lambda k: table[k]["discrete"]["group_negative"]),
         cv=names(lambda k: table[k]["discrete_cv"]["group_negative"]))] if numbers["dev"] else []
-    figs = _figures(lambda: dispersion.plot_figures(runs, paper, cv, figdir),
-                            "dispersion figures", notes)    # Figs. 4-6
+    figs = figure_names(lambda: dispersion.plot_figures(runs, paper, cv, figdir),
+                        "dispersion figures", notes)    # Figs. 4-6
     return _section("dispersion", _tables([("", md_table(header, rows))], specs, results), text,
                     figs)
 
@@ -157,7 +153,7 @@ def dispersion_section(specs, results, figdir, notes):
 def mode1_section(specs, results, figdir, notes):
     ok = tables.finished(specs, results, ("t", "k_paper", "k_consistent", "k_ii"))
     rows3_ok = {k: ok[k, MODE1_TABLE3_DX] for k in KERNELS if (k, MODE1_TABLE3_DX) in ok}
-    figs = _figures(lambda: mode1.figures(
+    figs = figure_names(lambda: mode1.figures(
         {dx: r for (k, dx), r in ok.items() if k == "gaussian"}, rows3_ok, figdir), "Figs. 9-10", notes)
     rows = [mode1.row(r) for r in ok.values()]
     table = _tables([("Table 2, Gaussian kernel", mode1.table2(rows)),
@@ -178,8 +174,8 @@ def mode2_section(specs, results, figdir, notes):
 
 def kw_section(specs, results, figdir, notes):
     ok = tables.finished(specs, results)
-    figs = _figures(lambda: kalthoff_winkler.figures(list(ok.values()), figdir),
-                            "Kalthoff-Winkler figures", notes)
+    figs = figure_names(lambda: kalthoff_winkler.figures(list(ok.values()), figdir),
+                        "Kalthoff-Winkler figures", notes)
     text = [KW_PICTURES.format(k=k, dx=dx * 1e3, n=len(r["snapshots"]))
             for (k, dx), r in sorted(ok.items()) if f"growth_{k}_dx{dx * 1e3:g}mm.png" in figs]
     table = _tables([("", kalthoff_winkler.table([kalthoff_winkler.row(r) for r in ok.values()]))],

@@ -18,7 +18,7 @@ from bbpd import csvfile
 from bbpd import jobs as jobmod
 from bbpd.jobs import Job, Spec
 from bbpd.kernels import KERNELS
-from .sections import _figure
+from .sections import figure_names
 from bbpd.provenance import machine
 from .runs import ESTIMATE_S, bench_inputs, build_of_run, label_of
 from .tables import failed, md_table
@@ -54,16 +54,12 @@ WAVELENGTH_MODE = 64               # the fixed wave: 64 wavelengths on the ring 
 WAVELENGTH = RING_LENGTH / WAVELENGTH_MODE
 K_MATCH_RTOL = 1.0e-9              # the ring's k grid holds 2 pi/WAVELENGTH to round-off
 
-
-
 TIMING_REPEATS = 3                 # runs timed this often (median) when expected short
 REPEAT_BELOW_S = 10.0              # "short": expected loop time below this
 
-# expected wall time of the added runs (s) where report.ESTIMATE_S has none: job order and
-# the choice of which runs are repeated for timing only
+# expected wall time of the dispersion rings (s; the other runs': runs.ESTIMATE_S): job order
+# and the choice of which runs are repeated for timing only
 DISPERSION_ESTIMATE_S = {3: 2.0, 5: 3.0, 10: 6.0, 20: 9.0}
-MODE1_ESTIMATE_S = {0.0125: 300.0}
-KW_ESTIMATE_S = {0.5e-3: 200.0}
 
 # the error that the report asks each kernel's cost for
 TARGETS = {("mode1", "L2 (%)"): 3.0,        # the paper's Gaussian L2 at dx = 0.05 m: 2.86 %
@@ -78,7 +74,6 @@ TARGETS = {("mode1", "L2 (%)"): 3.0,        # the paper's Gaussian L2 at dx = 0.
 # example's committed CSV (bbpd.benchmarks.center_crack --dynamic); its resolution is the
 # bisection's bracket (relax, below 1) or the ramp in transit times (dynamic, 1 and above)
 QUASI_STATIC_CSV = center_crack.HERE / "results" / "center_crack_dynamic.csv"
-
 
 
 @dataclass(frozen=True)
@@ -171,12 +166,11 @@ def extra_specs(specs, the_plan):
             out.append(have[key])
         runs.append(have[key])
 
-    # (benchmark, its name in bbpd.report.runs, target, resolutions, estimates, default estimate)
-    benches = (("mode1", "mode1", "bbpd.benchmarks.mode1:run", the_plan.mode1_dx,
-                MODE1_ESTIMATE_S, 60.0),
-               ("mode2", "mode2", "bbpd.benchmarks.mode2:run", the_plan.mode2_dx, {}, 60.0),
+    # (benchmark, its name in bbpd.report.runs, target, resolutions, estimate where runs has none)
+    benches = (("mode1", "mode1", "bbpd.benchmarks.mode1:run", the_plan.mode1_dx, 60.0),
+               ("mode2", "mode2", "bbpd.benchmarks.mode2:run", the_plan.mode2_dx, 60.0),
                ("kalthoff_winkler", "kw", "bbpd.benchmarks.kalthoff_winkler:run",
-                the_plan.kw_dx, KW_ESTIMATE_S, 600.0))
+                the_plan.kw_dx, 600.0))
     for k in the_plan.kernels:
         for m in the_plan.dispersion_m:
             dx = DISPERSION_DELTA / m
@@ -184,12 +178,12 @@ def extra_specs(specs, the_plan):
                 "wp-dispersion", k, dx, f"dispersion {k} m = {m:g}",
                 "bbpd.report.work_precision:dispersion_run", {"kernel": k, "m": m},
                 bench_inputs("dispersion"), DISPERSION_ESTIMATE_S.get(m, 60.0)))
-        for bench, name, target, dxs, estimates, default in benches:
+        for bench, name, target, dxs, default in benches:
             for dx in dxs:    # the same inputs as the report's own runs of the benchmark
                 args = {"kernel": k, "dx": dx, "nprocs": 1}
                 want(bench, k, dx, lambda: jobmod.report_spec(
                     "wp-" + name, k, dx, label_of(name, k, dx, args), target, args,
-                    bench_inputs(name), ESTIMATE_S.get((name, dx), estimates.get(dx, default))))
+                    bench_inputs(name), ESTIMATE_S.get((name, dx), default)))
     if the_plan.repeats > 1:
         out += [_timing_spec(s, the_plan.repeats - 1) for s in runs
                 if s.job.estimate_s < REPEAT_BELOW_S]
@@ -374,7 +368,7 @@ SETUP = ("Error against run time for every benchmark, one line per kernel throug
 
 def collect(specs, results):
     """Finished runs and their run times: ([(benchmark, kernel, dx, result, wall_s)],
-    {label: number of timings}, [failed labels])."""
+    {label: number of timings})."""
     repeats = {}
     for s in specs:
         if s.bench == TIMING_BENCH:
@@ -412,8 +406,8 @@ def section(specs, results, figdir, notes):
         if not any(r["benchmark"] == bench for r in table):
             continue
         path = figdir / f"work_precision_{bench}.png"
-        figs += _figure(lambda: plot(path, table, bench, TITLES[bench],
-                                     lambda dx: _fmt_dx(bench, dx)), path, notes)
+        figs += figure_names(lambda: [plot(path, table, bench, TITLES[bench],
+                                           lambda dx: _fmt_dx(bench, dx))], f"figure {path.name}", notes)
     reach = reach_table(table)
     text = ["The cost of reaching each target error:\n\n" + reach] if reach else []
     setup = SETUP.format(repeats=TIMING_REPEATS, below=REPEAT_BELOW_S,
@@ -428,16 +422,12 @@ def section(specs, results, figdir, notes):
 def summary_table(table):
     """Markdown: one row per benchmark, kernel, method and metric: error (run time) per
     resolution, coarsest first."""
-    keys = []
-    for r in table:
-        key = (r["benchmark"], r["kernel"], r["method"], r["error_metric"])
-        if key not in keys:
-            keys.append(key)
+    def key(r):
+        return r["benchmark"], r["kernel"], r["method"], r["error_metric"]
     body = []
-    for bench, kernel, method, metric in keys:
+    for bench, kernel, method, metric in dict.fromkeys(map(key, table)):    # in the table's order
         pts = sorted(((r["resolution"], r["error"], r["wall_s"]) for r in table
-                      if (r["benchmark"], r["kernel"], r["method"], r["error_metric"])
-                      == (bench, kernel, method, metric)), reverse=True)
+                      if key(r) == (bench, kernel, method, metric)), reverse=True)
         body.append([bench, kernel, METHOD_LABEL[method], metric,
                      "; ".join(f"{_fmt_dx(bench, dx)}: {_fmt_err(metric, e)} ({_fmt_s(w)})"
                                for dx, e, w in pts)])
