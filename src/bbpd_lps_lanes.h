@@ -533,10 +533,14 @@ namespace LPS {
                              const AtomState *states, const RowCoefficients &c,
                              const double *smin_all, double *snew, ForceLanes &out)
   {
+    // an atom without weighted volume (it never had a bond) has no bond force: the portable
+    // loop's (no branch per group here)
+    if (!(c.inv_m_i > 0.0))
+      return force_row_portable<EV, CHECK>(xx, i, bj, vals, n, states, c, [&](int j) {
+        return StretchRule::critical_stretch(c.s00, c.alpha, c.smin_i, smin_all[j]);
+      }, snew, out);
     const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
-                  zi = _mm256_set1_pd(xx[3 * i + 2]),
-                  zero = _mm256_setzero_pd();
-    const bool has_m = c.inv_m_i > 0.0;
+                  zi = _mm256_set1_pd(xx[3 * i + 2]);
     ForceSums4x2<EV, CHECK> sums;
     auto add = [&](auto half, auto masked_c, __m256d m, __m256d dx, __m256d dy, __m256d dz,
                    __m256d xi0, __m256d wv, __m256d tom, __m256d inv_m) BBPD_GROUPS_INLINE {
@@ -544,9 +548,7 @@ namespace LPS {
       constexpr bool MASKED = decltype(masked_c)::value;
       const __m256d r = lengths4(dx, dy, dz);
       const __m256d e = Elongation::elongation(Vec4(r), Vec4(xi0)).v;
-      const __m256d fpl = has_m
-          ? force_per_length(c, Vec4(wv), Vec4(xi0), Vec4(e), Vec4(r), Vec4(tom), Vec4(inv_m)).v
-          : zero;
+      const __m256d fpl = force_per_length(c, Vec4(wv), Vec4(xi0), Vec4(e), Vec4(r), Vec4(tom), Vec4(inv_m)).v;
       sums.template add<H, MASKED>(m, dx, dy, dz, fpl, energy_term(c, Vec4(wv), Vec4(xi0), Vec4(e)).v);
       sums.template check<MASKED>(m, e, xi0);
     };
