@@ -20,9 +20,17 @@ bpm/ours; --csv writes one row per run with the CPU (model name, family, model),
 paths, the path our setup report names, the load average before and after, the date and the
 command.
 
+--scene cylinder runs LAMMPS's examples/peri cylinder instead (3,487 nodes shattered by an
+indenter, 1000 steps: breaking, the state's ghost exchange and contact in the cost), with the
+mean damage at the end of each run in place of the thermo check. bpm/peri's short-range force
+starts at 1.35 lattice constants for every pair that has no bond (pair_bpm_peri.cpp), so a
+nearest-neighbour bond that breaks (0.5 mm long, peri/*: contact below 0.9 of that) is pushed
+apart at once: its cylinder runs away once bonds break (mean damage 0.27 at step 150 against
+peri/lps's 0.0003): its timings there are printed, not comparable.
+
 Usage (from the repository root):
   tools/python perf/vs_bpm.py [--anchor ~/.cache/bbpd/bpm-anchor/build/lmp] [--rounds 3]
-      [--ranks 1 2] [--models pmb lps ves eps] [--csv perf/results/NAME.csv]
+      [--ranks 1 2] [--models pmb lps ves eps] [--scene deck|cylinder] [--csv perf/results/NAME.csv]
 (the anchor is built by ../shared/anchors/bpm-peri/build.sh where that kit is at hand.)
 """
 import argparse
@@ -47,18 +55,49 @@ S00, ALPHA = 0.5, 0.25
 C_PMB = 1.6863e22               # peri/pmb's micromodulus of the deck
 LAMBDA_I, TAU_B = 0.5, 0.001    # peri/ves: m_lambdai, m_taubi
 YIELD = 10.0e8                  # peri/eps: m_yieldstress
-LEGACY_COEFF = {
-    "pmb": f"{C_PMB} {HORIZON} {S00} {ALPHA}",
-    "lps": f"{K} {G} {HORIZON} {S00} {ALPHA}",
-    "ves": f"{K} {G} {HORIZON} {S00} {ALPHA} {LAMBDA_I} {TAU_B}",
-    "eps": f"{K} {G} {HORIZON} {S00} {ALPHA} {YIELD}",
-}
-BPM_COEFF = {    # bond_coeff of bond_style bpm/peri, as in the benchmark's README
-    "pmb": f"pmb {C_PMB} {HORIZON} {S00} {ALPHA}",
-    "lps": f"lps {K} {G} {HORIZON} {S00} {ALPHA}",
-    "ves": f"ves {K} {G} {LAMBDA_I} {TAU_B} {HORIZON} {S00} {ALPHA}",
-    "eps": f"eps {K} {G} {YIELD} {HORIZON} {S00} {ALPHA}",
-}
+
+
+def legacy_coeff(model, s00=S00):
+    """pair_coeff of peri/MODEL (and bbpd/MODEL) with critical stretch s00"""
+    return {"pmb": f"{C_PMB} {HORIZON} {s00} {ALPHA}",
+            "lps": f"{K} {G} {HORIZON} {s00} {ALPHA}",
+            "ves": f"{K} {G} {HORIZON} {s00} {ALPHA} {LAMBDA_I} {TAU_B}",
+            "eps": f"{K} {G} {HORIZON} {s00} {ALPHA} {YIELD}"}[model]
+
+
+def bpm_coeff(model, s00=S00):
+    """bond_coeff of bond_style bpm/peri, as in the benchmark's README"""
+    return {"pmb": f"pmb {C_PMB} {HORIZON} {s00} {ALPHA}",
+            "lps": f"lps {K} {G} {HORIZON} {s00} {ALPHA}",
+            "ves": f"ves {K} {G} {LAMBDA_I} {TAU_B} {HORIZON} {s00} {ALPHA}",
+            "eps": f"eps {K} {G} {YIELD} {HORIZON} {s00} {ALPHA}"}[model]
+
+
+# the fracture scene (--scene cylinder): LAMMPS's examples/peri, a glass cylinder of radius 5 mm
+# and height 5 mm (3,487 nodes) shattered by a spherical indenter at 100 m/s, s00 = 0.0005,
+# 1000 steps; the mean damage at the end is printed for each variant (bpm/peri's ves and eps are
+# other models than peri/ves and peri/eps by design, so theirs may differ)
+CYLINDER_S00 = 0.0005
+CYLINDER_STEPS = 1000
+CYLINDER = """units si
+boundary s s s
+atom_modify map array
+neighbor 0.0010 bin
+lattice sc 0.0005
+region target cylinder y 0.0 0.0 0.0050 -0.0050 0.0 units box
+"""
+INDENTER = f"""velocity all set 0.0 0.0 0.0 sum no units box
+fix 1 all nve
+variable y equal "0.00155 + step*dt*(-100)"
+fix 2 all indent 1e17 sphere 0.0000 v_y 0.0000 0.0015 units box
+compute dmean all reduce ave c_1
+thermo_style custom step c_dmean ke
+thermo_modify format float %.10g
+timestep 1.0e-7
+thermo {CYLINDER_STEPS}
+run {CYLINDER_STEPS}
+"""
+DAMAGE = {"legacy": "damage/atom", "ours": "bbpd/damage/atom", "bpm": "bpm/peri/damage/atom"}
 # the thermo check: what ours and peri/* may differ by, relative to the run's largest value
 # (both sum the same bonds in other orders: round-off of ~1e-13 measured, see the docstring)
 CHECK_TOL = 1e-9
@@ -87,27 +126,33 @@ thermo_modify format float %23.16e
 """
 
 
-def deck(model, variant, check=False):
-    """the input of one run: the benchmark deck, or with check the free, moving block"""
-    text = BLOCK.format(boundary="s s s" if check else "p p p")
+def deck(model, variant, check=False, cylinder=False):
+    """the input of one run: the benchmark deck, with check the free, moving block, with
+    cylinder the fracture scene"""
+    text = CYLINDER if cylinder else BLOCK.format(boundary="s s s" if check else "p p p")
+    box = "target" if cylinder else "box"
+    create = f"create_box 1 {box}"
+    atoms = f"create_atoms 1 {'region target' if cylinder else 'box'}\n"
+    s00 = CYLINDER_S00 if cylinder else S00
     if variant == "bpm":
         text = ("atom_style bond\nspecial_bonds lj 0.0 1.0 1.0 coul 0.0 1.0 1.0\nnewton on off\n"
                 "comm_modify cutoff 0.004\n" + text +
-                "create_box 1 box bond/types 1 extra/bond/per/atom 200 extra/special/per/atom 250\n"
-                "create_atoms 1 box\n"
+                f"{create} bond/types 1 extra/bond/per/atom 200 extra/special/per/atom 250\n" + atoms +
                 # bpm/peri computes force densities as peri/* do: the mass is the density
                 "mass * 2200\nfix vol all property/atom d_vfrac ghost yes\n"
                 f"set group all d_vfrac {VOLUME}\n"
                 f"pair_style bpm/peri\npair_coeff * * {C_PMB} {HORIZON}\n"
                 f"create_bonds many all all 1 0.0 {HORIZON}\n"
                 "special_bonds lj 0.0 1.0 1.0 coul 1.0 1.0 1.0\n"
-                f"bond_style bpm/peri\nbond_coeff 1 {BPM_COEFF[model]}\n")
+                f"bond_style bpm/peri\nbond_coeff 1 {bpm_coeff(model, s00)}\n")
     else:
         style = f"bbpd/{model} 3d" if variant == "ours" else f"peri/{model}"
         text = (("plugin load bbpdplugin.so\n" if variant == "ours" else "") + "atom_style peri\n" + text +
-                "create_box 1 box\ncreate_atoms 1 box\n"
-                f"pair_style {style}\npair_coeff * * {LEGACY_COEFF[model]}\n"
+                f"{create}\n" + atoms +
+                f"pair_style {style}\npair_coeff * * {legacy_coeff(model, s00)}\n"
                 f"set group all density 2200\nset group all volume {VOLUME}\n")
+    if cylinder:
+        return text + f"compute 1 all {DAMAGE[variant]}\n" + INDENTER
     text += MOTION if check else "velocity all set 0.0 0.0 0.0 units box\n"
     return text + RUN
 
@@ -158,6 +203,12 @@ def check_thermo(models, legacy_exe, workdir):
     return have
 
 
+def final_damage(out):
+    """the mean damage at the last thermo line of a cylinder run"""
+    rows = re.findall(r"^\s*(\d+)\s+([-0-9.eE+]+)\s+([-0-9.eE+]+)\s*$", out, re.M)
+    return float(rows[-1][1]) if rows else None
+
+
 def timing(out):
     loop = float(re.search(r"^Loop time of ([0-9.eE+-]+)", out, re.M).group(1))
     pair = re.search(r"^Pair\s*\|\s*([0-9.eE+-]+)", out, re.M)
@@ -186,8 +237,11 @@ def main():
     ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--ranks", type=int, nargs="+", default=[1, 2])
     ap.add_argument("--models", nargs="+", choices=MODELS, default=list(MODELS))
+    ap.add_argument("--scene", choices=("deck", "cylinder"), default="deck",
+                    help="LAMMPS's benchmark deck, or the examples/peri cylinder (fracture)")
     ap.add_argument("--csv", type=Path)
     args = ap.parse_args()
+    cylinder = args.scene == "cylinder"
     if args.anchor and not os.access(args.anchor, os.X_OK):
         sys.exit(f"vs_bpm: --anchor {args.anchor} is not an executable lmp")
     legacy_exe = args.anchor or LMP
@@ -199,7 +253,8 @@ def main():
     results = []
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        ours_models = check_thermo(args.models, legacy_exe, tmp)
+        # the cylinder's check is its damage, printed with each run
+        ours_models = args.models if cylinder else check_thermo(args.models, legacy_exe, tmp)
         for ranks in args.ranks:
             for rnd in range(1, args.rounds + 1):
                 for model in args.models:
@@ -208,23 +263,30 @@ def main():
                             continue
                         exe = LMP if variant == "ours" else legacy_exe
                         before = load_average()
-                        out = run(exe, deck(model, variant), ranks, tmp / f"{ranks}-{rnd}-{model}-{variant}")
+                        out = run(exe, deck(model, variant, cylinder=cylinder), ranks,
+                                  tmp / f"{ranks}-{rnd}-{model}-{variant}")
+                        if out is None:    # this plugin lacks the model
+                            continue
                         r = dict(timing(out), round=rnd, ranks=ranks, model=model, variant=variant,
+                                 damage=final_damage(out) if cylinder else "",
                                  load_before=before, load_after=load_average())
                         results.append(r)
                         print(f"{ranks} rank(s), round {rnd}, {model} {variant}: loop {r['loop_s']:.3f} s"
-                              + (f" ({r['path']} path)" if r["path"] else ""), flush=True)
+                              + (f" ({r['path']} path)" if r["path"] else "")
+                              + (f", mean damage {r['damage']:.6g}" if cylinder else ""), flush=True)
     summary(results)
     if args.csv:
         command = "tools/python perf/vs_bpm.py " + " ".join(sys.argv[1:])
         date = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
-        fields = ["ranks", "round", "model", "variant", "loop_s", "pair_s", "bond_s", "path", "steps", "cpu",
+        fields = ["scene", "ranks", "round", "model", "variant", "loop_s", "pair_s", "bond_s", "path", "steps",
+                  "damage", "cpu",
                   "family", "cpu_model", "isa", "load_before", "load_after", "date", "command"]
         with open(args.csv, "w", newline="") as f:
             w = csv.DictWriter(f, fieldnames=fields)
             w.writeheader()
             for r in results:
-                w.writerow(dict(r, steps=STEPS, **machine, date=date, command=command))
+                w.writerow(dict(r, scene=args.scene, steps=CYLINDER_STEPS if cylinder else STEPS, **machine,
+                                date=date, command=command))
         print(f"wrote {args.csv}")
 
 

@@ -332,6 +332,10 @@ template <int EVFLAG, class F> void PairBBPDLPS::eval_history()
   eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
     return HistoryRow<EVFLAG, F>(*this, i, acc, cache, replay, canonical, rule, margin);
   });
+  // every row that broke bonds in this step has shifted its slots (HistoryRow::sum): the slots
+  // are current until bonds go another way (on the bpm/peri cylinder, finding them all again
+  // each step was 12 % of a VES run)
+  slot_removals = bonds->row_removals();
   end_state();
 }
 
