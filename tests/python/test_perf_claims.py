@@ -100,10 +100,17 @@ def test_the_bpm_lines_of_doc_performance_follow_the_csv():
     ratio = {(n, m): best[(n, m, "bpm")] / best[(n, m, "ours")] for n in ("1", "2") for m in perf.BPM_MODELS}
     one = ", ".join(f"{m.upper()} {ratio[('1', m)]:.1f}x" for m in perf.BPM_MODELS)
     two = ", ".join(f"{ratio[('2', m)]:.1f}x" for m in perf.BPM_MODELS)
-    assert f"Ours / `bpm/peri` on one rank: {one}; on two ranks {two}." in " ".join(text.split())
-    # reached: 4x on one rank (PMB only), 3x on two ranks (PMB, LPS, VES; not EPS)
-    assert [m for m in perf.BPM_MODELS if ratio[("1", m)] >= 4.0] == ["pmb"]
-    assert [m for m in perf.BPM_MODELS if ratio[("2", m)] >= 3.0] == ["pmb", "lps", "ves"]
+    flat = " ".join(text.split())
+    assert f"Ours / `bpm/peri` on one rank: {one}; on two ranks {two}." in flat
+    # which of the issue's targets (4x on one rank, 3x on two) the CSV reaches, as the doc says
+    def names(models):
+        return ", ".join(m.upper() for m in models) or "none"
+    for ranks, target in (("1", 4.0), ("2", 3.0)):
+        reached = [m for m in perf.BPM_MODELS if ratio[(ranks, m)] >= target]
+        missed = [m for m in perf.BPM_MODELS if m not in reached]
+        where = "one rank" if ranks == "1" else "two ranks"
+        said = f"{target:.0f}x on {where}: reached by {names(reached)}" + (f"; not by {names(missed)}" if missed else "")
+        assert said + "." in flat
     lps_in_pmb = best[("1", "lps", "ours")] / best[("1", "pmb", "ours")]
     assert f"An LPS step is {lps_in_pmb:.1f} PMB steps ({best[('1', 'lps', 'ours')]:.3f} / " \
            f"{best[('1', 'pmb', 'ours')]:.3f} s" in " ".join(text.split())
@@ -138,3 +145,25 @@ def test_the_3d_plate_lines_of_doc_performance_follow_the_csvs():
     two = perf._rows(perf.RESULTS / "spr-scaling-3d-np2.csv")[0]
     assert two["nprocs"] == "2" and two["atoms"] == large["atoms"]
     assert f"set up in **{two['setup_s']} s** and step in {float(two['pair_ms_per_step']):.1f} ms" in text
+
+
+def test_the_cylinder_lines_of_doc_performance_follow_the_csv():
+    """doc/performance.md on LAMMPS's cylinder for each model (perf/vs_bpm.py --scene
+    cylinder): ours and peri/* end with the same mean damage (within 1e-3 of it for PMB and
+    LPS, whose round-off shows once the cylinder has fragmented; every printed digit for VES
+    and EPS), bpm/peri's runs have run away (damage near 1), and the ratio to peri/lps the text
+    gives"""
+    import csv
+    rows = list(csv.DictReader(open(perf.VS_BPM_CYLINDER_FILES[0], newline="")))
+    damage = {(r["model"], r["variant"]): float(r["damage"]) for r in rows}
+    for model in perf.BPM_MODELS:
+        legacy, ours = damage[(model, "legacy")], damage[(model, "ours")]
+        if model in ("ves", "eps"):
+            assert f"{legacy:.10g}" == f"{ours:.10g}", (model, legacy, ours)
+        else:
+            assert abs(ours - legacy) < 1e-3 * legacy, (model, legacy, ours)
+        assert damage[(model, "bpm")] > 0.95, model
+    best = _minima(perf.VS_BPM_CYLINDER_FILES[0], lambda r: (r["model"], r["variant"]))
+    ratio = best[("lps", "legacy")] / best[("lps", "ours")]
+    text = " ".join((perf.ROOT / "doc" / "performance.md").read_text().split())
+    assert f"Against `peri/lps` ours is {ratio:.1f}x here, not the 10x" in text

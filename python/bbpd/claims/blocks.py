@@ -38,5 +38,6 @@ BLOCKS = {
                   "zen5-simd": lambda data: perf.simd_table("zen5"),
                   "zen5-floor": lambda data: perf.floor_table("zen5"),
                   "spr-simd": lambda data: perf.simd_table("spr"),
-                  "spr-floor": lambda data: perf.floor_table("spr"), "vs-bpm": perf.vs_bpm},
+                  "spr-floor": lambda data: perf.floor_table("spr"), "vs-bpm": perf.vs_bpm,
+                  "vs-bpm-cylinder": perf.vs_bpm_cylinder},
 }

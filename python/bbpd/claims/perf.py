@@ -190,3 +190,26 @@ def vs_bpm(data):
                 where = ""
     return md_table(["CPU, path, load", "ranks", "model", "`peri/*` (s)", "`bpm/peri` (s)", "ours (s)",
                      "`peri/*` / ours", "`bpm/peri` / ours"], out)
+
+
+# LAMMPS's examples/peri cylinder for each model (perf/vs_bpm.py --scene cylinder --csv)
+VS_BPM_CYLINDER_FILES = (RESULTS / "spr-vs-bpm-cylinder.csv",)
+
+
+def vs_bpm_cylinder(data):
+    """the cylinder's table: per CPU and model the minimum loop time of each variant, the ratios
+    to ours, and each variant's mean damage at the end (the same in every round)"""
+    out = []
+    for path in VS_BPM_CYLINDER_FILES:
+        rows = _rows(path)
+        where = f"{rows[0]['cpu']} (family {rows[0]['family']} model {rows[0]['cpu_model']}), load {_loads(rows)}"
+        for model in BPM_MODELS:
+            mine = [r for r in rows if r["model"] == model]
+            best = {v: min(float(r["loop_s"]) for r in mine if r["variant"] == v) for v in ("legacy", "bpm", "ours")}
+            damage = {r["variant"]: float(r["damage"]) for r in mine}
+            out.append([where, model] + [f"{best[v]:.2f}" for v in ("legacy", "bpm", "ours")]
+                       + [f"{best[v] / best['ours']:.2f}×" for v in ("legacy", "bpm")]
+                       + [f"{damage[v]:.4f}" for v in ("legacy", "bpm", "ours")])
+            where = ""
+    return md_table(["CPU, load", "model", "`peri/*` (s)", "`bpm/peri` (s)", "ours (s)", "`peri/*` / ours",
+                     "`bpm/peri` / ours", "damage `peri/*`", "damage `bpm/peri`", "damage ours"], out)
