@@ -44,8 +44,8 @@ TOTALS = "thermo_style custom step pe ke press\nthermo_modify format float %.17g
 def _test_module(name):
     """a file of tests/lammps as a module (the scenes are its inputs), registered under its
     name, so that the test files that import it by name (pytest.ini's pythonpath) find it"""
-    if str(TESTS) not in sys.path:    # their helpers (refmodel.py), as pytest.ini puts it there
-        sys.path.insert(0, str(TESTS))
+    if name != "refmodel":    # the test files' helper, which they import by name
+        _test_module("refmodel")
     if name not in sys.modules:
         spec = importlib.util.spec_from_file_location(name, TESTS / f"{name}.py")
         sys.modules[name] = importlib.util.module_from_spec(spec)
