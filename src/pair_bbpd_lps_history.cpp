@@ -333,7 +333,7 @@ template <int EVFLAG, class F> void PairBBPDLPS::eval_history()
     return HistoryRow<EVFLAG, F>(*this, i, acc, cache, replay, canonical, rule, margin);
   });
   // every row that broke bonds in this step has shifted its slots (HistoryRow::sum): the slots
-  // are current until bonds go another way (on the bpm/peri cylinder, finding them all again
+  // are current until bonds go another way (on LAMMPS's cylinder example, finding them all again
   // each step was 12 % of a VES run)
   slot_removals = bonds->row_removals();
   end_state();
