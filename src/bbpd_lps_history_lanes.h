@@ -174,19 +174,23 @@ namespace LPS {
     _mm512_mask_i32scatter_pd(hist + 1, m, hi, h1, 8);
   }
 
-  /* the force pass, 8 lanes (one s00 and alpha) */
-  template <class F, int EV, int CHECK, int COMMIT, class Idx, class Values>
+  /* the force pass, 8 lanes (one s00 and alpha); with NORM also the norm pass of
+     history_norm_force_portable in the same pass over the row: every bond end's history read
+     and rolled, its norm term summed into *norm_sum, and the commit of the force state (the
+     elastic plan's) written where the bond has a force */
+  template <class F, int EV, int CHECK, int COMMIT, bool NORM = false, class Idx, class Values>
   inline bool history_force_avx512(const double *xx, int i, const Idx *bj, const Values &vals,
                                    int n, const AtomState *states, const F &fam,
                                    const typename F::Plan &plan, const HistoryCoefficients &c,
                                    const int *slot, double *hist, const double *smin_all,
-                                   double *snew, ForceLanes &out)
+                                   double *snew, ForceLanes &out, double *norm_sum = nullptr)
   {
     const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
                   zi = _mm512_set1_pd(xx[3 * i + 2]), zero = _mm512_setzero_pd();
     const __mmask8 row_ok = c.inv_m_i > 0.0 ? (__mmask8) 0xFF : (__mmask8) 0;
     const bool dense = dense_slots(slot, n);
     ForceSums8<EV, CHECK> sums;
+    __m512d nacc = zero;
     for (int k = 0; k < n; k += LANES) {
       const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
       const __m256i j1 = load_partners(bj, m, i, k);
@@ -195,23 +199,36 @@ namespace LPS {
       load_states(states, j1, m, tom, inv_m);
       // bonds with a weighted volume at both ends: force, energy, history
       const __mmask8 ok = m & row_ok & _mm512_cmp_pd_mask(inv_m, zero, _CMP_GT_OQ);
+      const __mmask8 read = NORM ? m : ok;    // the norm pass rolls every bond end's history
       __m512d ha, hb;
-      read_history8<F>(slot, hist, k, ok, dense, ha, hb);
+      read_history8<F>(slot, hist, k, read, dense, ha, hb);
       Vec8 h0(ha), h1(hb);
-      Vec8 energy(0.0);
+      if constexpr (NORM) {
+        const Vec8 ed = Vec8(b.elong) - Vec8(c.theta_third_i) * Vec8(b.xi0);
+        const Vec8 term = fam.template norm_term_v<true>(Vec8(b.coef), influence_v(Vec8(b.xi0)), ed,
+                                                         Vec8(c.inv_m_i) + Vec8(inv_m), h0, h1);
+        nacc = _mm512_mask_add_pd(nacc, m, nacc, term.v);
+      }
+      Vec8 f0 = h0, f1 = h1, energy(0.0);
       const Vec8 t = history_force_v<F, COMMIT != 0>(fam, plan, c, Vec8(b.coef), Vec8(b.xi0),
-                                                     Vec8(b.elong), Vec8(tom), Vec8(inv_m), h0, h1, energy);
-      if (COMMIT) write_history8<F>(slot, hist, k, ok, dense, h0.v, h1.v);
+                                                     Vec8(b.elong), Vec8(tom), Vec8(inv_m), f0, f1, energy);
+      if (NORM)
+        write_history8<F>(slot, hist, k, read, dense, h0.v, _mm512_mask_mov_pd(h1.v, ok, f1.v));
+      else if (COMMIT)
+        write_history8<F>(slot, hist, k, ok, dense, f0.v, f1.v);
       const __m512d t_ok = _mm512_maskz_mov_pd(ok, t.v);
       const __m512d fpl = vselect(Vec8(b.r) > Vec8(zero), Vec8(t_ok) / Vec8(b.r), Vec8(zero)).v;
       sums.add(m, b, fpl, _mm512_maskz_mov_pd(ok, energy.v));
       sums.check(m, b);
     }
+    if constexpr (NORM) {
+      alignas(64) double lane[LANES];
+      _mm512_store_pd(lane, nacc);
+      *norm_sum = lane_total(lane);
+    }
     return sums.store(out, snew, c) && past_avx512(xx, i, bj, vals, n, c, smin_all);
   }
-  /* history_norm_force_portable in one pass, 8 lanes: every bond end's history read and rolled
-     (the norm pass's), its norm term, and the elastic plan's force state, whose commit is
-     written where the bond has a force */
+  // history_norm_force_portable's pass in 8 lanes
   template <class F, int EV, class Idx, class Values>
   inline bool history_norm_force_avx512(const double *xx, int i, const Idx *bj, const Values &vals,
                                         int n, const AtomState *states, const F &fam,
@@ -219,40 +236,9 @@ namespace LPS {
                                         const double *smin_all, double *snew, ForceLanes &out,
                                         double *norm_sum)
   {
-    const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
-                  zi = _mm512_set1_pd(xx[3 * i + 2]), zero = _mm512_setzero_pd();
-    const __mmask8 row_ok = c.inv_m_i > 0.0 ? (__mmask8) 0xFF : (__mmask8) 0;
-    const bool dense = dense_slots(slot, n);
     const typename F::Plan elastic{};
-    ForceSums8<EV, 1> sums;
-    __m512d nacc = zero;
-    for (int k = 0; k < n; k += LANES) {
-      const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
-      const __m256i j1 = load_partners(bj, m, i, k);
-      const BondLanes b = bond_lanes<Elongation>(xx, xi, yi, zi, j1, m, vals, k);
-      __m512d tom, inv_m;
-      load_states(states, j1, m, tom, inv_m);
-      const __mmask8 ok = m & row_ok & _mm512_cmp_pd_mask(inv_m, zero, _CMP_GT_OQ);
-      __m512d ha, hb;
-      read_history8<F>(slot, hist, k, m, dense, ha, hb);
-      Vec8 h0(ha), h1(hb);
-      const Vec8 ed = Vec8(b.elong) - Vec8(c.theta_third_i) * Vec8(b.xi0);
-      const Vec8 term = fam.template norm_term_v<true>(Vec8(b.coef), influence_v(Vec8(b.xi0)), ed,
-                                                       Vec8(c.inv_m_i) + Vec8(inv_m), h0, h1);
-      nacc = _mm512_mask_add_pd(nacc, m, nacc, term.v);
-      Vec8 f0 = h0, f1 = h1, energy(0.0);
-      const Vec8 t = history_force_v<F, true>(fam, elastic, c, Vec8(b.coef), Vec8(b.xi0),
-                                              Vec8(b.elong), Vec8(tom), Vec8(inv_m), f0, f1, energy);
-      write_history8<F>(slot, hist, k, m, dense, h0.v, _mm512_mask_mov_pd(h1.v, ok, f1.v));
-      const __m512d t_ok = _mm512_maskz_mov_pd(ok, t.v);
-      const __m512d fpl = vselect(Vec8(b.r) > Vec8(zero), Vec8(t_ok) / Vec8(b.r), Vec8(zero)).v;
-      sums.add(m, b, fpl, _mm512_maskz_mov_pd(ok, energy.v));
-      sums.check(m, b);
-    }
-    alignas(64) double lane[LANES];
-    _mm512_store_pd(lane, nacc);
-    *norm_sum = lane_total(lane);
-    return sums.store(out, snew, c) && past_avx512(xx, i, bj, vals, n, c, smin_all);
+    return history_force_avx512<F, EV, 1, 1, true>(xx, i, bj, vals, n, states, fam, elastic, c, slot,
+                                                   hist, smin_all, snew, out, norm_sum);
   }
 #define lps_history_norm_force_simd BBPD::LPS::history_norm_force_avx512
 #define lps_history_force_simd BBPD::LPS::history_force_avx512
@@ -306,41 +292,58 @@ namespace LPS {
       }
   }
 
-  template <class F, int EV, int CHECK, int COMMIT, class Idx, class Values>
+  template <class F, int EV, int CHECK, int COMMIT, bool NORM = false, class Idx, class Values>
   inline bool history_force_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                                  const AtomState *states, const F &fam,
                                  const typename F::Plan &plan, const HistoryCoefficients &c,
                                  const int *slot, double *hist, const double *smin_all,
-                                 double *snew, ForceLanes &out)
+                                 double *snew, ForceLanes &out, double *norm_sum = nullptr)
   {
     const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
                   zi = _mm256_set1_pd(xx[3 * i + 2]), zero = _mm256_setzero_pd();
     const bool has_m = c.inv_m_i > 0.0;
     const bool dense = dense_slots(slot, n);
     ForceSums4x2<EV, CHECK> sums;
+    __m256d nacc[2] = {zero, zero};
     auto group = [&](auto half, int k, bool full) BBPD_GROUPS_INLINE {
+      constexpr int H = decltype(half)::value;
       const Group4 g = group4(xx, bj, i, n, k, full, xi, yi, zi, vals, states);
       const __m256d ok = has_m ? _mm256_and_pd(g.m, _mm256_cmp_pd(g.inv_m, zero, _CMP_GT_OQ)) : zero;
-      const int lanes = _mm256_movemask_pd(ok);
+      const int lanes = _mm256_movemask_pd(NORM ? g.m : ok);    // as history_force_avx512's read
       __m256d a, b;
       read_history4<F>(slot, hist, k, lanes, dense, a, b);
-      Vec4 h0(a), h1(b), energy(0.0);
+      Vec4 h0(a), h1(b);
       const __m256d r = lengths4(g.dx, g.dy, g.dz);
       const __m256d e = Elongation::elongation(Vec4(r), Vec4(g.xi0)).v;
+      if constexpr (NORM) {
+        const Vec4 ed = Vec4(e) - Vec4(c.theta_third_i) * Vec4(g.xi0);
+        const Vec4 term = fam.template norm_term_v<true>(Vec4(g.wv), influence_v(Vec4(g.xi0)), ed,
+                                                         Vec4(c.inv_m_i) + Vec4(g.inv_m), h0, h1);
+        nacc[H] = lps_add<true>(nacc[H], term.v, g.m);
+      }
+      Vec4 f0 = h0, f1 = h1, energy(0.0);
       const Vec4 t = history_force_v<F, COMMIT != 0>(fam, plan, c, Vec4(g.wv), Vec4(g.xi0), Vec4(e),
-                                                     Vec4(g.tom), Vec4(g.inv_m), h0, h1, energy);
-      if (COMMIT) write_history4<F>(slot, hist, k, lanes, dense, h0.v, h1.v);
+                                                     Vec4(g.tom), Vec4(g.inv_m), f0, f1, energy);
+      if (NORM)
+        write_history4<F>(slot, hist, k, lanes, dense, h0.v, _mm256_blendv_pd(h1.v, f1.v, ok));
+      else if (COMMIT)
+        write_history4<F>(slot, hist, k, lanes, dense, f0.v, f1.v);
       const __m256d t_ok = _mm256_and_pd(ok, t.v);
       const __m256d fpl = vselect(Vec4(r) > Vec4(zero), Vec4(t_ok) / Vec4(r), Vec4(zero)).v;
-      constexpr int H = decltype(half)::value;
       sums.template add<H, true>(g.m, g.dx, g.dy, g.dz, fpl, _mm256_and_pd(ok, energy.v));
       sums.template check<true>(g.m, e, g.xi0);
     };
     for_each_group4(n, [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, k, true); },
                     [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, k, false); });
+    if constexpr (NORM) {
+      alignas(32) double lane[LANES];
+      _mm256_store_pd(lane, nacc[0]);
+      _mm256_store_pd(lane + 4, nacc[1]);
+      *norm_sum = lane_total(lane);
+    }
     return sums.store(out, snew, c) && past_avx2(xx, i, bj, vals, n, states, c, smin_all);
   }
-  /* history_norm_force_avx512 in 4-wide groups (lanes 0-3, 4-7 of the 8-wide sums) */
+  // history_norm_force_portable's pass in 4-wide groups
   template <class F, int EV, class Idx, class Values>
   inline bool history_norm_force_avx2(const double *xx, int i, const Idx *bj, const Values &vals,
                                       int n, const AtomState *states, const F &fam,
@@ -348,44 +351,9 @@ namespace LPS {
                                       const double *smin_all, double *snew, ForceLanes &out,
                                       double *norm_sum)
   {
-    const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
-                  zi = _mm256_set1_pd(xx[3 * i + 2]), zero = _mm256_setzero_pd();
-    const Vec4 inv_m_i(c.inv_m_i), third(c.theta_third_i);
-    const bool has_m = c.inv_m_i > 0.0;
-    const bool dense = dense_slots(slot, n);
     const typename F::Plan elastic{};
-    ForceSums4x2<EV, 1> sums;
-    __m256d nacc[2] = {zero, zero};
-    auto group = [&](auto half, int k, bool full) BBPD_GROUPS_INLINE {
-      constexpr int H = decltype(half)::value;
-      const Group4 g = group4(xx, bj, i, n, k, full, xi, yi, zi, vals, states);
-      const __m256d ok = has_m ? _mm256_and_pd(g.m, _mm256_cmp_pd(g.inv_m, zero, _CMP_GT_OQ)) : zero;
-      const int lanes = _mm256_movemask_pd(g.m);
-      __m256d a, b;
-      read_history4<F>(slot, hist, k, lanes, dense, a, b);
-      Vec4 h0(a), h1(b);
-      const __m256d r = lengths4(g.dx, g.dy, g.dz);
-      const __m256d e = Elongation::elongation(Vec4(r), Vec4(g.xi0)).v;
-      const Vec4 ed = Vec4(e) - third * Vec4(g.xi0);
-      const Vec4 term = fam.template norm_term_v<true>(Vec4(g.wv), influence_v(Vec4(g.xi0)), ed,
-                                                       inv_m_i + Vec4(g.inv_m), h0, h1);
-      nacc[H] = lps_add<true>(nacc[H], term.v, g.m);
-      Vec4 f0 = h0, f1 = h1, energy(0.0);
-      const Vec4 t = history_force_v<F, true>(fam, elastic, c, Vec4(g.wv), Vec4(g.xi0), Vec4(e),
-                                              Vec4(g.tom), Vec4(g.inv_m), f0, f1, energy);
-      write_history4<F>(slot, hist, k, lanes, dense, h0.v, _mm256_blendv_pd(h1.v, f1.v, ok));
-      const __m256d t_ok = _mm256_and_pd(ok, t.v);
-      const __m256d fpl = vselect(Vec4(r) > Vec4(zero), Vec4(t_ok) / Vec4(r), Vec4(zero)).v;
-      sums.template add<H, true>(g.m, g.dx, g.dy, g.dz, fpl, _mm256_and_pd(ok, energy.v));
-      sums.template check<true>(g.m, e, g.xi0);
-    };
-    for_each_group4(n, [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, k, true); },
-                    [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, k, false); });
-    alignas(32) double lane[LANES];
-    _mm256_store_pd(lane, nacc[0]);
-    _mm256_store_pd(lane + 4, nacc[1]);
-    *norm_sum = lane_total(lane);
-    return sums.store(out, snew, c) && past_avx2(xx, i, bj, vals, n, states, c, smin_all);
+    return history_force_avx2<F, EV, 1, 1, true>(xx, i, bj, vals, n, states, fam, elastic, c, slot, hist,
+                                                 smin_all, snew, out, norm_sum);
   }
 #define lps_history_norm_force_simd BBPD::LPS::history_norm_force_avx2
 #define lps_history_force_simd BBPD::LPS::history_force_avx2

@@ -171,6 +171,15 @@ namespace LPS {
   }
 
 #ifdef BBPD_SIMD
+  // the smallest (or with MAX the largest) of 4 lanes
+  template <bool MAX> inline double lane_extreme4(__m256d v)
+  {
+    const __m128d lo = _mm256_castpd256_pd128(v), hi = _mm256_extractf128_pd(v, 1);
+    const __m128d b = MAX ? _mm_max_pd(lo, hi) : _mm_min_pd(lo, hi);
+    const double x = _mm_cvtsd_f64(b), y = _mm_cvtsd_f64(_mm_unpackhi_pd(b, b));
+    return MAX ? std::max(x, y) : std::min(x, y);
+  }
+
   // theta / m and 1 / m of 4 partners j (16-byte loads, unpacked; always inlined, as
   // load_positions: each path's file has its own copy)
   BBPD_GROUPS_INLINE inline void load_states4(const AtomState *states, const int *j, __m256d &tom, __m256d &inv_m)
@@ -226,21 +235,12 @@ namespace LPS {
 
   // the smallest and the largest of 8 lanes, through memory (GCC 12 warns of the undefined
   // register that _mm512_reduce_min_pd, _mm512_extractf64x4_pd and the like start from)
-  inline double lane_min8(__m512d v)
+  template <bool MAX> inline double lane_extreme8(__m512d v)
   {
     alignas(64) double l[LANES];
     _mm512_store_pd(l, v);
-    const __m256d a = _mm256_min_pd(_mm256_load_pd(l), _mm256_load_pd(l + 4));
-    const __m128d b = _mm_min_pd(_mm256_castpd256_pd128(a), _mm256_extractf128_pd(a, 1));
-    return std::min(_mm_cvtsd_f64(b), _mm_cvtsd_f64(_mm_unpackhi_pd(b, b)));
-  }
-  inline double lane_max8(__m512d v)
-  {
-    alignas(64) double l[LANES];
-    _mm512_store_pd(l, v);
-    const __m256d a = _mm256_max_pd(_mm256_load_pd(l), _mm256_load_pd(l + 4));
-    const __m128d b = _mm_max_pd(_mm256_castpd256_pd128(a), _mm256_extractf128_pd(a, 1));
-    return std::max(_mm_cvtsd_f64(b), _mm_cvtsd_f64(_mm_unpackhi_pd(b, b)));
+    const __m256d lo = _mm256_load_pd(l), hi = _mm256_load_pd(l + 4);
+    return lane_extreme4<MAX>(MAX ? _mm256_max_pd(lo, hi) : _mm256_min_pd(lo, hi));
   }
 
   /* the sums of a force pass in 8 lanes and, with CHECK, its breaking test: the LPS rows and
@@ -288,8 +288,8 @@ namespace LPS {
         for (int v = 0; v < 6; v++) _mm512_storeu_pd(out.tally.vir[v], vir[v]);
       }
       if (!CHECK) return false;
-      *snew = lane_min8(vmin);
-      return lane_max8(vmax) + c.margin > c.s0_floor;
+      *snew = lane_extreme8<false>(vmin);
+      return lane_extreme8<true>(vmax) + c.margin > c.s0_floor;
     }
   };
 
@@ -499,10 +499,8 @@ namespace LPS {
         }
       }
       if (!CHECK) return false;
-      const __m128d m2 = _mm_min_pd(_mm256_castpd256_pd128(vmin), _mm256_extractf128_pd(vmin, 1));
-      *snew = std::min(_mm_cvtsd_f64(m2), _mm_cvtsd_f64(_mm_unpackhi_pd(m2, m2)));
-      const __m128d x2 = _mm_max_pd(_mm256_castpd256_pd128(vmax), _mm256_extractf128_pd(vmax, 1));
-      return std::max(_mm_cvtsd_f64(x2), _mm_cvtsd_f64(_mm_unpackhi_pd(x2, x2))) + c.margin > c.s0_floor;
+      *snew = lane_extreme4<false>(vmin);
+      return lane_extreme4<true>(vmax) + c.margin > c.s0_floor;
     }
   };
 

@@ -18,6 +18,7 @@
 #include <limits>
 #include <numeric>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 namespace LPS = BBPD::LPS;
@@ -381,21 +382,19 @@ TEST(LpsLanes, HistoryKernelsGiveThePortableBits)
     LPS::ForceLanes a, b;
     double sa = 0.0, sb = 0.0, na = 0.0, nb = 0.0;
     bool pa, pb;
-    if (ev) {
-      pa = LPS::history_norm_force_portable<EPS::Family, 1>(t.x.data(), 0, t.partner.data(), vals, n,
-                                                            t.states.data(), eps, c, slot.data(),
-                                                            ha.data(), s0_of, &sa, a, &na);
-      pb = lps_history_norm_force_simd<EPS::Family, 1>(t.x.data(), 0, t.offset.data(), vals, n,
-                                                       t.states.data(), eps, c, slot.data(), hb.data(),
-                                                       t.smin.data(), &sb, b, &nb);
-    } else {
-      pa = LPS::history_norm_force_portable<EPS::Family, 0>(t.x.data(), 0, t.partner.data(), vals, n,
-                                                            t.states.data(), eps, c, slot.data(),
-                                                            ha.data(), s0_of, &sa, a, &na);
-      pb = lps_history_norm_force_simd<EPS::Family, 0>(t.x.data(), 0, t.offset.data(), vals, n,
-                                                       t.states.data(), eps, c, slot.data(), hb.data(),
-                                                       t.smin.data(), &sb, b, &nb);
-    }
+    auto both = [&](auto ev_c) {    // with (1) or without (0) the energy and virial lanes
+      constexpr int EV = decltype(ev_c)::value;
+      pa = LPS::history_norm_force_portable<EPS::Family, EV>(t.x.data(), 0, t.partner.data(), vals, n,
+                                                             t.states.data(), eps, c, slot.data(),
+                                                             ha.data(), s0_of, &sa, a, &na);
+      pb = lps_history_norm_force_simd<EPS::Family, EV>(t.x.data(), 0, t.offset.data(), vals, n,
+                                                        t.states.data(), eps, c, slot.data(), hb.data(),
+                                                        t.smin.data(), &sb, b, &nb);
+    };
+    if (ev)
+      both(std::integral_constant<int, 1>());
+    else
+      both(std::integral_constant<int, 0>());
     EXPECT_EQ(na, nb) << "n = " << n;
     if (n > 0) {
       EXPECT_GT(na, 0.0);
