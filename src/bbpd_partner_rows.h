@@ -42,6 +42,8 @@ template <class Tag> class PartnerRows {
     slots[i] = {append(n), n};
   }
   void clear(int i) { release(i); }
+  // the partners slot i has room for
+  int room(int i) const { return slots[i].cap; }
   // room for n more partners at the pool's end, allocated once (before a family build)
   void reserve_more(std::size_t n) { pool.reserve(pool.size() + n); }
   // slot j becomes a copy of the first n partners of slot i (LAMMPS's copy with delflag 0: slot

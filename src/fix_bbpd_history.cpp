@@ -5,13 +5,116 @@
 
 #include "fix_bbpd_history.h"
 
+#include "atom.h"
+#include "error.h"
+
+#include <algorithm>
+#include <vector>
+
 using namespace LAMMPS_NS;
 
-// one value per atom until the pair style knows the families' size
-static constexpr int INITIAL_WIDTH = 1;
-
 FixBBPDHistory::FixBBPDHistory(LAMMPS *lmp, int narg, char **arg) :
-    FixBBPDAtomState(lmp, narg, arg, "the pair style", INITIAL_WIDTH)
+    Fix(lmp, narg, arg), max_length(0)
 {
-  maxexchange_dynamic = 1;    // the width grows when the families are built
+  if (narg != 3)
+    error->all(FLERR, "Fix {} takes no arguments (it is created by the pair style)", style);
+  restart_peratom = 1;
+  create_attribute = 1;
+  maxexchange = 1;
+  maxexchange_dynamic = 1;    // rows grow when the families are built
+  FixBBPDHistory::grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+}
+
+FixBBPDHistory::~FixBBPDHistory()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+}
+
+double FixBBPDHistory::memory_usage()
+{
+  return rows.bytes();
+}
+
+void FixBBPDHistory::grow_arrays(int nmax)
+{
+  rows.grow(nmax);
+}
+
+void FixBBPDHistory::copy_arrays(int i, int j, int delflag)
+{
+  // a deleted source (migration) hands its row over; a sort reads the source again
+  if (delflag) rows.move(i, j);
+  else rows.copy(i, j, rows.room(i));
+}
+
+void FixBBPDHistory::set_arrays(int i)
+{
+  rows.clear(i);
+}
+
+// the row i at least n long, its values kept
+void FixBBPDHistory::resize_keep(int i, int n)
+{
+  const int held = rows.room(i);
+  if (n <= held) return;
+  const std::vector<double> kept(rows[i], rows[i] + held);
+  rows.resize(i, n);
+  std::copy(kept.begin(), kept.end(), rows[i]);
+  std::fill(rows[i] + held, rows[i] + n, 0.0);
+}
+
+void FixBBPDHistory::fit(int atom_width, int bond_width, const int *npartner, int maxpartner)
+{
+  max_length = std::max(max_length, atom_width + bond_width * maxpartner);
+  maxexchange = 1 + max_length;
+  for (int i = 0; i < atom->nlocal; i++) resize_keep(i, atom_width + bond_width * npartner[i]);
+}
+
+double FixBBPDHistory::bytes_when_fit(int atom_width, int bond_width, const int *npartner) const
+{
+  double bytes = rows.bytes();
+  for (int i = 0; i < atom->nlocal; i++)
+    bytes += std::max(0, atom_width + bond_width * npartner[i] - rows.room(i)) * sizeof(double);
+  return bytes;
+}
+
+int FixBBPDHistory::pack_exchange(int i, double *buf)
+{
+  const int n = rows.room(i);
+  buf[0] = n;
+  std::copy_n(rows[i], n, buf + 1);
+  return 1 + n;
+}
+
+int FixBBPDHistory::unpack_exchange(int nlocal, double *buf)
+{
+  const int n = static_cast<int>(buf[0]);
+  rows.clear(nlocal);
+  rows.resize(nlocal, n);
+  std::copy_n(buf + 1, n, rows[nlocal]);
+  return 1 + n;
+}
+
+int FixBBPDHistory::pack_restart(int i, double *buf)
+{
+  const int n = rows.room(i);
+  buf[0] = 1 + n;
+  std::copy_n(rows[i], n, buf + 1);
+  return 1 + n;
+}
+
+void FixBBPDHistory::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  const int n = static_cast<int>(extra[nlocal][m]) - 1;    // the values the file holds
+  max_length = std::max(max_length, n);
+  maxexchange = 1 + max_length;
+  rows.clear(nlocal);
+  rows.resize(nlocal, n);
+  std::copy_n(&extra[nlocal][m + 1], n, rows[nlocal]);
 }

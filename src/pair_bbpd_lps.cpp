@@ -296,8 +296,9 @@ void PairBBPDLPS::init_rules()
   if (family == Family::LPS) return;
   check_history_solver();
   history = static_cast<FixBBPDHistory *>(own_fix(HISTORY_FIX_ID, "bbpd/history"));
-  // every rank the same width before atoms migrate (a restart file gave it to those with atoms)
-  history->set_width(history_width());
+  // the rows' size for the atoms that migrate before the first step (rows read from a restart
+  // file are as long as they were written)
+  if (bonds->families_built()) fit_history();
 }
 
 /* The viscous and plastic states advance once per time step (peri/ves, peri/eps). A minimizer's
@@ -409,7 +410,9 @@ double PairBBPDLPS::state_memory()
   if (history && bonds) {
     const int nlocal = atom->nlocal;
     const double nends = nlocal > 0 ? bonds->bond_start[nlocal - 1] + bonds->nbond[nlocal - 1] : 0;
-    bytes += std::max(history->memory_usage(), (double) history_width() * atom->nmax * sizeof(double)) +
+    const auto w = history_widths();
+    bytes += (bonds->families_built() ? history->bytes_when_fit(w[0], w[1], bonds->npartner)
+                                      : history->memory_usage()) +
         std::max((double) nmax_slot, nends) * sizeof(int) - (double) nmax_slot * sizeof(int);
   }
   return bytes;

@@ -44,6 +44,7 @@
 #include "pair_bbpd.h"
 #include "pair_bbpd_silling_askari_state.h"
 
+#include <array>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -143,7 +144,8 @@ class PairBBPDLPS : public PairBBPD {
   template <int EVFLAG, class F> struct HistoryRow;
   template <class F> F family_of(int i) const;
   BBPD::VES::Family ves_of_type(int itype) const;
-  int history_width() const;    // doubles per atom in fix bbpd/history
+  std::array<int, 2> history_widths() const;    // VES, EPS: doubles per atom, per bond end
+  void fit_history();    // VES, EPS: a row of fix bbpd/history per local atom
   // the force row of local atom i of a family with history on the current path, with
   // stand-in states and a scratch history, nothing kept (time_path's probe); a force of it
   double history_row_probe(int i, const BBPD::LPS::AtomState *states, BBPD::CoefCache *cache);

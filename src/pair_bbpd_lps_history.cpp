@@ -90,18 +90,27 @@ double PairBBPDLPS::history_row_probe(int i, const LPS::AtomState *states, BBPD:
   return lanes.fx[0];
 }
 
-int PairBBPDLPS::history_width() const
+// the family's history per atom and per bond end, in doubles
+std::array<int, 2> PairBBPDLPS::history_widths() const
 {
   using VES = BBPD::VES::Family;
   using EPS = BBPD::EPS::Family;
-  return family == Family::VES ? VES::ATOM_HISTORY + VES::BOND_HISTORY * bonds->maxpartner
-                               : EPS::ATOM_HISTORY + EPS::BOND_HISTORY * bonds->maxpartner;
+  if (family == Family::VES) return {VES::ATOM_HISTORY, VES::BOND_HISTORY};
+  return {EPS::ATOM_HISTORY, EPS::BOND_HISTORY};
+}
+
+/* every local atom's history row as long as its family (rows come with atoms that migrate or
+   are read from a restart file; a new family's rows start at zero) */
+void PairBBPDLPS::fit_history()
+{
+  const auto w = history_widths();
+  history->fit(w[0], w[1], bonds->npartner, bonds->maxpartner);
 }
 
 double PairBBPDLPS::plastic_multiplier(int i) const
 {
-  if (family != Family::EPS || !history || history->width <= BBPD::EPS::Family::LAMBDA) return 0.0;
-  return history->values[i][BBPD::EPS::Family::LAMBDA];
+  if (family != Family::EPS || !history || history->length(i) <= BBPD::EPS::Family::LAMBDA) return 0.0;
+  return history->row(i)[BBPD::EPS::Family::LAMBDA];
 }
 
 /* bond_slot[bond_start[i] + k]: the slot in partner[i] (and in the history) of the k-th
@@ -163,7 +172,7 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
   HistoryRow(PairBBPDLPS &pair, int atom_i, double *acc_, BBPD::CoefCache *cache_, bool replay_,
              bool canonical_, const BBPD::SillingAskariCoefficients &rule, double margin_) :
       Base(pair, atom_i, acc_, cache_, replay_, canonical_, rule, margin_),
-      fam(pair.family_of<F>(atom_i)), plan{}, atom_hist(pair.history->values[atom_i]),
+      fam(pair.family_of<F>(atom_i)), plan{}, atom_hist(pair.history->row(atom_i)),
       hist(atom_hist + F::ATOM_HISTORY), slot(pair.bond_slot + pair.bonds->bond_start[atom_i])
   {
   }
@@ -323,7 +332,7 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
 
 template <int EVFLAG, class F> void PairBBPDLPS::eval_history()
 {
-  history->set_width(history_width());
+  fit_history();
   const bool replay = begin_state();
   find_bond_slots();
   const bool canonical = bonds->raw_positions();

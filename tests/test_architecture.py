@@ -305,9 +305,12 @@ def test_a_deep_pair_class_is_found():
 
 
 # the per-atom state of the internal fixes is grown, migrated and written to restart files in
-# one place, FixBBPDAtomState (fix_bbpd_atom_state.h); the bond storage keeps its own
+# one place, FixBBPDAtomState (fix_bbpd_atom_state.h), when each atom has the same width; the
+# bond storage and the bonds' history keep rows as long as each atom's family, through the
+# rows of bbpd_partner_rows.h, and pack them themselves
 STATE_BASE = "FixBBPDAtomState"
-OWN_PER_ATOM_RESTART = {"FixBBPDAtomState", "FixBBPDBonds"}
+ROWS = "BBPD::PartnerRows<"
+OWN_PER_ATOM_RESTART = {"FixBBPDAtomState", "FixBBPDBonds", "FixBBPDHistory"}
 
 
 def per_atom_restart_classes(texts):
@@ -328,8 +331,10 @@ def test_fixes_with_per_atom_state_share_one_base():
     texts = [p.read_text() for p in sorted(SRC.glob("fix_*.h"))]
     assert per_atom_restart_classes(texts) == OWN_PER_ATOM_RESTART
     bases = pair_class_bases(texts)
-    for fix in ("FixBBPDAlpha", "FixBBPDHistory", "FixBBPDWork", "FixBBPDLPS"):
+    for fix in ("FixBBPDAlpha", "FixBBPDWork", "FixBBPDLPS"):
         assert bases[fix] == [STATE_BASE], (fix, bases.get(fix))
+    for header in ("fix_bbpd_bonds.h", "fix_bbpd_history.h"):
+        assert ROWS in (SRC / header).read_text(), header
 
 
 def test_a_fix_with_its_own_per_atom_restart_is_found():
