@@ -12,10 +12,11 @@
    candidates' order depends on the binning: the loops sum their forces in an order of
    their own (by tag or by offset), which depends on the pairs alone.
 
-   An atom whose candidates were all at least twice the largest displacement since the search
-   beyond their distance has none in range (the two ends of a pair moved at most that much
-   each): the loops skip it without reading a candidate (may_be_close), so a body at rest or
-   barely strained pays one pass over the displacements per step, not one over the pairs.
+   An atom whose candidates were all beyond their distance by more than its own displacement
+   since the search plus the largest one has none in range (a candidate moved at most the
+   largest): the loops skip it without reading a candidate (may_be_close), so a body at rest
+   or barely strained pays one pass over the displacements per step, not one over the pairs,
+   also while a few atoms move fast (an indenter's, a crack's).
 ------------------------------------------------------------------------- */
 
 #ifndef BBPD_CLOSE_PAIRS_H
@@ -45,6 +46,7 @@ class ClosePairs {
   {
     if (xhold.size() != 3 * (size_t) nall || first.size() != (size_t) nlocal + 1) return false;
     double largest = 0.0;
+    moved_sq.resize(nlocal);
     for (int i = 0; i < nall; i++) {
       const double dx = xx[3 * i] - xhold[3 * i], dy = xx[3 * i + 1] - xhold[3 * i + 1],
                    dz = xx[3 * i + 2] - xhold[3 * i + 2];
@@ -52,13 +54,20 @@ class ClosePairs {
       // under half the skin, with room for round-off
       if (dsq > 0.2 * skin * skin) return false;
       largest = std::max(largest, dsq);
+      if (i < nlocal) moved_sq[i] = dsq;
     }
     moved = std::sqrt(largest);
     return true;
   }
 
-  // can a candidate of local atom i be closer than its distance now? (false: none can)
-  bool may_be_close(int i) const { return nearest[i] < 2.0 * moved + roundoff; }
+  /* can a candidate of local atom i be closer than its distance now? (false: none can) Atom i
+     moved by d_i and each candidate by at most the largest displacement: none is within its
+     distance while nearest[i] >= d_i + moved + roundoff, compared squared (no root per atom) */
+  bool may_be_close(int i) const
+  {
+    const double room = nearest[i] - moved - roundoff;
+    return !(room >= 0.0 && room * room >= moved_sq[i]);
+  }
 
   /* search the candidates of local atoms 0..nlocal-1 among the nall atoms at xx: every j != i
      with |x_i - x_j| < distance(i, j) + skin, where distance(i, j) <= max_distance; false
@@ -74,6 +83,7 @@ class ClosePairs {
     pairs.clear();
     dist.clear();
     nearest.assign(nlocal, std::numeric_limits<double>::infinity());
+    moved_sq.assign(nlocal, 0.0);
     moved = 0.0;
     roundoff = CLOSE_PAIRS_ROUNDOFF * reach;
     if (nall == 0) return true;
@@ -145,6 +155,7 @@ class ClosePairs {
  private:
   std::vector<double> xhold;      // positions at the search
   std::vector<double> nearest;    // per local atom: the least r - d of its candidates at the search
+  std::vector<double> moved_sq;   // per local atom: its squared displacement since the search
   double skin = 0.0;
   double moved = 0.0;       // the largest displacement since the search (current)
   double roundoff = 0.0;    // CLOSE_PAIRS_ROUNDOFF of the reach

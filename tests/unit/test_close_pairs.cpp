@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* bbpd_close_pairs.h: the candidates of the short-range forces and the skip of may_be_close.
    Whatever the atoms do within half the skin, an atom that has a pair closer than its
-   distance is never skipped; an atom at rest whose pairs all lie beyond it is. */
+   distance is never skipped; an atom at rest whose pairs all lie beyond it is, also while
+   another atom moves. */
 
 #include "bbpd_close_pairs.h"
 
@@ -77,4 +78,25 @@ TEST(ClosePairs, AnAtomWithAClosePairIsNeverSkipped)
   }
   EXPECT_GT(close_seen, 0);    // the largest amplitude brings neighbours within D
   EXPECT_GT(skipped, 0);       // the smallest leaves atoms to skip
+}
+
+TEST(ClosePairs, AtomsAtRestAreSkippedWhileAnotherMoves)
+{
+  // the nearest pairs lie LC - D = 0.1 beyond their distance; one atom moves 0.06: a bound of
+  // twice the largest displacement (0.12) would skip none, each atom's own displacement plus
+  // the largest (0.06) skips every atom at rest
+  constexpr double STEP = 0.06 * LC;
+  std::vector<double> x = block();
+  const int n = static_cast<int>(x.size() / 3);
+  BBPD::ClosePairs cp;
+  ASSERT_TRUE(cp.build(x.data(), n, n, D, SKIN, [](int, int) { return D; }));
+  const int moving = n / 2;
+  x[3 * moving] += STEP;
+  ASSERT_TRUE(cp.current(x.data(), n, n));
+  EXPECT_TRUE(cp.may_be_close(moving));
+  for (int i = 0; i < n; i++) {
+    if (i != moving) {
+      EXPECT_FALSE(cp.may_be_close(i)) << i;
+    }
+  }
 }
