@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* -*- c++ -*- ----------------------------------------------------------
-   BBPD plugin: the base of the internal fixes that carry per-atom state (fix bbpd/alpha,
-   bbpd/history, bbpd/work, bbpd/lps): width doubles per atom, grown with the atom arrays, set
+   BBPD plugin: the base of the internal fixes that carry per-atom state of one width for
+   every atom (fix bbpd/alpha, bbpd/work, bbpd/lps; fix bbpd/history keeps rows as long as
+   each atom's family instead): width doubles per atom, grown with the atom arrays, set
    to zero for a new atom, carried through atom migration ('balance' included) and, the first
    'saved' of them (all by default), through restart files as {1 + saved, values...}. A
    subclass says what the columns mean and adds what else it keeps (global restart data, fix
    hooks). The values are kept in one of two layouts:
-     ROWS      values[i][0 .. width-1], one row per atom; set_width() changes the width
+     ROWS      values[i][0 .. width-1], one row per atom; set_width() changes the width (a
+               restart file written with another width)
      COLUMNS   columns[c][0 .. nmax-1], one array per column, for a state handed out as
                per-atom arrays (fix bbpd/lps: its dilatations are extract("theta"), as
                peri/lps's); the width is fixed at construction
