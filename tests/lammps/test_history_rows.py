@@ -14,6 +14,7 @@ moved by half the box: on 2 ranks each atom goes to the other rank, its history 
   slots of history (2.5 times as much on this block).
 """
 import re
+from pathlib import Path
 
 import pytest
 
@@ -133,3 +134,32 @@ def test_history_memory_is_what_it_holds(tmp_path, one_rank):
     slots = 2 * 4.0                     # an int per bond end
     headers = ROW_HEADER_BYTES * ATOM_SLOTS / bonds
     assert lps + history <= ours <= lps + history + slots + headers
+
+
+# LAMMPS's benchmark deck (perf/vs_bpm.py): a periodic 16^3 block, held still; only the setup
+# report is read
+DECK = SETUP.replace("region box block 0 10 0 10 0 10", "region box block 0 16 0 16 0 16").replace(
+    "displace_atoms all random 2e-5 2e-5 2e-5 4711 units box\n", "")
+DECK_COEFFS = {"pmb": "1.6863e22 0.0015001 0.5 0.25",
+               "lps": "14900000000.0 14900000000.0 0.0015001 0.5 0.25",
+               "ves": "14900000000.0 14900000000.0 0.0015001 0.5 0.25 0.5 0.001",
+               "eps": "14900000000.0 14900000000.0 0.0015001 0.5 0.25 1.0e9"}
+DOC = Path(__file__).resolve().parents[2] / "doc"
+
+
+def test_the_deck_memory_of_the_docs_is_the_setup_report(tmp_path):
+    """doc/performance.md's bytes per bond on the deck (and the VES and LPS figures of
+    doc/pair_bbpd_ves_eps.rst) are the setup report's"""
+    measured = {}
+    for model, coeffs in DECK_COEFFS.items():
+        script = re.sub(r"pair_coeff \* \* .*\n", f"pair_coeff * * {coeffs}\n",
+                        DECK.format(family=model, s00=S00, coeffs=""))
+        out = run(tmp_path / model, script + DYNAMICS + "run 0\n", 1)
+        measured[model] = float(MEMORY_RE.search(out).group(1))
+    text = " ".join((DOC / "performance.md").read_text().split())
+    m = re.search(r"this deck\): PMB ([\d.]+), LPS ([\d.]+), VES ([\d.]+), EPS ([\d.]+)\.", text)
+    assert m, "doc/performance.md: the deck's bytes per bond"
+    assert [float(v) for v in m.groups()] == [round(measured[k], 1) for k in DECK_COEFFS]
+    rst = " ".join((DOC / "pair_bbpd_ves_eps.rst").read_text().split())
+    assert (f"{measured['ves']:.0f} bytes per bond for the bonds, the pair style and its state, "
+            f"the LPS's {measured['lps']:.0f} plus") in rst
