@@ -46,7 +46,6 @@ class ClosePairs {
   {
     if (xhold.size() != 3 * (size_t) nall || first.size() != (size_t) nlocal + 1) return false;
     double largest = 0.0;
-    moved_sq.resize(nlocal);
     for (int i = 0; i < nall; i++) {
       const double dx = xx[3 * i] - xhold[3 * i], dy = xx[3 * i + 1] - xhold[3 * i + 1],
                    dz = xx[3 * i + 2] - xhold[3 * i + 2];
@@ -54,7 +53,7 @@ class ClosePairs {
       // under half the skin, with room for round-off
       if (dsq > 0.2 * skin * skin) return false;
       largest = std::max(largest, dsq);
-      if (i < nlocal) moved_sq[i] = dsq;
+      if (i < nlocal) moved_sq[i] = dsq;    // sized by build() for these nlocal
     }
     moved = std::sqrt(largest);
     return true;

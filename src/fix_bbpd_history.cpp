@@ -68,9 +68,24 @@ void FixBBPDHistory::resize_keep(int i, int n)
 
 void FixBBPDHistory::fit(int atom_width, int bond_width, const int *npartner, int maxpartner)
 {
-  max_length = std::max(max_length, atom_width + bond_width * maxpartner);
-  maxexchange = 1 + max_length;
+  allow_length(atom_width + bond_width * maxpartner);
   for (int i = 0; i < atom->nlocal; i++) resize_keep(i, atom_width + bond_width * npartner[i]);
+}
+
+// rows of n values may be sent: the exchange buffer holds them with their count
+void FixBBPDHistory::allow_length(int n)
+{
+  max_length = std::max(max_length, n);
+  maxexchange = 1 + max_length;
+}
+
+// row i becomes the n values at src (an atom that arrives or is read back)
+void FixBBPDHistory::take_row(int i, int n, const double *src)
+{
+  allow_length(n);
+  rows.clear(i);
+  rows.resize(i, n);
+  std::copy_n(src, n, rows[i]);
 }
 
 double FixBBPDHistory::bytes_when_fit(int atom_width, int bond_width, const int *npartner) const
@@ -92,9 +107,7 @@ int FixBBPDHistory::pack_exchange(int i, double *buf)
 int FixBBPDHistory::unpack_exchange(int nlocal, double *buf)
 {
   const int n = static_cast<int>(buf[0]);
-  rows.clear(nlocal);
-  rows.resize(nlocal, n);
-  std::copy_n(buf + 1, n, rows[nlocal]);
+  take_row(nlocal, n, buf + 1);
   return 1 + n;
 }
 
@@ -112,9 +125,5 @@ void FixBBPDHistory::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   const int n = static_cast<int>(extra[nlocal][m]) - 1;    // the values the file holds
-  max_length = std::max(max_length, n);
-  maxexchange = 1 + max_length;
-  rows.clear(nlocal);
-  rows.resize(nlocal, n);
-  std::copy_n(&extra[nlocal][m + 1], n, rows[nlocal]);
+  take_row(nlocal, n, &extra[nlocal][m + 1]);
 }

@@ -54,6 +54,8 @@ class FixBBPDHistory : public Fix {
   BBPD::PartnerRows<double> rows;
   int max_length;    // the longest row an atom may bring (exchange, restart)
   void resize_keep(int i, int n);
+  void allow_length(int n);
+  void take_row(int i, int n, const double *src);
 };
 
 }    // namespace LAMMPS_NS

@@ -104,6 +104,7 @@ class PairBBPDLPS : public PairBBPD {
   bigint slot_generation = -1;
   long slot_removals = -1;
   int slot_nlocal = -1;
+  bigint history_generation = -1;    // the cache generation fix bbpd/history's rows were fit at
   BBPD::LPS::AtomState *atom_states;    // theta / m, 1 / m of every local and ghost atom, this step
 
   void eval_bonds() override;

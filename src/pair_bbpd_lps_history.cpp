@@ -332,7 +332,12 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
 
 template <int EVFLAG, class F> void PairBBPDLPS::eval_history()
 {
-  fit_history();
+  // rows change with the atoms at the local indices (migration, sorting), which refresh the
+  // bond cache
+  if (bonds->cache_generation() != history_generation) {
+    fit_history();
+    history_generation = bonds->cache_generation();
+  }
   const bool replay = begin_state();
   find_bond_slots();
   const bool canonical = bonds->raw_positions();
