@@ -9,6 +9,8 @@
    exactly the doubles it was given, so forces are the same bits as with per-bond storage.
    When a rank has more distinct pairs than a class index can address (an irregular
    discretisation), add() says so and the caller keeps per-bond values.
+   A class's two doubles sit side by side (values[2c], values[2c + 1]): the SIMD rows read them
+   with one 16-byte load per bond, as they read a partner's position (bbpd_row.h).
 ------------------------------------------------------------------------- */
 
 #ifndef BBPD_BOND_TABLE_H
@@ -31,8 +33,7 @@ class BondClassTable {
 
   void clear()
   {
-    xi0.clear();
-    coef.clear();
+    values.clear();
     index.clear();
   }
   // class of (xi0, coef), added if new; false if the table is full
@@ -44,18 +45,21 @@ class BondClassTable {
       cls = it->second;
       return true;
     }
-    if (xi0.size() >= MAX_CLASSES) return false;
-    cls = static_cast<BondClass>(xi0.size());
+    if (size() >= MAX_CLASSES) return false;
+    cls = static_cast<BondClass>(size());
     index.emplace(key, cls);
-    xi0.push_back(x);
-    coef.push_back(c);
+    values.push_back(x);
+    values.push_back(c);
     return true;
   }
-  std::size_t size() const { return xi0.size(); }
-
-  std::vector<double> xi0, coef;    // per class: reference length, coefficient
+  std::size_t size() const { return values.size() / 2; }
+  double xi0(std::size_t c) const { return values[2 * c]; }
+  double coef(std::size_t c) const { return values[2 * c + 1]; }
+  const double *data() const { return values.data(); }
 
  private:
+  std::vector<double> values;    // per class: reference length, coefficient
+
   struct Key {
     std::uint64_t a, b;
     bool operator==(const Key &o) const { return a == o.a && b == o.b; }

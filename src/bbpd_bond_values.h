@@ -34,11 +34,11 @@ struct PerBondValues {
 };
 struct ClassValues {
   const BBPD::BondClass *cls;    // readable LANES entries past the row's end
-  const double *xi0, *coef;      // per class
-  double xi0_of(int k) const { return xi0[cls[k]]; }
-  double coef_of(int k) const { return coef[cls[k]]; }
-  double xi0_at(int k, int) const { return xi0[cls[k]]; }
-  double coef_at(int k, int) const { return coef[cls[k]]; }
+  const double *values;          // per class c: reference length values[2c], coefficient values[2c + 1]
+  double xi0_of(int k) const { return values[2 * cls[k]]; }
+  double coef_of(int k) const { return values[2 * cls[k] + 1]; }
+  double xi0_at(int k, int) const { return xi0_of(k); }
+  double coef_at(int k, int) const { return coef_of(k); }
 };
 
 /* bond/storage compact: the reference length and the coefficient recomputed from x0 with the

@@ -117,6 +117,20 @@ BBPD_GROUPS_INLINE inline void load_positions(const double *xx, const int *j, __
   y = _mm256_unpackhi_pd(a02, a13);
   z = _mm256_unpackhi_pd(b02, b13);
 }
+
+// reference lengths and coefficients of the classes c[0..3]: each class's pair (16 bytes, side
+// by side in the table: ClassValues) paired in 32-byte registers and unpacked, as load_positions
+template <class C>
+BBPD_GROUPS_INLINE inline void load_class_values(const double *values, const C *c, __m256d &xi0, __m256d &coef)
+{
+  auto pair = [values](int lo, int hi) {
+    return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(values + 2 * lo)),
+                                _mm_loadu_pd(values + 2 * hi), 1);
+  };
+  const __m256d a02 = pair(c[0], c[2]), a13 = pair(c[1], c[3]);
+  xi0 = _mm256_unpacklo_pd(a02, a13);
+  coef = _mm256_unpackhi_pd(a02, a13);
+}
 #endif
 
 #ifdef BBPD_AVX512
@@ -131,16 +145,17 @@ inline void load_values(const ClassValues &v, __mmask8 m, int k, __m256i, __m512
                         __m512d &coef)
 {
   if (m == 0xFF) {
-    const auto *c = v.cls + k;
-    xi0 = _mm512_setr_pd(v.xi0[c[0]], v.xi0[c[1]], v.xi0[c[2]], v.xi0[c[3]], v.xi0[c[4]],
-                         v.xi0[c[5]], v.xi0[c[6]], v.xi0[c[7]]);
-    coef = _mm512_setr_pd(v.coef[c[0]], v.coef[c[1]], v.coef[c[2]], v.coef[c[3]], v.coef[c[4]],
-                          v.coef[c[5]], v.coef[c[6]], v.coef[c[7]]);
+    __m256d x[2], c[2];
+    load_class_values(v.values, v.cls + k, x[0], c[0]);
+    load_class_values(v.values, v.cls + k + 4, x[1], c[1]);
+    xi0 = _mm512_insertf64x4(_mm512_castpd256_pd512(x[0]), x[1], 1);
+    coef = _mm512_insertf64x4(_mm512_castpd256_pd512(c[0]), c[1], 1);
     return;
   }
-  const __m256i c = _mm256_cvtepu16_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i *>(v.cls + k)));
-  xi0 = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c, v.xi0, 8);
-  coef = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c, v.coef, 8);
+  const __m256i c2 = _mm256_slli_epi32(
+      _mm256_cvtepu16_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i *>(v.cls + k))), 1);
+  xi0 = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c2, v.values, 8);
+  coef = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c2, v.values + 1, 8);
 }
 
 template <class CoefFn, bool UNIFORM>
@@ -309,9 +324,10 @@ inline void load_values(const PerBondValues &v, __m256d m, __m128i, int k, __m12
 inline void load_values(const ClassValues &v, __m256d m, __m128i, int k, __m128i, __m256d &xi0,
                         __m256d &coef)
 {
-  const __m128i c = _mm_cvtepu16_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i *>(v.cls + k)));
-  xi0 = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), v.xi0, c, m, 8);
-  coef = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), v.coef, c, m, 8);
+  const __m128i c2 = _mm_slli_epi32(
+      _mm_cvtepu16_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i *>(v.cls + k))), 1);
+  xi0 = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), v.values, c2, m, 8);
+  coef = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), v.values + 1, c2, m, 8);
 }
 
 // compact storage: the AVX-512 load_values in 4 lanes (same operations, same bits)
@@ -395,9 +411,7 @@ BBPD_GROUPS_INLINE inline void load_values_full(const PerBondValues &v, const Id
 template <class Idx>
 BBPD_GROUPS_INLINE inline void load_values_full(const ClassValues &v, const Idx *, int, int k, __m256d &xi0, __m256d &coef)
 {
-  const int c0 = v.cls[k], c1 = v.cls[k + 1], c2 = v.cls[k + 2], c3 = v.cls[k + 3];
-  xi0 = _mm256_setr_pd(v.xi0[c0], v.xi0[c1], v.xi0[c2], v.xi0[c3]);
-  coef = _mm256_setr_pd(v.coef[c0], v.coef[c1], v.coef[c2], v.coef[c3]);
+  load_class_values(v.values, v.cls + k, xi0, coef);
 }
 template <class CoefFn, bool UNIFORM, class Idx>
 inline void load_values_full(const RecomputedValues<CoefFn, UNIFORM> &v, const Idx *bj, int i, int k,

@@ -590,8 +590,8 @@ void FixBBPDBonds::store_bond_values(int m, double xi, double coef)
     memory->create(bxi0, nbond_cache, "bbpd/bonds:bxi0");
     memory->create(bcoef, nbond_cache, "bbpd/bonds:bcoef");
     for (int e = 0; e < m; e++) {
-      bxi0[e] = classes.xi0[bclass[e]];
-      bcoef[e] = classes.coef[bclass[e]];
+      bxi0[e] = classes.xi0(bclass[e]);
+      bcoef[e] = classes.coef(bclass[e]);
     }
     memory->destroy(bclass);
     bclass = nullptr;
@@ -654,7 +654,7 @@ void FixBBPDBonds::remove_bond(int i, int k)
 /* the same operations as refresh_cache(), so compact storage gives the same bits */
 double FixBBPDBonds::xi0_of(int i, int k) const
 {
-  if (bclass) return classes.xi0[bclass[k]];
+  if (bclass) return classes.xi0(bclass[k]);
   if (bxi0) return bxi0[k];
   double **x0 = atom->x0;
   const int j = partner_of(i, k);
@@ -664,7 +664,7 @@ double FixBBPDBonds::xi0_of(int i, int k) const
 
 double FixBBPDBonds::coef_of(int i, int k, double xi0) const
 {
-  if (bclass) return classes.coef[bclass[k]];
+  if (bclass) return classes.coef(bclass[k]);
   if (bcoef) return bcoef[k];
   const int j = partner_of(i, k);
   return law.coefficient(atom->type[i], atom->type[j], xi0, atom->vfrac[j]);

@@ -26,8 +26,8 @@
                              and visit_row() read either
      bclass[k]               class of the bond in the rank's table 'classes' of distinct
                              (reference length, coefficient) pairs (bbpd_bond_table.h):
-       classes.xi0[c]        reference bond length |x0_j - x0_i|
-       classes.coef[c]       c(xi0) C_v V_j / xi0: force density per unit elongation
+       classes.xi0(c)        reference bond length |x0_j - x0_i|
+       classes.coef(c)       c(xi0) C_v V_j / xi0: force density per unit elongation
      vintact[i]              sum of C_v V_j over the intact bonds (damage, eq. 17)
    A bond that breaks is removed from its row at once (the row shifts), so the
    force loop has no per-bond branch. 16 bytes per bond with offsets, 20 with indices.
@@ -155,7 +155,7 @@ class FixBBPDBonds : public Fix {
     const int beg = bond_start[i];
     auto with_values = [&](const auto *row_partners) {
       if (bclass)
-        return fn(row_partners, BBPD::ClassValues{bclass + beg, classes.xi0.data(), classes.coef.data()});
+        return fn(row_partners, BBPD::ClassValues{bclass + beg, classes.data()});
       if (bxi0) return fn(row_partners, BBPD::PerBondValues{bxi0 + beg, bcoef + beg});
       const RowLaw row_law{&law, atom->type[i]};
       const BBPD::CoefFunction coef_fn{&RowLaw::coefficient, &row_law};

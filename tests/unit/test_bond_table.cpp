@@ -21,8 +21,8 @@ TEST(BondClassTable, EqualPairsShareAClass)
   EXPECT_EQ(a, c);
   EXPECT_NE(a, b);
   EXPECT_EQ(t.size(), 2u);
-  EXPECT_EQ(t.xi0[b], 1.4142135623730951e-3);
-  EXPECT_EQ(t.coef[a], 2.5e17);
+  EXPECT_EQ(t.xi0(b), 1.4142135623730951e-3);
+  EXPECT_EQ(t.coef(a), 2.5e17);
 }
 
 TEST(BondClassTable, PairsAreComparedByTheirBits)
@@ -35,8 +35,8 @@ TEST(BondClassTable, PairsAreComparedByTheirBits)
   ASSERT_TRUE(t.add(y, 1.0, b));
   ASSERT_TRUE(t.add(x, std::nextafter(1.0, 2.0), c));
   EXPECT_EQ(t.size(), 3u);
-  EXPECT_EQ(t.xi0[b], y);
-  EXPECT_EQ(t.coef[c], std::nextafter(1.0, 2.0));
+  EXPECT_EQ(t.xi0(b), y);
+  EXPECT_EQ(t.coef(c), std::nextafter(1.0, 2.0));
   EXPECT_NE(a, b);
   EXPECT_NE(a, c);
 }

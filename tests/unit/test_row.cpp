@@ -84,7 +84,7 @@ TEST(Row, SimdKernelGivesTheSameBits)
     BBPD::BondClassTable table;
     std::vector<BBPD::BondClass> cls(NB + LANES, 0);
     for (int k = 0; k < NB; k++) ASSERT_TRUE(table.add(row.xi0[k], row.coef[k], cls[k]));
-    const BBPD::ClassValues by_class = {cls.data(), table.xi0.data(), table.coef.data()};
+    const BBPD::ClassValues by_class = {cls.data(), table.data()};
     double f[3], fs[3], fc[3], ax[LANES], ay[LANES], az[LANES];
     RowTally tally, tally_simd, tally_class;
     portable<0, 1>(row, 0.0, f, &tally);
