@@ -390,18 +390,18 @@ namespace LPS {
   {
     Group4 g;
     if (full) {
-      const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
-                        partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
+      // the partners, counted from the row's origin o
+      const int o = row_origin(bj, i), j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};
       // the partners as a vector read from the row itself: j's four scalar stores read back as
       // one vector would stall the load on store forwarding
       g.j1 = full_partners4(bj, i, k);
       __m256d x, y, z;
-      load_positions(xx, j, x, y, z);
+      load_positions(xx + 3 * o, j, x, y, z);
       g.dx = _mm256_sub_pd(x, xi);
       g.dy = _mm256_sub_pd(y, yi);
       g.dz = _mm256_sub_pd(z, zi);
       load_values_full(vals, bj, i, k, g.xi0, g.wv);
-      load_states4(states, j, g.tom, g.inv_m);
+      load_states4(states + o, j, g.tom, g.inv_m);
       g.m = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
     } else {
       const TailGroup4 t(xx, bj, i, n, k, xi, yi, zi);
@@ -431,10 +431,9 @@ namespace LPS {
       acc[H] = lps_add<decltype(masked)::value>(acc[H], t, m);
     };
     auto full = [&](auto half, int k) BBPD_GROUPS_INLINE {
-      const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
-                        partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
+      const int j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};    // from row_origin
       __m256d x, y, z, xi0, wv;
-      load_positions(xx, j, x, y, z);
+      load_positions(xx + 3 * row_origin(bj, i), j, x, y, z);
       load_values_full(vals, bj, i, k, xi0, wv);
       add(half, std::false_type(), all, _mm256_sub_pd(x, xi), _mm256_sub_pd(y, yi), _mm256_sub_pd(z, zi), xi0, wv);
     };

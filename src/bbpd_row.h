@@ -538,10 +538,9 @@ inline bool row_force_avx2(const double *xx, int i, const Idx *bj, const Values 
   Avx2Lanes<FRACTURE, EV, Model> lanes(s0, margin);
   // bonds k..k+3, every lane in the row, into half H
   auto full = [&](auto half, int k) {
-    const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
-                      partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
+    const int j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};    // from row_origin
     __m256d x, y, z, xi0, coef;
-    load_positions(xx, j, x, y, z);
+    load_positions(xx + 3 * row_origin(bj, i), j, x, y, z);
     load_values_full(vals, bj, i, k, xi0, coef);
     lanes.template add<decltype(half)::value, false>(all, _mm256_sub_pd(x, xi), _mm256_sub_pd(y, yi),
                                                      _mm256_sub_pd(z, zi), xi0, coef);

@@ -108,14 +108,14 @@ inline bool row_force_stretch_avx2(const double *xx, int i, const Idx *bj, const
     broken = _mm256_or_pd(broken, _mm256_and_pd(m, Rule::past_critical(Vec4(s), s0, Vec4(vmargin)).v));
   };
   auto full = [&](auto half, int k) {
-    const int j[4] = {partner_index(bj, i, k), partner_index(bj, i, k + 1),
-                      partner_index(bj, i, k + 2), partner_index(bj, i, k + 3)};
+    const int o = row_origin(bj, i), j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};
     __m256d x, y, z, xi0, coef;
-    load_positions(xx, j, x, y, z);
+    load_positions(xx + 3 * o, j, x, y, z);
     load_values_full(vals, bj, i, k, xi0, coef);
     const __m256d elong = lanes.template add<decltype(half)::value, false>(
         all, _mm256_sub_pd(x, xi), _mm256_sub_pd(y, yi), _mm256_sub_pd(z, zi), xi0, coef);
-    stretch(all, false, elong, xi0, _mm256_setr_pd(smin[j[0]], smin[j[1]], smin[j[2]], smin[j[3]]));
+    const double *sm = smin + o;
+    stretch(all, false, elong, xi0, _mm256_setr_pd(sm[j[0]], sm[j[1]], sm[j[2]], sm[j[3]]));
   };
   auto tail = [&](auto half, int k) {
     const TailGroup4 g(xx, bj, i, n, k, xi, yi, zi);
