@@ -182,9 +182,10 @@ namespace LPS {
 
   // theta / m and 1 / m of 4 partners j (16-byte loads, unpacked; always inlined, as
   // load_positions: each path's file has its own copy)
-  BBPD_GROUPS_INLINE inline void load_states4(const AtomState *states, const int *j, __m256d &tom, __m256d &inv_m)
+  template <class J>
+  BBPD_GROUPS_INLINE inline void load_states4(const AtomState *states, const J *j, __m256d &tom, __m256d &inv_m)
   {
-    auto pair = [&](int a, int b) {
+    auto pair = [&](J a, J b) {
       return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(&states[a].theta_over_m)),
                                   _mm_loadu_pd(&states[b].theta_over_m), 1);
     };
@@ -391,7 +392,8 @@ namespace LPS {
     Group4 g;
     if (full) {
       // the partners, counted from the row's origin o
-      const int o = row_origin(bj, i), j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};
+      const int o = row_origin(bj, i);
+      const std::ptrdiff_t j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};
       // the partners as a vector read from the row itself: j's four scalar stores read back as
       // one vector would stall the load on store forwarding
       g.j1 = full_partners4(bj, i, k);
@@ -431,7 +433,7 @@ namespace LPS {
       acc[H] = lps_add<decltype(masked)::value>(acc[H], t, m);
     };
     auto full = [&](auto half, int k) BBPD_GROUPS_INLINE {
-      const int j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};    // from row_origin
+      const std::ptrdiff_t j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};    // from row_origin
       __m256d x, y, z, xi0, wv;
       load_positions(xx + 3 * row_origin(bj, i), j, x, y, z);
       load_values_full(vals, bj, i, k, xi0, wv);

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -104,8 +105,10 @@ inline bool row_force_portable(const double *xx, int i, const Idx *bj, int n, Xi
 
 // x, y and z of the partners j[0..3]: (x, y) and (y, z) of each partner, 16 bytes each, paired
 // in 32-byte registers and unpacked (always inlined: a copy of its own in each path's file would
-// be one symbol to the linker, who could hand the AVX-512 copy to the AVX2 kernels)
-BBPD_GROUPS_INLINE inline void load_positions(const double *xx, const int *j, __m256d &x, __m256d &y, __m256d &z)
+// be one symbol to the linker, who could hand the AVX-512 copy to the AVX2 kernels). The full
+// groups hand j as std::ptrdiff_t: 3 j is then an address offset as it is, not an int widened.
+template <class J>
+BBPD_GROUPS_INLINE inline void load_positions(const double *xx, const J *j, __m256d &x, __m256d &y, __m256d &z)
 {
   const double *p0 = xx + 3 * j[0], *p1 = xx + 3 * j[1], *p2 = xx + 3 * j[2], *p3 = xx + 3 * j[3];
   auto pair = [](const double *lo, const double *hi) {
@@ -123,7 +126,7 @@ BBPD_GROUPS_INLINE inline void load_positions(const double *xx, const int *j, __
 template <class C>
 BBPD_GROUPS_INLINE inline void load_class_values(const double *values, const C *c, __m256d &xi0, __m256d &coef)
 {
-  auto pair = [values](int lo, int hi) {
+  auto pair = [values](std::size_t lo, std::size_t hi) {
     return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(values + 2 * lo)),
                                 _mm_loadu_pd(values + 2 * hi), 1);
   };
@@ -538,7 +541,7 @@ inline bool row_force_avx2(const double *xx, int i, const Idx *bj, const Values 
   Avx2Lanes<FRACTURE, EV, Model> lanes(s0, margin);
   // bonds k..k+3, every lane in the row, into half H
   auto full = [&](auto half, int k) {
-    const int j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};    // from row_origin
+    const std::ptrdiff_t j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};    // from row_origin
     __m256d x, y, z, xi0, coef;
     load_positions(xx + 3 * row_origin(bj, i), j, x, y, z);
     load_values_full(vals, bj, i, k, xi0, coef);

@@ -108,7 +108,8 @@ inline bool row_force_stretch_avx2(const double *xx, int i, const Idx *bj, const
     broken = _mm256_or_pd(broken, _mm256_and_pd(m, Rule::past_critical(Vec4(s), s0, Vec4(vmargin)).v));
   };
   auto full = [&](auto half, int k) {
-    const int o = row_origin(bj, i), j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};
+    const int o = row_origin(bj, i);
+    const std::ptrdiff_t j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};
     __m256d x, y, z, xi0, coef;
     load_positions(xx + 3 * o, j, x, y, z);
     load_values_full(vals, bj, i, k, xi0, coef);
