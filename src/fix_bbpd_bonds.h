@@ -199,9 +199,12 @@ class FixBBPDBonds : public Fix {
   bigint count_broken() const;
   double bytes_per_bond() const;
   // unshifted position of atom j (local, or a ghost: its owner's coordinates) in a periodic box
-  const double *raw_x(int j) const { return j < atom->nlocal ? atom->x[j] : xraw[j]; }
+  const double *raw_x(int j) const;
   // (false if no force evaluation has sent them yet, e.g. a pair computed outside a run)
-  bool raw_positions() const { return need_raw && nmax_raw >= atom->nlocal + atom->nghost; }
+  bool raw_positions() const
+  {
+    return need_raw && (owners_local || nmax_raw >= atom->nlocal + atom->nghost);
+  }
   // shortest reference length of this rank's bonds at the last rebuild of the cache
   double min_reference_length() const { return xi0_min; }
   // counts the rebuilds of the cache: unchanged while every local index keeps its meaning
@@ -224,6 +227,7 @@ class FixBBPDBonds : public Fix {
   int need_raw;       // periodic box with fracture: ghosts carry their owner's position
   int nmax_raw;
   double **xraw;      // owner's (unshifted) position of each ghost
+  bool owners_local = false;    // one rank with an atom map: raw_x reads the owner itself
   bigint generation;
   std::atomic<long> removals{0};
   double xi0_min;
