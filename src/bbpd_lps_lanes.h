@@ -140,8 +140,8 @@ namespace LPS {
       out.fx[l] += fpl * dx;
       out.fy[l] += fpl * dy;
       out.fz[l] += fpl * dz;
-      if (EV) {
-        out.tally.eng[l] += energy;
+      if (EV) out.tally.eng[l] += energy;
+      if (tallies_virial(EV)) {
         const double d[3] = {dx, dy, dz};
         const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
         for (int v = 0; v < 6; v++) out.tally.vir[v][l] += fpl * d[pa[v]] * d[pb[v]];
@@ -260,8 +260,8 @@ namespace LPS {
       fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fpl, b.dx));
       fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fpl, b.dy));
       fz = _mm512_mask_add_pd(fz, m, fz, _mm512_mul_pd(fpl, b.dz));
-      if (EV) {
-        eng = _mm512_mask_add_pd(eng, m, eng, energy);
+      if (EV) eng = _mm512_mask_add_pd(eng, m, eng, energy);
+      if (tallies_virial(EV)) {
         const __m512d d[3] = {b.dx, b.dy, b.dz};
         const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
         for (int v = 0; v < 6; v++)
@@ -284,10 +284,8 @@ namespace LPS {
       _mm512_storeu_pd(out.fx, fx);
       _mm512_storeu_pd(out.fy, fy);
       _mm512_storeu_pd(out.fz, fz);
-      if (EV) {
-        _mm512_storeu_pd(out.tally.eng, eng);
-        for (int v = 0; v < 6; v++) _mm512_storeu_pd(out.tally.vir[v], vir[v]);
-      }
+      if (EV) _mm512_storeu_pd(out.tally.eng, eng);
+      for (int v = 0; v < 6 && tallies_virial(EV); v++) _mm512_storeu_pd(out.tally.vir[v], vir[v]);
       if (!CHECK) return false;
       *snew = lane_extreme8<false>(vmin);
       return lane_extreme8<true>(vmax) + c.margin > c.s0_floor;
@@ -472,8 +470,8 @@ namespace LPS {
       fx[H] = lps_add<MASKED>(fx[H], _mm256_mul_pd(fpl, dx), m);
       fy[H] = lps_add<MASKED>(fy[H], _mm256_mul_pd(fpl, dy), m);
       fz[H] = lps_add<MASKED>(fz[H], _mm256_mul_pd(fpl, dz), m);
-      if (EV) {
-        eng[H] = lps_add<MASKED>(eng[H], energy, m);
+      if (EV) eng[H] = lps_add<MASKED>(eng[H], energy, m);
+      if (tallies_virial(EV)) {
         const __m256d d[3] = {dx, dy, dz};
         const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
         for (int v = 0; v < 6; v++)
@@ -494,10 +492,8 @@ namespace LPS {
         _mm256_storeu_pd(out.fx + 4 * h, fx[h]);
         _mm256_storeu_pd(out.fy + 4 * h, fy[h]);
         _mm256_storeu_pd(out.fz + 4 * h, fz[h]);
-        if (EV) {
-          _mm256_storeu_pd(out.tally.eng + 4 * h, eng[h]);
-          for (int v = 0; v < 6; v++) _mm256_storeu_pd(out.tally.vir[v] + 4 * h, vir[v][h]);
-        }
+        if (EV) _mm256_storeu_pd(out.tally.eng + 4 * h, eng[h]);
+        for (int v = 0; v < 6 && tallies_virial(EV); v++) _mm256_storeu_pd(out.tally.vir[v] + 4 * h, vir[v][h]);
       }
       if (!CHECK) return false;
       *snew = lane_extreme4<false>(vmin);

@@ -18,6 +18,7 @@
 #include "bbpd_bond_table.h"
 #include "bbpd_bond_values.h"
 #include "bbpd_partner_index.h"
+#include "bbpd_row_paths.h"
 #include "bbpd_simd.h"
 
 #include <algorithm>
@@ -78,9 +79,9 @@ inline bool row_force_portable(const double *xx, int i, const Idx *bj, int n, Xi
     ax[l] += fbond * dx;
     ay[l] += fbond * dy;
     az[l] += fbond * dz;
-    if (EV) {
-      // the row's shares of the bond's energy and virial: the other end tallies the rest
-      tally->eng[l] += Model::energy_share(coef, elong);
+    if (EV) tally->eng[l] += Model::energy_share(coef, elong);
+    if (tallies_virial(EV)) {
+      // the row's share of the bond's virial: the other end tallies the rest
       tally->vir[0][l] -= Model::virial_share(fbond, dx, dx);
       tally->vir[1][l] -= Model::virial_share(fbond, dy, dy);
       tally->vir[2][l] -= Model::virial_share(fbond, dz, dz);
@@ -267,9 +268,9 @@ template <int EV, class Model> struct RowLanes {
     fx = _mm512_mask_add_pd(fx, m, fx, _mm512_mul_pd(fbond, b.dx));
     fy = _mm512_mask_add_pd(fy, m, fy, _mm512_mul_pd(fbond, b.dy));
     fz = _mm512_mask_add_pd(fz, m, fz, _mm512_mul_pd(fbond, b.dz));
-    if (EV) {
-      // as row_force_portable
-      eacc = _mm512_mask_add_pd(eacc, m, eacc, Model::energy_share(Vec8(b.coef), Vec8(b.elong)).v);
+    // as row_force_portable
+    if (EV) eacc = _mm512_mask_add_pd(eacc, m, eacc, Model::energy_share(Vec8(b.coef), Vec8(b.elong)).v);
+    if (tallies_virial(EV)) {
       const Vec8 d[3] = {b.dx, b.dy, b.dz};
       const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
       for (int c = 0; c < 6; c++)
@@ -282,10 +283,8 @@ template <int EV, class Model> struct RowLanes {
     _mm512_storeu_pd(ax, fx);
     _mm512_storeu_pd(ay, fy);
     _mm512_storeu_pd(az, fz);
-    if (EV) {
-      _mm512_storeu_pd(tally->eng, eacc);
-      for (int c = 0; c < 6; c++) _mm512_storeu_pd(tally->vir[c], vacc[c]);
-    }
+    if (EV) _mm512_storeu_pd(tally->eng, eacc);
+    for (int c = 0; c < 6 && tallies_virial(EV); c++) _mm512_storeu_pd(tally->vir[c], vacc[c]);
   }
 };
 
@@ -460,8 +459,8 @@ template <int FRACTURE, int EV, class Model> struct Avx2Lanes {
     fx[H] = masked_add<MASKED>(fx[H], _mm256_mul_pd(fbond, dx), m);
     fy[H] = masked_add<MASKED>(fy[H], _mm256_mul_pd(fbond, dy), m);
     fz[H] = masked_add<MASKED>(fz[H], _mm256_mul_pd(fbond, dz), m);
-    if (EV) {
-      eacc[H] = masked_add<MASKED>(eacc[H], Model::energy_share(Vec4(coef), Vec4(elong)).v, m);
+    if (EV) eacc[H] = masked_add<MASKED>(eacc[H], Model::energy_share(Vec4(coef), Vec4(elong)).v, m);
+    if (tallies_virial(EV)) {
       const Vec4 d[3] = {dx, dy, dz};
       const int pa[6] = {0, 1, 2, 0, 0, 1}, pb[6] = {0, 1, 2, 1, 2, 2};
       for (int c = 0; c < 6; c++) {
@@ -478,10 +477,8 @@ template <int FRACTURE, int EV, class Model> struct Avx2Lanes {
       _mm256_storeu_pd(ax + 4 * h, fx[h]);
       _mm256_storeu_pd(ay + 4 * h, fy[h]);
       _mm256_storeu_pd(az + 4 * h, fz[h]);
-      if (EV) {
-        _mm256_storeu_pd(tally->eng + 4 * h, eacc[h]);
-        for (int c = 0; c < 6; c++) _mm256_storeu_pd(tally->vir[c] + 4 * h, vacc[c][h]);
-      }
+      if (EV) _mm256_storeu_pd(tally->eng + 4 * h, eacc[h]);
+      for (int c = 0; c < 6 && tallies_virial(EV); c++) _mm256_storeu_pd(tally->vir[c] + 4 * h, vacc[c][h]);
     }
   }
 };

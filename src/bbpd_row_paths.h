@@ -21,6 +21,13 @@
 namespace BBPD {
 
 struct RowTally;    // bbpd_row.h
+
+// what a row tallies besides its force (the EV argument of the kernels): nothing, each bond's
+// energy and virial, or each bond's energy alone, the virial then coming from the rows' forces
+// (PairBBPD::row_tally)
+constexpr int TALLY_NONE = 0, TALLY_ENERGY_VIRIAL = 1, TALLY_ENERGY = 2;
+constexpr bool tallies_virial(int ev) { return ev == TALLY_ENERGY_VIRIAL; }
+
 namespace LPS {    // bbpd_lps.h, bbpd_lps_lanes.h
   struct AtomState;
   struct RowCoefficients;

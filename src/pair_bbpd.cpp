@@ -525,6 +525,7 @@ void PairBBPD::compute(int eflag, int vflag)
     big += std::fabs(domain->xy) + std::fabs(domain->xz) + std::fabs(domain->yz);
     break_margin = BREAK_MARGIN_ULPS * DBL_EPSILON * big;
   }
+  for (int m = 0; m < 3; m++) virial_origin[m] = 0.5 * (domain->boxlo[m] + domain->boxhi[m]);
   eval_bonds();
   if (contact) compute_contact();
 }
@@ -532,16 +533,12 @@ void PairBBPD::compute(int eflag, int vflag)
 /* the bond forces and breaking of one step, with the critical stretch rule */
 void PairBBPD::eval_bonds()
 {
-  if (!fracture_any) {
-    if (evflag) eval<1, 0, 0>();
-    else eval<0, 0, 0>();
-  } else if (!multi_s0) {
-    if (evflag) eval<1, 1, 0>();
-    else eval<0, 1, 0>();
-  } else {
-    if (evflag) eval<1, 1, 1>();
-    else eval<0, 1, 1>();
-  }
+  with_row_tally([&](auto ev) {
+    constexpr int EV = decltype(ev)::value;
+    if (!fracture_any) eval<EV, 0, 0>();
+    else if (!multi_s0) eval<EV, 1, 0>();
+    else eval<EV, 1, 1>();
+  });
 }
 
 /* is tag jtag an intact partner of local atom i? (asked only for atoms closer than the contact
@@ -740,23 +737,45 @@ bool PairBBPD::row_force(int i, double *fi, const double *s0row, double *acc,
   });
   if (broken) return true;
   lane_sum(ax, ay, az, fi);
-  if (EVFLAG) tally_lanes(i, lanes, acc);
+  if (EVFLAG) tally_lanes(i, lanes, acc, BBPD::tallies_virial(EVFLAG));
   return false;
 }
 
 /* energy and virial of the row of atom i: per atom where LAMMPS asked for them, and the
    global totals into acc (energy, then the six virial components) */
-void PairBBPD::tally_lanes(int i, const RowTally &lanes, double *acc)
+void PairBBPD::tally_lanes(int i, const RowTally &lanes, double *acc, bool virial)
 {
   const double eng = lane_total(lanes.eng);
-  double vir[6];
-  for (int c = 0; c < 6; c++) vir[c] = lane_total(lanes.vir[c]);
   acc[0] += eng;
   if (eflag_atom) eatom[i] += eng;
+  if (!virial) return;
+  double vir[6];
+  for (int c = 0; c < 6; c++) vir[c] = lane_total(lanes.vir[c]);
   for (int m = 0; m < 6; m++) {
     acc[1 + m] += vir[m];
     if (vflag_atom) vatom[i][m] += vir[m];
   }
+}
+
+/* What the rows tally this step. The virial sum_bonds 1/2 (x_i - x_j) (x) f_ij (each end's row
+   tallies its half) is also sum_i x_i (x) f_i over the rows' forces f_i when every bond joins
+   two rows of this rank and the two rows give it opposite forces: no ghost atoms (one rank,
+   no periodic boundary), and atoms of one type and one volume (the bond-based families and the
+   LPS are then antisymmetric, f_ij = -f_ji). The rows then tally each bond's energy only:
+   the six products per bond and their sums were 15 % of a step of the bbpd/lps and bbpd/pmb
+   cylinders, whose fix indent asks for the virial at every step. */
+int PairBBPD::row_tally() const
+{
+  if (!evflag) return BBPD::TALLY_NONE;
+  if (vflag_atom) return BBPD::TALLY_ENERGY_VIRIAL;
+  if (!vflag_global) return BBPD::TALLY_ENERGY;
+  if (atom->nghost > 0 || rules.own_end_history) return BBPD::TALLY_ENERGY_VIRIAL;
+  const int nlocal = atom->nlocal;
+  const int *type = atom->type;
+  const double *vfrac = atom->vfrac;
+  for (int i = 1; i < nlocal; i++)
+    if (type[i] != type[0] || vfrac[i] != vfrac[0]) return BBPD::TALLY_ENERGY_VIRIAL;
+  return BBPD::TALLY_ENERGY;
 }
 
 /* the critical stretch of each row's bonds, where they share one (types are fixed during a

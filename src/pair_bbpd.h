@@ -30,9 +30,11 @@
 #include "bbpd_kernel.h"
 #include "bbpd_plugin_model.h"
 #include "bbpd_row_paths.h"
+#include "atom.h"
 #include "pair.h"
 
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace BBPD {
@@ -52,12 +54,15 @@ class PairBBPD : public Pair {
     bool silling_askari;    // alpha is a rule of the style (pair_bbpd_alpha.h)
     bool pmb_rules;         // peri/pmb's families, volumes and numbers (pair_bbpd_pmb.h)
     bool short_range;       // short-range forces whatever 'contact' says (stable step)
+    // each row reads the history of its own end of a bond (bbpd/ves, bbpd/eps), so the two
+    // rows of a bond give it forces that differ (row_tally)
+    bool own_end_history;
   };
   // peri/pmb's rules: Silling-Askari breaking, its families and numbers, short-range forces
   // (bbpd/pmb and the LPS styles)
-  static constexpr Rules PERI_PMB_RULES{true, true, true};
+  static constexpr Rules PERI_PMB_RULES{true, true, true, false};
   PairBBPD(class LAMMPS *, BBPD::KernelInfo, const char *style = nullptr,
-           Rules = Rules{false, false, false});
+           Rules = Rules{false, false, false, false});
   ~PairBBPD() override;
 
   void compute(int, int) override;
@@ -144,7 +149,31 @@ class PairBBPD : public Pair {
   void add_row_force(int i, const double *fi, int &bad);
   void finish_eval(int bad, bool evflag_on, const double *totals);
   void add_thread_totals(double *totals, const double *acc);
-  void tally_lanes(int i, const BBPD::RowTally &lanes, double *acc);
+  void tally_lanes(int i, const BBPD::RowTally &lanes, double *acc, bool virial);
+  // what the rows tally this step (BBPD::TALLY_*, bbpd_row.h): with TALLY_ENERGY and a global
+  // virial asked, for_each_row takes it from the rows' forces (add_row_virial)
+  int row_tally() const;
+  // f(std::integral_constant<int, row_tally()>())
+  template <class F> void with_row_tally(F &&f) const
+  {
+    switch (row_tally()) {
+      case BBPD::TALLY_NONE: f(std::integral_constant<int, BBPD::TALLY_NONE>()); break;
+      case BBPD::TALLY_ENERGY: f(std::integral_constant<int, BBPD::TALLY_ENERGY>()); break;
+      default: f(std::integral_constant<int, BBPD::TALLY_ENERGY_VIRIAL>());
+    }
+  }
+  double virial_origin[3];    // of add_row_virial: the box centre (round-off of x (x) f)
+  void add_row_virial(int i, const double *fi, double *acc) const
+  {
+    const double *x = atom->x[i];
+    const double dx = x[0] - virial_origin[0], dy = x[1] - virial_origin[1], dz = x[2] - virial_origin[2];
+    acc[1] += dx * fi[0];
+    acc[2] += dy * fi[1];
+    acc[3] += dz * fi[2];
+    acc[4] += dx * fi[1];
+    acc[5] += dx * fi[2];
+    acc[6] += dy * fi[2];
+  }
   bool bonded(int i, tagint jtag) const;
   int multi_s0;           // critical stretch differs between type pairs
   double s0_single;       // the critical stretch when it does not

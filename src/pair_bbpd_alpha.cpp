@@ -61,6 +61,7 @@ std::string PairBBPDAlpha::report_rules() const
 void PairBBPDAlpha::eval_bonds()
 {
   // only compression lowers s0: a body in pure tension keeps the calibrated s00
-  if (evflag) eval_silling_askari<1, BBPD::SillingAskariRule<true>>(silling_askari);
-  else eval_silling_askari<0, BBPD::SillingAskariRule<true>>(silling_askari);
+  with_row_tally([&](auto ev) {
+    eval_silling_askari<decltype(ev)::value, BBPD::SillingAskariRule<true>>(silling_askari);
+  });
 }

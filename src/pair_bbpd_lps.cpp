@@ -79,7 +79,7 @@ PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, BBPD::KernelInfo k, Family f) :
 
 PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, Family f, Coefficients c, BBPD::KernelInfo k,
                          const std::string &style_name) :
-    PairBBPD(lmp, k, style_name.c_str(), PERI_PMB_RULES), lattice_constant(0.0), bulk(nullptr), shear(nullptr),
+    PairBBPD(lmp, k, style_name.c_str(), Rules{true, true, true, f != Family::LPS}), lattice_constant(0.0), bulk(nullptr), shear(nullptr),
     dimension(LPS::DILATATION_FACTOR),
     deviatoric_share(c == Coefficients::KERNEL ? WHOLE_DEVIATORIC_ENERGY : PERI_LPS_DEVIATORIC_SHARE),
     lps_state(nullptr), nmax_lps(0), atom_states(nullptr),
@@ -430,10 +430,8 @@ void PairBBPDLPS::eval_bonds()
   } else if (family == Family::EPS) {
     if (evflag) eval_history<1, BBPD::EPS::Family>();
     else eval_history<0, BBPD::EPS::Family>();
-  } else if (evflag) {
-    eval_lps<1>();
   } else {
-    eval_lps<0>();
+    with_row_tally([&](auto ev) { eval_lps<decltype(ev)::value>(); });
   }
   compute_short_range(lattice_constant);
 }
@@ -573,6 +571,7 @@ template <int EVFLAG> void PairBBPDLPS::eval_lps()
 
 template void PairBBPDLPS::eval_lps<0>();
 template void PairBBPDLPS::eval_lps<1>();
+template void PairBBPDLPS::eval_lps<2>();
 
 /* ---------------------------------------------------------------------- */
 

@@ -121,9 +121,10 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
     });
     BBPD::lane_sum(lanes.fx, lanes.fy, lanes.fz, f);
     // atom i's deviatoric energy (bbpd/lps: half of it, as peri/lps) and half the virial
-    if (EVFLAG) {
+    if (EVFLAG)
       tally[0] = p.deviatoric_share *
           BBPD::LPS::deviatoric_energy_of(mod, si.inv_m, BBPD::lane_total(lanes.tally.eng));
+    if (BBPD::tallies_virial(EVFLAG)) {
       for (int v = 0; v < 6; v++)
         tally[1 + v] = -BondModel::virial_share(1.0, BBPD::lane_total(lanes.tally.vir[v]), 1.0);
     }
@@ -157,8 +158,11 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
     // the energy the bond held at atom i goes with it (term 3 of compute bbpd/energy)
     p.bonds->ebroken[i] += bond_tally[0] * p.atom->vfrac[i];
     if (EVFLAG) {
-      for (int c = 0; c < 7; c++) acc[c] += bond_tally[c];
+      acc[0] += bond_tally[0];
       if (p.eflag_atom) p.eatom[i] += bond_tally[0];
+    }
+    if (BBPD::tallies_virial(EVFLAG)) {
+      for (int c = 1; c < 7; c++) acc[c] += bond_tally[c];
       for (int c = 0; c < 6 && p.vflag_atom; c++) p.vatom[i][c] += bond_tally[1 + c];
     }
     nlost++;
@@ -177,7 +181,7 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
       tally[0] += BBPD::LPS::dilatation_energy(mod.bulk, theta_i);
       acc[0] += tally[0];
       if (p.eflag_atom) p.eatom[i] += tally[0];
-      for (int c = 0; c < 6; c++) {
+      for (int c = 0; c < 6 && BBPD::tallies_virial(EVFLAG); c++) {
         acc[1 + c] += tally[1 + c];
         if (p.vflag_atom) p.vatom[i][c] += tally[1 + c];
       }

@@ -48,8 +48,7 @@ void PairBBPDPMB::settings(int narg, char **arg)
 /* the bond forces and breaking of one step in peri/pmb's order, then its short-range forces */
 void PairBBPDPMB::eval_bonds()
 {
-  if (evflag) eval_silling_askari<1, BBPD::PeriPmbRule>(silling_askari);
-  else eval_silling_askari<0, BBPD::PeriPmbRule>(silling_askari);
+  with_row_tally([&](auto ev) { eval_silling_askari<decltype(ev)::value, BBPD::PeriPmbRule>(silling_askari); });
   compute_short_range(lattice_constant);
 }
 

@@ -48,6 +48,7 @@ template <int EVFLAG, class Row> void PairBBPD::for_each_row(Row row)
     for (int i = 0; i < nlocal; i++) {
       double fi[3];
       row(i, fi, acc, cache);
+      if (EVFLAG == BBPD::TALLY_ENERGY && vflag_global) add_row_virial(i, fi, acc);
       add_row_force(i, fi, bad);
     }
     if (EVFLAG) add_thread_totals(totals, acc);

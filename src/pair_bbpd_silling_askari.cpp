@@ -91,7 +91,7 @@ template <int EVFLAG, class Rule> void PairBBPD::eval_silling_askari(SillingAska
                 xx, i, bj, vals, n, smin, sa.s00_one, sa.alpha_one, margin, &snew, ax, ay, az, &tally);
             if (!past) {
               lane_sum(ax, ay, az, fi);
-              if (EVFLAG) p.tally_lanes(i, tally, acc);
+              if (EVFLAG) p.tally_lanes(i, tally, acc, BBPD::tallies_virial(EVFLAG));
               summed = true;
             }
             return past;
@@ -184,11 +184,13 @@ template <int EVFLAG> double PairBBPD::broken_bond_force(int i, int k, double *f
   fb[2] += fbond * dz;
   const double eng = BondModel::energy_share(coef, elong);
   if (EVFLAG) {
+    acc[0] += eng;
+    if (eflag_atom) eatom[i] += eng;
+  }
+  if (BBPD::tallies_virial(EVFLAG)) {
     const double vir[6] = {-BondModel::virial_share(fbond, dx, dx), -BondModel::virial_share(fbond, dy, dy),
                            -BondModel::virial_share(fbond, dz, dz), -BondModel::virial_share(fbond, dx, dy),
                            -BondModel::virial_share(fbond, dx, dz), -BondModel::virial_share(fbond, dy, dz)};
-    acc[0] += eng;
-    if (eflag_atom) eatom[i] += eng;
     for (int m = 0; m < 6; m++) {
       acc[1 + m] += vir[m];
       if (vflag_atom) vatom[i][m] += vir[m];
@@ -201,4 +203,5 @@ template <int EVFLAG> double PairBBPD::broken_bond_force(int i, int k, double *f
   template void PairBBPD::eval_silling_askari<EVFLAG, RULE>(SillingAskariState &);
 BBPD_FOR_STRETCH_RULES(BBPD_EVAL_SILLING_ASKARI, 0)
 BBPD_FOR_STRETCH_RULES(BBPD_EVAL_SILLING_ASKARI, 1)
+BBPD_FOR_STRETCH_RULES(BBPD_EVAL_SILLING_ASKARI, 2)
 #undef BBPD_EVAL_SILLING_ASKARI

@@ -12,7 +12,7 @@ import pytest
 
 from bbpd import reference as ref
 import refmodel
-from scenes import peri_preamble
+from scenes import EXAMPLES, peri_preamble
 
 DX = 1.0e-3
 THICKNESS = 1.0e-3
@@ -82,3 +82,44 @@ def test_pressure_matches_reference(lmp, tmp_path, model, variant, nprocs):
                                                abs=RTOL * scale)
     assert expected[0] < 0.0    # tension along the largest stretch
     assert abs(expected[3]) > 1e-3 * scale    # the shear component is tested too
+
+
+# The virial from the rows' forces, sum_i x_i (x) f_i, where every bond joins two rows of one
+# rank (one rank, no periodic boundary, one type and volume: PairBBPD::row_tally), against the
+# bonds' own tallies, which compute stress/atom asks for at its steps: LAMMPS's cylinder shattered
+# by its indenter, whose variable position asks for the virial at every step. Bonds break, the
+# short-range forces act, and the forces of the bonds breaking in a step count in it.
+ROW_VIRIAL_RTOL = 1.0e-12    # of the largest component: round-off of x_i (x) f_i (found 6e-14)
+CYLINDER_KERNEL = """pair_style      bbpd/gaussian 3d
+pair_coeff      * * 72e9 3.8 0.0015001
+"""
+
+
+@pytest.mark.parametrize("model", ["pmb", "lps", "gaussian"])
+def test_virial_from_row_forces_matches_bond_tallies(lmp, model):
+    script = (EXAMPLES / f"peri-{'lps' if model == 'lps' else 'pmb'}-dropin" /
+              f"in.bbpd.{'lps' if model == 'lps' else 'pmb'}").read_text()
+    if model == "gaussian":
+        script = script.replace("pair_style      bbpd/pmb 3d\n", "").replace(
+            "pair_coeff      * * 1.6863e22 0.0015001 0.0005 0.25\n", CYLINDER_KERNEL)
+        assert "bbpd/gaussian 3d" in script and "bbpd/pmb 3d" not in script
+    components = " ".join(f"c_p[{k}]" for k in range(1, 7))
+    thermo = ("compute p all pressure NULL virial\n"
+              f"thermo_style custom step ke c_dmean {components}{{}}\n"
+              "thermo_modify format float %.17g\nthermo 50\n")
+    tallies = ("compute sa all stress/atom NULL virial\n"
+               "compute ssum all reduce sum c_sa[1]\n")
+    tables = {}
+    for name, extra, column in (("rows", "", ""), ("bonds", tallies, " c_ssum")):
+        text = script.replace("run             ${steps}", extra + thermo.format(column) + "run ${steps}")
+        out = lmp(text, vars={"scale": 0.6, "steps": 300}).output
+        tables[name] = ref.thermo_tables(out)[-1]
+    rows, bonds = tables["rows"], tables["bonds"]
+    np.testing.assert_array_equal(rows["KinEng"], bonds["KinEng"])    # the virial does not act
+    assert bonds["c_dmean"][-1] > 0.01          # bonds broke
+    got = np.array([rows[f"c_p[{k}]"] for k in range(1, 7)]).T
+    want = np.array([bonds[f"c_p[{k}]"] for k in range(1, 7)]).T
+    for g, w in zip(got[1:], want[1:]):    # step 0: at rest, no force
+        np.testing.assert_allclose(g, w, rtol=0, atol=ROW_VIRIAL_RTOL * np.abs(w).max())
+    # the rows' sum is another summation than the bonds': were it the same, it would not be tested
+    assert np.any(got != want)
