@@ -12,10 +12,12 @@
    candidates' order depends on the binning: the loops sum their forces in an order of
    their own (by tag or by offset), which depends on the pairs alone.
 
-   An atom whose candidates were all beyond their distance by more than its own displacement
-   since the search plus the largest one has none in range (a candidate moved at most the
-   largest): the loops skip it without reading a candidate (may_be_close), so a body at rest
-   or barely strained pays one pass over the displacements per step, not one over the pairs,
+   Displacements count from the centre c of their bounding box: two atoms approach each other
+   by at most |u_i - c| + |u_j - c|, so a body that moves as a whole, or half of it, searches
+   again only when the atoms move apart from one another by the skin. An atom whose candidates
+   were all beyond their distance by more than its own |u_i - c| plus the largest has none in
+   range: the loops skip it without reading a candidate (may_be_close), so a body at rest or
+   barely strained pays two passes over the displacements per step, not one over the pairs,
    also while a few atoms move fast (an indenter's, a crack's).
 ------------------------------------------------------------------------- */
 
@@ -40,15 +42,23 @@ class ClosePairs {
   std::vector<double> dist;
 
   // do the candidates still hold every pair in range? (the same atoms at the same nall
-  // positions xx, 3 per atom, none of which has moved half the skin since the search); keeps
-  // the largest displacement for may_be_close
+  // positions xx, 3 per atom, none of which has moved half the skin from the displacements'
+  // centre since the search); keeps the largest such displacement for may_be_close
   bool current(const double *xx, int nlocal, int nall)
   {
     if (xhold.size() != 3 * (size_t) nall || first.size() != (size_t) nlocal + 1) return false;
+    double lo[3] = {0.0, 0.0, 0.0}, hi[3] = {0.0, 0.0, 0.0}, c[3];
+    for (int i = 0; i < nall; i++)
+      for (int m = 0; m < 3; m++) {
+        const double u = xx[3 * i + m] - xhold[3 * i + m];
+        lo[m] = i ? std::min(lo[m], u) : u;
+        hi[m] = i ? std::max(hi[m], u) : u;
+      }
+    for (int m = 0; m < 3; m++) c[m] = 0.5 * (lo[m] + hi[m]);
     double largest = 0.0;
     for (int i = 0; i < nall; i++) {
-      const double dx = xx[3 * i] - xhold[3 * i], dy = xx[3 * i + 1] - xhold[3 * i + 1],
-                   dz = xx[3 * i + 2] - xhold[3 * i + 2];
+      const double dx = xx[3 * i] - xhold[3 * i] - c[0], dy = xx[3 * i + 1] - xhold[3 * i + 1] - c[1],
+                   dz = xx[3 * i + 2] - xhold[3 * i + 2] - c[2];
       const double dsq = dx * dx + dy * dy + dz * dz;
       // under half the skin, with room for round-off
       if (dsq > 0.2 * skin * skin) return false;
@@ -60,8 +70,9 @@ class ClosePairs {
   }
 
   /* can a candidate of local atom i be closer than its distance now? (false: none can) Atom i
-     moved by d_i and each candidate by at most the largest displacement: none is within its
-     distance while nearest[i] >= d_i + moved + roundoff, compared squared (no root per atom) */
+     moved by d_i from the centre and each candidate by at most the largest such displacement:
+     none is within its distance while nearest[i] >= d_i + moved + roundoff, compared squared
+     (no root per atom) */
   bool may_be_close(int i) const
   {
     const double room = nearest[i] - moved - roundoff;
@@ -154,9 +165,9 @@ class ClosePairs {
  private:
   std::vector<double> xhold;      // positions at the search
   std::vector<double> nearest;    // per local atom: the least r - d of its candidates at the search
-  std::vector<double> moved_sq;   // per local atom: its squared displacement since the search
+  std::vector<double> moved_sq;   // per local atom: its squared displacement from the centre
   double skin = 0.0;
-  double moved = 0.0;       // the largest displacement since the search (current)
+  double moved = 0.0;       // the largest displacement from the centre (current)
   double roundoff = 0.0;    // CLOSE_PAIRS_ROUNDOFF of the reach
 };
 

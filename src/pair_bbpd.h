@@ -163,16 +163,16 @@ class PairBBPD : public Pair {
     }
   }
   double virial_origin[3];    // of add_row_virial: the box centre (round-off of x (x) f)
-  void add_row_virial(int i, const double *fi, double *acc) const
+  void add_row_virial(int i, const double *fi, double *vir) const
   {
     const double *x = atom->x[i];
     const double dx = x[0] - virial_origin[0], dy = x[1] - virial_origin[1], dz = x[2] - virial_origin[2];
-    acc[1] += dx * fi[0];
-    acc[2] += dy * fi[1];
-    acc[3] += dz * fi[2];
-    acc[4] += dx * fi[1];
-    acc[5] += dx * fi[2];
-    acc[6] += dy * fi[2];
+    vir[0] += dx * fi[0];
+    vir[1] += dy * fi[1];
+    vir[2] += dz * fi[2];
+    vir[3] += dx * fi[1];
+    vir[4] += dx * fi[2];
+    vir[5] += dy * fi[2];
   }
   bool bonded(int i, tagint jtag) const;
   int multi_s0;           // critical stretch differs between type pairs

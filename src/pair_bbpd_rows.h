@@ -39,6 +39,7 @@ template <int EVFLAG, class Row> void PairBBPD::for_each_row(Row row)
 #endif
   {
     double acc[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};    // add_row_virial's (not in acc: in registers)
     BBPD::CoefCache *cache = thread_coef_cache();
 #if defined(_OPENMP)
     // chunks of 512 atoms dealt out in turn: rows differ in length near surfaces and cracks
@@ -48,9 +49,10 @@ template <int EVFLAG, class Row> void PairBBPD::for_each_row(Row row)
     for (int i = 0; i < nlocal; i++) {
       double fi[3];
       row(i, fi, acc, cache);
-      if (EVFLAG == BBPD::TALLY_ENERGY && vflag_global) add_row_virial(i, fi, acc);
+      if (EVFLAG == BBPD::TALLY_ENERGY && vflag_global) add_row_virial(i, fi, vir);
       add_row_force(i, fi, bad);
     }
+    for (int m = 0; m < 6; m++) acc[1 + m] += vir[m];
     if (EVFLAG) add_thread_totals(totals, acc);
   }
   finish_eval(bad, EVFLAG, totals);

@@ -82,21 +82,36 @@ TEST(ClosePairs, AnAtomWithAClosePairIsNeverSkipped)
 
 TEST(ClosePairs, AtomsAtRestAreSkippedWhileAnotherMoves)
 {
-  // the nearest pairs lie LC - D = 0.1 beyond their distance; one atom moves 0.06: a bound of
-  // twice the largest displacement (0.12) would skip none, each atom's own displacement plus
-  // the largest (0.06) skips every atom at rest
-  constexpr double STEP = 0.06 * LC;
-  std::vector<double> x = block();
-  const int n = static_cast<int>(x.size() / 3);
-  BBPD::ClosePairs cp;
-  ASSERT_TRUE(cp.build(x.data(), n, n, D, SKIN, [](int, int) { return D; }));
-  const int moving = n / 2;
-  x[3 * moving] += STEP;
-  ASSERT_TRUE(cp.current(x.data(), n, n));
-  EXPECT_TRUE(cp.may_be_close(moving));
-  for (int i = 0; i < n; i++) {
-    if (i != moving) {
-      EXPECT_FALSE(cp.may_be_close(i)) << i;
-    }
+  // the nearest pairs lie LC - D = 0.1 beyond their distance. One atom moves 0.06: a bound of
+  // twice the largest displacement (0.12) would skip none; displacements from their centre
+  // (0.03) skip every atom, the moving one too (it came 0.06 nearer at most). Moving 0.12, it
+  // may reach a pair, and no atom is skipped.
+  for (double step : {0.06 * LC, 0.12 * LC}) {
+    std::vector<double> x = block();
+    const int n = static_cast<int>(x.size() / 3);
+    BBPD::ClosePairs cp;
+    ASSERT_TRUE(cp.build(x.data(), n, n, D, SKIN, [](int, int) { return D; }));
+    const int moving = n / 2;
+    x[3 * moving] += step;
+    ASSERT_TRUE(cp.current(x.data(), n, n));
+    for (int i = 0; i < n; i++) EXPECT_EQ(cp.may_be_close(i), step > LC - D) << i << " " << step;
   }
+}
+
+TEST(ClosePairs, ABodyMovingAsAWholeKeepsItsCandidates)
+{
+  // a translation by twice the skin brings no pair nearer: no search, every atom skipped;
+  // the same shift of half the block moves it 0.6 from the other half: searched again
+  constexpr double SHIFT = 2.0 * SKIN;
+  const std::vector<double> x0 = block();
+  const int n = static_cast<int>(x0.size() / 3);
+  BBPD::ClosePairs cp;
+  ASSERT_TRUE(cp.build(x0.data(), n, n, D, SKIN, [](int, int) { return D; }));
+  std::vector<double> x = x0;
+  for (int i = 0; i < n; i++) x[3 * i + 1] += SHIFT;
+  ASSERT_TRUE(cp.current(x.data(), n, n));
+  for (int i = 0; i < n; i++) EXPECT_FALSE(cp.may_be_close(i)) << i;
+  x = x0;
+  for (int i = 0; i < n / 2; i++) x[3 * i + 1] += SHIFT;
+  EXPECT_FALSE(cp.current(x.data(), n, n));
 }
