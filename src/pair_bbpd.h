@@ -216,7 +216,8 @@ class PairBBPD : public Pair {
   // the critical stretch of Rule (bbpd_plugin_model.h lists the rules) over a style's state;
   // bbpd/KERNEL/alpha and bbpd/pmb call it
   template <int EVFLAG, class Rule> void eval_silling_askari(SillingAskariState &);
-  template <int EVFLAG> double broken_bond_force(int i, int k, double *fb, double *acc);
+  template <int EVFLAG>
+  double broken_bond_force(int i, int k, double *fb, double *acc, class SillingAskariState &);
 
   // the pieces of peri/pmb's rules its styles call (bbpd/pmb, the LPS styles;
   // pair_bbpd_peri_rules.cpp): no 'contact' keyword, the lattice constant lc, the

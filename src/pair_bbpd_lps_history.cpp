@@ -299,11 +299,12 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
     const double eng = p.deviatoric_share * LPS::deviatoric_energy_of(mod, si.inv_m, energy);
     // the energy the bond held at atom i goes with it (term 3 of compute bbpd/energy)
     p.bonds->ebroken[i] += eng * p.atom->vfrac[i];
+    const double vir[6] = {
+        -BondModel::virial_share(fpl, dx, dx), -BondModel::virial_share(fpl, dy, dy),
+        -BondModel::virial_share(fpl, dz, dz), -BondModel::virial_share(fpl, dx, dy),
+        -BondModel::virial_share(fpl, dx, dz), -BondModel::virial_share(fpl, dy, dz)};
+    p.silling_askari.book_broken_virial(vir);
     if (EVFLAG) {
-      const double vir[6] = {
-          -BondModel::virial_share(fpl, dx, dx), -BondModel::virial_share(fpl, dy, dy),
-          -BondModel::virial_share(fpl, dz, dz), -BondModel::virial_share(fpl, dx, dy),
-          -BondModel::virial_share(fpl, dx, dz), -BondModel::virial_share(fpl, dy, dz)};
       acc[0] += eng;
       if (p.eflag_atom) p.eatom[i] += eng;
       for (int c = 0; c < 6; c++) {
@@ -346,6 +347,7 @@ template <int EVFLAG, class F> void PairBBPDLPS::eval_history()
   eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
     return HistoryRow<EVFLAG, F>(*this, i, acc, cache, replay, canonical, rule, margin);
   });
+  if (replay && EVFLAG && vflag_global) silling_askari.add_broken_virial(virial, update);
   // every row that broke bonds in this step has shifted its slots (HistoryRow::sum): the slots
   // are current until bonds go another way (on LAMMPS's cylinder example, finding them all again
   // each step was 12 % of a VES run)

@@ -155,6 +155,7 @@ template <int EVFLAG> struct PairBBPDLPS::Row {
     if (!LPSStretchRule::past_critical(breaking_stretch(j, e, xi0), s0_with(j), 0.0)) return false;
     double bond_tally[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     p.add_bond_force<1>(i, j, xi0, p.bonds->coef_of(i, k, xi0), fb, bond_tally);
+    p.silling_askari.book_broken_virial(bond_tally + 1);
     // the energy the bond held at atom i goes with it (term 3 of compute bbpd/energy)
     p.bonds->ebroken[i] += bond_tally[0] * p.atom->vfrac[i];
     if (EVFLAG) {

@@ -114,7 +114,7 @@ template <int EVFLAG, class Rule> void PairBBPD::eval_silling_askari(SillingAska
       // a rule may apply the force of a bond in the step it breaks (its energy then is what it
       // carries away), or drop it at once, at its critical stretch
       if (Rule::FORCE_IN_BREAKING_STEP)
-        p.bonds->ebroken[i] += p.broken_bond_force<EVFLAG>(i, k, fb, acc) * p.atom->vfrac[i];
+        p.bonds->ebroken[i] += p.broken_bond_force<EVFLAG>(i, k, fb, acc, state) * p.atom->vfrac[i];
       else
         p.book_broken_bond(i, k, s0_of(k));
       return true;
@@ -156,6 +156,7 @@ template <int EVFLAG, class Rule> void PairBBPD::eval_silling_askari(SillingAska
     return Row{*this, state, i, acc, cache, replay, canonical, sa, margin,
                {0.0, 0.0, 0.0}};
   });
+  if (replay && BBPD::tallies_virial(EVFLAG) && vflag_global) state.add_broken_virial(virial, update);
   state.end_step(atom, update);
 }
 
@@ -168,7 +169,8 @@ double PairBBPD::stretch_margin() const
 /* add the force density of bond k of atom i (about to break) to fb, in the order the
    bonds break; tally its energy and virial as row_force does; returns the row's share of its
    energy density */
-template <int EVFLAG> double PairBBPD::broken_bond_force(int i, int k, double *fb, double *acc)
+template <int EVFLAG>
+double PairBBPD::broken_bond_force(int i, int k, double *fb, double *acc, SillingAskariState &state)
 {
   const double *xx = atom->x[0];
   const int j = bonds->partner_of(i, k);
@@ -187,10 +189,11 @@ template <int EVFLAG> double PairBBPD::broken_bond_force(int i, int k, double *f
     acc[0] += eng;
     if (eflag_atom) eatom[i] += eng;
   }
+  const double vir[6] = {-BondModel::virial_share(fbond, dx, dx), -BondModel::virial_share(fbond, dy, dy),
+                         -BondModel::virial_share(fbond, dz, dz), -BondModel::virial_share(fbond, dx, dy),
+                         -BondModel::virial_share(fbond, dx, dz), -BondModel::virial_share(fbond, dy, dz)};
+  state.book_broken_virial(vir);
   if (BBPD::tallies_virial(EVFLAG)) {
-    const double vir[6] = {-BondModel::virial_share(fbond, dx, dx), -BondModel::virial_share(fbond, dy, dy),
-                           -BondModel::virial_share(fbond, dz, dz), -BondModel::virial_share(fbond, dx, dy),
-                           -BondModel::virial_share(fbond, dx, dz), -BondModel::virial_share(fbond, dy, dz)};
     for (int m = 0; m < 6; m++) {
       acc[1 + m] += vir[m];
       if (vflag_atom) vatom[i][m] += vir[m];

@@ -28,7 +28,26 @@ bool SillingAskariState::begin_step(Memory *memory, Atom *atom, Update *update)
     memory->destroy(smin_new);
     memory->create(smin_new, nmax, "pair:smin_new");
   }
-  return update->setupflag && update->ntimestep == fix->last_step;
+  const bool replay = update->setupflag && update->ntimestep == fix->last_step;
+  if (!replay) {
+    for (double &v : broken_virial) v = 0.0;
+    broken_virial_step = update->ntimestep;
+  }
+  return replay;
+}
+
+void SillingAskariState::book_broken_virial(const double *vir)
+{
+#if defined(_OPENMP)
+#pragma omp critical(bbpd_broken_virial)
+#endif
+  for (int m = 0; m < 6; m++) broken_virial[m] += vir[m];
+}
+
+void SillingAskariState::add_broken_virial(double *virial, Update *update) const
+{
+  if (broken_virial_step != update->ntimestep) return;
+  for (int m = 0; m < 6; m++) virial[m] += broken_virial[m];
 }
 
 void SillingAskariState::end_step(Atom *atom, Update *update)

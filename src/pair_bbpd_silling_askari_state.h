@@ -15,6 +15,8 @@
 #ifndef LMP_PAIR_BBPD_SILLING_ASKARI_STATE_H
 #define LMP_PAIR_BBPD_SILLING_ASKARI_STATE_H
 
+#include "lmptype.h"
+
 namespace LAMMPS_NS {
 
 class SillingAskariState {
@@ -33,6 +35,14 @@ class SillingAskariState {
   bool begin_step(class Memory *, class Atom *, class Update *);
   // the new smin takes effect at the next step, once sent to the ghosts
   void end_step(class Atom *, class Update *);
+  // the virial of a bond breaking in a first evaluation (vir: the row's tally), summed per rank
+  // (threads: one at a time); a second evaluation of that step in this process re-applies the
+  // forces of those bonds (fbroken) without the bonds, so add_broken_virial() adds their sum to
+  // the bonds' tally (virial: the pair style's). Restart files keep no record of it.
+  void book_broken_virial(const double *vir);
+  void add_broken_virial(double *virial, class Update *) const;
+  double broken_virial[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  bigint broken_virial_step = -1;
   void destroy(class Memory *);
 };
 

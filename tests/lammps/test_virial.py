@@ -123,3 +123,25 @@ def test_virial_from_row_forces_matches_bond_tallies(lmp, model):
         np.testing.assert_allclose(g, w, rtol=0, atol=ROW_VIRIAL_RTOL * np.abs(w).max())
     # the rows' sum is another summation than the bonds': were it the same, it would not be tested
     assert np.any(got != want)
+
+
+@pytest.mark.parametrize("model,nprocs", [("pmb", 2), ("lps", 2), ("ves", 2), ("pmb", 1)])
+def test_a_second_evaluation_of_a_step_has_its_virial(lmp, model, nprocs):
+    """`run 0` after a run evaluates its last step again, and re-applies the forces of the bonds
+    that broke in it (they act in the step they break, as in peri/*): its virial is the one
+    the run's last step had, with those bonds' (W = P V, the box shrink-wrapped again), on two
+    ranks (the bonds' tally) and on one (the rows' forces)"""
+    script = (EXAMPLES / f"peri-{model}-dropin" / f"in.bbpd.{model}").read_text()
+    components = " ".join(f"v_w{k}" for k in range(1, 7))
+    thermo = ("compute p all pressure NULL virial\n" +
+              "".join(f"variable w{k} equal c_p[{k}]*vol\n" for k in range(1, 7)) +
+              f"thermo_style custom step c_dmean {components}\n"
+              "thermo_modify format float %.17g\n")
+    text = script.replace("run             ${steps}", thermo + "run ${steps}\nrun 0\n")
+    out = lmp(text, nprocs=nprocs, vars={"scale": 0.6, "steps": 300}).output
+    run, again = ref.thermo_tables(out)[-2:]
+    assert run["Step"][-1] == again["Step"][0] == 300
+    assert run["c_dmean"][-1] > 0.01    # bonds broke, some of them in the last step (below)
+    w_run = np.array([run[f"v_w{k}"][-1] for k in range(1, 7)])
+    w_again = np.array([again[f"v_w{k}"][0] for k in range(1, 7)])
+    np.testing.assert_allclose(w_again, w_run, rtol=0, atol=1e-9 * np.abs(w_run).max())
