@@ -162,6 +162,16 @@ class PairBBPD : public Pair {
       default: f(std::integral_constant<int, BBPD::TALLY_ENERGY_VIRIAL>());
     }
   }
+  // a bond end's virial terms (xx yy zz xy xz yz) at force per length fpl along (dx, dy, dz)
+  static void bond_end_virial(double fpl, double dx, double dy, double dz, double *vir)
+  {
+    const double d[3] = {dx, dy, dz};
+    const int a[6] = {0, 1, 2, 0, 0, 1}, b[6] = {0, 1, 2, 1, 2, 2};
+    for (int m = 0; m < 6; m++) vir[m] = -BondModel::virial_share(fpl, d[a[m]], d[b[m]]);
+  }
+  // after a second evaluation of a step (replay) whose rows tallied the bonds' virial (EV): the
+  // virial of the bonds that broke in that step, which it re-applies from fbroken
+  void add_replayed_virial(bool replay, int ev, const class SillingAskariState &state);
   double virial_origin[3];    // of add_row_virial: the box centre (round-off of x (x) f)
   void add_row_virial(int i, const double *fi, double *vir) const
   {

@@ -566,7 +566,7 @@ template <int EVFLAG> void PairBBPDLPS::eval_lps()
   eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
     return Row<EVFLAG>(*this, i, acc, cache, replay, canonical, rule, margin);
   });
-  if (replay && BBPD::tallies_virial(EVFLAG) && vflag_global) silling_askari.add_broken_virial(virial, update);
+  add_replayed_virial(replay, EVFLAG, silling_askari);
   end_state();
 }
 

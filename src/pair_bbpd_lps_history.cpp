@@ -299,10 +299,8 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
     const double eng = p.deviatoric_share * LPS::deviatoric_energy_of(mod, si.inv_m, energy);
     // the energy the bond held at atom i goes with it (term 3 of compute bbpd/energy)
     p.bonds->ebroken[i] += eng * p.atom->vfrac[i];
-    const double vir[6] = {
-        -BondModel::virial_share(fpl, dx, dx), -BondModel::virial_share(fpl, dy, dy),
-        -BondModel::virial_share(fpl, dz, dz), -BondModel::virial_share(fpl, dx, dy),
-        -BondModel::virial_share(fpl, dx, dz), -BondModel::virial_share(fpl, dy, dz)};
+    double vir[6];
+    p.bond_end_virial(fpl, dx, dy, dz, vir);
     p.silling_askari.book_broken_virial(vir);
     if (EVFLAG) {
       acc[0] += eng;
@@ -347,7 +345,7 @@ template <int EVFLAG, class F> void PairBBPDLPS::eval_history()
   eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
     return HistoryRow<EVFLAG, F>(*this, i, acc, cache, replay, canonical, rule, margin);
   });
-  if (replay && EVFLAG && vflag_global) silling_askari.add_broken_virial(virial, update);
+  add_replayed_virial(replay, EVFLAG, silling_askari);
   // every row that broke bonds in this step has shifted its slots (HistoryRow::sum): the slots
   // are current until bonds go another way (on LAMMPS's cylinder example, finding them all again
   // each step was 12 % of a VES run)

@@ -48,9 +48,8 @@ void PairBBPDLPS::add_bond_force(int i, int j, double xi0, double wv, double *f,
   if (EVFLAG) {
     const double eng = deviatoric_share *
         BBPD::LPS::deviatoric_energy(mod, wv, xi0, e, BBPD::LPS::third(lps_state->dilatation[i], dimension), atom_states[i].inv_m);
-    const double vir[6] = {-BondModel::virial_share(fpl, dx, dx), -BondModel::virial_share(fpl, dy, dy),
-                           -BondModel::virial_share(fpl, dz, dz), -BondModel::virial_share(fpl, dx, dy),
-                           -BondModel::virial_share(fpl, dx, dz), -BondModel::virial_share(fpl, dy, dz)};
+    double vir[6];
+    bond_end_virial(fpl, dx, dy, dz, vir);
     acc[0] += eng;
     for (int m = 0; m < 6; m++) acc[1 + m] += vir[m];
   }

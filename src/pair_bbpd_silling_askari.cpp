@@ -156,7 +156,7 @@ template <int EVFLAG, class Rule> void PairBBPD::eval_silling_askari(SillingAska
     return Row{*this, state, i, acc, cache, replay, canonical, sa, margin,
                {0.0, 0.0, 0.0}};
   });
-  if (replay && BBPD::tallies_virial(EVFLAG) && vflag_global) state.add_broken_virial(virial, update);
+  add_replayed_virial(replay, EVFLAG, state);
   state.end_step(atom, update);
 }
 
@@ -189,9 +189,8 @@ double PairBBPD::broken_bond_force(int i, int k, double *fb, double *acc, Sillin
     acc[0] += eng;
     if (eflag_atom) eatom[i] += eng;
   }
-  const double vir[6] = {-BondModel::virial_share(fbond, dx, dx), -BondModel::virial_share(fbond, dy, dy),
-                         -BondModel::virial_share(fbond, dz, dz), -BondModel::virial_share(fbond, dx, dy),
-                         -BondModel::virial_share(fbond, dx, dz), -BondModel::virial_share(fbond, dy, dz)};
+  double vir[6];
+  bond_end_virial(fbond, dx, dy, dz, vir);
   state.book_broken_virial(vir);
   if (BBPD::tallies_virial(EVFLAG)) {
     for (int m = 0; m < 6; m++) {
@@ -200,6 +199,11 @@ double PairBBPD::broken_bond_force(int i, int k, double *fb, double *acc, Sillin
     }
   }
   return eng;
+}
+
+void PairBBPD::add_replayed_virial(bool replay, int ev, const SillingAskariState &state)
+{
+  if (replay && BBPD::tallies_virial(ev) && vflag_global) state.add_broken_virial(virial, update);
 }
 
 #define BBPD_EVAL_SILLING_ASKARI(EVFLAG, RULE) \
