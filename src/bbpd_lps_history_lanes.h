@@ -217,7 +217,7 @@ namespace LPS {
       else if (COMMIT)
         write_history8<F>(slot, hist, k, ok, dense, f0.v, f1.v);
       const __m512d t_ok = _mm512_maskz_mov_pd(ok, t.v);
-      const __m512d fpl = vselect(Vec8(b.r) > Vec8(zero), Vec8(t_ok) / Vec8(b.r), Vec8(zero)).v;
+      const __m512d fpl = vkeep(Vec8(b.r) > Vec8(zero), Vec8(t_ok) / Vec8(b.r)).v;
       sums.add(m, b, fpl, _mm512_maskz_mov_pd(ok, energy.v));
       sums.check(m, b);
     }
@@ -329,7 +329,7 @@ namespace LPS {
       else if (COMMIT)
         write_history4<F>(slot, hist, k, lanes, dense, f0.v, f1.v);
       const __m256d t_ok = _mm256_and_pd(ok, t.v);
-      const __m256d fpl = vselect(Vec4(r) > Vec4(zero), Vec4(t_ok) / Vec4(r), Vec4(zero)).v;
+      const __m256d fpl = vkeep(Vec4(r) > Vec4(zero), Vec4(t_ok) / Vec4(r)).v;
       sums.template add<H, true>(g.m, g.dx, g.dy, g.dz, fpl, _mm256_and_pd(ok, energy.v));
       sums.template check<true>(g.m, e, g.xi0);
     };

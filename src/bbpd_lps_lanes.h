@@ -62,7 +62,7 @@ namespace LPS {
     template <class V> static V elongation(V r, V xi0)
     {
       const V e = r - xi0;
-      return vselect(vabs(e) < V(PMB::NEAR_ZERO), V(0.0), e);
+      return vdrop(vabs(e) < V(PMB::NEAR_ZERO), e);
     }
   };
 
@@ -76,8 +76,8 @@ namespace LPS {
   {
     const V t = V(c.dilatational) * wv * (V(c.theta_over_m_i) + tom_j) * xi0 +
         V(c.deviatoric) * wv * (V(c.inv_m_i) + inv_m_j) * e;
-    const V t_both = vselect(inv_m_j > V(0.0), t, V(0.0));
-    return vselect(r > V(0.0), t_both / r, V(0.0));
+    const V t_both = vkeep(inv_m_j > V(0.0), t);
+    return vkeep(r > V(0.0), t_both / r);
   }
 
   // the row's energy lane term: w V ed^2 (deviatoric_energy_of multiplies the sum)
@@ -344,16 +344,6 @@ namespace LPS {
 #endif
 
 #ifdef BBPD_AVX2
-  // the same, masked (lanes off in m: zero), gathered
-  inline void gather_states4(const AtomState *states, __m128i j1, __m256d m, __m256d &tom,
-                             __m256d &inv_m)
-  {
-    const double *s = &states[0].theta_over_m;
-    const __m128i j2 = _mm_slli_epi32(j1, 1);
-    tom = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), s, j2, m, 8);
-    inv_m = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), s + 1, j2, m, 8);
-  }
-
   // acc + v in the lanes of m, or everywhere if not MASKED
   template <bool MASKED> inline __m256d lps_add(__m256d acc, __m256d v, __m256d m)
   {
@@ -410,8 +400,10 @@ namespace LPS {
       g.dy = t.dy;
       g.dz = t.dz;
       g.j1 = t.j1;
-      load_values(vals, t.m, t.m32, k, t.j1, g.xi0, g.wv);
-      gather_states4(states, t.j1, t.m, g.tom, g.inv_m);
+      load_values_tail(vals, t, k, g.xi0, g.wv);
+      load_states4(states + row_origin(bj, i), t.j, g.tom, g.inv_m);
+      g.tom = _mm256_and_pd(t.m, g.tom);
+      g.inv_m = _mm256_and_pd(t.m, g.inv_m);
     }
     return g;
   }
@@ -440,7 +432,7 @@ namespace LPS {
     auto tail = [&](auto half, int k) BBPD_GROUPS_INLINE {
       const TailGroup4 g(xx, bj, i, n, k, xi, yi, zi);
       __m256d xi0, wv;
-      load_values(vals, g.m, g.m32, k, g.j1, xi0, wv);
+      load_values_tail(vals, g, k, xi0, wv);
       add(half, std::true_type(), g.m, g.dx, g.dy, g.dz, xi0, wv);
     };
     for_each_group4(n, full, tail);

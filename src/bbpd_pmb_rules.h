@@ -61,7 +61,7 @@ struct PeriPmbRule : SillingAskariRule<false> {
   static constexpr bool FORCE_IN_BREAKING_STEP = true;
   template <class V> static V settled_elongation(V elong)
   {
-    return vselect(vabs(elong) < V(PMB::NEAR_ZERO), V(0.0), elong);
+    return vdrop(vabs(elong) < V(PMB::NEAR_ZERO), elong);
   }
 };
 }    // namespace BBPD

@@ -511,21 +511,45 @@ BBPD_GROUPS_INLINE inline void for_each_group4(int n, Full &&full, Tail &&tail)
 }
 
 /* the last n - k < 4 bonds of the row of atom i (at xi, yi, zi), masked: their lanes (m, and
-   m32 for 32-bit data), partners j1 and partner differences d*, gathered */
+   m32 for 32-bit data), partners j1 (zero in the lanes off) and j (from row_origin; atom i
+   itself in the lanes off) and partner differences d* (zero in the lanes off). The positions
+   are read as a full group's, with plain loads: three gathers per tail cost about 2 % of an
+   LPS step on LAMMPS's cylinder (AVX2, Sapphire Rapids). */
 struct TailGroup4 {
   __m128i m32, j1;
   __m256d m, dx, dy, dz;
+  std::ptrdiff_t j[4];
   template <class Idx>
-  TailGroup4(const double *xx, const Idx *bj, int i, int n, int k, __m256d xi, __m256d yi, __m256d zi) :
+  BBPD_GROUPS_INLINE TailGroup4(const double *xx, const Idx *bj, int i, int n, int k, __m256d xi, __m256d yi,
+                            __m256d zi) :
       m32(_mm_cmpgt_epi32(_mm_set1_epi32(n - k), _mm_setr_epi32(0, 1, 2, 3))),
       j1(load_partners(bj, m32, i, k)), m(_mm256_castsi256_pd(_mm256_cvtepi32_epi64(m32)))
   {
-    const __m128i j3 = _mm_mullo_epi32(j1, _mm_set1_epi32(3));
-    dx = _mm256_sub_pd(_mm256_mask_i32gather_pd(xi, xx, j3, m, 8), xi);
-    dy = _mm256_sub_pd(_mm256_mask_i32gather_pd(yi, xx + 1, j3, m, 8), yi);
-    dz = _mm256_sub_pd(_mm256_mask_i32gather_pd(zi, xx + 2, j3, m, 8), zi);
+    const int o = row_origin(bj, i);
+    for (int l = 0; l < 4; l++) j[l] = l < n - k ? std::ptrdiff_t(bj[k + l]) : std::ptrdiff_t(i - o);
+    __m256d x, y, z;
+    load_positions(xx + 3 * o, j, x, y, z);
+    dx = _mm256_sub_pd(x, xi);
+    dy = _mm256_sub_pd(y, yi);
+    dz = _mm256_sub_pd(z, zi);
   }
 };
+
+// a tail's reference lengths and coefficients (lanes off in m: zero), as load_values; a class
+// table by plain loads (the class entries are readable past a row's end), the lanes off cleared
+template <class Values>
+BBPD_GROUPS_INLINE inline void load_values_tail(const Values &v, const TailGroup4 &g, int k, __m256d &xi0,
+                                            __m256d &coef)
+{
+  load_values(v, g.m, g.m32, k, g.j1, xi0, coef);
+}
+BBPD_GROUPS_INLINE inline void load_values_tail(const ClassValues &v, const TailGroup4 &g, int k, __m256d &xi0,
+                                            __m256d &coef)
+{
+  load_class_values(v.values, v.cls + k, xi0, coef);
+  xi0 = _mm256_and_pd(g.m, xi0);
+  coef = _mm256_and_pd(g.m, coef);
+}
 
 /* the same as row_force_avx512 with two 4-wide halves: lanes 0-3 and 4-7 */
 template <int FRACTURE, int EV, class Model, class Values, class Idx>
@@ -549,7 +573,7 @@ inline bool row_force_avx2(const double *xx, int i, const Idx *bj, const Values 
   auto tail = [&](auto half, int k) {
     const TailGroup4 g(xx, bj, i, n, k, xi, yi, zi);
     __m256d xi0, coef;
-    load_values(vals, g.m, g.m32, k, g.j1, xi0, coef);
+    load_values_tail(vals, g, k, xi0, coef);
     lanes.template add<decltype(half)::value, true>(g.m, g.dx, g.dy, g.dz, xi0, coef);
   };
   for_each_group4(n, full, tail);

@@ -121,7 +121,7 @@ inline bool row_force_stretch_avx2(const double *xx, int i, const Idx *bj, const
   auto tail = [&](auto half, int k) {
     const TailGroup4 g(xx, bj, i, n, k, xi, yi, zi);
     __m256d xi0, coef;
-    load_values(vals, g.m, g.m32, k, g.j1, xi0, coef);
+    load_values_tail(vals, g, k, xi0, coef);
     const __m256d elong = lanes.template add<decltype(half)::value, true>(g.m, g.dx, g.dy, g.dz, xi0, coef);
     stretch(g.m, true, elong, xi0, _mm256_mask_i32gather_pd(vsmin_i, smin, g.j1, g.m, 8));
   };
