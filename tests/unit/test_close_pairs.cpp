@@ -85,17 +85,67 @@ TEST(ClosePairs, AtomsAtRestAreSkippedWhileAnotherMoves)
   // the nearest pairs lie LC - D = 0.1 beyond their distance. One atom moves 0.06: a bound of
   // twice the largest displacement (0.12) would skip none; displacements from their centre
   // (0.03) skip every atom, the moving one too (it came 0.06 nearer at most). Moving 0.12, it
-  // may reach a pair, and no atom is skipped.
+  // may reach a pair: the atoms within the search's reach of it (D + SKIN) are not skipped,
+  // but the atoms two bins away (a bin is at least that reach) are.
   for (double step : {0.06 * LC, 0.12 * LC}) {
     std::vector<double> x = block();
+    const std::vector<double> x0 = x;
     const int n = static_cast<int>(x.size() / 3);
     BBPD::ClosePairs cp;
     ASSERT_TRUE(cp.build(x.data(), n, n, D, SKIN, [](int, int) { return D; }));
-    const int moving = n / 2;
+    const int moving = n / 2;    // at (3, 0, 0)
     x[3 * moving] += step;
     ASSERT_TRUE(cp.current(x.data(), n, n));
-    for (int i = 0; i < n; i++) EXPECT_EQ(cp.may_be_close(i), step > LC - D) << i << " " << step;
+    int skipped = 0;
+    for (int i = 0; i < n; i++) {
+      const double dx = x0[3 * i] - x0[3 * moving], dy = x0[3 * i + 1] - x0[3 * moving + 1],
+                   dz = x0[3 * i + 2] - x0[3 * moving + 2];
+      skipped += !cp.may_be_close(i);
+      if (step <= LC - D) {
+        EXPECT_FALSE(cp.may_be_close(i)) << i << " " << step;
+      } else if (std::sqrt(dx * dx + dy * dy + dz * dz) < D + SKIN) {
+        EXPECT_TRUE(cp.may_be_close(i)) << i << " " << step;
+      }
+    }
+    if (step > LC - D) {
+      EXPECT_FALSE(cp.may_be_close(n - 1));    // at (5, 5, 5)
+      EXPECT_GT(skipped, 0);
+      EXPECT_LT(skipped, n);
+    }
   }
+}
+
+TEST(ClosePairs, FastAtomsAmongSlowOnes)
+{
+  // a few atoms move up to half the skin, the others little: whatever they do, an atom with a
+  // pair closer than its distance is never skipped, and the atoms far from the fast ones are
+  std::mt19937 gen(11);
+  const std::vector<double> x0 = block();
+  const int n = static_cast<int>(x0.size() / 3);
+  std::uniform_int_distribution<int> pick(0, n - 1);
+  std::uniform_real_distribution<double> slow(-0.01, 0.01), fast(-0.14, 0.14);
+  int close_seen = 0, skipped = 0;
+  for (int round = 0; round < 200; round++) {
+    BBPD::ClosePairs cp;
+    ASSERT_TRUE(cp.build(x0.data(), n, n, D, SKIN, [](int, int) { return D; }));
+    std::vector<double> x = x0;
+    for (double &v : x) v += slow(gen);
+    for (int f = 0; f < 3; f++) {
+      const int a = pick(gen);
+      for (int m = 0; m < 3; m++) x[3 * a + m] += fast(gen);
+    }
+    ASSERT_TRUE(cp.current(x.data(), n, n));
+    for (int i = 0; i < n; i++) {
+      const bool close = has_close_pair(cp, x, i);
+      close_seen += close;
+      skipped += !cp.may_be_close(i);
+      if (close) {
+        EXPECT_TRUE(cp.may_be_close(i)) << "atom " << i << " round " << round;
+      }
+    }
+  }
+  EXPECT_GT(close_seen, 0);
+  EXPECT_GT(skipped, 0);
 }
 
 TEST(ClosePairs, ABodyMovingAsAWholeKeepsItsCandidates)
