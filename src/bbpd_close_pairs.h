@@ -16,14 +16,16 @@
    by at most |u_i - c| + |u_j - c|, so a body that moves as a whole, or half of it, searches
    again only when the atoms move apart from one another by the skin. An atom whose candidates
    were all beyond their distance by more than its own |u_i - c| plus the largest |u_j - c| has
-   none in range: the loops skip it without reading a candidate (may_be_close), so a body at rest or
-   barely strained pays two passes over the displacements per step, not one over the pairs,
-   also while a few atoms move fast (an indenter's, a crack's). The bound is local: i's
-   candidates lay in i's bin at the search or a bin next to it (the search looks nowhere else),
-   so the box holding the displacements of the atoms of those 27 bins (or of blocks of bins,
-   when the bins outnumber the atoms) holds theirs, and the centre above is that box's. On LAMMPS's cylinder (bbpd/lps) one centre and one largest
-   displacement for all atoms had 55 % of them read their candidates at every step, 22 each,
-   for 1 pair in range in 70.
+   none in range: the loops skip it without reading a candidate (may_be_close), so a body at
+   rest or barely strained pays two passes over the displacements per step, not one over the
+   pairs. While a few atoms move fast (an indenter's, a crack's), that bound skips hardly any
+   atom, so a local one is tried: i's candidates lay in i's bin at the search or a bin next to it
+   (the search looks nowhere else), so the box holding the displacements of the atoms of those
+   27 bins (or of blocks of bins, when the bins outnumber the atoms) holds theirs, and the
+   centre above may be that box's. On LAMMPS's cylinder (bbpd/lps) the one bound had 55 % of
+   the atoms read their candidates at every step, 22 each, for 1 pair in range in 70; with the
+   local one, 5 %. It is worked out only in a step that needs it: on LAMMPS's bpm/peri deck (a
+   periodic block at rest, bbpd/pmb) doing it at every step cost 6 % of the step.
 ------------------------------------------------------------------------- */
 
 #ifndef BBPD_CLOSE_PAIRS_H
@@ -53,72 +55,42 @@ class ClosePairs {
   bool current(const double *xx, int nlocal, int nall)
   {
     if (xhold.size() != 3 * (size_t) nall || first.size() != (size_t) nlocal + 1) return false;
-    // each region's box of displacements (lo and -hi: both kept by min), gathered over runs of
-    // atoms in one region (atoms come mostly in space order: no update waits for the last)
-    std::fill(near_box.begin(), near_box.end(), std::numeric_limits<double>::infinity());
-    double run[6];
-    int run_region = -1;
-    auto flush = [&]() {
-      if (run_region < 0) return;
-      double *box = &near_box[6 * (size_t) run_region];
-      for (int v = 0; v < 6; v++) box[v] = std::min(box[v], run[v]);
-    };
-    for (int i = 0; i < nall; i++) {
-      if (region_of[i] != run_region) {
-        flush();
-        run_region = region_of[i];
-        for (double &v : run) v = std::numeric_limits<double>::infinity();
-      }
+    double lo[3] = {0.0, 0.0, 0.0}, hi[3] = {0.0, 0.0, 0.0}, c[3];
+    for (int i = 0; i < nall; i++)
       for (int m = 0; m < 3; m++) {
         const double u = xx[3 * i + m] - xhold[3 * i + m];
-        run[m] = std::min(run[m], u);
-        run[3 + m] = std::min(run[3 + m], -u);
+        lo[m] = i ? std::min(lo[m], u) : u;
+        hi[m] = i ? std::max(hi[m], u) : u;
       }
-    }
-    flush();
-    // the centre of all displacements, from the regions' boxes
-    double lo[3], minus_hi[3], c[3];
-    for (int m = 0; m < 3; m++) lo[m] = minus_hi[m] = std::numeric_limits<double>::infinity();
-    for (std::size_t b = 0; b < near_radius.size(); b++)
-      for (int m = 0; m < 3; m++) {
-        lo[m] = std::min(lo[m], near_box[6 * b + m]);
-        minus_hi[m] = std::min(minus_hi[m], near_box[6 * b + 3 + m]);
-      }
-    for (int m = 0; m < 3; m++) c[m] = 0.5 * (lo[m] + (-minus_hi[m]));
-    spread_to_neighbour_regions();
-    for (std::size_t b = 0; b < near_radius.size(); b++) {
-      const double *box = &near_box[6 * b];
-      double dsq = 0.0;
-      for (int m = 0; m < 3; m++) {
-        near_centre[3 * b + m] = 0.5 * (box[m] - box[3 + m]);
-        dsq += (-box[3 + m] - box[m]) * (-box[3 + m] - box[m]);
-      }
-      near_radius[b] = 0.5 * std::sqrt(dsq);
-    }
+    for (int m = 0; m < 3; m++) c[m] = 0.5 * (lo[m] + hi[m]);
+    double largest = 0.0;
     for (int i = 0; i < nall; i++) {
-      const double u[3] = {xx[3 * i] - xhold[3 * i], xx[3 * i + 1] - xhold[3 * i + 1],
-                           xx[3 * i + 2] - xhold[3 * i + 2]};
-      const double dx = u[0] - c[0], dy = u[1] - c[1], dz = u[2] - c[2];
+      const double dx = xx[3 * i] - xhold[3 * i] - c[0], dy = xx[3 * i + 1] - xhold[3 * i + 1] - c[1],
+                   dz = xx[3 * i + 2] - xhold[3 * i + 2] - c[2];
+      const double dsq = dx * dx + dy * dy + dz * dz;
       // under half the skin, with room for round-off
-      if (dx * dx + dy * dy + dz * dz > 0.2 * skin * skin) return false;
-      if (i < nlocal) {    // moved_sq is sized by build() for these nlocal
-        const double *cb = &near_centre[3 * (size_t) region_of[i]];
-        const double ex = u[0] - cb[0], ey = u[1] - cb[1], ez = u[2] - cb[2];
-        moved_sq[i] = ex * ex + ey * ey + ez * ez;
-      }
+      if (dsq > 0.2 * skin * skin) return false;
+      largest = std::max(largest, dsq);
+      if (i < nlocal) moved_sq[i] = dsq;    // sized by build() for these nlocal
     }
+    moved = std::sqrt(largest);
+    now = xx;
+    near_current = false;
     return true;
   }
 
-  /* can a candidate of local atom i be closer than its distance now? (false: none can) The
-     displacements of the atoms near i (in i's region at the search or a region next to it, as
-     every candidate was) lie in a box of centre c and half diagonal R; atom i is d_i from c: no
-     candidate is within its distance while nearest[i] >= d_i + R + roundoff, compared squared
-     (no root per atom) */
-  bool may_be_close(int i) const
+  /* can a candidate of local atom i be closer than its distance now? (false: none can) Atom i
+     moved by d_i from the centre and each candidate by at most the largest such displacement:
+     none is within its distance while nearest[i] >= d_i + moved + roundoff, compared squared
+     (no root per atom). Else the same with the centre and largest displacement of the atoms
+     near i (near_bound), worked out at the first atom of a step that needs them. */
+  bool may_be_close(int i)
   {
-    const double room = nearest[i] - near_radius[region_of[i]] - roundoff;
-    return !(room >= 0.0 && room * room >= moved_sq[i]);
+    const double room = nearest[i] - moved - roundoff;
+    if (room >= 0.0 && room * room >= moved_sq[i]) return false;
+    if (!near_current) near_bound();
+    const double near_room = nearest[i] - near_radius[region_of[i]] - roundoff;
+    return !(near_room >= 0.0 && near_room * near_room >= near_sq[i]);
   }
 
   /* search the candidates of local atoms 0..nlocal-1 among the nall atoms at xx: every j != i
@@ -139,6 +111,9 @@ class ClosePairs {
     region_of.assign(nall, 0);
     nr[0] = nr[1] = nr[2] = 1;
     size_regions(1);
+    near_sq.assign(nlocal, 0.0);
+    moved = 0.0;
+    near_current = true;    // nothing moved
     roundoff = CLOSE_PAIRS_ROUNDOFF * reach;
     if (nall == 0) return true;
 
@@ -229,6 +204,63 @@ class ClosePairs {
   std::vector<double> near_box, near_centre, near_radius;
   double skin = 0.0;
   double roundoff = 0.0;    // CLOSE_PAIRS_ROUNDOFF of the reach
+
+  const double *now = nullptr;    // the positions of the last current() (or build())
+  bool near_current = true;        // near_* hold the bound at 'now'
+  double moved = 0.0;              // the largest displacement from the centre (current)
+  std::vector<double> near_sq;     // per local atom: its squared displacement from its region's centre
+
+  // the displacements near each atom at 'now': per region, the box holding those of the atoms
+  // in it and in the regions next to it, its centre and half diagonal; per local atom, its
+  // squared distance from its region's centre
+  void near_bound()
+  {
+    const int nall = static_cast<int>(region_of.size()), nlocal = static_cast<int>(moved_sq.size());
+    // each region's box (lo and -hi: both kept by min), gathered over runs of atoms in one
+    // region (atoms come mostly in space order: no update waits for the last)
+    std::fill(near_box.begin(), near_box.end(), std::numeric_limits<double>::infinity());
+    double run[6];
+    int run_region = -1;
+    auto flush = [&]() {
+      if (run_region < 0) return;
+      double *box = &near_box[6 * (size_t) run_region];
+      for (int v = 0; v < 6; v++) box[v] = std::min(box[v], run[v]);
+    };
+    for (int i = 0; i < nall; i++) {
+      if (region_of[i] != run_region) {
+        flush();
+        run_region = region_of[i];
+        for (double &v : run) v = std::numeric_limits<double>::infinity();
+      }
+      for (int m = 0; m < 3; m++) {
+        const double u = now[3 * i + m] - xhold[3 * i + m];
+        run[m] = std::min(run[m], u);
+        run[3 + m] = std::min(run[3 + m], -u);
+      }
+    }
+    flush();
+    spread_to_neighbour_regions();
+    for (std::size_t b = 0; b < near_radius.size(); b++) {
+      const double *box = &near_box[6 * b];
+      double dsq = 0.0;
+      for (int m = 0; m < 3; m++) {
+        near_centre[3 * b + m] = 0.5 * (box[m] - box[3 + m]);
+        dsq += (-box[3 + m] - box[m]) * (-box[3 + m] - box[m]);
+      }
+      near_radius[b] = 0.5 * std::sqrt(dsq);
+    }
+    near_sq.resize(nlocal);
+    for (int i = 0; i < nlocal; i++) {
+      const double *cb = &near_centre[3 * (size_t) region_of[i]];
+      double dsq = 0.0;
+      for (int m = 0; m < 3; m++) {
+        const double d = now[3 * i + m] - xhold[3 * i + m] - cb[m];
+        dsq += d * d;
+      }
+      near_sq[i] = dsq;
+    }
+    near_current = true;
+  }
 
   // n regions of no atom, none moved
   void size_regions(std::size_t n)
