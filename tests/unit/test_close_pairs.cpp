@@ -39,6 +39,20 @@ bool has_close_pair(const BBPD::ClosePairs &cp, const std::vector<double> &x, in
   return false;
 }
 
+// at positions x, no atom with a close pair is skipped; counts those and the atoms skipped
+void expect_no_close_pair_skipped(BBPD::ClosePairs &cp, const std::vector<double> &x, int n,
+                                  int &close_seen, int &skipped)
+{
+  for (int i = 0; i < n; i++) {
+    const bool close = has_close_pair(cp, x, i);
+    close_seen += close;
+    skipped += !cp.may_be_close(i);
+    if (close) {
+      EXPECT_TRUE(cp.may_be_close(i)) << "atom " << i;
+    }
+  }
+}
+
 }    // namespace
 
 TEST(ClosePairs, AtomsAtRestAreSkipped)
@@ -66,14 +80,8 @@ TEST(ClosePairs, AnAtomWithAClosePairIsNeverSkipped)
       std::vector<double> x = x0;
       for (double &v : x) v += u(gen);
       ASSERT_TRUE(cp.current(x.data(), n, n));
-      for (int i = 0; i < n; i++) {
-        const bool close = has_close_pair(cp, x, i);
-        close_seen += close;
-        skipped += !cp.may_be_close(i);
-        if (close) {
-          EXPECT_TRUE(cp.may_be_close(i)) << "atom " << i << " amplitude " << amplitude;
-        }
-      }
+      SCOPED_TRACE(amplitude);
+      expect_no_close_pair_skipped(cp, x, n, close_seen, skipped);
     }
   }
   EXPECT_GT(close_seen, 0);    // the largest amplitude brings neighbours within D
@@ -135,14 +143,8 @@ TEST(ClosePairs, FastAtomsAmongSlowOnes)
       for (int m = 0; m < 3; m++) x[3 * a + m] += fast(gen);
     }
     ASSERT_TRUE(cp.current(x.data(), n, n));
-    for (int i = 0; i < n; i++) {
-      const bool close = has_close_pair(cp, x, i);
-      close_seen += close;
-      skipped += !cp.may_be_close(i);
-      if (close) {
-        EXPECT_TRUE(cp.may_be_close(i)) << "atom " << i << " round " << round;
-      }
-    }
+    SCOPED_TRACE(round);
+    expect_no_close_pair_skipped(cp, x, n, close_seen, skipped);
   }
   EXPECT_GT(close_seen, 0);
   EXPECT_GT(skipped, 0);
