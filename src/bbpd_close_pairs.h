@@ -205,7 +205,7 @@ class ClosePairs {
   double skin = 0.0;
   double roundoff = 0.0;    // CLOSE_PAIRS_ROUNDOFF of the reach
 
-  const double *now = nullptr;    // the positions of the last current() (or build())
+  const double *now = nullptr;    // the positions of the last current()
   bool near_current = true;        // near_* hold the bound at 'now'
   double moved = 0.0;              // the largest displacement from the centre (current)
   std::vector<double> near_sq;     // per local atom: its squared displacement from its region's centre
