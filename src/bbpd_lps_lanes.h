@@ -196,24 +196,23 @@ namespace LPS {
 #endif
 
 #ifdef BBPD_AVX512
-  // a vector of partner states: theta / m and 1 / m of partners j1 (lanes off in m: zero); a full
-  // vector by 16-byte loads (as bond_lanes reads positions: cheaper than two gathers)
+  // a vector of partner states: theta / m and 1 / m of partners j1 (lanes off in m: zero), by
+  // 16-byte loads (as bond_lanes reads positions: cheaper than two gathers); a tail as a full
+  // vector (tail_partners), its lanes off cleared
   inline void load_states(const AtomState *states, __m256i j1, __mmask8 m, __m512d &tom, __m512d &inv_m)
   {
-    if (m == 0xFF) {
-      alignas(32) int j[LANES];
-      _mm256_store_si256(reinterpret_cast<__m256i *>(j), j1);
-      __m256d t[2], v[2];
-      load_states4(states, j, t[0], v[0]);
-      load_states4(states, j + 4, t[1], v[1]);
-      tom = _mm512_insertf64x4(_mm512_castpd256_pd512(t[0]), t[1], 1);
-      inv_m = _mm512_insertf64x4(_mm512_castpd256_pd512(v[0]), v[1], 1);
-      return;
+    const bool full = m == 0xFF;
+    alignas(32) int j[LANES];
+    _mm256_store_si256(reinterpret_cast<__m256i *>(j), full ? j1 : tail_partners(j1, m));
+    __m256d t[2], v[2];
+    load_states4(states, j, t[0], v[0]);
+    load_states4(states, j + 4, t[1], v[1]);
+    tom = _mm512_insertf64x4(_mm512_castpd256_pd512(t[0]), t[1], 1);
+    inv_m = _mm512_insertf64x4(_mm512_castpd256_pd512(v[0]), v[1], 1);
+    if (!full) {
+      tom = _mm512_maskz_mov_pd(m, tom);
+      inv_m = _mm512_maskz_mov_pd(m, inv_m);
     }
-    const double *s = &states[0].theta_over_m;
-    const __m256i j2 = _mm256_slli_epi32(j1, 1);
-    tom = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, j2, s, 8);
-    inv_m = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, j2, s + 1, 8);
   }
 
   /* the dilatation pass, 8 lanes (dilatation_sum_portable's operations) */

@@ -100,9 +100,10 @@ inline bool row_force_portable(const double *xx, int i, const Idx *bj, int n, Xi
 #endif
 
 #ifdef BBPD_SIMD
-/* Full vectors of bonds (no lane off) read the partner positions and the class entries with
-   plain loads, 4 partners at a time: on AMD Zen 3 a 4-wide gather, and on Zen 5 an 8-wide one,
-   costs more than the loads and unpacks that give the same values (doc/performance.md). */
+/* The rows read the partner positions and the class entries with plain loads, 4 partners at a
+   time, the tails too (their lanes off read a partner of the row and are cleared): on AMD Zen 3
+   a 4-wide gather, and on Zen 4 and Zen 5 an 8-wide one, costs more than the loads and unpacks
+   that give the same values (doc/performance.md). */
 
 // x, y and z of the partners j[0..3]: (x, y) and (y, z) of each partner, 16 bytes each, paired
 // in 32-byte registers and unpacked (always inlined: a copy of its own in each path's file would
@@ -148,18 +149,16 @@ inline void load_values(const PerBondValues &v, __mmask8 m, int k, __m256i, __m5
 inline void load_values(const ClassValues &v, __mmask8 m, int k, __m256i, __m512d &xi0,
                         __m512d &coef)
 {
-  if (m == 0xFF) {
-    __m256d x[2], c[2];
-    load_class_values(v.values, v.cls + k, x[0], c[0]);
-    load_class_values(v.values, v.cls + k + 4, x[1], c[1]);
-    xi0 = _mm512_insertf64x4(_mm512_castpd256_pd512(x[0]), x[1], 1);
-    coef = _mm512_insertf64x4(_mm512_castpd256_pd512(c[0]), c[1], 1);
-    return;
-  }
-  const __m256i c2 = _mm256_slli_epi32(
-      _mm256_cvtepu16_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i *>(v.cls + k))), 1);
-  xi0 = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c2, v.values, 8);
-  coef = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, c2, v.values + 1, 8);
+  // a tail's classes by a masked load (class 0 in the lanes off: no entry past the row is
+  // read), its entries then as a full vector's, the lanes off cleared
+  alignas(16) BondClass tail[LANES];
+  if (m != 0xFF) _mm_store_si128(reinterpret_cast<__m128i *>(tail), _mm_maskz_loadu_epi16(m, v.cls + k));
+  const BondClass *c = m == 0xFF ? v.cls + k : tail;
+  __m256d x[2], cf[2];
+  load_class_values(v.values, c, x[0], cf[0]);
+  load_class_values(v.values, c + 4, x[1], cf[1]);
+  xi0 = _mm512_maskz_mov_pd(m, _mm512_insertf64x4(_mm512_castpd256_pd512(x[0]), x[1], 1));
+  coef = _mm512_maskz_mov_pd(m, _mm512_insertf64x4(_mm512_castpd256_pd512(cf[0]), cf[1], 1));
 }
 
 template <class CoefFn, bool UNIFORM>
@@ -221,6 +220,15 @@ inline __m256i load_partners(const PartnerOffset *bj, __mmask8 m, int i, int k)
   return _mm256_add_epi32(_mm256_cvtepi16_epi32(_mm_maskz_loadu_epi16(m, bj + k)), _mm256_set1_epi32(i));
 }
 
+/* the partners j1 of a tail (lanes m) with the lanes off reading lane 0's partner, an atom of
+   the row: a tail is then read as a full vector, by plain loads, and its lanes off cleared. On
+   AMD Zen 4 the 8-wide gathers of a tail (three for the positions, two for the class entries,
+   two for LPS states) cost more than the loads (doc/performance.md). */
+inline __m256i tail_partners(__m256i j1, __mmask8 m)
+{
+  return _mm256_mask_blend_epi32(m, _mm256_permutexvar_epi32(_mm256_setzero_si256(), j1), j1);
+}
+
 /* one vector of bonds k..k+7 of atom i (position xi, yi, zi; partners j1, lanes off in m):
    partner differences, current and reference length, coefficient and elongation */
 struct BondLanes {
@@ -231,21 +239,17 @@ BBPD_GROUPS_INLINE inline BondLanes bond_lanes(const double *xx, __m512d xi, __m
                             __mmask8 m, const Values &vals, int k)
 {
   BondLanes b;
-  if (m == 0xFF) {
+  {
+    // a tail is read as a full vector (tail_partners), its lanes off cleared
     alignas(32) int j[LANES];
-    _mm256_store_si256(reinterpret_cast<__m256i *>(j), j1);
+    _mm256_store_si256(reinterpret_cast<__m256i *>(j), m == 0xFF ? j1 : tail_partners(j1, m));
     __m256d x[2], y[2], z[2];
     load_positions(xx, j, x[0], y[0], z[0]);
     load_positions(xx, j + 4, x[1], y[1], z[1]);
     auto join = [](__m256d lo, __m256d hi) { return _mm512_insertf64x4(_mm512_castpd256_pd512(lo), hi, 1); };
-    b.dx = _mm512_sub_pd(join(x[0], x[1]), xi);
-    b.dy = _mm512_sub_pd(join(y[0], y[1]), yi);
-    b.dz = _mm512_sub_pd(join(z[0], z[1]), zi);
-  } else {
-    const __m256i j3 = _mm256_mullo_epi32(j1, _mm256_set1_epi32(3));
-    b.dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(xi, m, j3, xx, 8), xi);
-    b.dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(yi, m, j3, xx + 1, 8), yi);
-    b.dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(zi, m, j3, xx + 2, 8), zi);
+    b.dx = _mm512_maskz_sub_pd(m, join(x[0], x[1]), xi);
+    b.dy = _mm512_maskz_sub_pd(m, join(y[0], y[1]), yi);
+    b.dz = _mm512_maskz_sub_pd(m, join(z[0], z[1]), zi);
   }
   const __m512d rsq = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(b.dx, b.dx), _mm512_mul_pd(b.dy, b.dy)),
                                     _mm512_mul_pd(b.dz, b.dz));
@@ -400,8 +404,8 @@ inline __m128i load_partners(const PartnerOffset *bj, __m128i m32, int i, int k)
   return _mm_and_si128(_mm_add_epi32(d, _mm_set1_epi32(i)), m32);
 }
 
-/* Full groups of 4 bonds (no lane off) read the partner positions (load_positions, above)
-   and the class entries with plain loads; the masked tail of a row keeps the gathers. */
+/* Groups of 4 bonds read the partner positions (load_positions, above) and the class entries
+   with plain loads, a row's masked tail as well (TailGroup4, load_values_tail, below). */
 
 // reference lengths and coefficients of the full group k..k+3
 template <class Idx>
