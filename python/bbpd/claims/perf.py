@@ -159,7 +159,7 @@ def floor_table(prefix):
 
 # LAMMPS's bpm/peri benchmark deck, ours against peri/* and bond_style bpm/peri
 # (perf/vs_bpm.py --csv): one file per CPU
-VS_BPM_FILES = (RESULTS / "spr-vs-bpm.csv",)
+VS_BPM_FILES = (RESULTS / "spr-vs-bpm.csv", RESULTS / "zen4-vs-bpm.csv")
 BPM_MODELS = ("pmb", "lps", "ves", "eps")
 
 
@@ -193,7 +193,7 @@ def vs_bpm(data):
 
 
 # LAMMPS's examples/peri cylinder for each model (perf/vs_bpm.py --scene cylinder --csv)
-VS_BPM_CYLINDER_FILES = (RESULTS / "spr-vs-bpm-cylinder.csv",)
+VS_BPM_CYLINDER_FILES = (RESULTS / "spr-vs-bpm-cylinder.csv", RESULTS / "zen4-vs-bpm-cylinder.csv")
 
 
 def vs_bpm_cylinder(data):
