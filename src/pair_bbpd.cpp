@@ -758,24 +758,41 @@ void PairBBPD::tally_lanes(int i, const RowTally &lanes, double *acc, bool viria
 }
 
 /* What the rows tally this step. The virial sum_bonds 1/2 (x_i - x_j) (x) f_ij (each end's row
-   tallies its half) is also sum_i x_i (x) f_i over the rows' forces f_i when every bond joins
-   two rows of this rank and the two rows give it opposite forces: no ghost atoms (one rank,
-   no periodic boundary), and atoms of one type and one volume (the bond-based families and the
-   LPS are then antisymmetric, f_ij = -f_ji). The rows then tally each bond's energy only:
-   the six products per bond and their sums were 15 % of a step of the bbpd/lps and bbpd/pmb
-   cylinders, whose fix indent asks for the virial at every step. */
+   tallies its half) is also sum_i x_i (x) f_i over the rows' forces f_i, summed over the ranks,
+   when the two rows of every bond give it opposite forces and see its ends where they are: no
+   periodic boundary (a ghost image is its owner shifted by a box vector), and atoms of one type
+   and one volume on every rank (the bond-based families and the LPS are then antisymmetric,
+   f_ij = -f_ji). A ghost's position is its owner's, so the bonds between ranks count as the
+   others do, once every rank takes the rows' forces: the choice is made for all ranks at once.
+   The rows then tally each bond's energy only: the six products per bond and their sums were
+   15 % of a step of the bbpd/lps and bbpd/pmb cylinders, whose fix indent asks for the virial
+   at every step. */
 int PairBBPD::row_tally() const
 {
   if (!evflag) return BBPD::TALLY_NONE;
   if (vflag_atom) return BBPD::TALLY_ENERGY_VIRIAL;
   if (!vflag_global) return BBPD::TALLY_ENERGY;
-  if (atom->nghost > 0 || rules.own_end_history) return BBPD::TALLY_ENERGY_VIRIAL;
+  if (domain->xperiodic || domain->yperiodic || domain->zperiodic || rules.own_end_history)
+    return BBPD::TALLY_ENERGY_VIRIAL;
+  // the smallest and (negated) largest type and volume of the atoms, over the ranks
   const int nlocal = atom->nlocal;
   const int *type = atom->type;
   const double *vfrac = atom->vfrac;
-  for (int i = 1; i < nlocal; i++)
-    if (type[i] != type[0] || vfrac[i] != vfrac[0]) return BBPD::TALLY_ENERGY_VIRIAL;
-  return BBPD::TALLY_ENERGY;
+  const double inf = std::numeric_limits<double>::infinity();
+  double lo[4] = {inf, inf, inf, inf};
+  for (int i = 0; i < nlocal; i++) {
+    lo[0] = std::min(lo[0], (double) type[i]);
+    lo[1] = std::min(lo[1], -(double) type[i]);
+    lo[2] = std::min(lo[2], vfrac[i]);
+    lo[3] = std::min(lo[3], -vfrac[i]);
+  }
+  if (comm->nprocs > 1) {
+    double all[4];
+    MPI_Allreduce(lo, all, 4, MPI_DOUBLE, MPI_MIN, world);
+    std::copy(all, all + 4, lo);
+  }
+  const bool uniform = lo[0] == -lo[1] && lo[2] == -lo[3];
+  return uniform ? BBPD::TALLY_ENERGY : BBPD::TALLY_ENERGY_VIRIAL;
 }
 
 /* the critical stretch of each row's bonds, where they share one (types are fixed during a

@@ -84,19 +84,20 @@ def test_pressure_matches_reference(lmp, tmp_path, model, variant, nprocs):
     assert abs(expected[3]) > 1e-3 * scale    # the shear component is tested too
 
 
-# The virial from the rows' forces, sum_i x_i (x) f_i, where every bond joins two rows of one
-# rank (one rank, no periodic boundary, one type and volume: PairBBPD::row_tally), against the
-# bonds' own tallies, which compute stress/atom asks for at its steps: LAMMPS's cylinder shattered
-# by its indenter, whose variable position asks for the virial at every step. Bonds break, the
-# short-range forces act, and the forces of the bonds breaking in a step count in it.
+# The virial from the rows' forces, sum_i x_i (x) f_i over the ranks, where the two rows of every
+# bond give it opposite forces (no periodic boundary, one type and volume on every rank:
+# PairBBPD::row_tally), against the bonds' own tallies, which compute stress/atom asks for at its
+# steps: LAMMPS's cylinder shattered by its indenter, whose variable position asks for the virial
+# at every step, on one rank and on two (bonds between ranks). Bonds break, the short-range
+# forces act, and the forces of the bonds breaking in a step count in it.
 ROW_VIRIAL_RTOL = 1.0e-12    # of the largest component: round-off of x_i (x) f_i (found 6e-14)
 CYLINDER_KERNEL = """pair_style      bbpd/gaussian 3d
 pair_coeff      * * 72e9 3.8 0.0015001
 """
 
 
-@pytest.mark.parametrize("model", ["pmb", "lps", "gaussian"])
-def test_virial_from_row_forces_matches_bond_tallies(lmp, model):
+@pytest.mark.parametrize("model,nprocs", [("pmb", 1), ("lps", 1), ("gaussian", 1), ("pmb", 2), ("lps", 2)])
+def test_virial_from_row_forces_matches_bond_tallies(lmp, model, nprocs):
     script = (EXAMPLES / f"peri-{'lps' if model == 'lps' else 'pmb'}-dropin" /
               f"in.bbpd.{'lps' if model == 'lps' else 'pmb'}").read_text()
     if model == "gaussian":
@@ -112,7 +113,7 @@ def test_virial_from_row_forces_matches_bond_tallies(lmp, model):
     tables = {}
     for name, extra, column in (("rows", "", ""), ("bonds", tallies, " c_ssum")):
         text = script.replace("run             ${steps}", extra + thermo.format(column) + "run ${steps}")
-        out = lmp(text, vars={"scale": 0.6, "steps": 300}).output
+        out = lmp(text, vars={"scale": 0.6, "steps": 300}, nprocs=nprocs).output
         tables[name] = ref.thermo_tables(out)[-1]
     rows, bonds = tables["rows"], tables["bonds"]
     np.testing.assert_array_equal(rows["KinEng"], bonds["KinEng"])    # the virial does not act
@@ -123,6 +124,35 @@ def test_virial_from_row_forces_matches_bond_tallies(lmp, model):
         np.testing.assert_allclose(g, w, rtol=0, atol=ROW_VIRIAL_RTOL * np.abs(w).max())
     # the rows' sum is another summation than the bonds': were it the same, it would not be tested
     assert np.any(got != want)
+
+
+def test_ranks_take_the_bonds_tally_together_where_one_rank_sees_another_volume(lmp):
+    """Two ranks, each of whose atoms have one volume, the two volumes differing: a bond between
+    the ranks gets unequal forces at its two ends, so neither rank may take the virial from its
+    rows' forces although each sees a single volume. Both runs then tally the bonds, and the
+    global virial is the same to the bit with compute stress/atom and without."""
+    script = (EXAMPLES / "peri-pmb-dropin" / "in.bbpd.pmb").read_text()
+    script = script.replace("lattice         sc", "processors      2 1 1\nlattice         sc")
+    script = script.replace("set             group all volume 1.25e-10\n",
+                            "set             group all volume 1.25e-10\n"
+                            # the right half, the second rank's (the box is split at x = 0)
+                            "region          right block 0.0 INF INF INF INF INF units box\n"
+                            "set             region right volume 1.0e-10\n")
+    components = " ".join(f"c_p[{k}]" for k in range(1, 7))
+    thermo = ("compute p all pressure NULL virial\n"
+              f"thermo_style custom step ke c_dmean {components}\n"
+              "thermo_modify format float %.17g\nthermo 50\n")
+    tallies = "compute sa all stress/atom NULL virial\n"
+    tables = {}
+    for name, extra in (("rows", ""), ("bonds", tallies)):
+        text = script.replace("run             ${steps}", extra + thermo + "run ${steps}")
+        assert text.count("processors") == 1 and text.count("region right") == 1
+        tables[name] = ref.thermo_tables(lmp(text, vars={"scale": 0.6, "steps": 200}, nprocs=2).output)[-1]
+    rows, bonds = tables["rows"], tables["bonds"]
+    assert bonds["c_dmean"][-1] > 0.001
+    for k in range(1, 7):
+        np.testing.assert_array_equal(rows[f"c_p[{k}]"], bonds[f"c_p[{k}]"])
+    assert np.abs(bonds["c_p[2]"]).max() > 0.0
 
 
 @pytest.mark.parametrize("model,nprocs", [("pmb", 2), ("lps", 2), ("ves", 2), ("pmb", 1)])
