@@ -201,15 +201,14 @@ namespace LPS {
   // vector (tail_partners), its lanes off cleared
   inline void load_states(const AtomState *states, __m256i j1, __mmask8 m, __m512d &tom, __m512d &inv_m)
   {
-    const bool full = m == 0xFF;
     alignas(32) int j[LANES];
-    _mm256_store_si256(reinterpret_cast<__m256i *>(j), full ? j1 : tail_partners(j1, m));
+    store_partners(j1, m, j);
     __m256d t[2], v[2];
     load_states4(states, j, t[0], v[0]);
     load_states4(states, j + 4, t[1], v[1]);
-    tom = _mm512_insertf64x4(_mm512_castpd256_pd512(t[0]), t[1], 1);
-    inv_m = _mm512_insertf64x4(_mm512_castpd256_pd512(v[0]), v[1], 1);
-    if (!full) {
+    tom = join4(t[0], t[1]);
+    inv_m = join4(v[0], v[1]);
+    if (m != 0xFF) {
       tom = _mm512_maskz_mov_pd(m, tom);
       inv_m = _mm512_maskz_mov_pd(m, inv_m);
     }

@@ -139,6 +139,12 @@ BBPD_GROUPS_INLINE inline void load_class_values(const double *values, const C *
 #endif
 
 #ifdef BBPD_AVX512
+// two 4-wide halves (lanes 0-3, 4-7) as one 8-wide vector
+inline __m512d join4(__m256d lo, __m256d hi)
+{
+  return _mm512_insertf64x4(_mm512_castpd256_pd512(lo), hi, 1);
+}
+
 // reference lengths and coefficients of bonds k..k+7 (lanes off in m: zero)
 inline void load_values(const PerBondValues &v, __mmask8 m, int k, __m256i, __m512d &xi0,
                         __m512d &coef)
@@ -157,8 +163,8 @@ inline void load_values(const ClassValues &v, __mmask8 m, int k, __m256i, __m512
   __m256d x[2], cf[2];
   load_class_values(v.values, c, x[0], cf[0]);
   load_class_values(v.values, c + 4, x[1], cf[1]);
-  xi0 = _mm512_maskz_mov_pd(m, _mm512_insertf64x4(_mm512_castpd256_pd512(x[0]), x[1], 1));
-  coef = _mm512_maskz_mov_pd(m, _mm512_insertf64x4(_mm512_castpd256_pd512(cf[0]), cf[1], 1));
+  xi0 = _mm512_maskz_mov_pd(m, join4(x[0], x[1]));
+  coef = _mm512_maskz_mov_pd(m, join4(cf[0], cf[1]));
 }
 
 template <class CoefFn, bool UNIFORM>
@@ -228,6 +234,11 @@ inline __m256i tail_partners(__m256i j1, __mmask8 m)
 {
   return _mm256_mask_blend_epi32(m, _mm256_permutexvar_epi32(_mm256_setzero_si256(), j1), j1);
 }
+// the partners j1 of bonds k..k+7 (lanes m) into j, for plain loads: a tail's by tail_partners
+inline void store_partners(__m256i j1, __mmask8 m, int *j)
+{
+  _mm256_store_si256(reinterpret_cast<__m256i *>(j), m == 0xFF ? j1 : tail_partners(j1, m));
+}
 
 /* one vector of bonds k..k+7 of atom i (position xi, yi, zi; partners j1, lanes off in m):
    partner differences, current and reference length, coefficient and elongation */
@@ -242,14 +253,13 @@ BBPD_GROUPS_INLINE inline BondLanes bond_lanes(const double *xx, __m512d xi, __m
   {
     // a tail is read as a full vector (tail_partners), its lanes off cleared
     alignas(32) int j[LANES];
-    _mm256_store_si256(reinterpret_cast<__m256i *>(j), m == 0xFF ? j1 : tail_partners(j1, m));
+    store_partners(j1, m, j);
     __m256d x[2], y[2], z[2];
     load_positions(xx, j, x[0], y[0], z[0]);
     load_positions(xx, j + 4, x[1], y[1], z[1]);
-    auto join = [](__m256d lo, __m256d hi) { return _mm512_insertf64x4(_mm512_castpd256_pd512(lo), hi, 1); };
-    b.dx = _mm512_maskz_sub_pd(m, join(x[0], x[1]), xi);
-    b.dy = _mm512_maskz_sub_pd(m, join(y[0], y[1]), yi);
-    b.dz = _mm512_maskz_sub_pd(m, join(z[0], z[1]), zi);
+    b.dx = _mm512_maskz_sub_pd(m, join4(x[0], x[1]), xi);
+    b.dy = _mm512_maskz_sub_pd(m, join4(y[0], y[1]), yi);
+    b.dz = _mm512_maskz_sub_pd(m, join4(z[0], z[1]), zi);
   }
   const __m512d rsq = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(b.dx, b.dx), _mm512_mul_pd(b.dy, b.dy)),
                                     _mm512_mul_pd(b.dz, b.dz));
