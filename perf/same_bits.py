@@ -9,8 +9,8 @@ write_restart/read_restart (1 -> 2 ranks, also with compact storage and two type
 storage and the per-bond loop, the ported peri/pmb cylinder (bbpd/pmb, compact, two types,
 the Silling-Askari rule of bbpd/gaussian/alpha, 2 ranks, restart, a periodic box), bonds
 breaking across a periodic boundary, the ported peri/lps cylinder (bbpd/lps) and the LPS kernel
-styles breaking (bbpd/lps/KERNEL), and the computes bbpd/dsif and bbpd/jintegral with E and
-nu inverted from c0. Each run ends with a `run 0` that prints pe, ke and pressure at %.17g.
+styles breaking (bbpd/lps/KERNEL), the ported peri/ves (1 rank) and peri/eps (2 ranks)
+cylinders, and the computes bbpd/dsif and bbpd/jintegral with E and nu inverted from c0. Each run ends with a `run 0` that prints pe, ke and pressure at %.17g.
 
 Usage (from the repository root):
   tools/python perf/same_bits.py run [--build DIR] OUT [--scenes a,b]   # DIR: a plugin build
@@ -65,6 +65,8 @@ def _scenes():
     rl = _test_module("test_reliability")
     jt = _test_module("test_jintegral")
     lc = _test_module("test_lps_compat")
+    _test_module("test_bad_input")    # test_ves_eps_compat imports it by name
+    ve = _test_module("test_ves_eps_compat")
     lk = _test_module("test_lps_kernels")
 
     def atoms_data(write):
@@ -160,6 +162,8 @@ def _scenes():
         "lps-cylinder-np2": [(lc.cylinder() + lc.END_DUMP, 2, None)],
         "lps-gaussian-plane-strain-np2": lps_kernel("gaussian", "plane/strain", 2),
         "lps-constant-3d-np1": lps_kernel("constant", "3d", 1),
+        "ves-cylinder-np1": [(ve.cylinder("ves") + lc.END_DUMP, 1, None)],
+        "eps-cylinder-np2": [(ve.cylinder("eps") + lc.END_DUMP, 2, None)],
     }
 
 

@@ -179,12 +179,21 @@ namespace LPS {
      and rolled, its norm term summed into *norm_sum, and the commit of the force state (the
      elastic plan's) written where the bond has a force */
   template <class F, int EV, int CHECK, int COMMIT, bool NORM = false, class Idx, class Values>
-  inline bool history_force_avx512(const double *xx, int i, const Idx *bj, const Values &vals,
-                                   int n, const AtomState *states, const F &fam,
-                                   const typename F::Plan &plan, const HistoryCoefficients &c,
+  inline bool history_force_avx512(const double *xx, int i, const Idx *bj, const Values &vals_in,
+                                   int n, const AtomState *states, const F &fam_in,
+                                   const typename F::Plan &plan_in, const HistoryCoefficients &c_in,
                                    const int *slot, double *hist, const double *smin_all,
                                    double *snew, ForceLanes &out, double *norm_sum = nullptr)
   {
+    /* copies of the coefficients and tables: the history is stored through a double *, which as
+       far as the compiler knows may point into the callers' structs, so with references every
+       group of bonds loaded each coefficient again and redid the sums made of them (1 - decay,
+       1 - lambda): on the bpm/peri deck the AVX2 kernel ran 309 instructions per 8 VES bonds
+       (callgrind) against LPS's 168, 255 with copies. The same operations, so the same bits. */
+    const F fam = fam_in;
+    const typename F::Plan plan = plan_in;
+    const HistoryCoefficients c = c_in;
+    const Values vals = vals_in;
     const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
                   zi = _mm512_set1_pd(xx[3 * i + 2]), zero = _mm512_setzero_pd();
     const __mmask8 row_ok = c.inv_m_i > 0.0 ? (__mmask8) 0xFF : (__mmask8) 0;
@@ -293,22 +302,28 @@ namespace LPS {
   }
 
   template <class F, int EV, int CHECK, int COMMIT, bool NORM = false, class Idx, class Values>
-  inline bool history_force_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
-                                 const AtomState *states, const F &fam,
-                                 const typename F::Plan &plan, const HistoryCoefficients &c,
+  inline bool history_force_avx2(const double *xx, int i, const Idx *bj, const Values &vals_in, int n,
+                                 const AtomState *states, const F &fam_in,
+                                 const typename F::Plan &plan_in, const HistoryCoefficients &c_in,
                                  const int *slot, double *hist, const double *smin_all,
                                  double *snew, ForceLanes &out, double *norm_sum = nullptr)
   {
+    // copies, as history_force_avx512's
+    const F fam = fam_in;
+    const typename F::Plan plan = plan_in;
+    const HistoryCoefficients c = c_in;
+    const Values vals = vals_in;
     const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
                   zi = _mm256_set1_pd(xx[3 * i + 2]), zero = _mm256_setzero_pd();
-    const bool has_m = c.inv_m_i > 0.0;
+    // every lane if atom i has a weighted volume, else none (a mask, not a test per group)
+    const __m256d row_ok = _mm256_castsi256_pd(_mm256_set1_epi64x(c.inv_m_i > 0.0 ? -1 : 0));
     const bool dense = dense_slots(slot, n);
     ForceSums4x2<EV, CHECK> sums;
     __m256d nacc[2] = {zero, zero};
     auto group = [&](auto half, int k, bool full) BBPD_GROUPS_INLINE {
       constexpr int H = decltype(half)::value;
       const Group4 g = group4(xx, bj, i, n, k, full, xi, yi, zi, vals, states);
-      const __m256d ok = has_m ? _mm256_and_pd(g.m, _mm256_cmp_pd(g.inv_m, zero, _CMP_GT_OQ)) : zero;
+      const __m256d ok = _mm256_and_pd(row_ok, _mm256_and_pd(g.m, _mm256_cmp_pd(g.inv_m, zero, _CMP_GT_OQ)));
       const int lanes = _mm256_movemask_pd(NORM ? g.m : ok);    // as history_force_avx512's read
       __m256d a, b;
       read_history4<F>(slot, hist, k, lanes, dense, a, b);
