@@ -24,6 +24,7 @@
 #include "bbpd_lps.h"
 #include "bbpd_pmb_rules.h"
 #include "bbpd_row.h"
+#include "bbpd_silling_askari.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,14 +48,10 @@ namespace LPS {
     double s0_floor = -std::numeric_limits<double>::infinity();
   };
 
-  /* a lower bound of the critical stretch s0 = s00 - alpha max(smin_i, smin_j) of every bond of
-     atom i whose partner's smallest stretch smin_j is at most smin_cap: with alpha >= 0, s0 falls
-     as smin_j rises, and rounding keeps that order (each operation is monotonic); else
-     -infinity, which has every bond tested */
+  // BBPD::critical_stretch_floor (bbpd_silling_askari.h) of peri/lps's rule
   inline double critical_stretch_floor(double s00, double alpha, double smin_i, double smin_cap)
   {
-    if (!(alpha >= 0.0)) return -std::numeric_limits<double>::infinity();
-    return StretchRule::critical_stretch(s00, alpha, smin_i, smin_cap);
+    return BBPD::critical_stretch_floor<StretchRule>(s00, alpha, smin_i, smin_cap);
   }
 
   // the elongation of peri/lps over any width: round-off elongations are zero

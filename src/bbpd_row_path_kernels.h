@@ -35,11 +35,11 @@ bool BBPD_ROW_PATH::row_force(const double *xx, int i, const Idx *bj, const Valu
 template <int EV, class Model, class Rule, class Values, class Idx>
 bool BBPD_ROW_PATH::row_force_stretch(const double *xx, int i, const Idx *bj, const Values &vals,
                                       int n, const double *smin, double s00, double alpha,
-                                      double margin, double *smin_row, double *ax, double *ay,
-                                      double *az, RowTally *tally)
+                                      double margin, double s0_floor, double *smin_row, double *ax,
+                                      double *ay, double *az, RowTally *tally)
 {
   return row_force_stretch_simd<EV, Model, Rule>(xx, i, bj, vals, n, smin, s00, alpha, margin,
-                                                smin_row, ax, ay, az, tally);
+                                                s0_floor, smin_row, ax, ay, az, tally);
 }
 
 // every layout of a row (FixBBPDBonds::visit_row) with every switch, bond model and rule the
@@ -56,7 +56,7 @@ bool BBPD_ROW_PATH::row_force_stretch(const double *xx, int i, const Idx *bj, co
 #define BBPD_ROW_FORCE_STRETCH(EV, RULE, IDX, VALUES)                                        \
   template bool BBPD_ROW_PATH::row_force_stretch<EV, BBPD::PluginBondModel, RULE, VALUES, IDX>( \
       const double *, int, const IDX *, const VALUES &, int, const double *, double, double, \
-      double, double *, double *, double *, double *, RowTally *);
+      double, double, double *, double *, double *, double *, RowTally *);
 BBPD_FOR_LAYOUTS(BBPD_ROW_FORCE, 0, 0)
 BBPD_FOR_LAYOUTS(BBPD_ROW_FORCE, 0, 1)
 BBPD_FOR_LAYOUTS(BBPD_ROW_FORCE, 1, 0)

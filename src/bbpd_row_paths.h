@@ -77,8 +77,8 @@ struct BBPD_PATH_HIDDEN Avx2Path {
   template <int EV, class Model, class Rule, class Values, class Idx>
   static bool row_force_stretch(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                                 const double *smin, double s00, double alpha, double margin,
-                                double *smin_row, double *ax, double *ay, double *az,
-                                RowTally *tally);
+                                double s0_floor, double *smin_row, double *ax, double *ay,
+                                double *az, RowTally *tally);
   template <class Idx, class Values>
   static double lps_dilatation(const double *xx, int i, const Idx *bj, const Values &vals, int n);
   template <int EV, int CHECK, class Idx, class Values>
@@ -106,8 +106,8 @@ struct BBPD_PATH_HIDDEN Avx512Path {
   template <int EV, class Model, class Rule, class Values, class Idx>
   static bool row_force_stretch(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                                 const double *smin, double s00, double alpha, double margin,
-                                double *smin_row, double *ax, double *ay, double *az,
-                                RowTally *tally);
+                                double s0_floor, double *smin_row, double *ax, double *ay,
+                                double *az, RowTally *tally);
   template <class Idx, class Values>
   static double lps_dilatation(const double *xx, int i, const Idx *bj, const Values &vals, int n);
   template <int EV, int CHECK, class Idx, class Values>

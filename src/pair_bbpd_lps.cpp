@@ -538,8 +538,7 @@ bool PairBBPDLPS::begin_state()
   comm->forward_comm(this);
   // the largest smallest stretch of the atoms a row can reach, ghosts included (the rows'
   // critical stretch floors)
-  smin_cap = std::numeric_limits<double>::lowest();
-  for (int i = 0; i < atom->nlocal + atom->nghost; i++) smin_cap = std::max(smin_cap, atom->s0[i]);
+  smin_cap = BBPD::largest_of(atom->s0, atom->nlocal + atom->nghost);
   return replay;
 }
 

@@ -53,6 +53,11 @@ template <int EVFLAG, class Rule> void PairBBPD::eval_silling_askari(SillingAska
   // for the rounding of the stretch itself.
   const bool canonical = bonds->raw_positions();
   const double margin = stretch_margin();
+  // the largest smallest stretch of the atoms a row can reach, ghosts included: the SIMD rows
+  // test each bond only when their largest stretch reaches the floor it gives
+  // (critical_stretch_floor)
+  const double smin_cap = replay || sa.multi ? std::numeric_limits<double>::max()
+                                             : BBPD::largest_of(atom->s0, atom->nlocal + atom->nghost);
   // the row of atom i: its critical stretches from the smallest stretches of the last step;
   // snew, its smallest stretch now; fb, the forces of the bonds it breaks in this step
   struct Row {
@@ -63,7 +68,7 @@ template <int EVFLAG, class Rule> void PairBBPD::eval_silling_askari(SillingAska
     BBPD::CoefCache *cache;
     bool replay, canonical;
     BBPD::SillingAskariCoefficients sa;
-    double margin;
+    double margin, smin_cap;
     double fb[3];
     bool sum_and_check(double *fi)
     {
@@ -87,8 +92,11 @@ template <int EVFLAG, class Rule> void PairBBPD::eval_silling_askari(SillingAska
           return BBPD::on_path(p.simd_path, [&](auto path) {
             double ax[LANES], ay[LANES], az[LANES];
             RowTally tally;
+            const double s0_floor =
+                BBPD::critical_stretch_floor<Rule>(sa.s00_one, sa.alpha_one, smin[i], smin_cap);
             const bool past = decltype(path)::template row_force_stretch<EVFLAG, BondModel, Rule>(
-                xx, i, bj, vals, n, smin, sa.s00_one, sa.alpha_one, margin, &snew, ax, ay, az, &tally);
+                xx, i, bj, vals, n, smin, sa.s00_one, sa.alpha_one, margin, s0_floor, &snew, ax, ay,
+                az, &tally);
             if (!past) {
               lane_sum(ax, ay, az, fi);
               if (EVFLAG) p.tally_lanes(i, tally, acc, BBPD::tallies_virial(EVFLAG));
@@ -153,7 +161,7 @@ template <int EVFLAG, class Rule> void PairBBPD::eval_silling_askari(SillingAska
     }
   };
   eval_rows<EVFLAG>([&](int i, double *acc, BBPD::CoefCache *cache) BBPD_ROW_BODY {
-    return Row{*this, state, i, acc, cache, replay, canonical, sa, margin,
+    return Row{*this, state, i, acc, cache, replay, canonical, sa, margin, smin_cap,
                {0.0, 0.0, 0.0}};
   });
   add_replayed_virial(replay, EVFLAG, state);

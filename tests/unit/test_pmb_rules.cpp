@@ -3,10 +3,15 @@
    Silling-Askari critical stretch. */
 
 #include "bbpd_pmb_rules.h"
+#include "bbpd_silling_askari.h"
 
 #include <gtest/gtest.h>
 
 #include <cfloat>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
 
 namespace PMB = BBPD::PMB;
 using BBPD::SillingAskariRule;
@@ -62,6 +67,48 @@ TEST(PMBRules, PeriPmbRuleZeroesRoundOffElongations)
   EXPECT_EQ(SillingAskariRule<true>::settled_elongation(0.5 * PMB::NEAR_ZERO), 0.5 * PMB::NEAR_ZERO);
   EXPECT_TRUE(BBPD::PeriPmbRule::FORCE_IN_BREAKING_STEP);
   EXPECT_FALSE(SillingAskariRule<true>::FORCE_IN_BREAKING_STEP);
+}
+
+// the SIMD rows test a bond only when the row's largest stretch reaches this floor: it must lie
+// below the critical stretch of every partner whose smallest stretch is at most the cap, for each
+// rule (the clamped one of bbpd/KERNEL/alpha and peri/pmb's)
+template <class Rule> void expect_floor_below_every_critical_stretch()
+{
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<double> u(-1e-2, 1e-2);
+  for (int t = 0; t < 10000; t++) {
+    const double s00 = 1e-3 + std::fabs(u(gen)), alpha = 0.25 + 10.0 * std::fabs(u(gen));
+    const double smin_i = u(gen), smin_j = u(gen), cap = smin_j + std::fabs(u(gen)) * (t % 2);
+    ASSERT_LE(BBPD::critical_stretch_floor<Rule>(s00, alpha, smin_i, cap),
+              Rule::critical_stretch(s00, alpha, smin_i, smin_j));
+  }
+  // a negative alpha: no floor, every bond tested
+  EXPECT_EQ(BBPD::critical_stretch_floor<Rule>(1e-3, -0.25, 0.0, 1.0),
+            -std::numeric_limits<double>::infinity());
+}
+
+TEST(PMBRules, CriticalStretchFloorIsBelowEveryBondsCriticalStretch)
+{
+  expect_floor_below_every_critical_stretch<SillingAskariRule<false>>();
+  expect_floor_below_every_critical_stretch<SillingAskariRule<true>>();
+  expect_floor_below_every_critical_stretch<BBPD::PeriPmbRule>();
+}
+
+TEST(PMBRules, LargestOfEveryLength)
+{
+  std::mt19937 gen(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int n = 0; n < 12; n++) {
+    std::vector<double> v(n);
+    for (double &x : v) x = u(gen);
+    double expect = std::numeric_limits<double>::lowest();
+    for (double x : v) expect = std::max(expect, x);
+    EXPECT_EQ(BBPD::largest_of(v.data(), n), expect) << n;
+    if (n > 0) {
+      v[n - 1] = 2.0;    // the last element (the loop's remainder) counts too
+      EXPECT_EQ(BBPD::largest_of(v.data(), n), 2.0) << n;
+    }
+  }
 }
 
 }    // namespace
