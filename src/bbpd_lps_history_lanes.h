@@ -356,7 +356,7 @@ namespace LPS {
       _mm256_store_pd(lane + 4, nacc[1]);
       *norm_sum = lane_total(lane);
     }
-    return sums.store(out, snew, c) && past_avx2(xx, i, bj, vals, n, states, c, smin_all);
+    return sums.store(out, snew, c) && past_avx2(xx, i, bj, vals, n, c, smin_all);
   }
   // history_norm_force_portable's pass in 4-wide groups
   template <class F, int EV, class Idx, class Values>

@@ -25,6 +25,7 @@
 #include "bbpd_pmb_rules.h"
 #include "bbpd_row.h"
 #include "bbpd_silling_askari.h"
+#include "bbpd_stretch_row.h"
 
 #include <algorithm>
 #include <cmath>
@@ -288,25 +289,15 @@ namespace LPS {
   };
 
   /* the breaking test of each bond of the row: past its critical stretch with partner j (smallest
-     stretch smin_all[j]) or within c.margin of it (the check of force_row_portable); the force
+     stretch smin_all[j]) or within c.margin of it (the check of force_row_portable), that of
+     the Silling-Askari rows (bbpd_stretch_row.h) with peri/lps's elongation and rule; the force
      passes run it when a row's largest stretch reaches its floor */
   template <class Idx, class Values>
   inline bool past_avx512(const double *xx, int i, const Idx *bj, const Values &vals, int n,
                           const RowCoefficients &c, const double *smin_all)
   {
-    const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
-                  zi = _mm512_set1_pd(xx[3 * i + 2]), smin_i = _mm512_set1_pd(c.smin_i);
-    __mmask8 past = 0;
-    for (int k = 0; k < n; k += LANES) {
-      const __mmask8 m = (n - k >= LANES) ? (__mmask8) 0xFF : (__mmask8) ((1u << (n - k)) - 1);
-      const __m256i j1 = load_partners(bj, m, i, k);
-      const BondLanes b = bond_lanes<Elongation>(xx, xi, yi, zi, j1, m, vals, k);
-      const Vec8 s = StretchRule::stretch(Vec8(b.elong), Vec8(_mm512_mask_mov_pd(_mm512_set1_pd(1.0), m, b.xi0)));
-      const Vec8 s0 = StretchRule::critical_stretch(Vec8(c.s00), Vec8(c.alpha), Vec8(smin_i),
-                                                    Vec8(_mm512_mask_i32gather_pd(smin_i, m, j1, smin_all, 8)));
-      past |= m & StretchRule::past_critical(s, s0, Vec8(c.margin));
-    }
-    return past != 0;
+    return BBPD::past_avx512<Elongation, StretchRule>(xx, i, bj, vals, n, smin_all, c.smin_i, c.s00,
+                                                       c.alpha, c.margin);
   }
 
   /* the force pass, 8 lanes (force_row_portable's operations; one s00 and alpha) */
@@ -335,7 +326,6 @@ namespace LPS {
   }
 #define lps_dilatation_simd BBPD::LPS::dilatation_sum_avx512
 #define lps_force_simd BBPD::LPS::force_row_avx512
-#define lps_past_simd BBPD::LPS::past_avx512
 #endif
 
 #ifdef BBPD_AVX2
@@ -488,25 +478,13 @@ namespace LPS {
     }
   };
 
-  /* the breaking test of each bond of the row in 4-wide groups, as past_avx512 */
+  // the breaking test in 4-wide groups, as past_avx512
   template <class Idx, class Values>
   inline bool past_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
-                        const AtomState *states, const RowCoefficients &c, const double *smin_all)
+                        const RowCoefficients &c, const double *smin_all)
   {
-    const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
-                  zi = _mm256_set1_pd(xx[3 * i + 2]), smin_i = _mm256_set1_pd(c.smin_i);
-    __m256d past = _mm256_setzero_pd();
-    auto group = [&](int k, bool full) BBPD_GROUPS_INLINE {
-      const Group4 g = group4(xx, bj, i, n, k, full, xi, yi, zi, vals, states);
-      const __m256d e = Elongation::elongation(Vec4(lengths4(g.dx, g.dy, g.dz)), Vec4(g.xi0)).v;
-      const Vec4 s = StretchRule::stretch(Vec4(e), Vec4(_mm256_blendv_pd(_mm256_set1_pd(1.0), g.xi0, g.m)));
-      const __m256d smin_j = _mm256_mask_i32gather_pd(smin_i, smin_all, g.j1, g.m, 8);
-      const Vec4 s0 = StretchRule::critical_stretch(Vec4(c.s00), Vec4(c.alpha), Vec4(smin_i), Vec4(smin_j));
-      past = _mm256_or_pd(past, _mm256_and_pd(g.m, StretchRule::past_critical(s, s0, Vec4(c.margin)).v));
-    };
-    for_each_group4(n, [&](auto, int k) BBPD_GROUPS_INLINE { group(k, true); },
-                    [&](auto, int k) BBPD_GROUPS_INLINE { group(k, false); });
-    return _mm256_movemask_pd(past) != 0;
+    return BBPD::past_avx2<Elongation, StretchRule>(xx, i, bj, vals, n, smin_all, c.smin_i, c.s00,
+                                                     c.alpha, c.margin);
   }
 
   /* the force pass in two 4-wide halves, as the AVX-512 kernel */
@@ -540,11 +518,10 @@ namespace LPS {
     };
     for_each_group4(n, [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, std::false_type(), k); },
                     [&](auto half, int k) BBPD_GROUPS_INLINE { group(half, std::true_type(), k); });
-    return sums.store(out, snew, c) && past_avx2(xx, i, bj, vals, n, states, c, smin_all);
+    return sums.store(out, snew, c) && past_avx2(xx, i, bj, vals, n, c, smin_all);
   }
 #define lps_dilatation_simd BBPD::LPS::dilatation_sum_avx2
 #define lps_force_simd BBPD::LPS::force_row_avx2
-#define lps_past_simd BBPD::LPS::past_avx2
 #endif
 
 }    // namespace LPS

@@ -50,14 +50,15 @@ inline bool row_stretch_portable(const double *xx, int i, const Idx *bj, const V
 
 #ifdef BBPD_AVX512
 /* the breaking test of row_stretch_portable in 8 lanes: is a bond past (or within margin of)
-   its critical stretch with partner j? (the force kernel below runs it when the row's largest
-   stretch reaches its floor) */
+   its critical stretch with partner j (smallest stretches smin_i and smin[j])? The force
+   kernels, these below and the LPS ones (bbpd_lps_lanes.h), run it when the row's largest
+   stretch reaches its floor. */
 template <class Model, class Rule, class Values, class Idx>
 inline bool past_avx512(const double *xx, int i, const Idx *bj, const Values &vals, int n,
-                        const double *smin, double s00, double alpha, double margin)
+                        const double *smin, double smin_i, double s00, double alpha, double margin)
 {
   const __m512d xi = _mm512_set1_pd(xx[3 * i]), yi = _mm512_set1_pd(xx[3 * i + 1]),
-                zi = _mm512_set1_pd(xx[3 * i + 2]), vsmin_i = _mm512_set1_pd(smin[i]),
+                zi = _mm512_set1_pd(xx[3 * i + 2]), vsmin_i = _mm512_set1_pd(smin_i),
                 one = _mm512_set1_pd(1.0);
   __mmask8 broken = 0;
   for (int k = 0; k < n; k += LANES) {
@@ -103,7 +104,7 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const Idx *bj, con
   lanes.store(ax, ay, az, tally);
   // no bond has a critical stretch below s0_floor (critical_stretch_floor)
   return _mm512_reduce_max_pd(vmax) + margin > s0_floor &&
-      past_avx512<Model, Rule>(xx, i, bj, vals, n, smin, s00, alpha, margin);
+      past_avx512<Model, Rule>(xx, i, bj, vals, n, smin, smin[i], s00, alpha, margin);
 }
 #define row_force_stretch_simd BBPD::row_force_stretch_avx512
 #endif
@@ -112,15 +113,15 @@ inline bool row_force_stretch_avx512(const double *xx, int i, const Idx *bj, con
 // past_avx512 in 4-wide groups
 template <class Model, class Rule, class Values, class Idx>
 inline bool past_avx2(const double *xx, int i, const Idx *bj, const Values &vals, int n,
-                      const double *smin, double s00, double alpha, double margin)
+                      const double *smin, double smin_i, double s00, double alpha, double margin)
 {
   const __m256d xi = _mm256_set1_pd(xx[3 * i]), yi = _mm256_set1_pd(xx[3 * i + 1]),
-                zi = _mm256_set1_pd(xx[3 * i + 2]), vsmin_i = _mm256_set1_pd(smin[i]),
+                zi = _mm256_set1_pd(xx[3 * i + 2]), vsmin_i = _mm256_set1_pd(smin_i),
                 one = _mm256_set1_pd(1.0), all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
   __m256d broken = _mm256_setzero_pd();
   // 4 lanes (m: in the row) with the partners' smallest stretches smin_j
   auto check = [&](__m256d m, bool masked, __m256d dx, __m256d dy, __m256d dz, __m256d xi0,
-                   __m256d smin_j) {
+                   __m256d smin_j) BBPD_GROUPS_INLINE {
     const __m256d r = _mm256_sqrt_pd(
         _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz)));
     const Vec4 es = Rule::settled_elongation(Model::elongation(Vec4(r), Vec4(xi0)));
@@ -128,7 +129,7 @@ inline bool past_avx2(const double *xx, int i, const Idx *bj, const Values &vals
     const Vec4 s0 = Rule::critical_stretch(Vec4(s00), Vec4(alpha), Vec4(vsmin_i), Vec4(smin_j));
     broken = _mm256_or_pd(broken, _mm256_and_pd(m, Rule::past_critical(s, s0, Vec4(margin)).v));
   };
-  auto full = [&](auto, int k) {
+  auto full = [&](auto, int k) BBPD_GROUPS_INLINE {
     const int o = row_origin(bj, i);
     const std::ptrdiff_t j[4] = {bj[k], bj[k + 1], bj[k + 2], bj[k + 3]};
     __m256d x, y, z, xi0, coef;
@@ -138,7 +139,7 @@ inline bool past_avx2(const double *xx, int i, const Idx *bj, const Values &vals
     check(all, false, _mm256_sub_pd(x, xi), _mm256_sub_pd(y, yi), _mm256_sub_pd(z, zi), xi0,
           _mm256_setr_pd(sm[j[0]], sm[j[1]], sm[j[2]], sm[j[3]]));
   };
-  auto tail = [&](auto, int k) {
+  auto tail = [&](auto, int k) BBPD_GROUPS_INLINE {
     const TailGroup4 g(xx, bj, i, n, k, xi, yi, zi);
     __m256d xi0, coef;
     load_values_tail(vals, g, k, xi0, coef);
@@ -193,7 +194,7 @@ inline bool row_force_stretch_avx2(const double *xx, int i, const Idx *bj, const
   lanes.store(ax, ay, az, tally);
   // no bond has a critical stretch below s0_floor (critical_stretch_floor)
   return std::max(_mm_cvtsd_f64(x2), _mm_cvtsd_f64(_mm_unpackhi_pd(x2, x2))) + margin > s0_floor &&
-      past_avx2<Model, Rule>(xx, i, bj, vals, n, smin, s00, alpha, margin);
+      past_avx2<Model, Rule>(xx, i, bj, vals, n, smin, smin[i], s00, alpha, margin);
 }
 #define row_force_stretch_simd BBPD::row_force_stretch_avx2
 #endif
