@@ -5,8 +5,9 @@
    pass of its elastic plan in the SIMD kernels) and the force pass of
    bbpd_lps_history_row.h with bond k in lane k % LANES, as the LPS rows of bbpd_lps_lanes.h,
    so that the AVX2 and AVX-512 kernels give the portable loop's bits. A bond end's history is
-   read from, and with COMMIT (ROLL) written back to, hist + BOND_HISTORY * slot[k] in every
-   path: each bond end has a slot of its own, so the lanes never write the same place. As in
+   read from, and with COMMIT (ROLL) written back to, slot slot[k] of the row's blocks hist
+   (bbpd_history_blocks.h) in every path: each bond end has a slot of its own, so the lanes
+   never write the same place. As in
    the scalar row, a bond without weighted volume at both ends has no force and keeps its
    history.
 ------------------------------------------------------------------------- */
@@ -14,6 +15,7 @@
 #ifndef BBPD_LPS_HISTORY_LANES_H
 #define BBPD_LPS_HISTORY_LANES_H
 
+#include "bbpd_history_blocks.h"
 #include "bbpd_lps_history_row.h"
 #include "bbpd_lps_lanes.h"
 
@@ -61,9 +63,10 @@ namespace LPS {
       const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
       const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
       const double ed = deviatoric_extension(elongation(r, xi0), xi0, theta_third_i);
-      double *h = hist + F::BOND_HISTORY * slot[k];
-      lane[k % LANES] += fam.template norm_term_v<ROLL>(wv, influence(xi0), ed,
-                                                        states[i].inv_m + states[j].inv_m, h[0], h[1]);
+      constexpr int B = F::BOND_HISTORY;
+      lane[k % LANES] += fam.template norm_term_v<ROLL>(
+          wv, influence(xi0), ed, states[i].inv_m + states[j].inv_m,
+          history_value<B>(hist, slot[k], 0), history_value<B>(hist, slot[k], 1));
     }
     return lane_total(lane);
   }
@@ -81,9 +84,10 @@ namespace LPS {
     auto bond = [&](int k, int j, double r, double xi0, double wv, double e, double &energy) {
       double t = 0.0;
       if (has_m && states[j].inv_m > 0.0) {
-        double *h = hist + F::BOND_HISTORY * slot[k];
+        constexpr int B = F::BOND_HISTORY;
         t = history_force_v<F, COMMIT != 0>(fam, plan, c, wv, xi0, e, states[j].theta_over_m,
-                                            states[j].inv_m, h[0], h[1], energy);
+                                            states[j].inv_m, history_value<B>(hist, slot[k], 0),
+                                            history_value<B>(hist, slot[k], 1), energy);
       }
       return r > 0.0 ? t / r : 0.0;
     };
@@ -110,49 +114,50 @@ namespace LPS {
   }
 
   /* A row none of whose partners was lost keeps its bonds in partner slots 0..n-1: the
-     history of bonds k, k+1, ... is then consecutive, BOND_HISTORY doubles each, and the vector
-     paths load and store it whole instead of gathering and scattering it lane by lane (the
+     history of bonds k .. k+3 (k a multiple of 4) is then one block, and the vector paths load
+     and store each value of it whole instead of gathering and scattering it lane by lane (the
      same values either way). A row's slots rise with k (PairBBPDLPS::find_bond_slots), so its
      last slot says it. (On the bpm/peri deck, VES on the AVX2 path: 2.64 -> 1.85 s; a check
      that read every slot cost the AVX-512 path 9 %.) */
   inline bool dense_slots(const int *slot, int n) { return n == 0 || slot[n - 1] == n - 1; }
 
 #ifdef BBPD_AVX512
-  // slots k..k+7 of the row times BOND_HISTORY (lanes off in m: 0)
+  // the place of value 0 of the slots k..k+7 of the row (lanes off in m: 0); value v at
+  // HISTORY_BLOCK v further
   template <class F> inline __m256i history_index(const int *slot, __mmask8 m, int k)
   {
-    return _mm256_mullo_epi32(_mm256_maskz_loadu_epi32(m, slot + k), _mm256_set1_epi32(F::BOND_HISTORY));
+    const __m256i s = _mm256_maskz_loadu_epi32(m, slot + k);
+    const __m256i block = _mm256_srli_epi32(s, 2), within = _mm256_and_si256(s, _mm256_set1_epi32(3));
+    static_assert(HISTORY_BLOCK == 4, "slot / 4 and slot % 4 by shift and mask");
+    return _mm256_add_epi32(_mm256_mullo_epi32(block, _mm256_set1_epi32(HISTORY_BLOCK * F::BOND_HISTORY)),
+                            within);
   }
 
-  // the 16 bits of a history pair per lane: bit l of m to bits 2l and 2l + 1
-  inline unsigned pair_mask(__mmask8 m)
+  /* the history (h0, h1) of bonds k..k+7 in the lanes of m (others 0), and writing it back: in a
+     dense row (dense_slots) the two blocks of slots k..k+3 and k+4..k+7, one load or store each
+     and a shuffle of 256-bit halves per value; else gathers by slot */
+  inline __mmask8 block_mask(__mmask8 m, int half)    // the lanes of bonds 4 half .. 4 half + 3, twice
   {
-    unsigned x = m;
-    x = (x | (x << 4)) & 0x0F0Fu;
-    x = (x | (x << 2)) & 0x3333u;
-    x = (x | (x << 1)) & 0x5555u;
-    return x | (x << 1);
+    const unsigned q = (m >> (4 * half)) & 0xFu;
+    return (__mmask8) (q | (q << 4));
   }
-  /* the history (h0, h1) of bonds k..k+7 in the lanes of m (others 0), and writing it back:
-     two loads and a deinterleave in a dense row (dense_slots), else gathers by slot */
   template <class F>
   inline void read_history8(const int *slot, double *hist, int k, __mmask8 m, bool dense,
                             __m512d &h0, __m512d &h1)
   {
     if constexpr (F::BOND_HISTORY == 2) {
       if (dense) {
-        const unsigned e = pair_mask(m);
-        const double *h = hist + 2 * k;
-        const __m512d lo = _mm512_maskz_loadu_pd((__mmask8) (e & 0xFFu), h);
-        const __m512d hi = _mm512_maskz_loadu_pd((__mmask8) (e >> 8), h + 8);
-        h0 = _mm512_permutex2var_pd(lo, _mm512_setr_epi64(0, 2, 4, 6, 8, 10, 12, 14), hi);
-        h1 = _mm512_permutex2var_pd(lo, _mm512_setr_epi64(1, 3, 5, 7, 9, 11, 13, 15), hi);
+        const double *h = hist + 2 * k;    // history_offset<2>(k, 0), k a multiple of 8
+        const __m512d lo = _mm512_maskz_loadu_pd(block_mask(m, 0), h);
+        const __m512d hi = _mm512_maskz_loadu_pd(block_mask(m, 1), h + 2 * HISTORY_BLOCK);
+        h0 = _mm512_shuffle_f64x2(lo, hi, 0x44);    // the first 256 bits of each
+        h1 = _mm512_shuffle_f64x2(lo, hi, 0xEE);    // the last 256 bits of each
         return;
       }
     }
     const __m256i hi = history_index<F>(slot, m, k);
     h0 = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, hi, hist, 8);
-    h1 = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, hi, hist + 1, 8);
+    h1 = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), m, hi, hist + HISTORY_BLOCK, 8);
   }
   template <class F>
   inline void write_history8(const int *slot, double *hist, int k, __mmask8 m, bool dense,
@@ -160,18 +165,15 @@ namespace LPS {
   {
     if constexpr (F::BOND_HISTORY == 2) {
       if (dense) {
-        const unsigned e = pair_mask(m);
         double *h = hist + 2 * k;
-        _mm512_mask_storeu_pd(h, (__mmask8) (e & 0xFFu),
-                              _mm512_permutex2var_pd(h0, _mm512_setr_epi64(0, 8, 1, 9, 2, 10, 3, 11), h1));
-        _mm512_mask_storeu_pd(h + 8, (__mmask8) (e >> 8),
-                              _mm512_permutex2var_pd(h0, _mm512_setr_epi64(4, 12, 5, 13, 6, 14, 7, 15), h1));
+        _mm512_mask_storeu_pd(h, block_mask(m, 0), _mm512_shuffle_f64x2(h0, h1, 0x44));
+        _mm512_mask_storeu_pd(h + 2 * HISTORY_BLOCK, block_mask(m, 1), _mm512_shuffle_f64x2(h0, h1, 0xEE));
         return;
       }
     }
     const __m256i hi = history_index<F>(slot, m, k);
     _mm512_mask_i32scatter_pd(hist, m, hi, h0, 8);
-    _mm512_mask_i32scatter_pd(hist + 1, m, hi, h1, 8);
+    _mm512_mask_i32scatter_pd(hist + HISTORY_BLOCK, m, hi, h1, 8);
   }
 
   /* the force pass, 8 lanes (one s00 and alpha); with NORM also the norm pass of
@@ -255,26 +257,25 @@ namespace LPS {
 
 #ifdef BBPD_AVX2
   /* The history kernels in 4-wide groups as for_each_group4 hands them out (lanes 0-3, 4-7 of
-     the 8-wide accumulators; group4 of bbpd_lps_lanes.h), each group's history gathered and
-     written lane by lane. */
+     the 8-wide accumulators; group4 of bbpd_lps_lanes.h): a dense row's full group reads and
+     writes its block whole, any other group its lanes one by one. */
   // the history of the lanes in 'lanes' (bits) of bonds k..k+3, and writing it back
   template <class F> BBPD_GROUPS_INLINE inline void read_history4(const int *slot, double *hist, int k, int lanes,
                                                bool dense, __m256d &h0, __m256d &h1)
   {
     if constexpr (F::BOND_HISTORY == 2) {
-      if (dense && lanes == 0xF) {    // (h0, h1) of bonds k..k+3, consecutive (dense_slots)
-        const __m256d a = _mm256_loadu_pd(hist + 2 * k), b = _mm256_loadu_pd(hist + 2 * k + 4);
-        h0 = _mm256_permute4x64_pd(_mm256_unpacklo_pd(a, b), 0xD8);
-        h1 = _mm256_permute4x64_pd(_mm256_unpackhi_pd(a, b), 0xD8);
+      if (dense && lanes == 0xF) {    // slots k..k+3: one block (dense_slots)
+        h0 = _mm256_loadu_pd(hist + 2 * k);    // history_offset<2>(k, 0), k a multiple of 4
+        h1 = _mm256_loadu_pd(hist + 2 * k + HISTORY_BLOCK);
         return;
       }
     }
+    constexpr int B = F::BOND_HISTORY;
     alignas(32) double a[4] = {0.0, 0.0, 0.0, 0.0}, b[4] = {0.0, 0.0, 0.0, 0.0};
     for (int l = 0; l < 4; l++)
       if (lanes & (1 << l)) {
-        const double *h = hist + F::BOND_HISTORY * slot[k + l];
-        a[l] = h[0];
-        b[l] = h[1];
+        a[l] = history_value<B>(hist, slot[k + l], 0);
+        b[l] = history_value<B>(hist, slot[k + l], 1);
       }
     h0 = _mm256_load_pd(a);
     h1 = _mm256_load_pd(b);
@@ -284,20 +285,19 @@ namespace LPS {
   {
     if constexpr (F::BOND_HISTORY == 2) {
       if (dense && lanes == 0xF) {
-        const __m256d a = _mm256_permute4x64_pd(h0, 0xD8), b = _mm256_permute4x64_pd(h1, 0xD8);
-        _mm256_storeu_pd(hist + 2 * k, _mm256_unpacklo_pd(a, b));
-        _mm256_storeu_pd(hist + 2 * k + 4, _mm256_unpackhi_pd(a, b));
+        _mm256_storeu_pd(hist + 2 * k, h0);
+        _mm256_storeu_pd(hist + 2 * k + HISTORY_BLOCK, h1);
         return;
       }
     }
+    constexpr int B = F::BOND_HISTORY;
     alignas(32) double a[4], b[4];
     _mm256_store_pd(a, h0);
     _mm256_store_pd(b, h1);
     for (int l = 0; l < 4; l++)
       if (lanes & (1 << l)) {
-        double *h = hist + F::BOND_HISTORY * slot[k + l];
-        h[0] = a[l];
-        h[1] = b[l];
+        history_value<B>(hist, slot[k + l], 0) = a[l];
+        history_value<B>(hist, slot[k + l], 1) = b[l];
       }
   }
 

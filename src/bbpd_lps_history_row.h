@@ -23,12 +23,14 @@
    d K the split dilatational coefficient (split_dilatational, bbpd_lps.h: 3K for peri/ves and
    peri/eps), ed = e - theta_i xi0 / d; zero unless both ends have a weighted volume (as
    bbpd_lps.h).
-   Bond k of the row (its k-th intact bond) keeps its history at hist + B slot[k].
+   Bond k of the row (its k-th intact bond) keeps its history in slot slot[k] of the row's
+   blocks hist (bbpd_history_blocks.h).
 ------------------------------------------------------------------------- */
 
 #ifndef BBPD_LPS_HISTORY_ROW_H
 #define BBPD_LPS_HISTORY_ROW_H
 
+#include "bbpd_history_blocks.h"
 #include "bbpd_lps_row.h"
 
 #include <cmath>
@@ -40,15 +42,15 @@ namespace LPS {
   template <class F, bool COMMIT>
   inline double history_force_state(double dilatational, const F &fam, const typename F::Plan &plan,
                                     double wv, double xi0, double e, double theta_third_i,
-                                    const AtomState &a, const AtomState &b, double *h,
-                                    double &energy)
+                                    const AtomState &a, const AtomState &b, double &h0,
+                                    double &h1, double &energy)
   {
     energy = 0.0;
     if (!(a.inv_m > 0.0 && b.inv_m > 0.0)) return 0.0;
     const double ed = deviatoric_extension(e, xi0, theta_third_i);
     return dilatational * wv * (a.theta_over_m + b.theta_over_m) * xi0 +
-        fam.template deviatoric<COMMIT>(plan, wv, influence(xi0), xi0, ed, a.inv_m + b.inv_m, h,
-                                        energy);
+        fam.template deviatoric_v<COMMIT>(plan, wv, influence(xi0), xi0, ed, a.inv_m + b.inv_m, h0,
+                                          h1, energy);
   }
 
   /* the norm of the row's trial deviatoric state (F::NEEDS_NORM), sqrt of the sum of
@@ -68,8 +70,10 @@ namespace LPS {
       const double dx = xx[3 * j] - xi, dy = xx[3 * j + 1] - yi, dz = xx[3 * j + 2] - zi;
       const double r = CACHED ? r_row[k] : std::sqrt(dx * dx + dy * dy + dz * dz);
       const double ed = deviatoric_extension(elongation(r, xi0), xi0, theta_third_i);
-      sum += fam.template norm_term<ROLL>(wv, influence(xi0), ed, si.inv_m + states[j].inv_m,
-                                          hist + F::BOND_HISTORY * slot[k]);
+      constexpr int B = F::BOND_HISTORY;
+      sum += fam.template norm_term_v<ROLL>(wv, influence(xi0), ed, si.inv_m + states[j].inv_m,
+                                            history_value<B>(hist, slot[k], 0),
+                                            history_value<B>(hist, slot[k], 1));
     }
     return std::sqrt(sum);
   }
@@ -95,9 +99,10 @@ namespace LPS {
       const double r = CACHED ? r_row[k] : std::sqrt(dx * dx + dy * dy + dz * dz);
       const double e = elongation(r, xi0);
       double energy;
-      const double t =
-          history_force_state<F, COMMIT>(dilatational, fam, plan, wv, xi0, e, theta_third_i, si, states[j],
-                                         hist + F::BOND_HISTORY * slot[k], energy);
+      constexpr int B = F::BOND_HISTORY;
+      const double t = history_force_state<F, COMMIT>(
+          dilatational, fam, plan, wv, xi0, e, theta_third_i, si, states[j],
+          history_value<B>(hist, slot[k], 0), history_value<B>(hist, slot[k], 1), energy);
       const double fpl = r > 0.0 ? t / r : 0.0;
       ax += fpl * dx;
       ay += fpl * dy;

@@ -5,6 +5,8 @@
 
 #include "fix_bbpd_history.h"
 
+#include "bbpd_history_blocks.h"
+
 #include "atom.h"
 #include "error.h"
 
@@ -14,10 +16,16 @@
 using namespace LAMMPS_NS;
 
 FixBBPDHistory::FixBBPDHistory(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), max_length(0)
+    Fix(lmp, narg, arg), atom_values(0), bond_values(0), max_length(0)
 {
-  if (narg != 3)
-    error->all(FLERR, "Fix {} takes no arguments (it is created by the pair style)", style);
+  if (narg != 5)
+    error->all(FLERR, "Fix {} takes the doubles of history per atom and per bond end (it is "
+               "created by the pair style)", style);
+  atom_values = utils::inumeric(FLERR, arg[3], false, lmp);
+  bond_values = utils::inumeric(FLERR, arg[4], false, lmp);
+  if (atom_values < 0 || bond_values < 1)
+    error->all(FLERR, "Fix {}: {} doubles per atom and {} per bond end: need >= 0 and >= 1",
+               style, atom_values, bond_values);
   restart_peratom = 1;
   create_attribute = 1;
   maxexchange = 1;
@@ -66,10 +74,16 @@ void FixBBPDHistory::resize_keep(int i, int n)
   std::fill(rows[i] + held, rows[i] + n, 0.0);
 }
 
-void FixBBPDHistory::fit(int atom_width, int bond_width, const int *npartner, int maxpartner)
+// the doubles of a row of nslots slots (whole blocks)
+int FixBBPDHistory::row_length(int nslots) const
 {
-  allow_length(atom_width + bond_width * maxpartner);
-  for (int i = 0; i < atom->nlocal; i++) resize_keep(i, atom_width + bond_width * npartner[i]);
+  return atom_values + BBPD::history_length(bond_values, nslots);
+}
+
+void FixBBPDHistory::fit(const int *npartner, int maxpartner)
+{
+  allow_length(row_length(maxpartner));
+  for (int i = 0; i < atom->nlocal; i++) resize_keep(i, row_length(npartner[i]));
 }
 
 // rows of n values may be sent: the exchange buffer holds them with their count
@@ -88,11 +102,11 @@ void FixBBPDHistory::take_row(int i, int n, const double *src)
   std::copy_n(src, n, rows[i]);
 }
 
-double FixBBPDHistory::bytes_when_fit(int atom_width, int bond_width, const int *npartner) const
+double FixBBPDHistory::bytes_when_fit(const int *npartner) const
 {
   double bytes = rows.bytes();
   for (int i = 0; i < atom->nlocal; i++)
-    bytes += std::max(0, atom_width + bond_width * npartner[i] - rows.room(i)) * sizeof(double);
+    bytes += std::max(0, row_length(npartner[i]) - rows.room(i)) * sizeof(double);
   return bytes;
 }
 
@@ -111,11 +125,22 @@ int FixBBPDHistory::unpack_exchange(int nlocal, double *buf)
   return 1 + n;
 }
 
+// the slots of a row of n doubles (a row of blocks holds whole blocks, a file's row whole slots)
+static int slots_of(int n, int atom_values, int bond_values)
+{
+  return std::max(0, n - atom_values) / bond_values;
+}
+
+// a restart file holds a slot's values side by side (the layout before the blocks)
 int FixBBPDHistory::pack_restart(int i, double *buf)
 {
   const int n = rows.room(i);
   buf[0] = 1 + n;
-  std::copy_n(rows[i], n, buf + 1);
+  if (n > 0) {
+    const int nslots = slots_of(n, atom_values, bond_values);
+    std::copy_n(rows[i], atom_values, buf + 1);
+    BBPD::history_to_pairs(bond_values, nslots, rows[i] + atom_values, buf + 1 + atom_values);
+  }
   return 1 + n;
 }
 
@@ -125,5 +150,18 @@ void FixBBPDHistory::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   const int n = static_cast<int>(extra[nlocal][m]) - 1;    // the values the file holds
-  take_row(nlocal, n, &extra[nlocal][m + 1]);
+  const double *file = &extra[nlocal][m + 1];
+  if (n == 0) {
+    take_row(nlocal, 0, file);
+    return;
+  }
+  if (n < atom_values || (n - atom_values) % bond_values != 0)
+    error->one(FLERR, "Fix {}: atom {} has {} values of history in the restart file, not {} per "
+               "atom and {} per bond end: the file was written by another model (pair style)",
+               style, atom->tag[nlocal], n, atom_values, bond_values);
+  const int nslots = slots_of(n, atom_values, bond_values);
+  std::vector<double> row(row_length(nslots));
+  std::copy_n(file, atom_values, row.begin());
+  BBPD::history_from_pairs(bond_values, nslots, file + atom_values, row.data() + atom_values);
+  take_row(nlocal, (int) row.size(), row.data());
 }

@@ -429,10 +429,10 @@ void PairBBPD::calibrate()
 }
 
 /* the internal fix 'id' of style fix_style, created if missing: the style's own */
-Fix *PairBBPD::own_fix(const char *id, const char *fix_style)
+Fix *PairBBPD::own_fix(const char *id, const char *fix_style, const std::string &args)
 {
   Fix *fix = modify->get_fix_by_id(id);
-  if (!fix) fix = modify->add_fix(fmt::format("{} all {}", id, fix_style));
+  if (!fix) fix = modify->add_fix(fmt::format("{} all {} {}", id, fix_style, args));
   if (!fix || strcmp(fix->style, fix_style) != 0)
     error->all(FLERR, "Pair style {} needs its internal fix {} of style {}: do not define a fix "
                "with that ID", style, id, fix_style);

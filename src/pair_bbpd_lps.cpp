@@ -84,7 +84,7 @@ PairBBPDLPS::PairBBPDLPS(LAMMPS *lmp, Family f, Coefficients c, BBPD::KernelInfo
     deviatoric_share(c == Coefficients::KERNEL ? WHOLE_DEVIATORIC_ENERGY : PERI_LPS_DEVIATORIC_SHARE),
     lps_state(nullptr), nmax_lps(0), atom_states(nullptr),
     family(f), coefficients(c), relax_share(nullptr),
-    relax_time(nullptr), yield_stress(nullptr), history(nullptr), nmax_slot(0), bond_slot(nullptr)
+    relax_time(nullptr), yield_stress(nullptr), history(nullptr)
 {
   comm_forward = LPS_FORWARD_VALUES;
 }
@@ -98,7 +98,6 @@ PairBBPDLPS::~PairBBPDLPS()
   memory->destroy(relax_share);
   memory->destroy(relax_time);
   memory->destroy(yield_stress);
-  memory->destroy(bond_slot);
   release_fix(lps_state, LPS_FIX_ID);
   release_fix(history, HISTORY_FIX_ID);
   silling_askari.destroy(memory);
@@ -295,7 +294,13 @@ void PairBBPDLPS::init_rules()
   lps_state = static_cast<FixBBPDLPS *>(own_fix(LPS_FIX_ID, "bbpd/lps"));
   if (family == Family::LPS) return;
   check_history_solver();
-  history = static_cast<FixBBPDHistory *>(own_fix(HISTORY_FIX_ID, "bbpd/history"));
+  const auto w = history_widths();
+  history = static_cast<FixBBPDHistory *>(
+      own_fix(HISTORY_FIX_ID, "bbpd/history", fmt::format("{} {}", w[0], w[1])));
+  if (history->atom_width() != w[0] || history->bond_width() != w[1])
+    error->all(FLERR, "Pair style {}: fix {} holds {} doubles of history per atom and {} per bond "
+               "end, this model needs {} and {}: unfix it or use the model it was made for",
+               style, HISTORY_FIX_ID, history->atom_width(), history->bond_width(), w[0], w[1]);
   // the rows' size for the atoms that migrate before the first step (rows read from a restart
   // file are as long as they were written)
   if (bonds->families_built()) fit_history();
@@ -398,7 +403,7 @@ double PairBBPDLPS::memory_usage()
 {
   const int n = atom->ntypes + 1;
   return PairBBPD::memory_usage() + 2.0 * n * n * sizeof(double) +
-      (double) LPS_FORWARD_VALUES * nmax_lps * sizeof(double) + (double) nmax_slot * sizeof(int);
+      (double) LPS_FORWARD_VALUES * nmax_lps * sizeof(double) + bond_slots.bytes();
 }
 
 /* the per-atom state of the LPS (weighted volumes, dilatations) and of the families' history
@@ -408,12 +413,9 @@ double PairBBPDLPS::state_memory()
 {
   double bytes = lps_state ? lps_state->memory_usage() : 0.0;
   if (history && bonds) {
-    const int nlocal = atom->nlocal;
-    const double nends = nlocal > 0 ? bonds->bond_start[nlocal - 1] + bonds->nbond[nlocal - 1] : 0;
-    const auto w = history_widths();
-    bytes += (bonds->families_built() ? history->bytes_when_fit(w[0], w[1], bonds->npartner)
+    bytes += (bonds->families_built() ? history->bytes_when_fit(bonds->npartner)
                                       : history->memory_usage()) +
-        std::max((double) nmax_slot, nends) * sizeof(int) - (double) nmax_slot * sizeof(int);
+        slot_bytes_when_found() - bond_slots.bytes();
   }
   return bytes;
 }

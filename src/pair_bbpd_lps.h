@@ -38,6 +38,7 @@
 #ifndef LMP_PAIR_BBPD_LPS_H
 #define LMP_PAIR_BBPD_LPS_H
 
+#include "bbpd_bond_slots.h"
 #include "bbpd_lps.h"
 #include "bbpd_silling_askari.h"
 #include "bbpd_ves.h"
@@ -45,6 +46,7 @@
 #include "pair_bbpd_silling_askari_state.h"
 
 #include <array>
+#include <mutex>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -98,9 +100,11 @@ class PairBBPDLPS : public PairBBPD {
   double **relax_share, **relax_time;    // VES: lambda and tau per type pair
   double **yield_stress;                 // EPS: the yield stress per type pair
   class FixBBPDHistory *history;         // VES, EPS: the history of bonds and atoms
-  int nmax_slot;
-  int *bond_slot;    // per intact bond end of this step: its partner slot in fix bbpd/bonds
-  // the bonds bond_slot was found for: cache generation, row removals, local atoms
+  BBPD::BondSlots bond_slots;    // per row of this step: its intact bonds' partner slots
+  // the rows that lost their first partners in this step's rows (slots of their own after it)
+  std::vector<int> rows_to_own;
+  std::mutex rows_to_own_mutex;    // rows run in threads (package omp)
+  // the bonds bond_slots were found for: cache generation, row removals, local atoms
   bigint slot_generation = -1;
   long slot_removals = -1;
   int slot_nlocal = -1;
@@ -141,6 +145,9 @@ class PairBBPDLPS : public PairBBPD {
   std::string family_report(int i, int j) const;
   std::string history_report() const;
   void find_bond_slots();
+  bool row_dense(int i) const;    // the intact bonds of row i in partner slots 0 .. nbond - 1
+  int find_row_slots(int i);
+  double slot_bytes_when_found() const;
   template <int EVFLAG, class F> void eval_history();
   template <int EVFLAG, class F> struct HistoryRow;
   template <class F> F family_of(int i) const;

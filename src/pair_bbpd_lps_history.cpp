@@ -58,7 +58,7 @@ double PairBBPDLPS::history_row_probe(int i, const LPS::AtomState *states, BBPD:
   if ((int) probe_slot.size() < n) {
     probe_slot.resize(n);
     for (int k = 0; k < n; k++) probe_slot[k] = k;
-    probe_history.assign(2 * (size_t) n, 0.0);    // BOND_HISTORY doubles of VES and EPS
+    probe_history.assign(BBPD::history_length(2, n), 0.0);    // BOND_HISTORY of VES and EPS
   }
   const int t = atom->type[i];
   const LPS::Moduli mod = moduli_of_type(t);
@@ -103,8 +103,7 @@ std::array<int, 2> PairBBPDLPS::history_widths() const
    are read from a restart file; a new family's rows start at zero) */
 void PairBBPDLPS::fit_history()
 {
-  const auto w = history_widths();
-  history->fit(w[0], w[1], bonds->npartner, bonds->maxpartner);
+  history->fit(bonds->npartner, bonds->maxpartner);
 }
 
 double PairBBPDLPS::plastic_multiplier(int i) const
@@ -113,8 +112,40 @@ double PairBBPDLPS::plastic_multiplier(int i) const
   return history->row(i)[BBPD::EPS::Family::LAMBDA];
 }
 
-/* bond_slot[bond_start[i] + k]: the slot in partner[i] (and in the history) of the k-th
-   intact bond of local atom i, the k-th partner with a positive tag */
+// the intact bonds of local atom i in its partner slots 0 .. nbond[i] - 1 (it lost no partner)
+bool PairBBPDLPS::row_dense(int i) const
+{
+  const int n = bonds->nbond[i];
+  for (int m = 0; m < n; m++)
+    if (bonds->partner[i][m] <= 0) return false;
+  return true;
+}
+
+/* the slots of the intact bonds of local atom i (bbpd_bond_slots.h): none of its own while it
+   lost no partner, else the slots of its partners with a positive tag, in order; the number
+   found */
+int PairBBPDLPS::find_row_slots(int i)
+{
+  const int n = bonds->nbond[i];
+  if (bond_slots.dense(i) && row_dense(i)) return n;
+  int *s = bond_slots.own(i, n);
+  int found = 0;
+  for (int m = 0; m < bonds->npartner[i] && found < n; m++)
+    if (bonds->partner[i][m] > 0) s[found++] = m;
+  return found;
+}
+
+// the ints bond_slots will hold for the local atoms (the setup report comes before the first step)
+double PairBBPDLPS::slot_bytes_when_found() const
+{
+  double ints = atom->nlocal + bonds->maxpartner;    // where each row's slots start; 0, 1, 2, ...
+  for (int i = 0; i < atom->nlocal; i++)
+    if (!row_dense(i)) ints += bonds->nbond[i];
+  return ints * sizeof(int);
+}
+
+/* bond_slots.of(i)[k]: the slot in partner[i] (and in the history) of the k-th intact bond of
+   local atom i, the k-th partner with a positive tag */
 void PairBBPDLPS::find_bond_slots()
 {
   const int nlocal = atom->nlocal;
@@ -126,22 +157,14 @@ void PairBBPDLPS::find_bond_slots()
   slot_generation = bonds->cache_generation();
   slot_removals = bonds->row_removals();
   slot_nlocal = nlocal;
-  const int nends = nlocal > 0 ? bonds->bond_start[nlocal - 1] + bonds->nbond[nlocal - 1] : 0;
-  if (nends > nmax_slot) {
-    nmax_slot = nends + nends / 8;    // headroom, as bond_length
-    memory->destroy(bond_slot);
-    memory->create(bond_slot, nmax_slot, "pair:bond_slot");
-  }
+  bond_slots.reset(nlocal, bonds->maxpartner);
   for (int i = 0; i < nlocal; i++) {
-    int *slot = bond_slot + bonds->bond_start[i];
-    int n = 0;
-    for (int m = 0; m < bonds->npartner[i] && n < bonds->nbond[i]; m++)
-      if (bonds->partner[i][m] > 0) slot[n++] = m;
-    if (n != bonds->nbond[i])
+    const int found = find_row_slots(i);
+    if (found != bonds->nbond[i])
       error->one(FLERR,
                  "Pair style {}: atom {} has {} intact bonds but {} bond partners: "
                  "the history of its bonds is lost (please report this)",
-                 style, atom->tag[i], bonds->nbond[i], n);
+                 style, atom->tag[i], bonds->nbond[i], found);
   }
 }
 
@@ -167,13 +190,14 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
   typename F::Plan plan;
   double *atom_hist;    // the atom's history, then its bonds' (by slot)
   double *hist;
-  const int *slot;
+  const int *slot;    // bond_slots.of(i)
+  std::vector<int> new_slots;    // the row's slots after this step's breaking, until it owns them
 
   HistoryRow(PairBBPDLPS &pair, int atom_i, double *acc_, BBPD::CoefCache *cache_, bool replay_,
              bool canonical_, const BBPD::SillingAskariCoefficients &rule, double margin_) :
       Base(pair, atom_i, acc_, cache_, replay_, canonical_, rule, margin_),
       fam(pair.family_of<F>(atom_i)), plan{}, atom_hist(pair.history->row(atom_i)),
-      hist(atom_hist + F::ATOM_HISTORY), slot(pair.bond_slot + pair.bonds->bond_start[atom_i])
+      hist(atom_hist + F::ATOM_HISTORY), slot(pair.bond_slots.of(atom_i))
   {
   }
 
@@ -288,10 +312,13 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
       return false;
     // the bond's slot: k counts the bonds kept so far in this row
     const int kr = k - p.bonds->bond_start[i];
+    const int m = slot[kr + nlost];
+    constexpr int B = F::BOND_HISTORY;
     double energy;
     const double t = LPS::history_force_state<F, false>(
         LPS::split_dilatational(mod), fam, plan, p.bonds->coef_of(i, k, xi0), xi0, e, theta_third_i, si,
-        p.atom_states[j], hist + F::BOND_HISTORY * slot[kr + nlost], energy);
+        p.atom_states[j], BBPD::history_value<B>(hist, m, 0), BBPD::history_value<B>(hist, m, 1),
+        energy);
     const double fpl = r > 0.0 ? t / r : 0.0;
     fb[0] += fpl * dx;
     fb[1] += fpl * dy;
@@ -319,13 +346,25 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
     slot_shift();
     row_sum<false, false>(fi);
   }
-  // the slots of the bonds left, in row order (the broken ones are gone from the row)
+  /* the slots of the bonds left, in row order (the broken ones are gone from the row): where
+     the row keeps its own, else (it lost its first partners now) here, and it gets its own
+     after the rows (rows run in threads; owning them may move the others') */
   void slot_shift()
   {
-    int *s = p.bond_slot + p.bonds->bond_start[i];
-    int n = 0;
-    for (int m = 0; m < p.bonds->npartner[i] && n < p.bonds->nbond[i]; m++)
-      if (p.bonds->partner[i][m] > 0) s[n++] = m;
+    if (!p.bond_slots.dense(i)) {
+      p.find_row_slots(i);
+      slot = p.bond_slots.of(i);
+      return;
+    }
+    if (p.row_dense(i)) return;    // the bonds it lost were its last
+    const int n = p.bonds->nbond[i];
+    new_slots.resize(n);
+    int found = 0;
+    for (int m = 0; m < p.bonds->npartner[i] && found < n; m++)
+      if (p.bonds->partner[i][m] > 0) new_slots[found++] = m;
+    slot = new_slots.data();
+    const std::lock_guard<std::mutex> lock(p.rows_to_own_mutex);
+    p.rows_to_own.push_back(i);
   }
 };
 
@@ -346,6 +385,8 @@ template <int EVFLAG, class F> void PairBBPDLPS::eval_history()
     return HistoryRow<EVFLAG, F>(*this, i, acc, cache, replay, canonical, rule, margin);
   });
   add_replayed_virial(replay, EVFLAG, silling_askari);
+  for (const int i : rows_to_own) find_row_slots(i);
+  rows_to_own.clear();
   // every row that broke bonds in this step has shifted its slots (HistoryRow::sum): the slots
   // are current until bonds go another way (on LAMMPS's cylinder example, finding them all again
   // each step was 12 % of a VES run)

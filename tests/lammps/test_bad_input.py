@@ -426,6 +426,13 @@ ROWS = [
     ("bonds-fix-without-bbpd-pair", given,
      script(**PMB, extra="fix b all bbpd/bonds"),
      "requires a bbpd/* pair style"),
+    # ---- fix bbpd/history is internal (created by bbpd/ves and bbpd/eps with their widths)
+    ("history-fix-no-widths", extra, "fix h all bbpd/history",
+     "takes the doubles of history per atom and per bond end"),
+    ("history-fix-other-widths", given,
+     script(BASE_3D, pair_style="fix BBPD_HISTORY all bbpd/history 2 2\npair_style bbpd/ves 3d",
+            pair_coeff="pair_coeff * * 14.9e9 14.9e9 0.003015 0.001 0.25 0.5 0.001"),
+     "holds 2 doubles of history per atom and 2 per bond end, this model needs 0 and 2"),
 ]
 
 CASES = {name: (build(value), expected) for name, build, value, expected in ROWS}

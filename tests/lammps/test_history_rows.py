@@ -9,8 +9,9 @@ moved by half the box: on 2 ranks each atom goes to the other rank, its history 
 - a run written to a restart file half-way and read back on 2 ranks equals the same run on 1
   rank without the file;
 - the memory the setup report gives per bond is that of bbpd/lps on the same bonds plus the
-  history itself (BOND_HISTORY doubles per bond end), the bond ends' slots (an int) and a row
-  header per atom slot; before the rows, every atom slot, ghosts included, held maxpartner
+  history itself (BOND_HISTORY doubles per bond end), where each row's slots start (an int per
+  atom: no row here lost a partner, so none keeps slots of its own), a row header per atom slot and up to HISTORY_BLOCK - 1 slots per row that fill its last block
+  (bbpd_history_blocks.h); before the rows, every atom slot, ghosts included, held maxpartner
   slots of history (2.5 times as much on this block).
 """
 import re
@@ -34,6 +35,8 @@ COEFFS = {
 # a row header per atom slot (16 bytes), ghosts included; LAMMPS grows its atom slots 16384 at
 # a time (AtomVec::DELTA), and this block has about 4,100 local and ghost atoms
 ROW_HEADER_BYTES = 16.0
+HISTORY_BLOCK = 4       # slots per block of a row's history (bbpd_history_blocks.h)
+MAX_PARTNERS = 122      # partners of an inner atom, simple cubic, delta = 3.015 spacings
 ATOM_SLOTS = 16384
 SETUP = """plugin load bbpdplugin.so
 atom_style peri
@@ -131,9 +134,12 @@ def test_history_memory_is_what_it_holds(tmp_path, one_rank):
     lps, bonds = memory_per_bond(tmp_path / "lps", "lps")
     ours, _ = memory_per_bond(tmp_path / family, family)
     history = 2 * BOND_HISTORY * 8.0 + ATOM_HISTORY[family] * 8.0 * NATOMS / bonds
-    slots = 2 * 4.0                     # an int per bond end
+    # an int per atom where its slots start, and 0, 1, 2, ...: no row here lost a partner, so
+    # none keeps slots of its own (bbpd_bond_slots.h; an int per bond end before)
+    slots = 4.0 * (NATOMS + MAX_PARTNERS) / bonds
     headers = ROW_HEADER_BYTES * ATOM_SLOTS / bonds
-    assert lps + history <= ours <= lps + history + slots + headers
+    blocks = (HISTORY_BLOCK - 1) * BOND_HISTORY * 8.0 * NATOMS / bonds
+    assert lps + history <= ours <= lps + history + slots + headers + blocks
 
 
 # LAMMPS's benchmark deck (perf/vs_bpm.py): a periodic 16^3 block, held still; only the setup

@@ -300,7 +300,7 @@ std::vector<double> history(int n, unsigned seed)
 {
   std::mt19937 gen(seed);
   std::uniform_real_distribution<double> u(-1e-6, 1e-6);
-  std::vector<double> h(2 * (2 * n + 1));
+  std::vector<double> h(BBPD::history_length(2, 2 * n + 1));    // slots up to 2 n (slots())
   for (double &v : h) v = u(gen);
   return h;
 }

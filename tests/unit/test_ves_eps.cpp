@@ -5,8 +5,10 @@
    EPS returns a plastic row onto its yield surface and keeps or forgets the plastic extension
    as peri/eps does. */
 
+#include "bbpd_bond_slots.h"
 #include "bbpd_bond_values.h"
 #include "bbpd_eps.h"
+#include "bbpd_history_blocks.h"
 #include "bbpd_lps.h"
 #include "bbpd_lps_history_row.h"
 #include "bbpd_pmb_rules.h"
@@ -15,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -262,7 +265,69 @@ TEST(HistoryRow, EpsPlasticRowReturnsToTheYieldSurfaceAndRepeats)
   }
   EXPECT_NEAR(std::sqrt(returned), std::sqrt(2.0 * f.c.psi0), 1e-12 * std::sqrt(2.0 * f.c.psi0));
   // the plastic extensions were written where the slots say, and nowhere else
-  for (int k = 0; k < row.n(); k++) EXPECT_NE(hist[2 * row.slot[k] + 1], 0.0);
-  EXPECT_EQ(hist[0], 0.0);
-  EXPECT_EQ(hist[1], 0.0);
+  for (int k = 0; k < row.n(); k++) EXPECT_NE(BBPD::history_value<2>(hist.data(), row.slot[k], 1), 0.0);
+  EXPECT_EQ(BBPD::history_value<2>(hist.data(), 0, 0), 0.0);    // slot 0 holds no bond
+  EXPECT_EQ(BBPD::history_value<2>(hist.data(), 0, 1), 0.0);
+}
+
+// the blocks of bbpd_history_blocks.h: every value of every slot a place of its own within the
+// row's length, 4 consecutive slots' value v side by side, and the pairs of a restart file
+// back as they were
+TEST(HistoryBlocks, EachValueHasItsOwnPlaceAndPairsComeBack)
+{
+  for (int n = 0; n <= 13; n++) {
+    const int len = BBPD::history_length(2, n);
+    EXPECT_EQ(len % (2 * BBPD::HISTORY_BLOCK), 0);
+    EXPECT_GE(len, 2 * n);
+    EXPECT_LT(len, 2 * (n + BBPD::HISTORY_BLOCK));
+    std::vector<int> seen(len, 0);
+    for (int m = 0; m < n; m++)
+      for (int v = 0; v < 2; v++) {
+        const int at = BBPD::history_offset<2>(m, v);
+        ASSERT_GE(at, 0);
+        ASSERT_LT(at, len);
+        seen[at]++;
+      }
+    for (int x = 0; x < len; x++) EXPECT_LE(seen[x], 1);
+    std::vector<double> pairs(2 * n), blocks(len, -1.0), back(2 * n);
+    for (int x = 0; x < 2 * n; x++) pairs[x] = 1.0 + x;
+    BBPD::history_from_pairs(2, n, pairs.data(), blocks.data());
+    BBPD::history_to_pairs(2, n, blocks.data(), back.data());
+    EXPECT_EQ(back, pairs);
+    for (int x = 0; x < len; x++) {    // the slots past n are zero, not left as they were
+      if (!seen[x]) {
+        EXPECT_EQ(blocks[x], 0.0);
+      }
+    }
+  }
+  // slots 4..7: value 0 at 8..11, value 1 at 12..15 (one 4-wide load each)
+  for (int m = 4; m < 8; m++) {
+    EXPECT_EQ(BBPD::history_offset<2>(m, 0), 8 + m - 4);
+    EXPECT_EQ(BBPD::history_offset<2>(m, 1), 12 + m - 4);
+  }
+  EXPECT_EQ(BBPD::history_offset<3>(5, 2), 4 * (3 + 2) + 1);
+}
+
+// bbpd_bond_slots.h: rows that lost no partner read 0, 1, 2, ... and store nothing; a row with
+// slots of its own keeps them where they are when it loses more
+TEST(BondSlots, OnlyRowsWithLostPartnersKeepSlots)
+{
+  BBPD::BondSlots slots;
+  slots.reset(3, 6);
+  const double none = slots.bytes();
+  for (int i = 0; i < 3; i++) {
+    EXPECT_TRUE(slots.dense(i));
+    for (int k = 0; k < 6; k++) EXPECT_EQ(slots.of(i)[k], k);
+  }
+  int *own = slots.own(1, 4);    // row 1 lost partner 2 of 0..4
+  const int lost2[4] = {0, 1, 3, 4};
+  std::copy(lost2, lost2 + 4, own);
+  EXPECT_FALSE(slots.dense(1));
+  EXPECT_TRUE(slots.dense(0));
+  EXPECT_GT(slots.bytes(), none);
+  for (int k = 0; k < 4; k++) EXPECT_EQ(slots.of(1)[k], lost2[k]);
+  for (int k = 0; k < 6; k++) EXPECT_EQ(slots.of(2)[k], k);
+  EXPECT_EQ(slots.own(1, 3), slots.of(1));    // fewer bonds: the same place
+  slots.reset(3, 6);
+  EXPECT_TRUE(slots.dense(1));
 }
