@@ -152,6 +152,7 @@ class PairBBPDLPS : public PairBBPD {
   template <int EVFLAG, class F> struct HistoryRow;
   template <class F> F family_of(int i) const;
   BBPD::VES::Family ves_of_type(int itype) const;
+  std::vector<BBPD::VES::Family> ves_types;    // VES: ves_of_type of every type, this step
   std::array<int, 2> history_widths() const;    // VES, EPS: doubles per atom, per bond end
   void fit_history();    // VES, EPS: a row of fix bbpd/history per local atom
   // the force row of local atom i of a family with history on the current path, with

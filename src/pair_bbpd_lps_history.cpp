@@ -39,9 +39,10 @@ BBPD::VES::Family PairBBPDLPS::ves_of_type(int t) const
                             update->dt)};
 }
 
+// from ves_types, which eval_history fills once per step (an exp per type, not per row)
 template <> BBPD::VES::Family PairBBPDLPS::family_of<BBPD::VES::Family>(int i) const
 {
-  return ves_of_type(atom->type[i]);
+  return ves_types[atom->type[i]];
 }
 
 template <> BBPD::EPS::Family PairBBPDLPS::family_of<BBPD::EPS::Family>(int i) const
@@ -378,6 +379,10 @@ template <int EVFLAG, class F> void PairBBPDLPS::eval_history()
   }
   const bool replay = begin_state();
   find_bond_slots();
+  if constexpr (std::is_same_v<F, BBPD::VES::Family>) {
+    ves_types.resize(atom->ntypes + 1);
+    for (int t = 1; t <= atom->ntypes; t++) ves_types[t] = ves_of_type(t);
+  }
   const bool canonical = bonds->raw_positions();
   const BBPD::SillingAskariCoefficients rule = breaking_rule();
   const double margin = stretch_margin();

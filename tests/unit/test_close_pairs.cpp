@@ -167,3 +167,21 @@ TEST(ClosePairs, ABodyMovingAsAWholeKeepsItsCandidates)
   for (int i = 0; i < n / 2; i++) x[3 * i + 1] += SHIFT;
   EXPECT_FALSE(cp.current(x.data(), n, n));
 }
+
+TEST(ClosePairs, AGhostThatMovesHalfTheSkinMakesTheCandidatesStale)
+{
+  // the last 7 atoms are ghosts; each in turn (in a block of 4 atoms of the bounding-box pass or
+  // in its tail) moves 1.0 or 0.8 skins along z while the rest stays: it is then half that from
+  // the centre of the displacements' box, beyond or within current()'s sqrt(0.2) skins
+  const std::vector<double> x0 = block();
+  const int nall = static_cast<int>(x0.size() / 3) - 1, nlocal = nall - 7;    // 215: a tail of 3
+  for (int g = nlocal; g < nall; g++) {
+    BBPD::ClosePairs cp;
+    ASSERT_TRUE(cp.build(x0.data(), nlocal, nall, D, SKIN, [](int, int) { return D; }));
+    std::vector<double> x = x0;
+    x[3 * g + 2] += 1.0 * SKIN;
+    EXPECT_FALSE(cp.current(x.data(), nlocal, nall)) << "ghost " << g;
+    x[3 * g + 2] = x0[3 * g + 2] + 0.8 * SKIN;
+    EXPECT_TRUE(cp.current(x.data(), nlocal, nall)) << "ghost " << g;
+  }
+}
