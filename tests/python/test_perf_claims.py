@@ -172,3 +172,17 @@ def test_the_cylinder_lines_of_doc_performance_follow_the_csv(csv_path):
     text = " ".join((perf.ROOT / "doc" / "performance.md").read_text().split())
     verdict = "not the 10x" if ratio < 10 else "past the 10x"
     assert f"Against `peri/lps` ours is {ratio:.1f}x here, {verdict}" in text
+
+
+def test_the_ves_eps_run_of_doc_performance_follows_its_csv():
+    """doc/performance.md's run of VES and EPS alone on the AMD EPYC Zen 4: its rounds and the
+    ratios ours / bpm/peri of the minima (perf/results/zen4-vs-bpm-ves-eps.csv)"""
+    import csv
+    path = perf.RESULTS / "zen4-vs-bpm-ves-eps.csv"
+    rows = list(csv.DictReader(open(path, newline="")))
+    rounds = {r["round"] for r in rows}
+    best = _minima(path, lambda r: (r["model"], r["variant"]))
+    ratio = {m: best[(m, "bpm")] / best[(m, "ours")] for m in ("ves", "eps")}
+    text = " ".join((perf.ROOT / "doc" / "performance.md").read_text().split())
+    assert (f"(`perf/results/zen4-vs-bpm-ves-eps.csv`, {len(rounds)} rounds, 12:40 UTC): "
+            f"VES {ratio['ves']:.1f}x, EPS {ratio['eps']:.1f}x.") in text
