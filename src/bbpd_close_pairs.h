@@ -207,9 +207,6 @@ class ClosePairs {
   double moved = 0.0;              // the largest displacement from the centre (current)
   std::vector<double> near_sq;     // per local atom: its squared displacement from its region's centre
 
-  // the displacements near each atom at 'now': per region, the box holding those of the atoms
-  // in it and in the regions next to it, its centre and half diagonal; per local atom, its
-  // squared distance from its region's centre
   // |u_i - c|^2, u_i atom i's displacement since the search
   static double moved_from(const double *xx, const double *hold, int i, const double *c)
   {
@@ -253,6 +250,9 @@ class ClosePairs {
       c[m] = nall > 0 ? 0.5 * (a + b) : 0.0;
     }
   }
+  // the displacements near each atom at 'now': per region, the box holding those of the atoms
+  // in it and in the regions next to it, its centre and half diagonal; per local atom, its
+  // squared distance from its region's centre
   void near_bound()
   {
     const int nall = static_cast<int>(region_of.size()), nlocal = static_cast<int>(moved_sq.size());

@@ -8,7 +8,7 @@
    A row that lost no partner (dense_slots, bbpd_lps_history_lanes.h) so reads and writes a
    value of 4 consecutive bonds with one 4-wide load or store. With the pairs side by side
    (the layout of restart files, history_to_pairs) each value took two shuffles each way: the
-   AVX2 VES kernel ran 256 instructions per 8 bonds on the bpm/peri deck (callgrind), 234 with
+   AVX2 VES kernel ran 256 instructions per 8 bonds on the bpm/peri deck (callgrind), 235 with
    blocks. A row holds whole blocks: at most HISTORY_BLOCK - 1 slots more than its bonds.
 ------------------------------------------------------------------------- */
 
@@ -19,10 +19,14 @@ namespace BBPD {
 
 constexpr int HISTORY_BLOCK = 4;    // slots per block: the AVX2 kernels' group of bonds
 
-// the place of value v of slot m (m >= 0), B values per slot
+// the place of value v of slot m (m >= 0), b values per slot
+constexpr int history_offset(int b, int m, int v)
+{
+  return HISTORY_BLOCK * (b * (m / HISTORY_BLOCK) + v) + m % HISTORY_BLOCK;
+}
 template <int B> constexpr int history_offset(int m, int v)
 {
-  return HISTORY_BLOCK * (B * (m / HISTORY_BLOCK) + v) + m % HISTORY_BLOCK;
+  return history_offset(B, m, v);
 }
 
 // value v of slot m of a row's bond history hist
@@ -45,7 +49,7 @@ inline void history_from_pairs(int b, int nslots, const double *pairs, double *b
   for (int x = 0; x < len; x++) blocks[x] = 0.0;
   for (int m = 0; m < nslots; m++)
     for (int v = 0; v < b; v++)
-      blocks[HISTORY_BLOCK * (b * (m / HISTORY_BLOCK) + v) + m % HISTORY_BLOCK] = pairs[b * m + v];
+      blocks[history_offset(b, m, v)] = pairs[b * m + v];
 }
 
 // the blocks' nslots slots as pairs side by side (b nslots doubles)
@@ -53,7 +57,7 @@ inline void history_to_pairs(int b, int nslots, const double *blocks, double *pa
 {
   for (int m = 0; m < nslots; m++)
     for (int v = 0; v < b; v++)
-      pairs[b * m + v] = blocks[HISTORY_BLOCK * (b * (m / HISTORY_BLOCK) + v) + m % HISTORY_BLOCK];
+      pairs[b * m + v] = blocks[history_offset(b, m, v)];
 }
 
 }    // namespace BBPD

@@ -130,7 +130,8 @@ class PairBBPD : public Pair {
     return {fracture_any != 0, spacing, dt_bound, dt_safety};
   }
   void send_run_limits();    // to the bond fix and the watchdog
-  class Fix *own_fix(const char *id, const char *fix_style, const std::string &args = "");    // the style's internal fixes
+  // the style's internal fixes (args: the fix's own arguments)
+  class Fix *own_fix(const char *id, const char *fix_style, const std::string &args = "");
   void release_fix(const void *owned, const char *id);
   void allocate();
   void compute_contact();

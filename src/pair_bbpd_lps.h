@@ -147,6 +147,7 @@ class PairBBPDLPS : public PairBBPD {
   void find_bond_slots();
   bool row_dense(int i) const;    // the intact bonds of row i in partner slots 0 .. nbond - 1
   int find_row_slots(int i);
+  int intact_slots(int i, int *s) const;
   double slot_bytes_when_found() const;
   template <int EVFLAG, class F> void eval_history();
   template <int EVFLAG, class F> struct HistoryRow;

@@ -129,7 +129,13 @@ int PairBBPDLPS::find_row_slots(int i)
 {
   const int n = bonds->nbond[i];
   if (bond_slots.dense(i) && row_dense(i)) return n;
-  int *s = bond_slots.own(i, n);
+  return intact_slots(i, bond_slots.own(i, n));
+}
+
+// the partner slots of the intact bonds of local atom i, in order, into s; how many
+int PairBBPDLPS::intact_slots(int i, int *s) const
+{
+  const int n = bonds->nbond[i];
   int found = 0;
   for (int m = 0; m < bonds->npartner[i] && found < n; m++)
     if (bonds->partner[i][m] > 0) s[found++] = m;
@@ -358,11 +364,8 @@ template <int EVFLAG, class F> struct PairBBPDLPS::HistoryRow : PairBBPDLPS::Row
       return;
     }
     if (p.row_dense(i)) return;    // the bonds it lost were its last
-    const int n = p.bonds->nbond[i];
-    new_slots.resize(n);
-    int found = 0;
-    for (int m = 0; m < p.bonds->npartner[i] && found < n; m++)
-      if (p.bonds->partner[i][m] > 0) new_slots[found++] = m;
+    new_slots.resize(p.bonds->nbond[i]);
+    p.intact_slots(i, new_slots.data());
     slot = new_slots.data();
     const std::lock_guard<std::mutex> lock(p.rows_to_own_mutex);
     p.rows_to_own.push_back(i);
