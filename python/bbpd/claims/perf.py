@@ -163,6 +163,32 @@ VS_BPM_FILES = (RESULTS / "spr-vs-bpm.csv", RESULTS / "zen4-vs-bpm.csv")
 BPM_MODELS = ("pmb", "lps", "ves", "eps")
 
 
+# the runs of the deck on one CPU that a verdict on the issue's targets takes together
+ZEN4_VS_BPM_RUNS = (RESULTS / "zen4-vs-bpm.csv", RESULTS / "zen4-vs-bpm-repeat.csv")
+# the targets ours / bpm/peri on the deck, per rank count, that a LAMMPS user compares with
+BPM_TARGETS = {1: 4.0, 2: 3.0}
+
+
+def deck_ratios(path):
+    """ours / bpm/peri of the minimum loop times of one run, per (ranks, model)"""
+    best = {}
+    for r in _rows(path):
+        key = (int(r["ranks"]), r["model"], r["variant"])
+        best[key] = min(best.get(key, float(r["loop_s"])), float(r["loop_s"]))
+    return {(n, m): best[(n, m, "bpm")] / best[(n, m, "ours")] for n, m, v in best if v == "ours"}
+
+
+def deck_verdict(paths, ranks):
+    """per model, whether every run reaches the target of this rank count ('reached'), none
+    does ('not reached') or the runs disagree ('not settled')"""
+    runs = [deck_ratios(p) for p in paths]
+    out = {}
+    for model in BPM_MODELS:
+        hits = [run[(ranks, model)] >= BPM_TARGETS[ranks] for run in runs]
+        out[model] = "reached" if all(hits) else "not reached" if not any(hits) else "not settled"
+    return out
+
+
 def vs_bpm(data):
     """doc/performance.md's table of perf/vs_bpm.py: per CPU, rank count and model the minimum
     loop time of each variant over the rounds, and the ratios of peri/* and bpm/peri to ours."""
