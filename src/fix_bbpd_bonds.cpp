@@ -280,8 +280,12 @@ void FixBBPDBonds::build_families()
   int *type = atom->type;
   const int nlocal = atom->nlocal;
 
+  // positions read as flat arrays (LAMMPS allocates them contiguous): a partner's position is
+  // then one load away, not two (its row pointer first)
+  const double *xf = nlocal ? x[0] : nullptr, *x0f = nlocal ? x0[0] : nullptr;
   auto in_family = [&](int i, int j) {
-    const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
+    const double dx = xf[3 * j] - xf[3 * i], dy = xf[3 * j + 1] - xf[3 * i + 1],
+                 dz = xf[3 * j + 2] - xf[3 * i + 2];
     return law.bonded(type[i], type[j], dx * dx + dy * dy + dz * dz);
   };
 
@@ -356,12 +360,19 @@ void FixBBPDBonds::build_families()
     BBPD::FamilyOrder<tagint> order;
     std::vector<tagint> tags;
     for (int i = 0; i < nlocal; i++) {
-      family.clear();
+      // entries written in place: an entry built aside and copied in was read back whole from
+      // its scalar stores (a stalled store forwarding per partner, 19 % of this function)
+      family.resize(npartner[i]);
       for (int k = 0; k < npartner[i]; k++) {
         const int j = partner[i][k];
-        double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+        double d[3] = {x0f[3 * j] - x0f[3 * i], x0f[3 * j + 1] - x0f[3 * i + 1],
+                       x0f[3 * j + 2] - x0f[3 * i + 2]};
         if (periodic) BBPDCompat::minimum_image(domain, d);
-        family.push_back({d[2], d[1], d[0], tag[j]});
+        BBPD::FamilyEntry<tagint> &e = family[k];
+        e.z = d[2];
+        e.y = d[1];
+        e.x = d[0];
+        e.tag = tag[j];
       }
       order.sort(family, law.spacing);
       for (int k = 0; k < npartner[i]; k++) partner[i][k] = family[k].tag;
@@ -454,8 +465,9 @@ void FixBBPDBonds::refresh_cache()
   }
   classes.clear();
 
-  double **x0 = atom->x0;
   double **x = atom->x;
+  // as in build_families: the reference positions as one flat array
+  const double *x0f = nlocal ? atom->x0[0] : nullptr;
   double *vfrac = atom->vfrac;
   int *type = atom->type;
   tagint *tag = atom->tag;
@@ -501,7 +513,8 @@ void FixBBPDBonds::refresh_cache()
                    "'comm_modify cutoff' (at least horizon + maximum bond elongation)", t, tag[i],
                    update->ntimestep, update->dt, limits.stable_timestep);
       if (periodic) j = domain->closest_image(x[i], j);
-      double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+      double d[3] = {x0f[3 * j] - x0f[3 * i], x0f[3 * j + 1] - x0f[3 * i + 1],
+                     x0f[3 * j + 2] - x0f[3 * i + 2]};
       if (periodic) BBPDCompat::minimum_image(domain, d);
       const double xi = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
       if (xi <= 0.0)
