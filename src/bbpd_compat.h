@@ -10,6 +10,8 @@
 
 #include "domain.h"
 
+#include <string>
+
 namespace LAMMPS_NS {
 namespace BBPDCompat {
 
@@ -18,7 +20,10 @@ namespace BBPDCompat {
   auto minimum_image_impl(D *domain, double *delta, int)
       -> decltype(domain->minimum_image(__FILE__, __LINE__, delta), void())
   {
-    domain->minimum_image(__FILE__, __LINE__, delta);
+    // the file name made a std::string once, not at every call (a heap allocation per bond end
+    // when the families and the bond cache are built in a periodic box)
+    static const std::string here(__FILE__);
+    domain->minimum_image(here, __LINE__, delta);
   }
   template <class D> void minimum_image_impl(D *domain, double *delta, long)
   {
