@@ -35,6 +35,17 @@
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
+
+namespace {
+// the offset x_j - x_i of atoms i and j in a flat array of positions (LAMMPS allocates its
+// per-atom vectors contiguous: a component is one load away, not a row pointer and then it);
+// the families, the bond cache and xi0_of take the reference offsets here, with the same bits
+inline void offset_of(const double *xf, int i, int j, double *d)
+{
+  for (int m = 0; m < 3; m++) d[m] = xf[3 * j + m] - xf[3 * i + m];
+}
+}    // namespace
+
 using MathConst::MY_PI;
 
 // LAMMPS's default page size is 100 x its default 'neigh_modify one' (neighbor.cpp); the family
@@ -280,13 +291,11 @@ void FixBBPDBonds::build_families()
   int *type = atom->type;
   const int nlocal = atom->nlocal;
 
-  // positions read as flat arrays (LAMMPS allocates them contiguous): a partner's position is
-  // then one load away, not two (its row pointer first)
   const double *xf = nlocal ? x[0] : nullptr, *x0f = nlocal ? x0[0] : nullptr;
   auto in_family = [&](int i, int j) {
-    const double dx = xf[3 * j] - xf[3 * i], dy = xf[3 * j + 1] - xf[3 * i + 1],
-                 dz = xf[3 * j + 2] - xf[3 * i + 2];
-    return law.bonded(type[i], type[j], dx * dx + dy * dy + dz * dz);
+    double d[3];
+    offset_of(xf, i, j, d);
+    return law.bonded(type[i], type[j], d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
   };
 
   // the list is half (each pair of local atoms once, a local-ghost pair at its local atom): a
@@ -365,8 +374,8 @@ void FixBBPDBonds::build_families()
       family.resize(npartner[i]);
       for (int k = 0; k < npartner[i]; k++) {
         const int j = partner[i][k];
-        double d[3] = {x0f[3 * j] - x0f[3 * i], x0f[3 * j + 1] - x0f[3 * i + 1],
-                       x0f[3 * j + 2] - x0f[3 * i + 2]};
+        double d[3];
+        offset_of(x0f, i, j, d);
         if (periodic) BBPDCompat::minimum_image(domain, d);
         BBPD::FamilyEntry<tagint> &e = family[k];
         e.z = d[2];
@@ -466,7 +475,6 @@ void FixBBPDBonds::refresh_cache()
   classes.clear();
 
   double **x = atom->x;
-  // as in build_families: the reference positions as one flat array
   const double *x0f = nlocal ? atom->x0[0] : nullptr;
   double *vfrac = atom->vfrac;
   int *type = atom->type;
@@ -513,8 +521,8 @@ void FixBBPDBonds::refresh_cache()
                    "'comm_modify cutoff' (at least horizon + maximum bond elongation)", t, tag[i],
                    update->ntimestep, update->dt, limits.stable_timestep);
       if (periodic) j = domain->closest_image(x[i], j);
-      double d[3] = {x0f[3 * j] - x0f[3 * i], x0f[3 * j + 1] - x0f[3 * i + 1],
-                     x0f[3 * j + 2] - x0f[3 * i + 2]};
+      double d[3];
+      offset_of(x0f, i, j, d);
       if (periodic) BBPDCompat::minimum_image(domain, d);
       const double xi = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
       if (xi <= 0.0)
@@ -680,9 +688,8 @@ double FixBBPDBonds::xi0_of(int i, int k) const
 {
   if (bclass) return classes.xi0(bclass[k]);
   if (bxi0) return bxi0[k];
-  double **x0 = atom->x0;
-  const int j = partner_of(i, k);
-  double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+  double d[3];
+  offset_of(atom->x0[0], i, partner_of(i, k), d);
   return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 

@@ -169,12 +169,18 @@ ZEN4_VS_BPM_RUNS = (RESULTS / "zen4-vs-bpm.csv", RESULTS / "zen4-vs-bpm-repeat.c
 BPM_TARGETS = {1: 4.0, 2: 3.0}
 
 
-def deck_ratios(path):
-    """ours / bpm/peri of the minimum loop times of one run, per (ranks, model)"""
+def loop_minima(rows):
+    """the minimum loop time over the rounds of a perf/vs_bpm.py CSV, per (ranks, model, variant)"""
     best = {}
-    for r in _rows(path):
+    for r in rows:
         key = (int(r["ranks"]), r["model"], r["variant"])
         best[key] = min(best.get(key, float(r["loop_s"])), float(r["loop_s"]))
+    return best
+
+
+def deck_ratios(path):
+    """ours / bpm/peri of the minimum loop times of one run, per (ranks, model)"""
+    best = loop_minima(_rows(path))
     return {(n, m): best[(n, m, "bpm")] / best[(n, m, "ours")] for n, m, v in best if v == "ours"}
 
 
@@ -200,13 +206,10 @@ def vs_bpm(data):
         paths = sorted({r["path"] for r in rows if r["variant"] == "ours" and r["model"] == "pmb"})
         where = (f"{r0['cpu']} (family {r0['family']} model {r0['cpu_model']}), "
                  f"pmb: {'/'.join(paths)}, {r0['date'][:10]}, load {_loads(rows)}")
+        minima = loop_minima(rows)
         for ranks in sorted({int(r["ranks"]) for r in rows}):
             for model in BPM_MODELS:
-                best = {}
-                for r in rows:
-                    if int(r["ranks"]) == ranks and r["model"] == model:
-                        t = float(r["loop_s"])
-                        best[r["variant"]] = min(best.get(r["variant"], t), t)
+                best = {v: t for (n, m, v), t in minima.items() if (n, m) == (ranks, model)}
                 if not best:
                     continue
                 out.append([where, ranks, model]
