@@ -203,7 +203,7 @@ def test_the_ves_eps_run_of_doc_performance_follows_its_csv():
 
 def test_the_verdict_of_doc_performance_takes_every_zen4_run_of_the_deck():
     """doc/performance.md's verdict on the issue's targets on the AMD EPYC Zen 4 follows
-    deck_verdict over both runs of the deck; a model reached in one run and missed in the other
+    deck_verdict over every run of the deck; a model reached in one run and missed in another
     is not settled"""
     text = " ".join((perf.ROOT / "doc" / "performance.md").read_text().split())
     for ranks, where in ((1, "one rank"), (2, "two ranks")):
@@ -216,11 +216,38 @@ def test_the_verdict_of_doc_performance_takes_every_zen4_run_of_the_deck():
             if models:
                 parts.append(f"{lead} {', '.join(models)}")
         assert said + "; ".join(parts) + "." in text, (ranks, verdict)
-    # the repeat run's ratios as the doc gives them
-    ratio = perf.deck_ratios(perf.ZEN4_VS_BPM_RUNS[1])
-    one = ", ".join(f"{m.upper()} {ratio[(1, m)]:.1f}x" for m in perf.BPM_MODELS)
-    two = ", ".join(f"{ratio[(2, m)]:.1f}x" for m in perf.BPM_MODELS)
-    assert f"on one rank {one}; on two ranks {two}." in text
+    # the later runs' ratios as the doc gives them
+    for path in perf.ZEN4_VS_BPM_RUNS[1:]:
+        ratio = perf.deck_ratios(path)
+        one = ", ".join(f"{m.upper()} {ratio[(1, m)]:.1f}x" for m in perf.BPM_MODELS)
+        two = ", ".join(f"{ratio[(2, m)]:.1f}x" for m in perf.BPM_MODELS)
+        assert f"on one rank {one}; on two ranks {two}." in text, path.name
+
+
+def test_the_round_ratios_of_doc_performance_follow_the_runs():
+    """the spread of the one-round ratios doc/performance.md gives for LPS (third run) and VES
+    (first run), one rank"""
+    text = " ".join((perf.ROOT / "doc" / "performance.md").read_text().split())
+    lps = perf.round_ratio_range(perf.ZEN4_VS_BPM_RUNS[2], 1, "lps")
+    ves = perf.round_ratio_range(perf.ZEN4_VS_BPM_RUNS[0], 1, "ves")
+    assert (f"LPS on one rank, went from {lps[0]:.2f}x to {lps[1]:.2f}x within the third run; "
+            f"VES from {ves[0]:.2f}x to {ves[1]:.2f}x within the first") in text
+
+
+def test_round_ratio_range_pairs_the_two_runs_of_each_round(tmp_path):
+    """a round's ratio is bpm/peri over ours of that round, whatever the other rounds hold"""
+    import csv
+    path = tmp_path / "run.csv"
+    with open(path, "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=["ranks", "round", "model", "variant", "loop_s"])
+        w.writeheader()
+        for rnd, bpm, ours in ((1, 2.0, 0.5), (2, 3.0, 1.0), (3, 1.0, 0.2)):
+            w.writerow({"ranks": 1, "round": rnd, "model": "lps", "variant": "bpm", "loop_s": bpm})
+            w.writerow({"ranks": 1, "round": rnd, "model": "lps", "variant": "ours", "loop_s": ours})
+            w.writerow({"ranks": 2, "round": rnd, "model": "lps", "variant": "ours", "loop_s": 9.0})
+            w.writerow({"ranks": 2, "round": rnd, "model": "lps", "variant": "bpm", "loop_s": 9.0})
+    assert perf.round_ratio_range(path, 1, "lps") == (3.0, 5.0)
+    assert perf.round_ratio_range(path, 2, "lps") == (1.0, 1.0)
 
 
 def test_deck_verdict_is_not_settled_when_the_runs_disagree(tmp_path):

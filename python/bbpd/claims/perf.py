@@ -164,7 +164,8 @@ BPM_MODELS = ("pmb", "lps", "ves", "eps")
 
 
 # the runs of the deck on one CPU that a verdict on the issue's targets takes together
-ZEN4_VS_BPM_RUNS = (RESULTS / "zen4-vs-bpm.csv", RESULTS / "zen4-vs-bpm-repeat.csv")
+ZEN4_VS_BPM_RUNS = (RESULTS / "zen4-vs-bpm.csv", RESULTS / "zen4-vs-bpm-repeat.csv",
+                    RESULTS / "zen4-vs-bpm-third.csv")
 # the targets ours / bpm/peri on the deck, per rank count, that a LAMMPS user compares with
 BPM_TARGETS = {1: 4.0, 2: 3.0}
 
@@ -182,6 +183,17 @@ def deck_ratios(path):
     """ours / bpm/peri of the minimum loop times of one run, per (ranks, model)"""
     best = loop_minima(_rows(path))
     return {(n, m): best[(n, m, "bpm")] / best[(n, m, "ours")] for n, m, v in best if v == "ours"}
+
+
+def round_ratio_range(path, ranks, model):
+    """the smallest and largest ours / bpm/peri of one round (the two runs of a round follow each
+    other), over the rounds of one run: how far the machine moves a ratio within a run"""
+    loops = {}
+    for r in _rows(path):
+        if int(r["ranks"]) == ranks and r["model"] == model and r["variant"] in ("bpm", "ours"):
+            loops.setdefault(int(r["round"]), {})[r["variant"]] = float(r["loop_s"])
+    ratios = [v["bpm"] / v["ours"] for v in loops.values()]
+    return min(ratios), max(ratios)
 
 
 def deck_verdict(paths, ranks):
