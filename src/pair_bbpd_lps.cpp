@@ -12,6 +12,7 @@
 #include "pair_bbpd_rows.h"
 
 #include "bbpd_eps.h"
+#include "bbpd_history_blocks.h"
 #include "bbpd_lps_kernel.h"
 #include "bbpd_ves.h"
 #include "bbpd_lps_lanes.h"
@@ -468,7 +469,13 @@ double PairBBPDLPS::dilatation_of(int i)
 
 /* seconds for the two passes of rows first..last-1 on path p (results discarded): the auto
    path's timing. The states are not there yet at the first setup: the force pass reads stand-in
-   states of the same layout (no dilatation, unit 1 / m), which cost what the real ones do. */
+   states of the same layout (no dilatation, unit 1 / m), which cost what the real ones do. The
+   passes run as a step runs them, the dilatation of every row and then the forces, and a
+   family's force pass rolls a scratch history row of each row: timed with both passes of a row
+   at once (its partners still in L1) and one small history for every row, the AVX-512 path of
+   the state-based rows took 0.83-1.13 of the AVX2 path's time on the bpm/peri deck (AMD EPYC
+   Zen 4, 9 setups) and was chosen in 2 of them, while its whole step was slower
+   (doc/performance.md); timed as the step runs, 1.03-1.14 in 18 setups. */
 double PairBBPDLPS::time_path(BBPD::SimdPath p, int first, int last)
 {
   const BBPD::SimdPath kept = simd_path;
@@ -479,11 +486,24 @@ double PairBBPDLPS::time_path(BBPD::SimdPath p, int first, int last)
   const double *xx = atom->x[0];
   BBPD::CoefCache *cache = thread_coef_cache();
   double sum = 0.0;
+  // the families' rows each read and write a history row of their own, as in a step
+  size_t hist_len = 0;
+  int widest = 0;
+  for (int i = first; i < last && family != Family::LPS; i++) {
+    hist_len += BBPD::history_length(2, bonds->nbond[i]);    // BOND_HISTORY of VES and EPS
+    widest = std::max(widest, bonds->nbond[i]);
+  }
+  probe_history.assign(hist_len, 0.0);
+  probe_slot.resize(widest);
+  for (int k = 0; k < widest; k++) probe_slot[k] = k;
+  double *hist = probe_history.data();
   const auto t0 = std::chrono::steady_clock::now();
+  // the two passes one after the other over the rows, as a step makes them
+  for (int i = first; i < last; i++) sum += dilatation_of(i);
   for (int i = first; i < last; i++) {
-    sum += dilatation_of(i);
     if (family != Family::LPS) {    // the family's own force rows (their history gathers)
-      sum += history_row_probe(i, states.data(), cache);
+      sum += history_row_probe(i, states.data(), cache, hist);
+      hist += BBPD::history_length(2, bonds->nbond[i]);
       continue;
     }
     const int n = bonds->nbond[i];
@@ -503,6 +523,7 @@ double PairBBPDLPS::time_path(BBPD::SimdPath p, int first, int last)
   const auto t1 = std::chrono::steady_clock::now();
   simd_path = kept;
   timing_sink = sum;    // kept, so that no loop is optimised away
+  std::vector<double>().swap(probe_history);
   return std::chrono::duration<double>(t1 - t0).count();
 }
 

@@ -158,8 +158,11 @@ class PairBBPDLPS : public PairBBPD {
   void fit_history();    // VES, EPS: a row of fix bbpd/history per local atom
   // the force row of local atom i of a family with history on the current path, with
   // stand-in states and a scratch history, nothing kept (time_path's probe); a force of it
-  double history_row_probe(int i, const BBPD::LPS::AtomState *states, BBPD::CoefCache *cache);
-  std::vector<double> probe_history;    // the probe's scratch history and slots
+  double history_row_probe(int i, const BBPD::LPS::AtomState *states, BBPD::CoefCache *cache,
+                           double *hist);
+  // the probe's scratch history, a row of it per timed row (so that the timing streams through
+  // as much history as the step does), and its slots
+  std::vector<double> probe_history;
   std::vector<int> probe_slot;
   double dilatation_of(int i);
   double time_path(BBPD::SimdPath p, int first, int last) override;

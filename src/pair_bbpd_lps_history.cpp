@@ -26,6 +26,7 @@
 #include "memory.h"
 #include "update.h"
 
+#include <limits>
 #include <type_traits>
 
 using namespace LAMMPS_NS;
@@ -53,41 +54,48 @@ template <> BBPD::EPS::Family PairBBPDLPS::family_of<BBPD::EPS::Family>(int i) c
            lps_state->weighted_volume[i]}};
 }
 
-double PairBBPDLPS::history_row_probe(int i, const LPS::AtomState *states, BBPD::CoefCache *cache)
+/* the force pass of a step's first evaluation of row i (VES: the force pass that rolls the
+   history; EPS: its norm and force pass in one), with the breaking test never reached, on the
+   pair style's path: the auto path's timing. hist: the row's own scratch history, which the
+   pass reads and writes as a step does its real one. */
+double PairBBPDLPS::history_row_probe(int i, const LPS::AtomState *states, BBPD::CoefCache *cache,
+                                      double *hist)
 {
   const int n = bonds->nbond[i];
-  if ((int) probe_slot.size() < n) {
-    probe_slot.resize(n);
-    for (int k = 0; k < n; k++) probe_slot[k] = k;
-    probe_history.assign(BBPD::history_length(2, n), 0.0);    // BOND_HISTORY of VES and EPS
-  }
   const int t = atom->type[i];
   const LPS::Moduli mod = moduli_of_type(t);
-  const LPS::HistoryCoefficients c{{mod.dilatational, mod.deviatoric, 0.0, 1.0, 0.0, 0.0, 0.0,
-                                    0.0, 0.0}, 0.0};
+  LPS::HistoryCoefficients c{{mod.dilatational, mod.deviatoric, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+                             0.0};
+  c.s0_floor = std::numeric_limits<double>::infinity();    // no bond is tested for breaking
   const double *xx = atom->x[0];
+  const int *slot = probe_slot.data();
   LPS::ForceLanes lanes;
-  double snew;
-  auto probe = [&](const auto &fam) {
-    using F = std::decay_t<decltype(fam)>;
-    static_assert(F::BOND_HISTORY == 2, "the probe's scratch history holds 2 doubles per bond end");
-    const typename F::Plan plan{};
-    bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
+  double snew, norm;
+  auto no_s0 = [](int) { return std::numeric_limits<double>::infinity(); };
+  bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
+    if (family == Family::VES) {
+      using F = BBPD::VES::Family;
+      static_assert(F::BOND_HISTORY == 2, "the probe's scratch history holds 2 doubles per bond end");
+      const F fam = ves_of_type(t);
       return BBPD::on_path(simd_path, [&](auto path) {
-        return decltype(path)::template lps_history_force<F, 0, 0, 0>(
-            xx, i, bj, vals, n, states, fam, plan, c, probe_slot.data(), probe_history.data(),
-            nullptr, &snew, lanes);
+        return decltype(path)::template lps_history_force<F, 0, 1, 1>(
+            xx, i, bj, vals, n, states, fam, F::Plan{}, c, slot, hist, nullptr, &snew, lanes);
       }, [&] {
-        return LPS::history_force_portable<F, 0, 0, 0>(
-            xx, i, bj, vals, n, states, fam, plan, c, probe_slot.data(), probe_history.data(),
-            [](int) { return 0.0; }, &snew, lanes);
+        return LPS::history_force_portable<F, 0, 1, 1>(xx, i, bj, vals, n, states, fam, F::Plan{},
+                                                       c, slot, hist, no_s0, &snew, lanes);
       });
+    }
+    using F = BBPD::EPS::Family;
+    static_assert(F::BOND_HISTORY == 2, "the probe's scratch history holds 2 doubles per bond end");
+    const F fam{{mod.deviatoric, 1.0, 1.0}};
+    return BBPD::on_path(simd_path, [&](auto path) {
+      return decltype(path)::template lps_history_norm_force<F, 0>(
+          xx, i, bj, vals, n, states, fam, c, slot, hist, nullptr, &snew, lanes, &norm);
+    }, [&] {
+      return LPS::history_norm_force_portable<F, 0>(xx, i, bj, vals, n, states, fam, c, slot, hist,
+                                                    no_s0, &snew, lanes, &norm);
     });
-  };
-  if (family == Family::VES)
-    probe(ves_of_type(t));
-  else
-    probe(BBPD::EPS::Family{{mod.deviatoric, 1.0, 1.0}});
+  });
   return lanes.fx[0];
 }
 
