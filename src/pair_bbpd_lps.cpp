@@ -490,7 +490,7 @@ double PairBBPDLPS::time_path(BBPD::SimdPath p, int first, int last)
   size_t hist_len = 0;
   int widest = 0;
   for (int i = first; i < last && family != Family::LPS; i++) {
-    hist_len += BBPD::history_length(2, bonds->nbond[i]);    // BOND_HISTORY of VES and EPS
+    hist_len += BBPD::history_length(PROBE_BOND_HISTORY, bonds->nbond[i]);
     widest = std::max(widest, bonds->nbond[i]);
   }
   probe_history.assign(hist_len, 0.0);
@@ -503,7 +503,7 @@ double PairBBPDLPS::time_path(BBPD::SimdPath p, int first, int last)
   for (int i = first; i < last; i++) {
     if (family != Family::LPS) {    // the family's own force rows (their history gathers)
       sum += history_row_probe(i, states.data(), cache, hist);
-      hist += BBPD::history_length(2, bonds->nbond[i]);
+      hist += BBPD::history_length(PROBE_BOND_HISTORY, bonds->nbond[i]);
       continue;
     }
     const int n = bonds->nbond[i];

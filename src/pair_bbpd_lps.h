@@ -164,6 +164,7 @@ class PairBBPDLPS : public PairBBPD {
   // as much history as the step does), and its slots
   std::vector<double> probe_history;
   std::vector<int> probe_slot;
+  static constexpr int PROBE_BOND_HISTORY = 2;    // BOND_HISTORY of VES and EPS (history_row_probe asserts it)
   double dilatation_of(int i);
   double time_path(BBPD::SimdPath p, int first, int last) override;
   template <int EVFLAG> void eval_lps();

@@ -75,7 +75,7 @@ double PairBBPDLPS::history_row_probe(int i, const LPS::AtomState *states, BBPD:
   bonds->visit_row(i, *cache, [&](const auto *bj, const auto &vals) {
     if (family == Family::VES) {
       using F = BBPD::VES::Family;
-      static_assert(F::BOND_HISTORY == 2, "the probe's scratch history holds 2 doubles per bond end");
+      static_assert(F::BOND_HISTORY == PROBE_BOND_HISTORY, "the probe's scratch history's width");
       const F fam = ves_of_type(t);
       return BBPD::on_path(simd_path, [&](auto path) {
         return decltype(path)::template lps_history_force<F, 0, 1, 1>(
@@ -86,7 +86,7 @@ double PairBBPDLPS::history_row_probe(int i, const LPS::AtomState *states, BBPD:
       });
     }
     using F = BBPD::EPS::Family;
-    static_assert(F::BOND_HISTORY == 2, "the probe's scratch history holds 2 doubles per bond end");
+    static_assert(F::BOND_HISTORY == PROBE_BOND_HISTORY, "the probe's scratch history's width");
     const F fam{{mod.deviatoric, 1.0, 1.0}};
     return BBPD::on_path(simd_path, [&](auto path) {
       return decltype(path)::template lps_history_norm_force<F, 0>(
