@@ -9,7 +9,9 @@ For each model (pmb, lps, ves, eps) three variants run in alternation, --rounds 
 rank count of --ranks:
   legacy  pair_style peri/MODEL           (the --anchor lmp if given, else ours: the same source)
   bpm     bond_style bpm/peri MODEL       (only with --anchor PATH, an lmp with the BPM package)
-  ours    pair_style bbpd/MODEL 3d         (tools/lmp with bbpdplugin.so)
+  ours    pair_style bbpd/MODEL 3d         (tools/lmp with bbpdplugin.so; the path auto chooses)
+  ours-P  pair_style bbpd/MODEL 3d simd P  (each path P of --forced, after ours in each round:
+                                            what auto's choice costs against each path forced)
 A model whose bbpd style this plugin lacks is left out of 'ours'. Before the timings, a check:
 the same block, free (boundary s s s, where peri/lps's weighted volume needs no minimum image),
 set moving by a smooth velocity field, 200 steps: pe and ke of ours and of peri/MODEL at steps 0
@@ -30,7 +32,8 @@ peri/lps's 0.0003): its timings there are printed, not comparable.
 
 Usage (from the repository root):
   tools/python perf/vs_bpm.py [--anchor ~/.cache/bbpd/bpm-anchor/build/lmp] [--rounds 3]
-      [--ranks 1 2] [--models pmb lps ves eps] [--scene deck|cylinder] [--csv perf/results/NAME.csv]
+      [--ranks 1 2] [--models pmb lps ves eps] [--scene deck|cylinder] [--forced avx2 avx512]
+      [--csv perf/results/NAME.csv]
 (the anchor is built by ../shared/anchors/bpm-peri/build.sh where that kit is at hand.)
 """
 import argparse
@@ -98,6 +101,13 @@ thermo {CYLINDER_STEPS}
 run {CYLINDER_STEPS}
 """
 DAMAGE = {"legacy": "damage/atom", "ours": "bbpd/damage/atom", "bpm": "bpm/peri/damage/atom"}
+# the paths of the simd keyword that --forced takes (bbpd_path_choice.h)
+FORCED_PATHS = ("portable", "avx2", "avx512")
+
+
+def is_ours(variant):
+    """ours with the path auto chooses ('ours') or with a forced path ('ours-avx2', ...)"""
+    return variant == "ours" or variant.startswith("ours-")
 # the thermo check: what ours and peri/* may differ by, relative to the run's largest value
 # (both sum the same bonds in other orders: round-off of ~1e-13 measured, see the docstring)
 CHECK_TOL = 1e-9
@@ -146,13 +156,14 @@ def deck(model, variant, check=False, cylinder=False):
                 "special_bonds lj 0.0 1.0 1.0 coul 1.0 1.0 1.0\n"
                 f"bond_style bpm/peri\nbond_coeff 1 {bpm_coeff(model, s00)}\n")
     else:
-        style = f"bbpd/{model} 3d" if variant == "ours" else f"peri/{model}"
-        text = (("plugin load bbpdplugin.so\n" if variant == "ours" else "") + "atom_style peri\n" + text +
+        forced = f" simd {variant[len('ours-'):]}" if variant.startswith("ours-") else ""
+        style = f"bbpd/{model} 3d{forced}" if is_ours(variant) else f"peri/{model}"
+        text = (("plugin load bbpdplugin.so\n" if is_ours(variant) else "") + "atom_style peri\n" + text +
                 f"{create}\n" + atoms +
                 f"pair_style {style}\npair_coeff * * {legacy_coeff(model, s00)}\n"
                 f"set group all density 2200\nset group all volume {VOLUME}\n")
     if cylinder:
-        return text + f"compute 1 all {DAMAGE[variant]}\n" + INDENTER
+        return text + f"compute 1 all {DAMAGE['ours' if is_ours(variant) else variant]}\n" + INDENTER
     text += MOTION if check else "velocity all set 0.0 0.0 0.0 units box\n"
     return text + RUN
 
@@ -239,6 +250,8 @@ def main():
     ap.add_argument("--models", nargs="+", choices=MODELS, default=list(MODELS))
     ap.add_argument("--scene", choices=("deck", "cylinder"), default="deck",
                     help="LAMMPS's benchmark deck, or the examples/peri cylinder (fracture)")
+    ap.add_argument("--forced", nargs="+", choices=FORCED_PATHS, default=[],
+                    help="also run ours with each of these paths forced (variants ours-PATH)")
     ap.add_argument("--csv", type=Path)
     args = ap.parse_args()
     cylinder = args.scene == "cylinder"
@@ -249,7 +262,7 @@ def main():
     machine = {"cpu": cpu_model(), "family": family, "cpu_model": model_no, "isa": build_isa()}
     print(f"CPU: {machine['cpu']} (family {family} model {model_no}); plugin paths: {machine['isa']}; "
           f"legacy and bpm: {legacy_exe}")
-    variants = ["legacy"] + (["bpm"] if args.anchor else []) + ["ours"]
+    variants = ["legacy"] + (["bpm"] if args.anchor else []) + ["ours"] + [f"ours-{p}" for p in args.forced]
     results = []
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
@@ -259,9 +272,9 @@ def main():
             for rnd in range(1, args.rounds + 1):
                 for model in args.models:
                     for variant in variants:
-                        if variant == "ours" and model not in ours_models:
+                        if is_ours(variant) and model not in ours_models:
                             continue
-                        exe = LMP if variant == "ours" else legacy_exe
+                        exe = LMP if is_ours(variant) else legacy_exe
                         before = load_average()
                         out = run(exe, deck(model, variant, cylinder=cylinder), ranks,
                                   tmp / f"{ranks}-{rnd}-{model}-{variant}")

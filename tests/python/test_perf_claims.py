@@ -272,3 +272,39 @@ def test_deck_verdict_is_not_settled_when_the_runs_disagree(tmp_path):
     assert perf.deck_verdict((fast, fast), 1)["lps"] == "reached"
     assert perf.deck_verdict((fast, slow), 1)["lps"] == "not settled"
     assert perf.deck_verdict((slow, slower), 1)["lps"] == "not reached"
+
+
+def test_forced_paths_takes_each_paths_minimum_and_counts_autos_choices(tmp_path):
+    """ours with auto's path and with each forced path, minimum over the rounds; the rounds in
+    which auto chose each path; bpm/peri, legacy and other rank counts left out"""
+    import csv
+    path = tmp_path / "run.csv"
+    with open(path, "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=["ranks", "round", "model", "variant", "loop_s", "path"])
+        w.writeheader()
+        for rnd, (auto, chose, avx2, avx512) in enumerate(((0.5, "avx2", 0.45, 0.6), (0.7, "avx512", 0.55, 0.52),
+                                                           (0.4, "avx2", 0.47, 0.58)), 1):
+            for variant, loop, p in (("ours", auto, chose), ("ours-avx2", avx2, "avx2"),
+                                     ("ours-avx512", avx512, "avx512"), ("bpm", 0.1, "")):
+                w.writerow({"ranks": 1, "round": rnd, "model": "lps", "variant": variant, "loop_s": loop, "path": p})
+            w.writerow({"ranks": 2, "round": rnd, "model": "lps", "variant": "ours", "loop_s": 0.01, "path": "avx512"})
+    got = perf.forced_paths(path, 1)
+    assert got == {"lps": {"auto": 0.4, "avx2": 0.45, "avx512": 0.52, "chosen": {"avx2": 2, "avx512": 1}}}
+    assert perf.forced_paths(path, 2)["lps"]["chosen"] == {"avx512": 3}
+
+
+def test_the_forced_paths_lines_of_doc_performance_follow_the_fifth_run():
+    """doc/performance.md on the fifth run: the rounds in which auto chose AVX2 (all of them),
+    AVX2 forced faster than AVX-512 forced for every model on one rank, and the largest gap
+    between auto's minimum and AVX2 forced's, the same path"""
+    import re
+    text = " ".join((perf.ROOT / "doc" / "performance.md").read_text().split())
+    runs = {n: perf.forced_paths(perf.FORCED_RUN, n) for n in (1, 2)}
+    chosen = [t["chosen"] for run in runs.values() for t in run.values()]
+    total = sum(sum(c.values()) for c in chosen)
+    assert all(set(c) == {"avx2"} for c in chosen)
+    assert f"`auto` chose AVX2 in all {total} of its rounds of ours" in text
+    assert all(t["avx2"] < t["avx512"] for t in runs[1].values())
+    gap = max(abs(t["auto"] / t["avx2"] - 1.0) for run in runs.values() for t in run.values())
+    said = re.search(r"their minima differ by up to (\d+) %", text)
+    assert int(said.group(1)) == round(100 * gap)

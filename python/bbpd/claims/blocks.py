@@ -39,5 +39,5 @@ BLOCKS = {
                   "zen5-floor": lambda data: perf.floor_table("zen5"),
                   "spr-simd": lambda data: perf.simd_table("spr"),
                   "spr-floor": lambda data: perf.floor_table("spr"), "vs-bpm": perf.vs_bpm,
-                  "vs-bpm-cylinder": perf.vs_bpm_cylinder},
+                  "vs-bpm-cylinder": perf.vs_bpm_cylinder, "vs-bpm-forced": perf.forced_table},
 }

@@ -165,7 +165,8 @@ BPM_MODELS = ("pmb", "lps", "ves", "eps")
 
 # the runs of the deck on one CPU that a verdict on the issue's targets takes together
 ZEN4_VS_BPM_RUNS = (RESULTS / "zen4-vs-bpm.csv", RESULTS / "zen4-vs-bpm-repeat.csv",
-                    RESULTS / "zen4-vs-bpm-third.csv", RESULTS / "zen4-vs-bpm-fourth.csv")
+                    RESULTS / "zen4-vs-bpm-third.csv", RESULTS / "zen4-vs-bpm-fourth.csv",
+                    RESULTS / "zen4-vs-bpm-fifth.csv")
 # the targets ours / bpm/peri on the deck, per rank count, that a LAMMPS user compares with
 BPM_TARGETS = {1: 4.0, 2: 3.0}
 
@@ -231,6 +232,48 @@ def vs_bpm(data):
                 where = ""
     return md_table(["CPU, path, load", "ranks", "model", "`peri/*` (s)", "`bpm/peri` (s)", "ours (s)",
                      "`peri/*` / ours", "`bpm/peri` / ours"], out)
+
+
+# the deck with each path forced beside auto's (perf/vs_bpm.py --forced avx2 avx512)
+FORCED_RUN = RESULTS / "zen4-vs-bpm-fifth.csv"
+
+
+def forced_paths(path, ranks):
+    """per model of a perf/vs_bpm.py --forced run on this rank count: the minimum loop time over
+    the rounds of ours with the path auto chose ('auto') and with each forced path, and how
+    many rounds auto chose each path ('chosen')"""
+    rows = [r for r in _rows(path) if int(r["ranks"]) == ranks and r["variant"].startswith("ours")]
+    out = {}
+    for model in BPM_MODELS:
+        mine = [r for r in rows if r["model"] == model]
+        if not mine:
+            continue
+        best = {}
+        for r in mine:
+            name = "auto" if r["variant"] == "ours" else r["variant"][len("ours-"):]
+            best[name] = min(best.get(name, float(r["loop_s"])), float(r["loop_s"]))
+        chosen = {}
+        for r in mine:
+            if r["variant"] == "ours":
+                chosen[r["path"]] = chosen.get(r["path"], 0) + 1
+        out[model] = dict(best, chosen=chosen)
+    return out
+
+
+def forced_table(data):
+    """doc/performance.md's table of auto against the forced paths on the deck (FORCED_RUN)"""
+    rows = _rows(FORCED_RUN)
+    out = []
+    for ranks in sorted({int(r["ranks"]) for r in rows}):
+        for model, t in forced_paths(FORCED_RUN, ranks).items():
+            forced = {p: v for p, v in t.items() if p not in ("auto", "chosen")}
+            fastest = min(forced, key=forced.get)
+            out.append([ranks, model, f"{t['auto']:.3f}"] + [f"{forced[p]:.3f}" for p in sorted(forced)]
+                       + [fastest, f"{t['auto'] / forced[fastest]:.2f}",
+                          ", ".join(f"{p} {n}" for p, n in sorted(t["chosen"].items()))])
+    paths = sorted({r["variant"][len("ours-"):] for r in rows if r["variant"].startswith("ours-")})
+    return md_table(["ranks", "model", "auto (s)"] + [f"{p} forced (s)" for p in paths]
+                    + ["fastest forced", "auto / fastest forced", "rounds auto chose"], out)
 
 
 # LAMMPS's examples/peri cylinder for each model (perf/vs_bpm.py --scene cylinder --csv)
