@@ -22,6 +22,15 @@ def test_row_floor_patch_applies_to_the_kernel():
     assert r.returncode == 0, f"update perf/probes/row_floor.patch: {r.stderr}"
 
 
+@pytest.mark.skipif(shutil.which("git") is None or not (ROOT / ".git").exists(),
+                    reason="needs git and a clone")
+@pytest.mark.parametrize("patch", sorted((ROOT / "perf" / "probes").glob("*.patch")), ids=lambda p: p.name)
+def test_every_probe_patch_applies(patch):
+    """every probe doc/performance.md times still fits the source it alters"""
+    r = subprocess.run(["git", "apply", "--check", str(patch)], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode == 0, f"update {patch.relative_to(ROOT)}: {r.stderr}"
+
+
 def test_every_probe_switch_is_in_the_patch():
     text = PATCH.read_text()
     src = (ROOT / "perf" / "row_floor.py").read_text()

@@ -308,3 +308,24 @@ def test_the_forced_paths_lines_of_doc_performance_follow_the_fifth_run():
     gap = max(abs(t["auto"] / t["avx2"] - 1.0) for run in runs.values() for t in run.values())
     said = re.search(r"their minima differ by up to (\d+) %", text)
     assert int(said.group(1)) == round(100 * gap)
+
+
+def test_the_kept_lengths_probe_of_doc_performance_follows_its_csvs():
+    """doc/performance.md on perf/probes/lps_kept_lengths.patch: each invocation's minima, base
+    then probe, the rounds the probe won, and the range of the time it saves"""
+    import re
+    text = " ".join((perf.ROOT / "doc" / "performance.md").read_text().split())
+    runs = [perf.two_builds(p) for p in perf.KEPT_LENGTHS_RUNS]
+    said = " and ".join(f"{r['base']:.3f} -> {r['new']:.3f} s (faster in {r['new_faster']} of {r['rounds']})"
+                        for r in runs)
+    assert said in text
+    saved = sorted(round(100 * (1.0 - r["new"] / r["base"])) for r in runs)
+    m = re.search(r"so this stays a probe: (\d+)-(\d+) % of an LPS step", text)
+    assert [int(m.group(1)), int(m.group(2))] == saved
+
+
+def test_two_builds_pairs_the_builds_of_each_round(tmp_path):
+    path = tmp_path / "two.csv"
+    path.write_text("round,input,build,loop_s,load,cpu\n1,in,base,1.0,0,x\n1,in,new,0.5,0,x\n"
+                    "2,in,base,0.8,0,x\n2,in,new,0.9,0,x\n")
+    assert perf.two_builds(path) == {"base": 0.8, "new": 0.5, "rounds": 2, "new_faster": 1}

@@ -276,6 +276,21 @@ def forced_table(data):
                     + ["fastest forced", "auto / fastest forced", "rounds auto chose"], out)
 
 
+# the LPS deck with perf/probes/lps_kept_lengths.patch (new) against the plugin without (base):
+# two invocations of perf/two_builds.sh
+KEPT_LENGTHS_RUNS = (RESULTS / "zen4-lps-kept-lengths.csv", RESULTS / "zen4-lps-kept-lengths-2.csv")
+
+
+def two_builds(path):
+    """a perf/two_builds.sh CSV of one input: the minimum loop time of each build, the number of
+    rounds and the rounds in which the new build ran faster than the base"""
+    rounds = {}
+    for r in _rows(path):
+        rounds.setdefault(int(r["round"]), {})[r["build"]] = float(r["loop_s"])
+    return {"base": min(v["base"] for v in rounds.values()), "new": min(v["new"] for v in rounds.values()),
+            "rounds": len(rounds), "new_faster": sum(v["new"] < v["base"] for v in rounds.values())}
+
+
 # LAMMPS's examples/peri cylinder for each model (perf/vs_bpm.py --scene cylinder --csv)
 VS_BPM_CYLINDER_FILES = (RESULTS / "spr-vs-bpm-cylinder.csv", RESULTS / "zen4-vs-bpm-cylinder.csv")
 
