@@ -101,13 +101,6 @@ thermo {CYLINDER_STEPS}
 run {CYLINDER_STEPS}
 """
 DAMAGE = {"legacy": "damage/atom", "ours": "bbpd/damage/atom", "bpm": "bpm/peri/damage/atom"}
-# the paths of the simd keyword that --forced takes (bbpd_path_choice.h)
-FORCED_PATHS = ("portable", "avx2", "avx512")
-
-
-def is_ours(variant):
-    """ours with the path auto chooses ('ours') or with a forced path ('ours-avx2', ...)"""
-    return variant == "ours" or variant.startswith("ours-")
 # the thermo check: what ours and peri/* may differ by, relative to the run's largest value
 # (both sum the same bonds in other orders: round-off of ~1e-13 measured, see the docstring)
 CHECK_TOL = 1e-9
@@ -136,6 +129,20 @@ thermo_modify format float %23.16e
 """
 
 
+# the paths of the simd keyword that --forced takes (bbpd_path_choice.h)
+FORCED_PATHS = ("portable", "avx2", "avx512")
+
+
+def is_ours(variant):
+    """ours with the path auto chooses ('ours') or with a forced path ('ours-avx2', ...)"""
+    return variant == "ours" or variant.startswith("ours-")
+
+
+def forced_path(variant):
+    """the path a variant forces ('ours-avx2': 'avx2'), or None"""
+    return variant[len("ours-"):] if variant.startswith("ours-") else None
+
+
 def deck(model, variant, check=False, cylinder=False):
     """the input of one run: the benchmark deck, with check the free, moving block, with
     cylinder the fracture scene"""
@@ -156,7 +163,7 @@ def deck(model, variant, check=False, cylinder=False):
                 "special_bonds lj 0.0 1.0 1.0 coul 1.0 1.0 1.0\n"
                 f"bond_style bpm/peri\nbond_coeff 1 {bpm_coeff(model, s00)}\n")
     else:
-        forced = f" simd {variant[len('ours-'):]}" if variant.startswith("ours-") else ""
+        forced = f" simd {forced_path(variant)}" if forced_path(variant) else ""
         style = f"bbpd/{model} 3d{forced}" if is_ours(variant) else f"peri/{model}"
         text = (("plugin load bbpdplugin.so\n" if is_ours(variant) else "") + "atom_style peri\n" + text +
                 f"{create}\n" + atoms +

@@ -242,37 +242,30 @@ def forced_paths(path, ranks):
     """per model of a perf/vs_bpm.py --forced run on this rank count: the minimum loop time over
     the rounds of ours with the path auto chose ('auto') and with each forced path, and how
     many rounds auto chose each path ('chosen')"""
-    rows = [r for r in _rows(path) if int(r["ranks"]) == ranks and r["variant"].startswith("ours")]
     out = {}
-    for model in BPM_MODELS:
-        mine = [r for r in rows if r["model"] == model]
-        if not mine:
+    for r in _rows(path):
+        if int(r["ranks"]) != ranks or not r["variant"].startswith("ours"):
             continue
-        best = {}
-        for r in mine:
-            name = "auto" if r["variant"] == "ours" else r["variant"][len("ours-"):]
-            best[name] = min(best.get(name, float(r["loop_s"])), float(r["loop_s"]))
-        chosen = {}
-        for r in mine:
-            if r["variant"] == "ours":
-                chosen[r["path"]] = chosen.get(r["path"], 0) + 1
-        out[model] = dict(best, chosen=chosen)
-    return out
+        t = out.setdefault(r["model"], {"chosen": {}})
+        name = "auto" if r["variant"] == "ours" else r["variant"][len("ours-"):]
+        t[name] = min(t.get(name, float(r["loop_s"])), float(r["loop_s"]))
+        if name == "auto":
+            t["chosen"][r["path"]] = t["chosen"].get(r["path"], 0) + 1
+    return {m: out[m] for m in BPM_MODELS if m in out}
 
 
 def forced_table(data):
     """doc/performance.md's table of auto against the forced paths on the deck (FORCED_RUN)"""
-    rows = _rows(FORCED_RUN)
-    out = []
-    for ranks in sorted({int(r["ranks"]) for r in rows}):
+    out, paths = [], set()
+    for ranks in sorted({int(r["ranks"]) for r in _rows(FORCED_RUN)}):
         for model, t in forced_paths(FORCED_RUN, ranks).items():
             forced = {p: v for p, v in t.items() if p not in ("auto", "chosen")}
+            paths |= set(forced)
             fastest = min(forced, key=forced.get)
             out.append([ranks, model, f"{t['auto']:.3f}"] + [f"{forced[p]:.3f}" for p in sorted(forced)]
                        + [fastest, f"{t['auto'] / forced[fastest]:.2f}",
                           ", ".join(f"{p} {n}" for p, n in sorted(t["chosen"].items()))])
-    paths = sorted({r["variant"][len("ours-"):] for r in rows if r["variant"].startswith("ours-")})
-    return md_table(["ranks", "model", "auto (s)"] + [f"{p} forced (s)" for p in paths]
+    return md_table(["ranks", "model", "auto (s)"] + [f"{p} forced (s)" for p in sorted(paths)]
                     + ["fastest forced", "auto / fastest forced", "rounds auto chose"], out)
 
 
